@@ -1,0 +1,42 @@
+# Build configurations.
+#   host        — the host backend, native gcc
+#   host-san    — the same under ASan + UBSan
+#   arm926-test — the host backend cross-built for ARMv5 Linux, run under qemu-arm
+#   am1808      — the target library (arm-none-eabi, freestanding), see mk/am1808.mk
+
+HOST_CONFIGS := host host-san arm926-test
+
+WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes \
+	-Wpointer-arith -Wundef -Wno-unused-parameter
+
+# Directories whose code is written against the Linux kernel API: they see
+# linux_compat/include and use gnu11 (typeof, statement expressions).
+LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers
+
+COMMON_INC := -Irtos_stub/include -Ihost_sim/include -Iapi -Itests -Iev3_drivers
+LINUX_INC  := -Ilinux_compat/include
+
+# Build-time kernel settings (TIC_NUME/TIC_DENO: tick length in ms).
+TIC_NUME ?= 1
+TIC_DENO ?= 5
+KERNEL_DEFS := -DTIC_NUME=$(TIC_NUME)U -DTIC_DENO=$(TIC_DENO)U
+
+CC_host        := gcc
+CFLAGS_host    := -O2 -g -DEV3LX_HOST=1
+LDFLAGS_host   :=
+RUN_host       :=
+
+CC_host-san     := gcc
+CFLAGS_host-san := -O1 -g -DEV3LX_HOST=1 -fsanitize=address,undefined \
+	-fno-omit-frame-pointer -fno-sanitize-recover=all
+LDFLAGS_host-san := -fsanitize=address,undefined
+RUN_host-san    :=
+
+CC_arm926-test     := arm-linux-gnueabi-gcc
+CFLAGS_arm926-test := -O2 -g -DEV3LX_HOST=1 -mcpu=arm926ej-s -marm
+LDFLAGS_arm926-test := -static
+RUN_arm926-test    := qemu-arm -cpu arm926 -L /usr/arm-linux-gnueabi
+
+# std and include path for one source file
+is_linux_src = $(filter $(addsuffix /%,$(LINUX_DIRS)),$(1))
+src_flags = $(if $(call is_linux_src,$(1)),-std=gnu11 $(LINUX_INC),-std=c11) $(COMMON_INC)

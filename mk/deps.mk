@@ -1,0 +1,30 @@
+# Tools ev3lx needs beyond a Debian 12 base with gcc and arm-none-eabi-gcc.
+# `make deps` installs what is missing; `make`/`make test` call it when needed.
+
+DEPS_PACKAGES := gcc-arm-linux-gnueabi libc6-dev-armel-cross qemu-user \
+	u-boot-tools cloc gnuplot-nox linux-headers-amd64 sparse gcc-arm-none-eabi \
+	libnewlib-arm-none-eabi perl
+
+# tool -> package, checked by `deps-check`
+DEPS_TOOLS := arm-linux-gnueabi-gcc:gcc-arm-linux-gnueabi qemu-arm:qemu-user \
+	mkimage:u-boot-tools cloc:cloc gnuplot:gnuplot-nox sparse:sparse \
+	arm-none-eabi-gcc:gcc-arm-none-eabi prove:perl
+
+deps_missing = $(strip $(foreach t,$(DEPS_TOOLS),$(if $(shell command -v $(firstword $(subst :, ,$(t))) 2>/dev/null),,$(lastword $(subst :, ,$(t))))) \
+	$(if $(wildcard /usr/src/linux-headers-*-amd64/Makefile),,linux-headers-amd64) \
+	$(if $(wildcard /usr/arm-linux-gnueabi/lib/libc.so.6),,libc6-dev-armel-cross))
+
+.PHONY: deps deps-check
+deps:
+	@missing="$(deps_missing)"; \
+	if [ -z "$$missing" ]; then echo "deps: all tools present"; exit 0; fi; \
+	line="apt-get install -y --no-install-recommends $$missing"; \
+	if [ "$$(id -u)" != 0 ]; then \
+		echo "deps: missing packages; as root run:"; echo "  $$line"; exit 1; \
+	fi; \
+	echo "deps: $$line"; \
+	export DEBIAN_FRONTEND=noninteractive; \
+	$$line || { apt-get update && $$line; } || { echo "deps: apt-get failed: $$line"; exit 1; }
+
+deps-check:
+	@$(if $(deps_missing),$(MAKE) --no-print-directory deps,true)

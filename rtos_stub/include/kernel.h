@@ -1,0 +1,156 @@
+/*
+ * kernel.h — the TOPPERS/HRP2 service-call subset ev3lx stands on.
+ *
+ * Signatures, constants and error codes are those of TOPPERS/HRP2, so that
+ * everything above rtos_stub links unchanged against the real kernel on the
+ * AM1808.  On the host the same calls are served by a deterministic
+ * single-CPU kernel in virtual time (rtos_stub/src/host, see rtos_host.h).
+ *
+ * Service-call shape (every call): check arguments and context, lock, act,
+ * unlock, return an ER code.  Task-only calls from non-task context, i-calls
+ * from task context, and blocking calls with the CPU locked or dispatching
+ * disabled return E_CTX.
+ */
+#ifndef TOPPERS_KERNEL_H
+#define TOPPERS_KERNEL_H
+
+#include "t_stddef.h"
+#include "t_syslog.h"
+
+/* ---- Tick: TIC_NUME/TIC_DENO ms per tick (default 1/5 ms = 200 us). ---- */
+#ifndef TIC_NUME
+#define TIC_NUME 1U
+#endif
+#ifndef TIC_DENO
+#define TIC_DENO 5U
+#endif
+/* Tick length in nanoseconds; TIC_NUME/TIC_DENO must divide evenly into ns. */
+#define TIC_NS   ((uint64_t)(TIC_NUME) * 1000000U / (TIC_DENO))
+
+/* ---- Object types ---- */
+typedef uint_t   FLGPTN;  /* eventflag bit pattern */
+typedef uint_t   INTNO;   /* interrupt number */
+typedef uint_t   INHNO;   /* interrupt handler number */
+typedef uint_t   EXCNO;   /* CPU exception handler number */
+
+typedef void (*TASK)(intptr_t exinf);
+typedef void (*ISR)(intptr_t exinf);
+typedef void (*CYCHDR)(intptr_t exinf);
+typedef void (*ALMHDR)(intptr_t exinf);
+typedef void (*INIRTN)(intptr_t exinf);
+typedef void (*TERRTN)(intptr_t exinf);
+/* An extended service routine (HRP2 DEF_SVC): five parameters and the caller's domain. */
+typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
+			  intptr_t par4, intptr_t par5, ID cdmid);
+
+/* ---- Priorities ---- */
+#define TMIN_TPRI    1      /* highest task priority */
+#define TMAX_TPRI    16     /* lowest task priority */
+#define TMIN_INTPRI  (-7)   /* highest interrupt priority */
+#define TMAX_INTPRI  (-1)   /* lowest interrupt priority */
+#define TIPM_ENAALL  0      /* interrupt priority mask: all enabled */
+
+/* ---- Special IDs and values ---- */
+#define TSK_SELF     0
+#define TSK_NONE     0
+#define TPRI_SELF    0
+#define TPRI_INI     0
+#define TDOM_SELF    0
+#define TDOM_KERNEL  (-1)
+#define TDOM_NONE    (-2)
+
+/* ---- Attributes ---- */
+#define TA_ACT       0x02U  /* task: activate at boot */
+#define TA_TPRI      0x01U  /* wait queue in priority order */
+#define TA_WMUL      0x02U  /* eventflag: several waiters */
+#define TA_CLR       0x04U  /* eventflag: clear on release */
+#define TA_STA       0x02U  /* cyclic: started at boot */
+#define TA_PHS       0x04U  /* cyclic: keep phase */
+#define TA_ENAINT    0x01U  /* interrupt: enabled at boot */
+#define TA_EDGE      0x02U  /* interrupt: edge triggered */
+
+/* ---- Modes ---- */
+#define TWF_ORW      0x01U
+#define TWF_ANDW     0x02U
+#define TPM_READ     0x01U
+#define TPM_WRITE    0x02U
+#define TPM_EXEC     0x04U
+
+/* ---- Task states (ref_tsk) ---- */
+#define TTS_RUN      0x01U
+#define TTS_RDY      0x02U
+#define TTS_WAI      0x04U
+#define TTS_SUS      0x08U
+#define TTS_WAS      0x0cU
+#define TTS_DMT      0x10U
+
+/* ---- Task management ---- */
+ER      act_tsk(ID tskid);                 /* activate (queue one activation if not dormant) */
+ER      iact_tsk(ID tskid);                /* act_tsk from non-task context */
+ER_UINT can_act(ID tskid);                 /* cancel queued activations, return their count */
+void    ext_tsk(void);                     /* end the calling task (returns E_CTX code via syslog if misused) */
+ER      chg_pri(ID tskid, PRI tskpri);     /* change base priority */
+ER      get_pri(ID tskid, PRI *p_tskpri);  /* read current priority */
+ER      get_tid(ID *p_tskid);              /* ID of the running task */
+ER      iget_tid(ID *p_tskid);             /* ID of the task interrupted (TSK_NONE if idle) */
+
+/* ---- Task-dependent synchronisation ---- */
+ER      slp_tsk(void);                     /* sleep until woken */
+ER      tslp_tsk(TMO tmout);               /* sleep with timeout (E_TMOUT) */
+ER      wup_tsk(ID tskid);                 /* wake, or queue one wakeup */
+ER      iwup_tsk(ID tskid);
+ER_UINT can_wup(ID tskid);
+ER      rel_wai(ID tskid);                 /* force a waiting task out with E_RLWAI */
+ER      irel_wai(ID tskid);
+ER      dly_tsk(RELTIM dlytim);            /* delay for at least dlytim ms */
+
+/* ---- Semaphores ---- */
+ER      sig_sem(ID semid);                 /* release one resource (E_QOVR at maximum) */
+ER      isig_sem(ID semid);
+ER      wai_sem(ID semid);                 /* acquire, waiting */
+ER      pol_sem(ID semid);                 /* acquire, E_TMOUT if none */
+ER      twai_sem(ID semid, TMO tmout);     /* acquire with timeout */
+
+/* ---- Eventflags ---- */
+ER      set_flg(ID flgid, FLGPTN setptn);
+ER      iset_flg(ID flgid, FLGPTN setptn);
+ER      clr_flg(ID flgid, FLGPTN clrptn);  /* AND the pattern with clrptn */
+ER      wai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn);
+ER      pol_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn);
+ER      twai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn, TMO tmout);
+
+/* ---- Time management ---- */
+ER      get_tim(SYSTIM *p_systim);         /* system time in ms since boot */
+ER      get_utm(SYSUTM *p_sysutm);         /* performance time in us since boot */
+ER      sta_cyc(ID cycid);                 /* start a cyclic handler */
+ER      stp_cyc(ID cycid);
+ER      sta_alm(ID almid, RELTIM almtim);  /* start an alarm, almtim ms from now */
+ER      ista_alm(ID almid, RELTIM almtim);
+ER      stp_alm(ID almid);
+ER      istp_alm(ID almid);
+
+/* ---- System state ---- */
+ER      rot_rdq(PRI tskpri);               /* rotate the ready queue of a priority */
+ER      irot_rdq(PRI tskpri);
+ER      loc_cpu(void);                     /* CPU lock: mask all interrupts and dispatch */
+ER      iloc_cpu(void);
+ER      unl_cpu(void);
+ER      iunl_cpu(void);
+ER      dis_dsp(void);                     /* disable dispatching */
+ER      ena_dsp(void);
+bool_t  sns_ctx(void);                     /* TRUE in non-task context */
+bool_t  sns_loc(void);                     /* TRUE with the CPU locked */
+bool_t  sns_dsp(void);                     /* TRUE with dispatching disabled */
+bool_t  sns_dpn(void);                     /* TRUE when dispatching is pending/not possible */
+
+/* ---- Interrupts ---- */
+ER      dis_int(INTNO intno);              /* mask one interrupt line */
+ER      ena_int(INTNO intno);              /* unmask one interrupt line */
+
+/* ---- Extended service calls and memory protection (HRP2) ---- */
+ER_UINT cal_svc(FN fncd, intptr_t par1, intptr_t par2, intptr_t par3,
+		intptr_t par4, intptr_t par5);
+/* E_OK if the task's protection domain may access [base, base+size) with pmmode, else E_MACV. */
+ER      prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode);
+
+#endif /* TOPPERS_KERNEL_H */

@@ -1,0 +1,129 @@
+/*
+ * rtos_cfg.h — the static configuration, as TOPPERS .cfg files declare it.
+ *
+ * Each table row is one static API of the TOPPERS configurator:
+ * CRE_TSK, CRE_SEM, CRE_FLG, CRE_CYC, CRE_ALM, CFG_INT, ATT_ISR, ATT_INI,
+ * DEF_SVC, and HRP2's memory regions per protection domain.  On the host the
+ * tables are checked at rtos_boot (a bad row is a clear boot error naming the
+ * row); on the AM1808 the same objects are written into the HRP2 .cfg
+ * (docs/porting-to-hrp2.md).
+ *
+ * IDs are explicit, as the configurator's kernel_cfg.h makes them: every
+ * object kind has IDs 1..TNUM_xxx, each used at most once across all the
+ * included configurations.  By convention applications use IDs from 1 and
+ * libraries (linux_compat) take theirs from the top of the range.
+ */
+#ifndef RTOS_CFG_H
+#define RTOS_CFG_H
+
+#include "kernel.h"
+
+#define TNUM_TSKID   32
+#define TNUM_SEMID   32
+#define TNUM_FLGID   16
+#define TNUM_CYCID   16
+#define TNUM_ALMID   16
+#define TNUM_FNCD    64     /* extended service calls: function codes 1..TNUM_FNCD */
+#define TNUM_DOMID   4      /* user protection domains 1..TNUM_DOMID */
+#define TMAX_INTNO   127U   /* interrupt numbers 0..TMAX_INTNO (AINTC system interrupts) */
+
+/* The host tick is an interrupt line too, as on the AM1808 (TIMER64P0 TINT12). */
+#define INTNO_TICK   21U
+#define INTPRI_TICK  (-6)
+
+struct rtos_task_cfg {      /* CRE_TSK */
+	ID       tskid;
+	ATR      tskatr;         /* TA_ACT or TA_NULL */
+	intptr_t exinf;
+	TASK     task;
+	PRI      itskpri;
+	SIZE     stksz;
+	ID       domid;          /* TDOM_KERNEL or a user domain 1..TNUM_DOMID */
+	const char *name;
+};
+
+struct rtos_sem_cfg {       /* CRE_SEM */
+	ID     semid;
+	ATR    sematr;           /* TA_TPRI or TA_NULL (FIFO) */
+	uint_t isemcnt;
+	uint_t maxsem;
+	const char *name;
+};
+
+struct rtos_flg_cfg {       /* CRE_FLG */
+	ID     flgid;
+	ATR    flgatr;           /* TA_TPRI | TA_WMUL | TA_CLR */
+	FLGPTN iflgptn;
+	const char *name;
+};
+
+struct rtos_cyc_cfg {       /* CRE_CYC: period and phase in ms, like HRP2 */
+	ID       cycid;
+	ATR      cycatr;         /* TA_STA | TA_PHS */
+	intptr_t exinf;
+	CYCHDR   cychdr;
+	RELTIM   cyctim;
+	RELTIM   cycphs;
+	const char *name;
+};
+
+struct rtos_alm_cfg {       /* CRE_ALM */
+	ID       almid;
+	ATR      almatr;
+	intptr_t exinf;
+	ALMHDR   almhdr;
+	const char *name;
+};
+
+struct rtos_int_cfg {       /* CFG_INT */
+	INTNO intno;
+	ATR   intatr;            /* TA_ENAINT | TA_EDGE */
+	PRI   intpri;            /* TMIN_INTPRI..TMAX_INTPRI */
+};
+
+struct rtos_isr_cfg {       /* ATT_ISR: several ISRs may share a line, called in isrpri order */
+	ATR      isratr;
+	intptr_t exinf;
+	INTNO    intno;
+	ISR      isr;
+	PRI      isrpri;         /* order among the line's ISRs, 1 first */
+};
+
+struct rtos_ini_cfg {       /* ATT_INI: runs at boot in non-task context, in table order */
+	INIRTN   inirtn;
+	intptr_t exinf;
+};
+
+struct rtos_svc_cfg {       /* DEF_SVC */
+	FN     fncd;             /* 1..TNUM_FNCD */
+	EXTSVC extsvc;
+	SIZE   stksz;
+};
+
+struct rtos_mem_cfg {       /* a memory region a user domain may access */
+	ID         domid;        /* 1..TNUM_DOMID */
+	const void *base;
+	SIZE       size;
+	MODE       access;       /* TPM_READ | TPM_WRITE | TPM_EXEC */
+	const char *name;
+};
+
+#define RTOS_TABLE(arr) (arr), (uint_t)(sizeof(arr) / sizeof((arr)[0]))
+
+struct rtos_cfg {
+	const char *name;
+	const struct rtos_task_cfg *tasks;   uint_t ntasks;
+	const struct rtos_sem_cfg  *sems;    uint_t nsems;
+	const struct rtos_flg_cfg  *flgs;    uint_t nflgs;
+	const struct rtos_cyc_cfg  *cycs;    uint_t ncycs;
+	const struct rtos_alm_cfg  *alms;    uint_t nalms;
+	const struct rtos_int_cfg  *ints;    uint_t nints;
+	const struct rtos_isr_cfg  *isrs;    uint_t nisrs;
+	const struct rtos_ini_cfg  *inis;    uint_t ninis;
+	const struct rtos_svc_cfg  *svcs;    uint_t nsvcs;
+	const struct rtos_mem_cfg  *mems;    uint_t nmems;
+	/* INCLUDE(): other configurations merged in, e.g. linux_compat's. NULL-terminated. */
+	const struct rtos_cfg *const *includes;
+};
+
+#endif /* RTOS_CFG_H */

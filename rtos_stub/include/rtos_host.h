@@ -1,0 +1,121 @@
+/*
+ * rtos_host.h — the host backend's harness: boot, virtual time, interrupt
+ * lines, device events, traces and bug reports.  Host only: nothing here
+ * exists on the AM1808 (docs/rtos-stub.md lists what is host-only).
+ *
+ * Model: one CPU.  Tasks are coroutines on one OS thread.  Virtual time is
+ * in nanoseconds and advances only when no task is ready (to the next event)
+ * or when a context consumes CPU time (rtos_host_consume / sil_dly_nse).
+ * Device events run at their time regardless of masking (they are the
+ * hardware); interrupt delivery obeys enable state, CPU lock and priority.
+ */
+#ifndef RTOS_HOST_H
+#define RTOS_HOST_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "kernel.h"
+#include "rtos_cfg.h"
+
+/* ---- Boot and run ---- */
+
+/* Resets the kernel, checks cfg (and its includes), creates all objects, runs
+ * ATT_INI routines, activates TA_ACT tasks.  Virtual time starts at 0.
+ * Returns E_OK, or the error of the first bad row after printing it. */
+ER rtos_host_boot(const struct rtos_cfg *cfg);
+
+/* Ends the current boot: frees task stacks, forgets objects and events. */
+void rtos_host_shutdown(void);
+
+/* Runs the system until virtual time now+ns (tasks, ticks, events, ISRs). */
+void rtos_host_run_for(uint64_t ns);
+
+/* Runs until virtual time t (absolute ns). */
+void rtos_host_run_until(uint64_t t_ns);
+
+/* Runs until no task is ready and no event other than ticks is pending, or
+ * until max_ns of virtual time have passed.  Returns true if idle was reached. */
+bool rtos_host_run_until_idle(uint64_t max_ns);
+
+/* Virtual time in ns since boot. */
+uint64_t rtos_host_now(void);
+
+/* The calling context (task, ISR, handler or harness) is busy for ns of
+ * virtual CPU time; events due meanwhile fire, and interrupts nest if not
+ * masked.  A task preempted meanwhile finishes its time when it runs again. */
+void rtos_host_consume(uint64_t ns);
+
+/* ---- Device events (the hardware side) ---- */
+
+typedef void (*rtos_host_event_fn)(void *arg);
+typedef uint64_t rtos_host_event_t;         /* 0 = none */
+
+/* Schedules fn(arg) at absolute virtual time t_ns (>= now).  Events at the
+ * same time run in the order they were scheduled. */
+rtos_host_event_t rtos_host_event_at(uint64_t t_ns, rtos_host_event_fn fn, void *arg);
+
+/* Cancels a scheduled event; cancelling a fired or unknown one is harmless. */
+void rtos_host_event_cancel(rtos_host_event_t ev);
+
+/* ---- Interrupt lines ---- */
+
+/* Latches an edge on the line: it is delivered once, when enabled and unmasked. */
+void rtos_host_irq_raise(INTNO intno);
+/* Sets a level-sensitive request; delivered (again) while asserted. */
+void rtos_host_irq_set_level(INTNO intno, bool asserted);
+/* Forgets a latched edge that was not delivered yet. */
+void rtos_host_irq_clear(INTNO intno);
+bool rtos_host_irq_pending(INTNO intno);
+bool rtos_host_irq_enabled(INTNO intno);
+/* Priority the line was configured with (CFG_INT), or 0 if unconfigured. */
+PRI  rtos_host_irq_priority(INTNO intno);
+/* Interrupt nesting depth of the running code (0 in task context or idle). */
+uint_t rtos_host_irq_depth(void);
+
+/* ---- Register access routing (installed by host_sim) ---- */
+
+struct rtos_host_mmio_ops {
+	/* Return true if addr is device memory this handler serves. */
+	bool (*claims)(const volatile void *addr, void *ctx);
+	uint32_t (*read)(const volatile void *addr, uint_t width, void *ctx);
+	void (*write)(volatile void *addr, uint_t width, uint32_t data, void *ctx);
+	/* Returns a window for physical range [phys, phys+size), or NULL if unmodelled. */
+	void *(*map)(uintptr_t phys, SIZE size, void *ctx);
+	void *ctx;
+};
+/* Installs the handler (NULL: plain memory accesses, no device windows). */
+void rtos_host_set_mmio_handler(const struct rtos_host_mmio_ops *ops);
+/* The window for a physical register range, or NULL if none is modelled. */
+void *rtos_host_map_io(uintptr_t phys, SIZE size);
+
+/* ---- Trace ---- */
+
+/* Every kernel event (dispatch, ISR entry/exit, tick work, service-call
+ * errors) and every line other layers record goes to the sink as one text
+ * line "<ns> <source> <text>".  Same inputs give byte-identical traces. */
+typedef void (*rtos_host_trace_sink)(const char *line, void *ctx);
+void rtos_host_trace_set_sink(rtos_host_trace_sink sink, void *ctx);
+void rtos_host_trace(const char *source, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
+
+/* ---- Bug reports (context violations and other misuse) ---- */
+
+/* Reports a bug: prints "BUG: ..." with virtual time and context to stderr and
+ * a TAP diagnostic; unless expected, the process will exit non-zero. */
+void rtos_host_bug(const char *what, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
+/* While expecting, bugs are counted but do not fail the run (for tests of the checks). */
+void rtos_host_expect_bugs(bool expect);
+/* Number of bugs reported since boot. */
+uint_t rtos_host_bug_count(void);
+/* Text of the last bug report (empty if none). */
+const char *rtos_host_last_bug(void);
+
+/* ---- Context introspection for layers above ---- */
+
+/* A name for the current context: "task <name>", "isr <intno>", "cyclic <id>", "alarm <id>", "init", "idle". */
+const char *rtos_host_context_name(void);
+/* The domain of the calling task (TDOM_KERNEL in non-task context). */
+ID rtos_host_current_domain(void);
+
+#endif /* RTOS_HOST_H */

@@ -1,0 +1,87 @@
+/*
+ * t_stddef.h — TOPPERS standard definitions: basic types, error codes,
+ * timeout constants.  Names and numeric values follow the TOPPERS/HRP2
+ * specification so that code built against this header links against the
+ * real kernel unchanged.
+ */
+#ifndef TOPPERS_T_STDDEF_H
+#define TOPPERS_T_STDDEF_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef int             bool_t;
+typedef signed int      int_t;
+typedef unsigned int    uint_t;
+typedef signed long     long_t;
+typedef unsigned long   ulong_t;
+
+typedef int_t           FN;      /* function code */
+typedef int_t           ER;      /* error code */
+typedef int_t           ID;      /* object ID */
+typedef uint_t          ATR;     /* object attribute */
+typedef uint_t          STAT;    /* object state */
+typedef uint_t          MODE;    /* service call mode */
+typedef int_t           PRI;     /* priority */
+typedef size_t          SIZE;    /* memory area size */
+typedef int_t           TMO;     /* timeout, in ms */
+typedef uint_t          RELTIM;  /* relative time, in ms */
+typedef ulong_t         SYSTIM;  /* system time, in ms */
+typedef uint32_t        SYSUTM;  /* performance time, in us */
+typedef uintptr_t       FP;      /* program start address */
+typedef int_t           ER_BOOL; /* error code or boolean */
+typedef int_t           ER_ID;   /* error code or ID */
+typedef int_t           ER_UINT; /* error code or unsigned value */
+typedef uint32_t        ACPTN;   /* access permission pattern */
+
+typedef struct acvct {
+	ACPTN acptn1;   /* normal operations */
+	ACPTN acptn2;   /* management operations */
+	ACPTN acptn3;   /* reference operations */
+	ACPTN acptn4;   /* other operations */
+} ACVCT;
+
+#ifndef TRUE
+#define TRUE    1
+#endif
+#ifndef FALSE
+#define FALSE   0
+#endif
+
+#define E_OK     0
+
+#define E_SYS    (-5)
+#define E_NOSPT  (-9)
+#define E_RSFN   (-10)
+#define E_RSATR  (-11)
+#define E_PAR    (-17)
+#define E_ID     (-18)
+#define E_CTX    (-25)
+#define E_MACV   (-26)
+#define E_OACV   (-27)
+#define E_ILUSE  (-28)
+#define E_NOMEM  (-33)
+#define E_NOID   (-34)
+#define E_NORES  (-35)
+#define E_OBJ    (-41)
+#define E_NOEXS  (-42)
+#define E_QOVR   (-43)
+#define E_RLWAI  (-49)
+#define E_TMOUT  (-50)
+#define E_DLT    (-51)
+#define E_CLS    (-52)
+#define E_WBLK   (-57)
+#define E_BOVR   (-58)
+
+/* The main error code is the low byte, sign-extended; the sub code the rest. */
+#define MERCD(ercd)        ((ER)((int8_t)(ercd)))
+#define SERCD(ercd)        ((ER)((ercd) >> 8))
+#define ERCD(mercd, sercd) ((ER)((((uint_t)(sercd)) << 8) | (((uint_t)(mercd)) & 0xffU)))
+
+#define TA_NULL  0U
+
+#define TMO_POL  0
+#define TMO_FEVR (-1)
+#define TMO_NBLK (-2)
+
+#endif /* TOPPERS_T_STDDEF_H */
