@@ -1,21 +1,26 @@
-# The AM1808 target: libev3lx.a built with arm-none-eabi-gcc for the ARM926EJ-S.
-# Components append target sources to AM1808_SRCS (host-only code stays out).
+# The AM1808 target (issue 8): libev3lx.a built with arm-none-eabi-gcc for the
+# ARM926EJ-S, a link-check firmware image against the HRP2 service calls, a
+# U-Boot uImage, and a size report.  Components append target sources to
+# AM1808_SRCS (host-only code stays out).
 
 CC_am1808     := arm-none-eabi-gcc
 AR_am1808     := arm-none-eabi-ar
-CFLAGS_am1808 := -mcpu=arm926ej-s -marm -Os -ffreestanding -ffunction-sections \
+CFLAGS_am1808 := -mcpu=arm926ej-s -marm -Os -g -ffreestanding -ffunction-sections \
 	-fdata-sections -DEV3LX_AM1808=1
-AM1808_OBJS   := $(patsubst %.c,$(BUILD)/am1808/obj/%.o,$(AM1808_SRCS))
-AM1808_LIB    := $(BUILD)/am1808/libev3lx.a
-# Every rtos_stub header must compile alone for the target.
-AM1808_HDR_CHECKS := $(patsubst %.h,$(BUILD)/am1808/hdrcheck/%.o,$(wildcard rtos_stub/include/*.h))
-AM1808_HDR_CHECKS := $(filter-out %/rtos_host.o,$(AM1808_HDR_CHECKS))
+AM1808        := $(BUILD)/am1808
+AM1808_OBJS   := $(patsubst %.c,$(AM1808)/obj/%.o,$(AM1808_SRCS))
+AM1808_LIB    := $(AM1808)/libev3lx.a
+# Every rtos_stub target header must compile alone.
+AM1808_HDR_CHECKS := $(patsubst %.h,$(AM1808)/hdrcheck/%.o,$(filter-out %/rtos_host.h,$(wildcard rtos_stub/include/*.h)))
+FW_OBJS := $(AM1808)/startup.o $(AM1808)/fw_main.o $(AM1808)/hrp2_link_provider.o
+# Reproducible image: the time stamp is the last commit's (or 0 outside git).
+SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null || echo 0)
 
-$(BUILD)/am1808/obj/%.o: %.c
+$(AM1808)/obj/%.o: %.c
 	@mkdir -p $(@D)
 	$(CC_am1808) $(call src_flags,$<) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
 
-$(BUILD)/am1808/hdrcheck/%.o: %.h
+$(AM1808)/hdrcheck/%.o: %.h
 	@mkdir -p $(@D)
 	$(CC_am1808) -std=c11 $(COMMON_INC) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -x c -c $< -o $@
 
@@ -24,8 +29,46 @@ $(AM1808_LIB): $(AM1808_OBJS)
 	rm -f $@
 	$(AR_am1808) rcs $@ $^
 
-.PHONY: am1808
-am1808: $(AM1808_HDR_CHECKS) $(AM1808_LIB)
-	@echo "am1808: $(AM1808_LIB) ($(words $(AM1808_OBJS)) objects)"
+$(AM1808)/startup.o: am1808/startup.S
+	@mkdir -p $(@D)
+	$(CC_am1808) -mcpu=arm926ej-s -marm -c $< -o $@
+
+$(AM1808)/%.o: am1808/%.c
+	@mkdir -p $(@D)
+	$(CC_am1808) -std=c11 $(COMMON_INC) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -c $< -o $@
+
+# The firmware image: startup, the library's KEEP'd tables and what fw_main reaches.
+$(AM1808)/ev3lx.elf: $(FW_OBJS) $(AM1808_LIB) am1808/ev3lx.ld
+	$(CC_am1808) -mcpu=arm926ej-s -marm -nostartfiles -T am1808/ev3lx.ld -specs=nano.specs \
+		-Wl,--gc-sections -Wl,-Map,$(AM1808)/ev3lx.map -o $@ $(FW_OBJS) \
+		-Wl,--start-group $(AM1808_LIB) -lc_nano -lgcc -Wl,--end-group
+
+$(AM1808)/ev3lx.bin: $(AM1808)/ev3lx.elf
+	arm-none-eabi-objcopy -O binary $< $@
+
+$(AM1808)/uImage: $(AM1808)/ev3lx.bin
+	SOURCE_DATE_EPOCH=$(SOURCE_DATE_EPOCH) mkimage -A arm -O linux -T kernel -C none \
+		-a 0xC0008000 -e 0xC0008000 -n "ev3lx" -d $< $@ > /dev/null
+
+.PHONY: am1808 am1808-link-check am1808-uimage-check size
+am1808: deps-check $(AM1808_HDR_CHECKS) $(AM1808_LIB) $(AM1808)/uImage
+	@echo "am1808: $(AM1808_LIB) ($(words $(AM1808_OBJS)) objects), $(AM1808)/uImage"
+
+am1808-link-check: $(FW_OBJS) $(AM1808_LIB)
+	@bash am1808/check_link.sh $(AM1808)
+
+am1808-uimage-check: $(AM1808)/uImage
+	@mkimage -l $< > $(AM1808)/uImage.txt; \
+	grep -q 'Image Type:.*ARM Linux Kernel Image (uncompressed)' $(AM1808)/uImage.txt && \
+	grep -q 'Load Address: c0008000' $(AM1808)/uImage.txt && \
+	grep -q 'Entry Point:  *c0008000' $(AM1808)/uImage.txt || \
+	{ cat $(AM1808)/uImage.txt; echo "uimage-check: FAILED"; exit 1; }; \
+	echo "uimage-check: $< is an ARM image loading and starting at 0xC0008000"
+
+size: $(AM1808_LIB)
+	@bash am1808/size_report.sh $(AM1808) | tee $(AM1808)/size.md
+
+TEST_SUITE_EXTRA += am1808-link-check am1808-uimage-check
+TEST_SUITE_EXTRA_DEPS += $(AM1808_LIB) $(FW_OBJS)
 
 -include $(AM1808_OBJS:.o=.d)

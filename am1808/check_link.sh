@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# check_link.sh BUILD_DIR — the AM1808 link check (issue 8).
+#  1. The provider defines exactly the service calls the target headers declare.
+#  2. libev3lx.a has no reference to host-only symbols (rtos_host_*, sil_host_*, hs_*).
+#  3. The whole library (--whole-archive) links against the provider with zero
+#     unresolved symbols.
+set -euo pipefail
+out=$1
+cc=arm-none-eabi-gcc
+nm=arm-none-eabi-nm
+
+# 1. The API set: every non-inline function the target headers declare.
+printf '#include "kernel.h"\n#include "sil.h"\n#include "t_syslog.h"\n' > "$out/api_decls.c"
+$cc -std=c11 -Irtos_stub/include -DEV3LX_AM1808=1 -mcpu=arm926ej-s -marm \
+	-aux-info "$out/api_decls.aux" -c "$out/api_decls.c" -o "$out/api_decls.o"
+grep -E '^/\* rtos_stub/include/[a-z_]+\.h:[0-9]+:NC \*/ extern ' "$out/api_decls.aux" \
+	| sed -E 's/.* ([A-Za-z_][A-Za-z0-9_]*) \(.*/\1/' | sort -u > "$out/api_symbols.txt"
+$nm --defined-only -g "$out/hrp2_link_provider.o" | awk '{print $3}' | sort -u > "$out/provider_symbols.txt"
+if ! diff -u "$out/api_symbols.txt" "$out/provider_symbols.txt" > "$out/provider_diff.txt"; then
+	echo "link-check: the provider's symbols differ from the rtos_stub target API:"
+	cat "$out/provider_diff.txt"
+	exit 1
+fi
+echo "link-check: provider defines exactly the $(wc -l < "$out/api_symbols.txt") rtos_stub service calls"
+
+# 2. No host-only symbol anywhere in the target library.
+leaks=$($nm -u "$out/libev3lx.a" 2>/dev/null | awk '{print $2}' | grep -E '^(rtos_host_|sil_host_|hs_)' | sort -u || true)
+if [ -n "$leaks" ]; then
+	echo "link-check: host-only symbols referenced by libev3lx.a:"; echo "$leaks"; exit 1
+fi
+
+# 3. Everything in the library, linked: zero unresolved symbols.
+$cc -mcpu=arm926ej-s -marm -nostartfiles -T am1808/ev3lx.ld -specs=nano.specs \
+	-o "$out/linkcheck.elf" "$out/startup.o" "$out/fw_main.o" "$out/hrp2_link_provider.o" \
+	-Wl,--whole-archive "$out/libev3lx.a" -Wl,--no-whole-archive \
+	-Wl,--start-group -lc_nano -lgcc -Wl,--end-group -Wl,--warn-common \
+	2> "$out/linkcheck.log" || { cat "$out/linkcheck.log"; echo "link-check: FAILED"; exit 1; }
+undef=$($nm -u "$out/linkcheck.elf" | wc -l)
+if [ "$undef" != 0 ]; then
+	$nm -u "$out/linkcheck.elf"; echo "link-check: $undef unresolved symbols"; exit 1
+fi
+objs=$(ar t "$out/libev3lx.a" | wc -l)
+echo "link-check: libev3lx.a ($objs objects) links whole with 0 unresolved symbols"
