@@ -10,7 +10,7 @@
 SHELL := /bin/bash
 
 NPROC := $(shell nproc 2>/dev/null || echo 2)
-ifeq ($(filter -j%,$(MAKEFLAGS)),)
+ifeq ($(MAKELEVEL)$(filter -j%,$(MAKEFLAGS)),0)
 MAKEFLAGS += -j$(NPROC)
 endif
 MAKEFLAGS += --no-builtin-rules

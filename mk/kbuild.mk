@@ -10,7 +10,8 @@ KBUILD_DRIVERS := $(wildcard ev3_drivers/d_*.c)
 kbuild-check: deps-check
 	@test -n "$(KDIR)" || { echo "kbuild-check: no linux-headers-*-amd64 in /usr/src (make deps)"; exit 1; }
 	@rm -rf $(KBUILD_OUT) && mkdir -p $(KBUILD_OUT)
-	@cp -p ev3_drivers/*.c ev3_drivers/*.h ev3_drivers/Kbuild $(KBUILD_OUT)/ 2>/dev/null || cp -p ev3_drivers/*.c ev3_drivers/Kbuild $(KBUILD_OUT)/
+	@test -n "$(KBUILD_DRIVERS)" || { echo "kbuild-check: no drivers in ev3_drivers/"; exit 1; }
+	@cp -p $(wildcard ev3_drivers/*.c ev3_drivers/*.h) ev3_drivers/Kbuild $(KBUILD_OUT)/
 	@sed -i 's/^obj-m := .*/obj-m := $(patsubst ev3_drivers/%.c,%.o,$(KBUILD_DRIVERS))/' $(KBUILD_OUT)/Kbuild
 	@echo "kbuild-check: $(notdir $(KBUILD_DRIVERS)) against $(KDIR) (W=1 C=2)"
 	@$(MAKE) --no-print-directory -C $(KDIR) M=$(abspath $(KBUILD_OUT)) W=1 C=2 modules \

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# check_totals.sh OUTDIR — the report's totals equal cloc's own SUM lines for the
+# same file lists (issue 9): the report adds nothing of its own to cloc's counts.
+set -euo pipefail
+out=$1
+cloc_sum() {
+	[ $# -gt 0 ] || { echo 0; return; }
+	cloc --csv --quiet --skip-uniqueness "$@" | awk -F, '$2 == "SUM" { print $5 }'
+}
+fail=0
+check() {  # check NAME REPORTED FILES...
+	local name=$1 reported=$2; shift 2
+	local expected; expected=$(cloc_sum "$@")
+	expected=${expected:-0}
+	if [ "$reported" = "$expected" ]; then echo "ok - $name: $reported code lines = cloc SUM"
+	else echo "not ok - $name: report says $reported, cloc SUM says $expected"; fail=1; fi
+}
+csvv() { awk -F, -v k="$1" -v c="$2" '$1 == k { print $c }' "$out/reuse.csv"; }
+reused=(); for m in pwm analog uart; do for f in ev3_drivers/d_$m.c ev3_drivers/lms_$m.h; do [ -f "$f" ] && reused+=("$f"); done; done
+glue=(); while IFS= read -r f; do glue+=("$f"); done < <(find hacks -type f \( -name '*.c' -o -name '*.h' \) 2>/dev/null | sort)
+shim=(); while IFS= read -r f; do shim+=("$f"); done < <(find linux_compat rtos_stub/include rtos_stub/src -type f \( -name '*.c' -o -name '*.h' -o -name '*.S' \) 2>/dev/null | sort)
+check "reused total" "$(csvv total 3)" "${reused[@]}"
+check "written glue total" "$(csvv total 5)" "${glue[@]}"
+check "shared shim" "$(csvv shared_shim 5)" "${shim[@]}"
+exit $fail
