@@ -14,7 +14,7 @@ WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes 
 LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers
 
 COMMON_INC := -Irtos_stub/include -Ihost_sim/include -Iapi -Itests -Iev3_drivers
-LINUX_INC  := -Ilinux_compat/include
+LINUX_INC  := -D__KERNEL__ -Ilinux_compat/include
 
 # Build-time kernel settings (TIC_NUME/TIC_DENO: tick length in ms).
 TIC_NUME ?= 1

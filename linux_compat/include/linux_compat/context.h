@@ -1,0 +1,72 @@
+/*
+ * linux_compat/context.h — which Linux context the calling code is in, and
+ * the might_sleep check built on it.
+ *
+ * Contexts linux_compat tracks on top of the RTOS's own (sns_ctx, sns_loc):
+ *   - hard IRQ:         B2's IRQ layer brackets each Linux handler with
+ *                       lx_irq_enter(irq) / lx_irq_exit();
+ *   - hrtimer callback: the hrtimer engine brackets each callback;
+ *   - timer callback:   the timer_list engine brackets each callback;
+ *   - atomic sections:  spin locks and preempt_disable (atomic depth);
+ *   - irqs disabled:    local_irq_save/disable and spin_lock_irq*.
+ * Sleeping is legal only in task context outside all of these.
+ */
+#ifndef _LINUX_COMPAT_CONTEXT_H
+#define _LINUX_COMPAT_CONTEXT_H
+
+#include <stdbool.h>
+
+/* A Linux interrupt handler for irq is about to run (interrupt context). */
+void lx_irq_enter(int irq);
+/* The handler lx_irq_enter announced has returned. */
+void lx_irq_exit(void);
+/* The Linux IRQ number whose handler is running, or -1. */
+int lx_current_irq(void);
+
+/* The hrtimer/timer_list engines: a callback (cb) starts / ends. */
+void lx_timer_callback_enter(bool hrtimer, const void *cb);
+void lx_timer_callback_exit(void);
+/* The hrtimer callback running now (its struct hrtimer *), or NULL. */
+const void *lx_running_hrtimer(void);
+void lx_set_running_hrtimer(const void *timer);
+
+/*
+ * Atomic sections (spin locks when spinlock is true, else preempt_disable):
+ * in a task, the first level disables dispatching (dis_dsp, unless the CPU
+ * or interrupts are locked already, which excludes dispatching anyway), so
+ * no other task runs until the last level ends; in an ISR only the depth is
+ * counted.
+ */
+void lx_atomic_enter(bool spinlock);
+void lx_atomic_exit(bool spinlock);
+/* Depth of atomic sections (spin locks + preempt_disable) in the current context. */
+unsigned int lx_preempt_count(void);
+
+/* Interrupt-disabled sections opened by linux_compat (local_irq_save...). */
+void lx_irqs_off_enter(void);
+void lx_irqs_off_exit(void);
+
+/* Forgets all tracked state (at boot: a fresh system has no locks held). */
+void lx_context_reset(void);
+
+/* True if the calling code is in interrupt context (ISR, hrtimer/timer callback, handler). */
+bool lx_in_interrupt(void);
+/* True if the calling code must not sleep (interrupt, atomic section, irqs off, CPU locked). */
+bool lx_in_atomic(void);
+/* True with interrupts disabled by linux_compat or by the RTOS CPU lock. */
+bool lx_irqs_disabled(void);
+
+/*
+ * Writes why the caller may not sleep into buf ("hrtimer callback", "hard IRQ 47",
+ * "spinlock held", ...) and returns true; returns false (buf = "task") if it may.
+ */
+bool lx_context_forbids_sleep(char *buf, unsigned int len);
+
+/*
+ * The might_sleep check: if the caller may not sleep, reports
+ * "sleeping function called from invalid context: <what> at <file>:<line> (<context>)"
+ * and returns false; returns true if sleeping is legal.  file may be NULL.
+ */
+bool lx_might_sleep_check(const char *what, const char *file, int line);
+
+#endif /* _LINUX_COMPAT_CONTEXT_H */

@@ -1,0 +1,245 @@
+/*
+ * context.c — tracking of Linux contexts and the might_sleep check.
+ *
+ * Uniprocessor: a task in an atomic section cannot be preempted by another
+ * task (dispatching is disabled) and interrupts return balanced, so one set
+ * of counters describes the CPU.  Depths opened in task context and in
+ * interrupt context are kept apart so that only task-level sections touch
+ * the dispatcher.
+ */
+#include <linux/kernel.h>
+#include <linux/string.h>
+#include <linux_compat/context.h>
+#include <linux_compat/report.h>
+#include <kernel.h>
+#include <stdio.h>
+#if defined(EV3LX_HOST)
+#include <rtos_host.h>
+#endif
+
+#define LX_IRQ_NEST_MAX	16
+
+static struct {
+	unsigned int task_atomic;      /* atomic sections opened by the running task */
+	unsigned int task_spin;        /* ... of which spin locks */
+	bool dispatch_disabled_by_us;  /* task_atomic's first level called dis_dsp */
+	unsigned int isr_atomic;       /* atomic sections opened in interrupt context */
+	unsigned int isr_spin;
+	unsigned int irqs_off;         /* local_irq_save/disable nesting */
+	int irq_stack[LX_IRQ_NEST_MAX];
+	unsigned int irq_depth;
+	unsigned int hrtimer_cb;       /* hrtimer callbacks running (nesting: 0 or 1) */
+	unsigned int timer_cb;         /* timer_list callbacks running */
+	const void *running_hrtimer;
+} ctx;
+
+/* Forgets all tracked state. */
+void lx_context_reset(void)
+{
+	memset(&ctx, 0, sizeof(ctx));
+}
+
+/* Records that a Linux handler for irq starts. */
+void lx_irq_enter(int irq)
+{
+	if (ctx.irq_depth < LX_IRQ_NEST_MAX)
+		ctx.irq_stack[ctx.irq_depth] = irq;
+	ctx.irq_depth++;
+}
+
+/* Records that the innermost Linux handler returned. */
+void lx_irq_exit(void)
+{
+	if (ctx.irq_depth == 0) {
+		lx_report("unbalanced lx_irq_exit", NULL, 0, "no IRQ handler is running");
+		return;
+	}
+	ctx.irq_depth--;
+}
+
+/* The IRQ whose handler is running, or -1. */
+int lx_current_irq(void)
+{
+	if (ctx.irq_depth == 0)
+		return -1;
+	return ctx.irq_depth <= LX_IRQ_NEST_MAX ? ctx.irq_stack[ctx.irq_depth - 1] : -1;
+}
+
+/* Records that a timer callback starts. */
+void lx_timer_callback_enter(bool hrtimer, const void *cb)
+{
+	(void)cb;
+	if (hrtimer)
+		ctx.hrtimer_cb++;
+	else
+		ctx.timer_cb++;
+}
+
+/* Records that the running timer callback returned (hrtimer first, as nesting allows). */
+void lx_timer_callback_exit(void)
+{
+	if (ctx.hrtimer_cb > 0)
+		ctx.hrtimer_cb--;
+	else if (ctx.timer_cb > 0)
+		ctx.timer_cb--;
+}
+
+/* The hrtimer whose callback runs now, or NULL. */
+const void *lx_running_hrtimer(void)
+{
+	return ctx.running_hrtimer;
+}
+
+/* Sets the hrtimer whose callback runs now (NULL when it returned). */
+void lx_set_running_hrtimer(const void *timer)
+{
+	ctx.running_hrtimer = timer;
+}
+
+/* Opens an atomic section; in a task the outermost one disables dispatching. */
+void lx_atomic_enter(bool spinlock)
+{
+	if (sns_ctx()) {
+		ctx.isr_atomic++;
+		if (spinlock)
+			ctx.isr_spin++;
+		return;
+	}
+	if (ctx.task_atomic++ == 0) {
+		/* With the CPU or interrupts locked, no dispatch can happen (and HRP2
+		 * forbids service calls under SIL_LOC_INT). */
+		ctx.dispatch_disabled_by_us = !sns_loc() && ctx.irqs_off == 0 && !sns_dsp();
+		if (ctx.dispatch_disabled_by_us)
+			(void)dis_dsp();
+	}
+	if (spinlock)
+		ctx.task_spin++;
+}
+
+/* Closes an atomic section; the outermost one in a task re-enables dispatching. */
+void lx_atomic_exit(bool spinlock)
+{
+	if (sns_ctx()) {
+		if (ctx.isr_atomic == 0) {
+			lx_report("unbalanced unlock", NULL, 0, "no atomic section open in interrupt context");
+			return;
+		}
+		ctx.isr_atomic--;
+		if (spinlock && ctx.isr_spin > 0)
+			ctx.isr_spin--;
+		return;
+	}
+	if (ctx.task_atomic == 0) {
+		lx_report("unbalanced unlock", NULL, 0, "no atomic section open in task context");
+		return;
+	}
+	if (spinlock && ctx.task_spin > 0)
+		ctx.task_spin--;
+	if (--ctx.task_atomic == 0 && ctx.dispatch_disabled_by_us) {
+		ctx.dispatch_disabled_by_us = false;
+		(void)ena_dsp();
+	}
+}
+
+/* Atomic depth of the current context. */
+unsigned int lx_preempt_count(void)
+{
+	return sns_ctx() ? ctx.isr_atomic : ctx.task_atomic;
+}
+
+/* Counts one local_irq_save/disable level. */
+void lx_irqs_off_enter(void)
+{
+	ctx.irqs_off++;
+}
+
+/* Uncounts one local_irq_restore/enable level. */
+void lx_irqs_off_exit(void)
+{
+	if (ctx.irqs_off > 0)
+		ctx.irqs_off--;
+}
+
+/* True in interrupt context (ISRs, handlers, timer callbacks). */
+bool lx_in_interrupt(void)
+{
+	return sns_ctx() || ctx.irq_depth > 0 || ctx.hrtimer_cb > 0 || ctx.timer_cb > 0;
+}
+
+/* True if the calling code must not sleep. */
+bool lx_in_atomic(void)
+{
+	return lx_in_interrupt() || lx_preempt_count() > 0 || lx_irqs_disabled() || sns_dsp();
+}
+
+/* True with interrupts disabled by linux_compat or by the CPU lock. */
+bool lx_irqs_disabled(void)
+{
+	return ctx.irqs_off > 0 || sns_loc();
+}
+
+/* Appends ", text" (or just text if buf is empty) to buf, bounded. */
+static void append_reason(char *buf, unsigned int len, const char *text)
+{
+	size_t used = strlen(buf);
+
+	if (used + 1 >= len)
+		return;
+	snprintf(buf + used, len - used, "%s%s", used ? ", " : "", text);
+}
+
+/* Describes why the caller may not sleep; false (buf "task") if it may. */
+bool lx_context_forbids_sleep(char *buf, unsigned int len)
+{
+	char item[48];
+	unsigned int spin, atomic;
+
+	if (buf == NULL || len == 0)
+		return lx_in_atomic();
+	buf[0] = '\0';
+	if (ctx.hrtimer_cb > 0)
+		append_reason(buf, len, "hrtimer callback");
+	if (ctx.timer_cb > 0)
+		append_reason(buf, len, "timer callback");
+	if (ctx.irq_depth > 0) {
+		snprintf(item, sizeof(item), "hard IRQ %d", lx_current_irq());
+		append_reason(buf, len, item);
+	}
+	if (sns_ctx() && buf[0] == '\0') {
+#if defined(EV3LX_HOST)
+		snprintf(item, sizeof(item), "interrupt context (%s)", rtos_host_context_name());
+		append_reason(buf, len, item);
+#else
+		append_reason(buf, len, "interrupt context");
+#endif
+	}
+	spin = sns_ctx() ? ctx.isr_spin : ctx.task_spin;
+	atomic = lx_preempt_count();
+	if (spin > 0)
+		append_reason(buf, len, "spinlock held");
+	if (atomic > spin)
+		append_reason(buf, len, "preemption disabled");
+	if (ctx.irqs_off > 0)
+		append_reason(buf, len, "interrupts disabled");
+	else if (sns_loc())
+		append_reason(buf, len, "CPU locked");
+	if (buf[0] == '\0' && sns_dsp())
+		append_reason(buf, len, "dispatching disabled");
+	if (buf[0] == '\0') {
+		snprintf(buf, len, "task");
+		return false;
+	}
+	return true;
+}
+
+/* Reports a sleeping call from a context that may not sleep; true if sleeping is legal. */
+bool lx_might_sleep_check(const char *what, const char *file, int line)
+{
+	char why[128];
+
+	if (!lx_context_forbids_sleep(why, sizeof(why)))
+		return true;
+	lx_report("sleeping function called from invalid context", file, line,
+		  "%s in %s", what != NULL ? what : "?", why);
+	return false;
+}
