@@ -131,6 +131,7 @@ static const struct analog_burst analog_bursts[] = {
 #define DCM_CONNECT_MS		350	/* events stable this long: evaluate */
 #define DCM_DISCONNECT_MS	100	/* no events this long: device gone */
 #define DCM_REREAD_MS		20	/* second reading during evaluation */
+#define DCM_HOLD_PERIODS	3	/* an event counts while seen in this many periods */
 
 /* Input-port events. */
 #define DCM_IN_PIN2_LOW		BIT(0)	/* NXT device */
@@ -226,8 +227,8 @@ struct analog_port {
 	enum analog_dcm_state state;
 	unsigned int state_ms;		/* time spent in the state */
 	u8 events;			/* the events being stabilised */
+	u8 recent[DCM_HOLD_PERIODS - 1];	/* events of the previous periods, newest first */
 	unsigned int first_mv;		/* output: pin 5 before pulling pin 6 low */
-	bool pins_driven;		/* input: levels set through /dev/lms_dcm */
 };
 
 struct analog_spi_regs {
@@ -473,8 +474,71 @@ static void analog_dcm_enter(struct analog_port *p, enum analog_dcm_state state)
 	p->state_ms = 0;
 }
 
-/* Releases an input port's pins so that a newly attached device can show itself. */
-static void analog_input_float(unsigned int port)
+/* Starts detection on a port from scratch (its pins have just been floated). */
+static void analog_dcm_restart(struct analog_port *p)
+{
+	memset(p->recent, 0, sizeof(p->recent));
+	p->events = 0;
+	analog_dcm_enter(p, DCM_FLOATING);
+}
+
+enum analog_dcm_step {
+	DCM_STEP_WAIT,		/* nothing to do this period */
+	DCM_STEP_EVALUATE,	/* events held still for 350 ms: identify the device */
+	DCM_STEP_GONE,		/* no events for 100 ms: the device was unplugged */
+};
+
+/*
+ * Advances the timing both port kinds share by one DCM period, given the port's events
+ * now.  For connecting, an event counts while it was seen in any of the last
+ * DCM_HOLD_PERIODS periods: UART traffic and contact bounce toggle pins faster than the
+ * DCM samples, and a flickering set of events would never hold still for 350 ms.  A
+ * disconnect looks at the events as they are, so that it is seen within 100 ms.
+ */
+static enum analog_dcm_step analog_dcm_step(struct analog_port *p, u8 events)
+{
+	u8 held = events;
+	unsigned int i;
+
+	for (i = ARRAY_SIZE(p->recent); i > 0; i--) {
+		held |= p->recent[i - 1];
+		p->recent[i - 1] = i > 1 ? p->recent[i - 2] : events;
+	}
+
+	p->state_ms += DCM_PERIOD_MS;
+	switch (p->state) {
+	case DCM_FLOATING:
+		if (p->state_ms >= DCM_SETTLE_MS)
+			analog_dcm_enter(p, DCM_IDLE);
+		break;
+	case DCM_IDLE:
+		if (held) {
+			p->events = held;
+			analog_dcm_enter(p, DCM_STABILISING);
+		}
+		break;
+	case DCM_STABILISING:
+		if (held != p->events) {
+			p->events = held;
+			analog_dcm_enter(p, held ? DCM_STABILISING : DCM_IDLE);
+		} else if (p->state_ms >= DCM_CONNECT_MS) {
+			return DCM_STEP_EVALUATE;
+		}
+		break;
+	case DCM_CONNECTED:
+		if (events)
+			p->state_ms = 0;
+		else if (p->state_ms >= DCM_DISCONNECT_MS)
+			return DCM_STEP_GONE;
+		break;
+	default:
+		break;		/* evaluation re-reads: the port kind's own business */
+	}
+	return DCM_STEP_WAIT;
+}
+
+/* Releases an input port's pins: 9 V off, pins 2, 5 and 6 floating. */
+static void analog_input_release_pins(unsigned int port)
 {
 	const struct analog_input_pins *pins = &analog_input_pins[port];
 
@@ -482,8 +546,13 @@ static void analog_input_float(unsigned int port)
 	gpio_direction_input(pins->pin2);
 	gpio_direction_input(pins->pin5);
 	gpio_direction_input(pins->pin6);
-	analog.in[port].pins_driven = false;
-	analog_dcm_enter(&analog.in[port], DCM_FLOATING);
+}
+
+/* Floats an input port so that a newly attached device can show itself. */
+static void analog_input_float(unsigned int port)
+{
+	analog_input_release_pins(port);
+	analog_dcm_restart(&analog.in[port]);
 }
 
 /* Drives an input port's pins as a /dev/lms_dcm LMS_DCM_PINS() character asks. */
@@ -494,7 +563,6 @@ static void analog_input_drive(unsigned int port, unsigned int bits)
 	gpio_direction_output(pins->pin5, !!(bits & LMS_DCM_PIN5_HIGH));
 	gpio_direction_output(pins->pin6, !!(bits & LMS_DCM_PIN6_HIGH));
 	gpio_direction_output(pins->pin1_9v, !!(bits & LMS_DCM_PIN1_9V));
-	analog.in[port].pins_driven = true;
 }
 
 /* Current connection events of an input port. */
@@ -563,61 +631,38 @@ static void analog_input_evaluate(unsigned int port)
 	analog_input_connect(port, dev);
 }
 
-/* Advances the detection state machine of one input port by one DCM period. */
+/* Advances the detection of one input port by one DCM period. */
 static void analog_input_tick(unsigned int port)
 {
 	struct analog_port *p = &analog.in[port];
-	u8 events = analog_input_events(port);
 	unsigned int pin1;
 
-	p->state_ms += DCM_PERIOD_MS;
-	switch (p->state) {
-	case DCM_FLOATING:
-		if (p->state_ms >= DCM_SETTLE_MS)
-			analog_dcm_enter(p, DCM_IDLE);
+	switch (analog_dcm_step(p, analog_input_events(port))) {
+	case DCM_STEP_EVALUATE:
+		analog_input_evaluate(port);
 		break;
-	case DCM_IDLE:
-		if (events) {
-			p->events = events;
-			analog_dcm_enter(p, DCM_STABILISING);
-		}
+	case DCM_STEP_GONE:
+		analog_set_input(port, DEV_NONE);
+		analog_input_float(port);
 		break;
-	case DCM_STABILISING:
-		if (events != p->events) {
-			p->events = events;
-			analog_dcm_enter(p, events ? DCM_STABILISING : DCM_IDLE);
-		} else if (p->state_ms >= DCM_CONNECT_MS) {
-			analog_input_evaluate(port);
-		}
-		break;
-	case DCM_RECHECK:
-		if (p->state_ms >= DCM_REREAD_MS) {
+	case DCM_STEP_WAIT:
+		if (p->state == DCM_RECHECK && p->state_ms >= DCM_REREAD_MS) {
 			pin1 = analog_mv(port);
 			analog_input_connect(port, pin1 >= 850 && pin1 <= 950 ?
 					     DEV_NXT_TOUCH : DEV_NXT_SOUND);
 		}
 		break;
-	case DCM_CONNECTED:
-		if (events) {
-			p->state_ms = 0;
-		} else if (p->state_ms >= DCM_DISCONNECT_MS) {
-			analog_set_input(port, DEV_NONE);
-			analog_input_float(port);
-		}
-		break;
-	default:
-		break;
 	}
 }
 
-/* Releases an output port's detection pins: pin 5w low, pin 6 floating. */
+/* Floats an output port for detection: pin 5w low, pin 6 released to d_pwm's input. */
 static void analog_output_float(unsigned int port)
 {
 	const struct analog_output_pins *pins = &analog_output_pins[port];
 
 	gpio_direction_output(pins->pin5w, 0);
 	gpio_direction_input(pins->pin6);
-	analog_dcm_enter(&analog.out[port], DCM_FLOATING);
+	analog_dcm_restart(&analog.out[port]);
 }
 
 /* Latest voltage on an output port's pin 5 in mV. */
@@ -683,46 +728,32 @@ static void analog_output_evaluate(unsigned int port, unsigned int low_mv)
 	analog_output_connect(port, dev);
 }
 
-/* Advances the detection state machine of one output port by one DCM period. */
+/* Advances the detection of one output port by one DCM period. */
 static void analog_output_tick(unsigned int port)
 {
 	const struct analog_output_pins *pins = &analog_output_pins[port];
 	struct analog_port *p = &analog.out[port];
-	u8 events = analog_output_events(port);
 	unsigned int mv;
 
-	p->state_ms += DCM_PERIOD_MS;
-	switch (p->state) {
-	case DCM_FLOATING:
-		if (p->state_ms >= DCM_SETTLE_MS)
-			analog_dcm_enter(p, DCM_IDLE);
+	switch (analog_dcm_step(p, analog_output_events(port))) {
+	case DCM_STEP_EVALUATE:
+		p->first_mv = analog_output_pin5_mv(port);
+		gpio_direction_output(pins->pin6, 0);
+		analog_dcm_enter(p, DCM_PIN6_LOW);
 		break;
-	case DCM_IDLE:
-		if (events) {
-			p->events = events;
-			analog_dcm_enter(p, DCM_STABILISING);
-		}
+	case DCM_STEP_GONE:
+		analog_set_output(port, DEV_NONE);
+		analog_output_float(port);
 		break;
-	case DCM_STABILISING:
-		if (events != p->events) {
-			p->events = events;
-			analog_dcm_enter(p, events ? DCM_STABILISING : DCM_IDLE);
-		} else if (p->state_ms >= DCM_CONNECT_MS) {
-			p->first_mv = analog_output_pin5_mv(port);
-			gpio_direction_output(pins->pin6, 0);
-			analog_dcm_enter(p, DCM_PIN6_LOW);
-		}
-		break;
-	case DCM_PIN6_LOW:
-		if (p->state_ms >= DCM_REREAD_MS) {
+	case DCM_STEP_WAIT:
+		if (p->state_ms < DCM_REREAD_MS)
+			break;
+		if (p->state == DCM_PIN6_LOW) {
 			analog.shm->out_pin5_low[port] = analog.raw[ANALOG_INPUT_CHANNELS + port];
 			mv = analog_output_pin5_mv(port);
 			gpio_direction_input(pins->pin6);
 			analog_output_evaluate(port, mv);
-		}
-		break;
-	case DCM_PIN5_HIGH:
-		if (p->state_ms >= DCM_REREAD_MS) {
+		} else if (p->state == DCM_PIN5_HIGH) {
 			mv = analog_output_pin5_mv(port);
 			gpio_direction_output(pins->pin5w, 0);
 			if (mv < 1600)
@@ -732,16 +763,6 @@ static void analog_output_tick(unsigned int port)
 			else
 				analog_output_connect(port, DEV_TACHO);
 		}
-		break;
-	case DCM_CONNECTED:
-		if (events) {
-			p->state_ms = 0;
-		} else if (p->state_ms >= DCM_DISCONNECT_MS) {
-			analog_set_output(port, DEV_NONE);
-			analog_output_float(port);
-		}
-		break;
-	default:
 		break;
 	}
 }
@@ -916,10 +937,7 @@ static ssize_t dcm_write(struct file *file, const char __user *buf, size_t count
 		if (analog.in[port].state != DCM_CONNECTED || cmd[port] == LMS_DCM_KEEP)
 			continue;
 		if (cmd[port] == LMS_DCM_FLOAT) {
-			if (analog.in[port].pins_driven) {
-				analog_input_float(port);
-				analog_dcm_enter(&analog.in[port], DCM_CONNECTED);
-			}
+			analog_input_release_pins(port);
 		} else {
 			analog_input_drive(port, cmd[port] - '0');
 		}
