@@ -49,6 +49,14 @@ typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 #define TMIN_INTPRI  (-7)   /* highest interrupt priority */
 #define TMAX_INTPRI  (-1)   /* lowest interrupt priority */
 #define TIPM_ENAALL  0      /* interrupt priority mask: all enabled */
+#define TMIN_ISRPRI  1      /* first ISR on a line */
+#define TMAX_ISRPRI  16     /* last ISR on a line */
+
+/* ---- Limits ---- */
+#define TMAX_ACTCNT  1U           /* queued activations per task */
+#define TMAX_WUPCNT  1U           /* queued wakeups per task */
+#define TMAX_RELTIM  0x7fffffffU  /* largest relative time (ms) */
+#define TBIT_FLGPTN  ((uint_t)(sizeof(FLGPTN) * 8U))
 
 /* ---- Special IDs and values ---- */
 #define TSK_SELF     0

@@ -24,6 +24,10 @@
  * Returns E_OK, or the error of the first bad row after printing it. */
 ER rtos_host_boot(const struct rtos_cfg *cfg);
 
+/* Text of the last boot error ("config \"app\" CRE_TSK[2] \"worker\": ... (E_PAR)"),
+ * empty after a successful boot. */
+const char *rtos_host_boot_error(void);
+
 /* Ends the current boot: frees task stacks, forgets objects and events. */
 void rtos_host_shutdown(void);
 
@@ -63,6 +67,9 @@ void rtos_host_event_cancel(rtos_host_event_t ev);
 void rtos_host_irq_raise(INTNO intno);
 /* Sets a level-sensitive request; delivered (again) while asserted. */
 void rtos_host_irq_set_level(INTNO intno, bool asserted);
+/* The same at absolute virtual time t_ns (a device event; cancel with rtos_host_event_cancel). */
+rtos_host_event_t rtos_host_irq_raise_at(uint64_t t_ns, INTNO intno);
+rtos_host_event_t rtos_host_irq_set_level_at(uint64_t t_ns, INTNO intno, bool asserted);
 /* Forgets a latched edge that was not delivered yet. */
 void rtos_host_irq_clear(INTNO intno);
 bool rtos_host_irq_pending(INTNO intno);

@@ -1,0 +1,347 @@
+/*
+ * interrupt.c — interrupt lines (CFG_INT), ISRs (ATT_ISR) and delivery.
+ *
+ * A line is pending while an edge is latched or its level is asserted.  It is
+ * delivered when it is enabled, the CPU is not locked, no SIL lock is held,
+ * no device event or MMIO access is in progress, and its priority is higher
+ * (more negative) than the current interrupt priority.  Delivery is a nested
+ * function call on the current stack; on return from the outermost ISR in a
+ * task, the dispatcher runs.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "kernel_impl.h"
+
+/* Deliveries of one asserted level line at one virtual time before it is called a storm. */
+#define IRQ_STORM_LIMIT 10000U
+
+struct isr_entry {
+	ISR      isr;
+	intptr_t exinf;
+	PRI      isrpri;
+};
+
+struct irq_line {
+	bool     configured;
+	bool     enabled;
+	bool     edge;        /* latched edge not yet delivered */
+	bool     level;       /* level request asserted */
+	PRI      pri;
+	struct isr_entry *isrs;
+	uint_t   nisrs;
+	uint64_t storm_time;
+	uint_t   storm_count;
+};
+
+#define IRQ_WORDS ((TMAX_INTNO + 64U) / 64U)
+
+struct cpu_state cpu;
+static struct irq_line lines[TMAX_INTNO + 1];
+static uint64_t pending_bits[IRQ_WORDS];
+
+static void pend_update(INTNO n)
+{
+	uint64_t bit = 1ULL << (n % 64U);
+
+	if (lines[n].edge || lines[n].level)
+		pending_bits[n / 64U] |= bit;
+	else
+		pending_bits[n / 64U] &= ~bit;
+}
+
+static bool any_pending(void)
+{
+	for (uint_t w = 0; w < IRQ_WORDS; w++)
+		if (pending_bits[w])
+			return true;
+	return false;
+}
+
+/* The highest-priority pending line above the current priority, or -1. */
+static int pick_line(void)
+{
+	int best = -1;
+	PRI best_pri = cpu.ipm;
+
+	for (uint_t w = 0; w < IRQ_WORDS; w++) {
+		uint64_t bits = pending_bits[w];
+
+		while (bits) {
+			INTNO n = w * 64U + (INTNO)__builtin_ctzll(bits);
+
+			bits &= bits - 1;
+			if (lines[n].enabled && lines[n].pri < best_pri) {
+				best = (int)n;
+				best_pri = lines[n].pri;
+			}
+		}
+	}
+	return best;
+}
+
+/* Runs one handler body in non-task context kind; a CPU lock left behind is released. */
+void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exinf)
+{
+	enum exec_kind saved_kind = cpu.kind;
+	ID saved_id = cpu.exec_id;
+
+	cpu.kind = kind;
+	cpu.exec_id = id;
+	if (trace_on())
+		rtos_host_trace("kernel", "%s %d", kind == EXEC_CYC ? "cyclic" : "alarm", (int)id);
+	fn(exinf);
+	cpu.locked = false;
+	cpu.kind = saved_kind;
+	cpu.exec_id = saved_id;
+}
+
+static void irq_run(INTNO n)
+{
+	struct irq_line *l = &lines[n];
+	enum exec_kind saved_kind = cpu.kind;
+	ID saved_id = cpu.exec_id;
+	PRI saved_ipm = cpu.ipm;
+
+	if (l->level) {
+		if (l->storm_time == now_ns && ++l->storm_count > IRQ_STORM_LIMIT) {
+			l->enabled = false;
+			rtos_host_bug("irq storm", "line %u is level-asserted and was delivered %u times at "
+				      "the same virtual time (its ISR does not clear the source); line disabled",
+				      n, IRQ_STORM_LIMIT);
+			return;
+		}
+		if (l->storm_time != now_ns) {
+			l->storm_time = now_ns;
+			l->storm_count = 1;
+		}
+	}
+	l->edge = false;
+	pend_update(n);
+	cpu.kind = EXEC_ISR;
+	cpu.exec_id = (ID)n;
+	cpu.ipm = l->pri;
+	cpu.isr_depth++;
+	if (trace_on())
+		rtos_host_trace("kernel", "isr %u enter", n);
+	if (n == INTNO_TICK)
+		tick_handler();
+	for (uint_t i = 0; i < l->nisrs; i++) {
+		l->isrs[i].isr(l->isrs[i].exinf);
+		cpu.locked = false;   /* TOPPERS releases a CPU lock an ISR returns with */
+		cpu.kind = EXEC_ISR;
+		cpu.exec_id = (ID)n;
+	}
+	if (trace_on())
+		rtos_host_trace("kernel", "isr %u exit", n);
+	cpu.isr_depth--;
+	cpu.ipm = saved_ipm;
+	cpu.kind = saved_kind;
+	cpu.exec_id = saved_id;
+}
+
+/* True if some line could be delivered in the current CPU state. */
+bool irq_deliverable(void)
+{
+	return any_pending() && !cpu.locked && cpu.sil_lock == 0 && cpu.irq_defer == 0 &&
+	       pick_line() >= 0;
+}
+
+/* Delivers the pending interrupts the CPU accepts now, nested on the current stack. */
+void irq_dispatch_pending(void)
+{
+	int n;
+
+	if (!any_pending() || cpu.locked || cpu.sil_lock != 0 || cpu.irq_defer != 0 || paused_task != NULL)
+		return;
+	while ((n = pick_line()) >= 0) {
+		irq_run((INTNO)n);
+		if (cpu.locked || cpu.sil_lock != 0)
+			break;
+	}
+	if (cpu.isr_depth == 0)
+		dispatch_if_needed();
+}
+
+/* ---- Configuration (boot) ---- */
+
+/* Configures a line (CFG_INT row already checked). */
+ER irq_configure(INTNO intno, ATR intatr, PRI intpri)
+{
+	struct irq_line *l = &lines[intno];
+
+	l->configured = true;
+	l->pri = intpri;
+	l->enabled = (intatr & TA_ENAINT) != 0;
+	return E_OK;
+}
+
+/* True if the line has a CFG_INT. */
+bool irq_configured(INTNO intno)
+{
+	return intno <= TMAX_INTNO && lines[intno].configured;
+}
+
+/* Attaches an ISR (row already checked), keeping the line's ISRs in isrpri order. */
+ER irq_attach(const struct rtos_isr_cfg *isr)
+{
+	struct irq_line *l = &lines[isr->intno];
+	struct isr_entry *n = realloc(l->isrs, (l->nisrs + 1) * sizeof(*n));
+	uint_t pos;
+
+	if (n == NULL)
+		return E_NOMEM;
+	l->isrs = n;
+	for (pos = l->nisrs; pos > 0 && l->isrs[pos - 1].isrpri > isr->isrpri; pos--)
+		l->isrs[pos] = l->isrs[pos - 1];
+	l->isrs[pos].isr = isr->isr;
+	l->isrs[pos].exinf = isr->exinf;
+	l->isrs[pos].isrpri = isr->isrpri;
+	l->nisrs++;
+	if (isr->intno == INTNO_TICK)
+		tick_set_every(true);
+	return E_OK;
+}
+
+/* Forgets every line and the CPU state (boot/shutdown). */
+void irq_reset(void)
+{
+	for (INTNO n = 0; n <= TMAX_INTNO; n++)
+		free(lines[n].isrs);
+	memset(lines, 0, sizeof(lines));
+	memset(pending_bits, 0, sizeof(pending_bits));
+	memset(&cpu, 0, sizeof(cpu));
+	cpu.kind = EXEC_IDLE;
+}
+
+/* ---- Service calls ---- */
+
+static ER line_check(INTNO intno)
+{
+	if (intno > TMAX_INTNO)
+		return E_PAR;
+	if (!lines[intno].configured)
+		return E_OBJ;
+	return E_OK;
+}
+
+/* Masks one interrupt line (any context, CPU unlocked). */
+ER dis_int(INTNO intno)
+{
+	ER ercd;
+
+	if (cpu.locked)
+		return svc_result("dis_int", E_CTX);
+	if ((ercd = line_check(intno)) != E_OK)
+		return svc_result("dis_int", ercd);
+	lines[intno].enabled = false;
+	return E_OK;
+}
+
+/* Unmasks one interrupt line; a pending request above the current priority is taken now. */
+ER ena_int(INTNO intno)
+{
+	ER ercd;
+
+	if (cpu.locked)
+		return svc_result("ena_int", E_CTX);
+	if ((ercd = line_check(intno)) != E_OK)
+		return svc_result("ena_int", ercd);
+	lines[intno].enabled = true;
+	irq_dispatch_pending();
+	return E_OK;
+}
+
+/* ---- Harness side: the hardware's interrupt requests ---- */
+
+static bool harness_line_ok(const char *fn, INTNO intno)
+{
+	if (intno > TMAX_INTNO) {
+		rtos_host_bug("irq", "%s: interrupt number %u out of range 0..%u", fn, intno, TMAX_INTNO);
+		return false;
+	}
+	return true;
+}
+
+/* Latches an edge on the line: delivered once, when enabled and unmasked. */
+void rtos_host_irq_raise(INTNO intno)
+{
+	if (!harness_line_ok("rtos_host_irq_raise", intno))
+		return;
+	lines[intno].edge = true;
+	pend_update(intno);
+	irq_dispatch_pending();
+}
+
+/* Sets a level-sensitive request; delivered (again) while asserted. */
+void rtos_host_irq_set_level(INTNO intno, bool asserted)
+{
+	if (!harness_line_ok("rtos_host_irq_set_level", intno))
+		return;
+	lines[intno].level = asserted;
+	pend_update(intno);
+	if (asserted)
+		irq_dispatch_pending();
+}
+
+/* Device event: arg encodes the line and the change (0 edge, 1 level low, 2 level high). */
+static void irq_change_event(void *arg)
+{
+	uintptr_t v = (uintptr_t)arg;
+	INTNO intno = (INTNO)(v >> 2);
+
+	if ((v & 3U) == 0)
+		rtos_host_irq_raise(intno);
+	else
+		rtos_host_irq_set_level(intno, (v & 3U) == 2);
+}
+
+/* Latches an edge on the line at absolute virtual time t_ns. */
+rtos_host_event_t rtos_host_irq_raise_at(uint64_t t_ns, INTNO intno)
+{
+	if (!harness_line_ok("rtos_host_irq_raise_at", intno))
+		return 0;
+	return rtos_host_event_at(t_ns, irq_change_event, (void *)((uintptr_t)intno << 2));
+}
+
+/* Sets or clears a level request at absolute virtual time t_ns. */
+rtos_host_event_t rtos_host_irq_set_level_at(uint64_t t_ns, INTNO intno, bool asserted)
+{
+	if (!harness_line_ok("rtos_host_irq_set_level_at", intno))
+		return 0;
+	return rtos_host_event_at(t_ns, irq_change_event,
+				  (void *)(((uintptr_t)intno << 2) | (asserted ? 2U : 1U)));
+}
+
+/* Forgets a latched edge that was not delivered yet. */
+void rtos_host_irq_clear(INTNO intno)
+{
+	if (!harness_line_ok("rtos_host_irq_clear", intno))
+		return;
+	lines[intno].edge = false;
+	pend_update(intno);
+}
+
+/* True while an edge is latched or the level asserted. */
+bool rtos_host_irq_pending(INTNO intno)
+{
+	return intno <= TMAX_INTNO && (lines[intno].edge || lines[intno].level);
+}
+
+/* True if the line is configured and enabled. */
+bool rtos_host_irq_enabled(INTNO intno)
+{
+	return intno <= TMAX_INTNO && lines[intno].configured && lines[intno].enabled;
+}
+
+/* CFG_INT priority of the line, 0 if unconfigured. */
+PRI rtos_host_irq_priority(INTNO intno)
+{
+	return irq_configured(intno) ? lines[intno].pri : 0;
+}
+
+/* Interrupt nesting depth of the running code. */
+uint_t rtos_host_irq_depth(void)
+{
+	return cpu.isr_depth;
+}

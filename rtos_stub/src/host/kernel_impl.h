@@ -1,0 +1,295 @@
+/*
+ * kernel_impl.h — state and helpers shared by the areas of the host kernel
+ * (the .c files of rtos_stub/src/host).  Private to the kernel: nothing outside
+ * rtos_stub/src/host includes it.
+ *
+ * Model (docs/rtos-stub.md): one CPU; tasks are coroutines on the OS thread;
+ * the harness (rtos_host_run_*) runs on the thread's own stack and is the
+ * idle context; interrupts run nested on whatever stack is current.  Nothing
+ * here is thread-safe: the whole kernel runs on one OS thread.
+ */
+#ifndef RTOS_HOST_KERNEL_IMPL_H
+#define RTOS_HOST_KERNEL_IMPL_H
+
+#include <setjmp.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "kernel.h"
+#include "rtos_cfg.h"
+#include "rtos_host.h"
+
+/* ---- Doubly-linked circular queues (ready queues, wait queues) ---- */
+
+struct queue {
+	struct queue *next;
+	struct queue *prev;
+};
+
+/* Makes q an empty queue head. */
+static inline void queue_init(struct queue *q)
+{
+	q->next = q;
+	q->prev = q;
+}
+
+/* True if the queue head has no entries. */
+static inline bool queue_empty(const struct queue *q)
+{
+	return q->next == q;
+}
+
+/* Inserts entry just before pos (at the tail when pos is the head). */
+static inline void queue_insert_before(struct queue *pos, struct queue *entry)
+{
+	entry->prev = pos->prev;
+	entry->next = pos;
+	pos->prev->next = entry;
+	pos->prev = entry;
+}
+
+/* Removes entry from whatever queue holds it; it becomes a lone node. */
+static inline void queue_remove(struct queue *entry)
+{
+	entry->prev->next = entry->next;
+	entry->next->prev = entry->prev;
+	entry->next = entry;
+	entry->prev = entry;
+}
+
+#define container_of_kernel(ptr, type, member) \
+	((type *)(void *)((char *)(ptr) - offsetof(type, member)))
+
+/* ---- Execution contexts ---- */
+
+enum exec_kind {
+	EXEC_IDLE,   /* the harness on the OS thread's stack: non-task context */
+	EXEC_TASK,
+	EXEC_ISR,
+	EXEC_CYC,
+	EXEC_ALM,
+	EXEC_INIT,   /* ATT_INI routines at boot */
+	EXEC_EVENT,  /* a device event (the hardware side), non-task context */
+};
+
+/* The CPU: what runs now and what it masks. */
+struct cpu_state {
+	enum exec_kind kind;
+	ID       exec_id;        /* task, interrupt, cyclic or alarm ID */
+	PRI      ipm;            /* current interrupt priority: 0 in task/idle, line priority in an ISR */
+	uint_t   isr_depth;      /* nesting of interrupts (and time-event handlers) */
+	bool     locked;         /* CPU lock (loc_cpu/iloc_cpu) */
+	bool     dsp_disabled;   /* dis_dsp */
+	uint_t   sil_lock;       /* SIL_LOC_INT nesting */
+	uint_t   irq_defer;      /* >0 while a device event or MMIO access is in progress */
+};
+extern struct cpu_state cpu;
+
+/* ---- Coroutines ---- */
+
+struct coroutine {
+	jmp_buf  jb;             /* where a suspended coroutine resumes */
+	jmp_buf  start_jb;       /* the entry point, kept for restarts */
+	void    *map_base;       /* mmap'ed region including the guard page */
+	size_t   map_size;
+	void    *stack_lo;       /* usable stack [stack_lo, stack_lo + stack_size) */
+	size_t   stack_size;
+	void    *fake_stack;     /* ASan fake stack saved while suspended */
+	void   (*entry)(void);   /* what a (re)started coroutine runs */
+	bool     restart;        /* next switch enters at start_jb */
+};
+extern struct coroutine harness_co;   /* the OS thread's own stack: the harness and idle */
+
+/* Creates a coroutine with a stack of stack_size bytes entering entry(); false on ENOMEM. */
+bool co_create(struct coroutine *co, size_t stack_size, void (*entry)(void));
+/* Frees the coroutine's stack. */
+void co_destroy(struct coroutine *co);
+/* Suspends from and resumes to; from_dying: from never resumes at jb again. */
+void co_switch(struct coroutine *from, struct coroutine *to, bool from_dying);
+
+/* ---- Tasks ---- */
+
+enum wait_kind { WAIT_NONE, WAIT_SLP, WAIT_DLY, WAIT_SEM, WAIT_FLG };
+
+/* A time event: fires in the tick handler when the tick count reaches tick. */
+struct tmevt {
+	uint64_t tick;
+	uint64_t seq;
+	uint_t   heap_index;     /* UINT32_MAX when not queued */
+	void   (*callback)(struct tmevt *ev);
+};
+
+struct tcb {
+	struct queue node;               /* ready queue or wait queue */
+	const struct rtos_task_cfg *cfg;
+	const char *cfg_name;            /* configuration that declared it */
+	ID       id;
+	STAT     state;                  /* TTS_DMT, TTS_RDY (includes running), TTS_WAI */
+	PRI      bpri;                   /* base priority = current (no mutexes) */
+	uint_t   actcnt;
+	uint_t   wupcnt;
+	enum wait_kind wait;
+	ID       wobjid;
+	struct queue *wait_queue;        /* queue the task waits in, or NULL */
+	ER       wercd;
+	FLGPTN   waiptn;
+	MODE     wfmode;
+	FLGPTN   flgptn;                 /* pattern at release */
+	struct tmevt tmevt;
+	struct coroutine co;
+};
+
+extern struct tcb *tcb_table[TNUM_TSKID + 1];   /* NULL: not configured */
+extern struct tcb *runtsk;     /* the task the CPU runs (NULL in idle) */
+extern struct tcb *schedtsk;   /* the highest-priority ready task (NULL: none) */
+
+/* Marks t ready at the tail of its priority queue. */
+void ready_insert_tail(struct tcb *t);
+/* Removes t from the ready queue. */
+void ready_remove(struct tcb *t);
+/* Moves the first ready task of pri to the tail of its priority. */
+void ready_rotate(PRI pri);
+/* Recomputes schedtsk from the ready queues. */
+void update_schedtsk(void);
+/* Switches tasks if the current task context may and should be preempted. */
+void dispatch_if_needed(void);
+/* From a task: switch to schedtsk (or to idle); returns when this task runs again. */
+void task_switch(void);
+/* Makes a dormant task ready from its start (activation). */
+void task_activate(struct tcb *t);
+/* Puts runtsk to wait; returns the release code (E_OK, E_TMOUT, E_RLWAI...). */
+ER wait_block(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO tmout);
+/* Releases a waiting task with ercd; it becomes ready (no dispatch here). */
+void wait_release(struct tcb *t, ER ercd);
+/* Reinserts a waiting task after a priority change (priority-ordered queues). */
+void wait_requeue(struct tcb *t, bool tpri);
+/* Resolves TSK_SELF; NULL and *ercd set on failure. */
+struct tcb *task_lookup(ID tskid, bool self_ok, ER *ercd);
+/* Checks a task-supplied output pointer: E_OK, or E_MACV. */
+ER check_out_ptr(const void *p, SIZE size);
+/* Task control blocks: create/destroy at boot/shutdown. */
+ER task_create_all(void);
+void task_destroy_all(void);
+
+/* ---- Semaphores and eventflags ---- */
+struct semcb {
+	const struct rtos_sem_cfg *cfg;
+	uint_t cnt;
+	struct queue wq;
+};
+extern struct semcb *sem_table[TNUM_SEMID + 1];
+
+struct flgcb {
+	const struct rtos_flg_cfg *cfg;
+	FLGPTN ptn;
+	struct queue wq;
+};
+extern struct flgcb *flg_table[TNUM_FLGID + 1];
+
+/* ---- Time ---- */
+extern uint64_t now_ns;        /* the virtual clock */
+extern uint64_t tick_done;     /* last tick index processed by the tick handler */
+
+/* Tick index of a relative time of ms from now (at least ms later, after tick_done). */
+uint64_t tick_after_ms(RELTIM ms);
+void tmevt_enqueue(struct tmevt *ev, uint64_t tick);
+void tmevt_dequeue(struct tmevt *ev);
+static inline bool tmevt_queued(const struct tmevt *ev)
+{
+	return ev->heap_index != UINT32_MAX;
+}
+/* The kernel's part of the tick interrupt: processes due time events. */
+void tick_handler(void);
+/* Decides whether the tick must run on every boundary (ISRs on INTNO_TICK). */
+void tick_set_every(bool every);
+void time_reset(void);
+void time_start(void);
+
+/* ---- Events (the device-event heap) ---- */
+void event_reset(void);
+uint64_t event_next_time(void);          /* UINT64_MAX if none */
+/* Pops and runs the earliest event; now_ns must already be its time. */
+void event_run_next(void);
+/* Number of scheduled non-kernel events. */
+uint_t event_user_count(void);
+/* Schedules a kernel-internal event (does not count as device work). */
+rtos_host_event_t event_at_kernel(uint64_t t_ns, rtos_host_event_fn fn, void *arg);
+
+/* ---- Interrupts ---- */
+void irq_reset(void);
+/* Delivers pending interrupts the CPU accepts now (nested on the current stack). */
+void irq_dispatch_pending(void);
+/* True if some line could be delivered in the current CPU state. */
+bool irq_deliverable(void);
+ER   irq_configure(INTNO intno, ATR intatr, PRI intpri);
+ER   irq_attach(const struct rtos_isr_cfg *isr);
+bool irq_configured(INTNO intno);
+/* Runs fn(arg) as a non-task handler of the given kind (cyclic, alarm) at the current ipm. */
+void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exinf);
+
+/* ---- Harness run state ---- */
+extern bool run_active;        /* inside rtos_host_run_* */
+extern uint64_t run_deadline;
+extern bool kernel_booted;
+extern struct tcb *paused_task;   /* a task stopped at the run deadline inside rtos_host_consume */
+/* Enters the harness from a task paused at the run deadline mid-consume. */
+void pause_to_harness(void);
+
+/* ---- Cyclic and alarm handlers, service calls, memory regions ---- */
+ER   cyc_register(const struct rtos_cyc_cfg *cfg);
+ER   alm_register(const struct rtos_alm_cfg *cfg);
+bool cyc_exists(ID cycid);
+bool alm_exists(ID almid);
+ER   cyc_create_all(void);
+void cyc_reset(void);
+ER   svc_define(FN fncd, EXTSVC extsvc);
+bool svc_defined(FN fncd);
+void svc_reset(void);
+void mem_reset(void);
+ER   mem_add_region(const struct rtos_mem_cfg *mem);
+
+/* ---- Trace, syslog, bugs ---- */
+extern rtos_host_trace_sink trace_sink;
+static inline bool trace_on(void)
+{
+	return trace_sink != NULL;
+}
+/* Traces a failing service call and returns its code. */
+ER trace_svc_error(const char *svc, ER ercd);
+static inline ER svc_result(const char *svc, ER ercd)
+{
+	return (ercd < 0 && trace_sink != NULL) ? trace_svc_error(svc, ercd) : ercd;
+}
+void bug_reset(void);
+void syslog_reset(void);
+/* Name of an error code ("E_CTX"), or "E_?". */
+const char *ercd_name(ER ercd);
+
+/* ---- Context checks, TOPPERS shape ---- */
+static inline bool ctx_is_task(void)
+{
+	return cpu.kind == EXEC_TASK;
+}
+/* Task context and CPU unlocked (CHECK_TSKCTX_UNL). */
+static inline bool ctx_task_unlocked(void)
+{
+	return cpu.kind == EXEC_TASK && !cpu.locked;
+}
+/* Non-task context and CPU unlocked (CHECK_INTCTX_UNL). */
+static inline bool ctx_nontask_unlocked(void)
+{
+	return cpu.kind != EXEC_TASK && !cpu.locked;
+}
+/* A task that may block: task context, CPU unlocked, dispatching enabled (CHECK_DISPATCH). */
+static inline bool ctx_may_block(void)
+{
+	return cpu.kind == EXEC_TASK && !cpu.locked && !cpu.dsp_disabled;
+}
+/* Valid timeout value (CHECK_TMOUT). */
+static inline bool tmout_valid(TMO tmout)
+{
+	return tmout >= TMO_FEVR;
+}
+
+#endif /* RTOS_HOST_KERNEL_IMPL_H */

@@ -1,0 +1,164 @@
+/*
+ * run.c — the harness main loop and CPU-time consumption.
+ *
+ * The harness runs on the OS thread's own stack, which is also the idle
+ * context: when a task is ready it switches to the highest-priority one;
+ * otherwise it advances virtual time to the next event and processes it.
+ * Nothing is stepped per nanosecond.
+ */
+#include "kernel_impl.h"
+
+bool run_active;
+uint64_t run_deadline;
+struct tcb *paused_task;
+
+/* From the harness: runs the highest-priority ready task until the CPU is idle again. */
+static void harness_dispatch(void)
+{
+	struct tcb *to = schedtsk;
+
+	runtsk = to;
+	cpu.kind = EXEC_TASK;
+	cpu.exec_id = to->id;
+	if (trace_on())
+		rtos_host_trace("kernel", "dispatch %s", to->cfg->name ? to->cfg->name : "?");
+	co_switch(&harness_co, &to->co, false);
+}
+
+/* From the harness: resumes the task paused at the previous run deadline. */
+static void harness_resume(void)
+{
+	struct tcb *t = paused_task;
+
+	paused_task = NULL;
+	runtsk = t;
+	cpu.kind = EXEC_TASK;
+	cpu.exec_id = t->id;
+	co_switch(&harness_co, &t->co, false);
+}
+
+/* From a task inside rtos_host_consume: hands the CPU to the harness at the run deadline. */
+void pause_to_harness(void)
+{
+	struct tcb *t = runtsk;
+
+	paused_task = t;
+	runtsk = NULL;
+	cpu.kind = EXEC_IDLE;
+	cpu.exec_id = 0;
+	co_switch(&t->co, &harness_co, false);
+}
+
+static bool idle_reached(void)
+{
+	return schedtsk == NULL && paused_task == NULL && event_user_count() == 0 && !irq_deliverable();
+}
+
+static bool harness_may_run(const char *fn)
+{
+	if (!kernel_booted) {
+		rtos_host_bug("harness", "%s before rtos_host_boot", fn);
+		return false;
+	}
+	if (run_active || cpu.kind != EXEC_IDLE || cpu.isr_depth != 0) {
+		rtos_host_bug("harness", "%s called from inside the kernel (%s)", fn, rtos_host_context_name());
+		return false;
+	}
+	return true;
+}
+
+/* Runs tasks, events and interrupts up to virtual time t; true if stopped at idle. */
+static bool run_loop(uint64_t t, bool until_idle)
+{
+	bool idle = false;
+
+	run_active = true;
+	run_deadline = t;
+	for (;;) {
+		uint64_t next;
+
+		if (paused_task != NULL) {
+			if (now_ns >= t)
+				break;
+			harness_resume();
+			continue;
+		}
+		irq_dispatch_pending();
+		if (schedtsk != NULL) {
+			harness_dispatch();
+			continue;
+		}
+		if (until_idle && idle_reached()) {
+			idle = true;
+			break;
+		}
+		next = event_next_time();
+		if (next > t) {
+			if (now_ns < t)
+				now_ns = t;
+			break;
+		}
+		now_ns = next;
+		event_run_next();
+	}
+	run_active = false;
+	return idle;
+}
+
+/* Runs the system until virtual time now + ns. */
+void rtos_host_run_for(uint64_t ns)
+{
+	if (harness_may_run("rtos_host_run_for"))
+		run_loop(ns > UINT64_MAX - now_ns ? UINT64_MAX : now_ns + ns, false);
+}
+
+/* Runs the system until absolute virtual time t_ns. */
+void rtos_host_run_until(uint64_t t_ns)
+{
+	if (harness_may_run("rtos_host_run_until"))
+		run_loop(t_ns, false);
+}
+
+/* Runs until no task is ready and no device event is pending, or for at most max_ns. */
+bool rtos_host_run_until_idle(uint64_t max_ns)
+{
+	if (!harness_may_run("rtos_host_run_until_idle"))
+		return false;
+	return run_loop(max_ns > UINT64_MAX - now_ns ? UINT64_MAX : now_ns + max_ns, true);
+}
+
+/* The calling context is busy for ns of virtual CPU time; events fire meanwhile. */
+void rtos_host_consume(uint64_t ns)
+{
+	uint64_t remaining = ns;
+	bool task_level;
+
+	if (!kernel_booted) {
+		rtos_host_bug("consume", "rtos_host_consume before rtos_host_boot");
+		return;
+	}
+	task_level = cpu.kind == EXEC_TASK && cpu.isr_depth == 0;
+	while (remaining > 0) {
+		uint64_t limit, next;
+
+		if (task_level) {
+			irq_dispatch_pending();
+			dispatch_if_needed();
+		}
+		limit = remaining > UINT64_MAX - now_ns ? UINT64_MAX : now_ns + remaining;
+		/* Only a task can be suspended: ISRs and the harness share the thread's stack. */
+		if (task_level && run_active && run_deadline < limit)
+			limit = run_deadline > now_ns ? run_deadline : now_ns;
+		next = event_next_time();
+		if (next <= limit) {
+			remaining -= next - now_ns;
+			now_ns = next;
+			event_run_next();
+			continue;
+		}
+		remaining -= limit - now_ns;
+		now_ns = limit;
+		if (remaining > 0)
+			pause_to_harness();
+	}
+}

@@ -1,0 +1,113 @@
+/*
+ * sil_host.c — the host System Interface Layer: the all-interrupt lock,
+ * register accesses routed to the installed MMIO handler, and busy delays
+ * that spend virtual CPU time.
+ */
+#include "sil.h"
+#include "kernel_impl.h"
+
+static const struct rtos_host_mmio_ops *mmio_ops;
+
+/* Masks all interrupts (nesting-safe); returns the previous lock depth. */
+uint_t sil_host_loc_int(void)
+{
+	return cpu.sil_lock++;
+}
+
+/* Restores the lock depth sil_host_loc_int returned; pending interrupts run at depth 0. */
+void sil_host_unl_int(uint_t saved)
+{
+	cpu.sil_lock = saved;
+	if (saved == 0)
+		irq_dispatch_pending();
+}
+
+static bool width_ok(const char *fn, const volatile void *mem, uint_t width)
+{
+	if (width != 1U && width != 2U && width != 4U) {
+		rtos_host_bug("sil", "%s: access width %u (only 1, 2, 4)", fn, width);
+		return false;
+	}
+	if (((uintptr_t)mem & (width - 1U)) != 0) {
+		rtos_host_bug("sil", "%s: misaligned %u-byte register access (ARM926 would rotate the data)",
+			      fn, width);
+		return false;
+	}
+	return true;
+}
+
+/* Reads a register of exact width: from the MMIO handler if it claims the address, else memory. */
+uint32_t sil_host_read(const volatile void *mem, uint_t width)
+{
+	const struct rtos_host_mmio_ops *ops = mmio_ops;
+	uint32_t v;
+
+	if (!width_ok("sil_host_read", mem, width))
+		return 0;
+	if (ops != NULL && ops->claims(mem, ops->ctx)) {
+		cpu.irq_defer++;
+		v = ops->read(mem, width, ops->ctx);
+		cpu.irq_defer--;
+		irq_dispatch_pending();
+		return v;
+	}
+	switch (width) {
+	case 1:
+		return *(const volatile uint8_t *)mem;
+	case 2:
+		return *(const volatile uint16_t *)mem;
+	default:
+		return *(const volatile uint32_t *)mem;
+	}
+}
+
+/* Writes a register of exact width: to the MMIO handler if it claims the address, else memory. */
+void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
+{
+	const struct rtos_host_mmio_ops *ops = mmio_ops;
+
+	if (!width_ok("sil_host_write", mem, width))
+		return;
+	if (ops != NULL && ops->claims(mem, ops->ctx)) {
+		cpu.irq_defer++;
+		ops->write(mem, width, data, ops->ctx);
+		cpu.irq_defer--;
+		irq_dispatch_pending();
+		return;
+	}
+	switch (width) {
+	case 1:
+		*(volatile uint8_t *)mem = (uint8_t)data;
+		break;
+	case 2:
+		*(volatile uint16_t *)mem = (uint16_t)data;
+		break;
+	default:
+		*(volatile uint32_t *)mem = data;
+		break;
+	}
+}
+
+/* Installs the MMIO handler (NULL: plain memory, no device windows). */
+void rtos_host_set_mmio_handler(const struct rtos_host_mmio_ops *ops)
+{
+	if (ops != NULL && (ops->claims == NULL || ops->read == NULL || ops->write == NULL)) {
+		rtos_host_bug("sil", "rtos_host_set_mmio_handler: claims, read and write are required");
+		return;
+	}
+	mmio_ops = ops;
+}
+
+/* The handler's window for [phys, phys+size), or NULL if none is modelled. */
+void *rtos_host_map_io(uintptr_t phys, SIZE size)
+{
+	if (mmio_ops == NULL || mmio_ops->map == NULL)
+		return NULL;
+	return mmio_ops->map(phys, size, mmio_ops->ctx);
+}
+
+/* Busy-waits dlytim ns: the calling context spends that much virtual CPU time. */
+void sil_dly_nse(ulong_t dlytim)
+{
+	rtos_host_consume(dlytim);
+}

@@ -1,0 +1,564 @@
+/*
+ * task.c — tasks: ready queues, dispatch, waiting, and the task management
+ * and task-dependent synchronisation service calls.
+ *
+ * As in TOPPERS, the running task stays in the ready queue (at the head of
+ * its priority); a preempted task therefore resumes before its peers.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "kernel_impl.h"
+
+/* Host frames (libc, sanitizers) are larger than the target's: never less than this. */
+#define HOST_MIN_STACK (256U * 1024U)
+
+struct tcb *tcb_table[TNUM_TSKID + 1];
+struct tcb *runtsk;
+struct tcb *schedtsk;
+
+static struct queue ready_queue[TMAX_TPRI + 1];   /* indexed by priority */
+static uint32_t ready_map;                        /* bit pri-1 set: queue not empty */
+
+static void wait_timeout(struct tmevt *ev);
+
+static void trace_task(const char *what, const struct tcb *t)
+{
+	if (trace_on())
+		rtos_host_trace("kernel", "%s %s", what, t->cfg->name ? t->cfg->name : "?");
+}
+
+/* Recomputes schedtsk from the ready queues. */
+void update_schedtsk(void)
+{
+	if (ready_map == 0) {
+		schedtsk = NULL;
+		return;
+	}
+	schedtsk = container_of_kernel(ready_queue[__builtin_ctz(ready_map) + 1].next, struct tcb, node);
+}
+
+/* Marks t ready at the tail of its priority queue. */
+void ready_insert_tail(struct tcb *t)
+{
+	queue_insert_before(&ready_queue[t->bpri], &t->node);
+	ready_map |= 1U << (t->bpri - 1);
+	if (schedtsk == NULL || t->bpri < schedtsk->bpri)
+		schedtsk = t;
+}
+
+/* Removes t from the ready queue. */
+void ready_remove(struct tcb *t)
+{
+	queue_remove(&t->node);
+	if (queue_empty(&ready_queue[t->bpri]))
+		ready_map &= ~(1U << (t->bpri - 1));
+	if (t == schedtsk)
+		update_schedtsk();
+}
+
+/* Moves the first ready task of pri to the tail of its priority. */
+void ready_rotate(PRI pri)
+{
+	struct queue *q = &ready_queue[pri];
+	struct queue *first = q->next;
+
+	if (queue_empty(q) || first->next == q)
+		return;
+	queue_remove(first);
+	queue_insert_before(q, first);
+	update_schedtsk();
+}
+
+/* Leaves the running task for schedtsk (or idle); returns when it runs again. */
+static void switch_from_task(bool dying)
+{
+	struct tcb *from = runtsk;
+	struct tcb *to = schedtsk;
+	struct coroutine *to_co;
+
+	if (to == from && !dying)
+		return;
+	if (to != NULL) {
+		runtsk = to;
+		cpu.kind = EXEC_TASK;
+		cpu.exec_id = to->id;
+		to_co = &to->co;
+		trace_task("dispatch", to);
+	} else {
+		runtsk = NULL;
+		cpu.kind = EXEC_IDLE;
+		cpu.exec_id = 0;
+		to_co = &harness_co;
+		if (trace_on())
+			rtos_host_trace("kernel", "idle");
+	}
+	co_switch(&from->co, to_co, dying);
+	/* Running again: whoever switched here set runtsk and cpu.kind. */
+	irq_dispatch_pending();
+}
+
+/* From a task: switch to schedtsk (or to idle); returns when this task runs again. */
+void task_switch(void)
+{
+	switch_from_task(false);
+}
+
+/* Switches tasks if the current task context may and should be preempted. */
+void dispatch_if_needed(void)
+{
+	if (schedtsk != runtsk && cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && !cpu.locked &&
+	    !cpu.dsp_disabled && cpu.sil_lock == 0)
+		switch_from_task(false);
+}
+
+/* Ends the running task (ext_tsk or return from the task function). */
+__attribute__((noreturn)) static void task_exit_running(void)
+{
+	struct tcb *t = runtsk;
+
+	/* TOPPERS: ext_tsk releases the CPU lock and re-enables dispatching. */
+	cpu.locked = false;
+	cpu.dsp_disabled = false;
+	ready_remove(t);
+	t->state = TTS_DMT;
+	trace_task("exit", t);
+	if (t->actcnt > 0) {
+		t->actcnt--;
+		task_activate(t);
+	}
+	switch_from_task(true);
+	abort();
+}
+
+/* Coroutine entry of every task: runs the task function; returning = ext_tsk. */
+static void task_entry(void)
+{
+	struct tcb *t = runtsk;
+
+	irq_dispatch_pending();
+	t->cfg->task(t->cfg->exinf);
+	task_exit_running();
+}
+
+/* Makes a dormant task ready from its start (activation). */
+void task_activate(struct tcb *t)
+{
+	t->state = TTS_RDY;
+	t->bpri = t->cfg->itskpri;
+	t->wupcnt = 0;
+	t->wait = WAIT_NONE;
+	t->co.restart = true;
+	trace_task("activate", t);
+	ready_insert_tail(t);
+}
+
+/* Puts runtsk to wait; returns the release code (E_OK, E_TMOUT, E_RLWAI...). */
+ER wait_block(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO tmout)
+{
+	struct tcb *t = runtsk;
+
+	ready_remove(t);
+	t->state = TTS_WAI;
+	t->wait = kind;
+	t->wobjid = objid;
+	t->wercd = E_OK;
+	t->wait_queue = wq;
+	if (wq != NULL)
+		wait_requeue(t, tpri);
+	if (tmout != TMO_FEVR)
+		tmevt_enqueue(&t->tmevt, tick_after_ms((RELTIM)tmout));
+	trace_task("wait", t);
+	task_switch();
+	return t->wercd;
+}
+
+/* Inserts a waiting task into its wait queue (FIFO, or by priority after its peers). */
+void wait_requeue(struct tcb *t, bool tpri)
+{
+	struct queue *wq = t->wait_queue;
+	struct queue *pos = wq;
+
+	if (wq == NULL)
+		return;
+	if (t->node.next != &t->node)
+		queue_remove(&t->node);
+	if (tpri) {
+		for (pos = wq->next; pos != wq; pos = pos->next)
+			if (container_of_kernel(pos, struct tcb, node)->bpri > t->bpri)
+				break;
+	}
+	queue_insert_before(pos, &t->node);
+}
+
+/* Releases a waiting task with ercd; it becomes ready (the caller dispatches). */
+void wait_release(struct tcb *t, ER ercd)
+{
+	if (t->wait_queue != NULL) {
+		queue_remove(&t->node);
+		t->wait_queue = NULL;
+	}
+	if (tmevt_queued(&t->tmevt))
+		tmevt_dequeue(&t->tmevt);
+	t->wait = WAIT_NONE;
+	t->wercd = ercd;
+	t->state = TTS_RDY;
+	if (trace_on())
+		rtos_host_trace("kernel", "release %s %s", t->cfg->name ? t->cfg->name : "?",
+				ercd_name(ercd));
+	ready_insert_tail(t);
+}
+
+static void wait_timeout(struct tmevt *ev)
+{
+	struct tcb *t = container_of_kernel(ev, struct tcb, tmevt);
+
+	wait_release(t, t->wait == WAIT_DLY ? E_OK : E_TMOUT);
+}
+
+/* Resolves a task ID (TSK_SELF allowed if self_ok, in task context); NULL and *ercd on failure. */
+struct tcb *task_lookup(ID tskid, bool self_ok, ER *ercd)
+{
+	if (tskid == TSK_SELF && self_ok && cpu.kind == EXEC_TASK)
+		return runtsk;
+	if (tskid < 1 || tskid > TNUM_TSKID) {
+		*ercd = E_ID;
+		return NULL;
+	}
+	if (tcb_table[tskid] == NULL) {
+		*ercd = E_NOEXS;
+		return NULL;
+	}
+	return tcb_table[tskid];
+}
+
+/* Checks an output pointer from the caller: E_OK, or E_MACV (NULL, or outside its domain). */
+ER check_out_ptr(const void *p, SIZE size)
+{
+	if (p == NULL)
+		return E_MACV;
+	if (cpu.kind == EXEC_TASK && runtsk->cfg->domid != TDOM_KERNEL &&
+	    prb_mem(p, size, TSK_SELF, TPM_WRITE) != E_OK)
+		return E_MACV;
+	return E_OK;
+}
+
+/* Creates the control blocks and stacks of the configured tasks (rows already checked). */
+ER task_create_all(void)
+{
+	for (uint_t pri = 1; pri <= TMAX_TPRI; pri++)
+		queue_init(&ready_queue[pri]);
+	ready_map = 0;
+	runtsk = NULL;
+	schedtsk = NULL;
+	for (ID id = 1; id <= TNUM_TSKID; id++) {
+		struct tcb *t = tcb_table[id];
+		size_t size;
+
+		if (t == NULL)
+			continue;
+		size = t->cfg->stksz > HOST_MIN_STACK ? t->cfg->stksz : HOST_MIN_STACK;
+		queue_init(&t->node);
+		t->state = TTS_DMT;
+		t->bpri = t->cfg->itskpri;
+		t->tmevt.heap_index = UINT32_MAX;
+		t->tmevt.callback = wait_timeout;
+		if (!co_create(&t->co, size, task_entry))
+			return E_NOMEM;
+	}
+	return E_OK;
+}
+
+/* Frees every task control block and stack. */
+void task_destroy_all(void)
+{
+	for (ID id = 1; id <= TNUM_TSKID; id++) {
+		if (tcb_table[id] != NULL) {
+			co_destroy(&tcb_table[id]->co);
+			free(tcb_table[id]);
+			tcb_table[id] = NULL;
+		}
+	}
+	runtsk = NULL;
+	schedtsk = NULL;
+	ready_map = 0;
+}
+
+/* ---- Task management ---- */
+
+static ER activate_or_queue(struct tcb *t)
+{
+	if (t->state == TTS_DMT) {
+		task_activate(t);
+		return E_OK;
+	}
+	if (t->actcnt >= TMAX_ACTCNT)
+		return E_QOVR;
+	t->actcnt++;
+	return E_OK;
+}
+
+/* Activates a task, or queues one activation if it is not dormant. */
+ER act_tsk(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	if (!ctx_task_unlocked())
+		return svc_result("act_tsk", E_CTX);
+	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+		return svc_result("act_tsk", ercd);
+	ercd = activate_or_queue(t);
+	dispatch_if_needed();
+	return svc_result("act_tsk", ercd);
+}
+
+/* act_tsk from non-task context; the dispatch happens on return from the interrupt. */
+ER iact_tsk(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	if (!ctx_nontask_unlocked())
+		return svc_result("iact_tsk", E_CTX);
+	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
+		return svc_result("iact_tsk", ercd);
+	return svc_result("iact_tsk", activate_or_queue(t));
+}
+
+/* Cancels queued activations; returns how many there were. */
+ER_UINT can_act(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+	uint_t n;
+
+	if (!ctx_task_unlocked())
+		return svc_result("can_act", E_CTX);
+	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+		return svc_result("can_act", ercd);
+	n = t->actcnt;
+	t->actcnt = 0;
+	return (ER_UINT)n;
+}
+
+/* Ends the calling task; from non-task context it is a reported bug and returns. */
+void ext_tsk(void)
+{
+	if (cpu.kind != EXEC_TASK || cpu.isr_depth != 0) {
+		svc_result("ext_tsk", E_CTX);
+		rtos_host_bug("ext_tsk", "called from non-task context (E_CTX)");
+		return;
+	}
+	task_exit_running();
+}
+
+/* Changes a task's base priority; a ready task goes to the tail of its new priority. */
+ER chg_pri(ID tskid, PRI tskpri)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+	PRI newpri;
+
+	if (!ctx_task_unlocked())
+		return svc_result("chg_pri", E_CTX);
+	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+		return svc_result("chg_pri", ercd);
+	if (tskpri != TPRI_INI && (tskpri < TMIN_TPRI || tskpri > TMAX_TPRI))
+		return svc_result("chg_pri", E_PAR);
+	if (t->state == TTS_DMT)
+		return svc_result("chg_pri", E_OBJ);
+	newpri = tskpri == TPRI_INI ? t->cfg->itskpri : tskpri;
+	if (t->state == TTS_RDY) {
+		ready_remove(t);
+		t->bpri = newpri;
+		ready_insert_tail(t);
+	} else {
+		t->bpri = newpri;
+		if (t->wait == WAIT_SEM)
+			wait_requeue(t, (sem_table[t->wobjid]->cfg->sematr & TA_TPRI) != 0);
+		else if (t->wait == WAIT_FLG)
+			wait_requeue(t, (flg_table[t->wobjid]->cfg->flgatr & TA_TPRI) != 0);
+	}
+	dispatch_if_needed();
+	return E_OK;
+}
+
+/* Reads a task's current priority. */
+ER get_pri(ID tskid, PRI *p_tskpri)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	if (!ctx_task_unlocked())
+		return svc_result("get_pri", E_CTX);
+	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+		return svc_result("get_pri", ercd);
+	if (check_out_ptr(p_tskpri, sizeof(*p_tskpri)) != E_OK)
+		return svc_result("get_pri", E_MACV);
+	if (t->state == TTS_DMT)
+		return svc_result("get_pri", E_OBJ);
+	*p_tskpri = t->bpri;
+	return E_OK;
+}
+
+/* ID of the running task (task context). */
+ER get_tid(ID *p_tskid)
+{
+	if (cpu.kind != EXEC_TASK)
+		return svc_result("get_tid", E_CTX);
+	if (check_out_ptr(p_tskid, sizeof(*p_tskid)) != E_OK)
+		return svc_result("get_tid", E_MACV);
+	*p_tskid = runtsk->id;
+	return E_OK;
+}
+
+/* ID of the task the interrupt came on top of, TSK_NONE if the CPU was idle. */
+ER iget_tid(ID *p_tskid)
+{
+	if (cpu.kind == EXEC_TASK)
+		return svc_result("iget_tid", E_CTX);
+	if (p_tskid == NULL)
+		return svc_result("iget_tid", E_MACV);
+	*p_tskid = runtsk != NULL ? runtsk->id : TSK_NONE;
+	return E_OK;
+}
+
+/* ---- Task-dependent synchronisation ---- */
+
+/* Sleeps until woken (a queued wakeup is consumed at once). */
+ER slp_tsk(void)
+{
+	if (!ctx_may_block())
+		return svc_result("slp_tsk", E_CTX);
+	if (runtsk->wupcnt > 0) {
+		runtsk->wupcnt--;
+		return E_OK;
+	}
+	return svc_result("slp_tsk", wait_block(WAIT_SLP, 0, NULL, false, TMO_FEVR));
+}
+
+/* Sleeps until woken or tmout ms (E_TMOUT). */
+ER tslp_tsk(TMO tmout)
+{
+	struct tcb *t;
+
+	if (!ctx_may_block())
+		return svc_result("tslp_tsk", E_CTX);
+	if (!tmout_valid(tmout))
+		return svc_result("tslp_tsk", E_PAR);
+	t = runtsk;
+	if (t->wupcnt > 0) {
+		t->wupcnt--;
+		return E_OK;
+	}
+	if (tmout == TMO_POL)
+		return svc_result("tslp_tsk", E_TMOUT);
+	return svc_result("tslp_tsk", wait_block(WAIT_SLP, 0, NULL, false, tmout));
+}
+
+static ER wakeup(struct tcb *t)
+{
+	if (t->state == TTS_DMT)
+		return E_OBJ;
+	if (t->state == TTS_WAI && t->wait == WAIT_SLP) {
+		wait_release(t, E_OK);
+		return E_OK;
+	}
+	if (t->wupcnt >= TMAX_WUPCNT)
+		return E_QOVR;
+	t->wupcnt++;
+	return E_OK;
+}
+
+/* Wakes a sleeping task, or queues one wakeup. */
+ER wup_tsk(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	if (!ctx_task_unlocked())
+		return svc_result("wup_tsk", E_CTX);
+	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+		return svc_result("wup_tsk", ercd);
+	ercd = wakeup(t);
+	dispatch_if_needed();
+	return svc_result("wup_tsk", ercd);
+}
+
+/* wup_tsk from non-task context. */
+ER iwup_tsk(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	if (!ctx_nontask_unlocked())
+		return svc_result("iwup_tsk", E_CTX);
+	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
+		return svc_result("iwup_tsk", ercd);
+	return svc_result("iwup_tsk", wakeup(t));
+}
+
+/* Cancels queued wakeups; returns how many there were. */
+ER_UINT can_wup(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+	uint_t n;
+
+	if (!ctx_task_unlocked())
+		return svc_result("can_wup", E_CTX);
+	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+		return svc_result("can_wup", ercd);
+	if (t->state == TTS_DMT)
+		return svc_result("can_wup", E_OBJ);
+	n = t->wupcnt;
+	t->wupcnt = 0;
+	return (ER_UINT)n;
+}
+
+static ER release_wait(struct tcb *t)
+{
+	if (t->state != TTS_WAI)
+		return E_OBJ;
+	wait_release(t, E_RLWAI);
+	return E_OK;
+}
+
+/* Forces a waiting task out of its wait with E_RLWAI. */
+ER rel_wai(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	if (!ctx_task_unlocked())
+		return svc_result("rel_wai", E_CTX);
+	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
+		return svc_result("rel_wai", ercd);
+	ercd = release_wait(t);
+	dispatch_if_needed();
+	return svc_result("rel_wai", ercd);
+}
+
+/* rel_wai from non-task context. */
+ER irel_wai(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	if (!ctx_nontask_unlocked())
+		return svc_result("irel_wai", E_CTX);
+	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
+		return svc_result("irel_wai", ercd);
+	return svc_result("irel_wai", release_wait(t));
+}
+
+/* Delays the calling task for at least dlytim ms (rel_wai ends it early with E_RLWAI). */
+ER dly_tsk(RELTIM dlytim)
+{
+	if (!ctx_may_block())
+		return svc_result("dly_tsk", E_CTX);
+	if (dlytim > TMAX_RELTIM)
+		return svc_result("dly_tsk", E_PAR);
+	return svc_result("dly_tsk", wait_block(WAIT_DLY, 0, NULL, false, (TMO)dlytim));
+}

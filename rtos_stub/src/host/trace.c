@@ -1,0 +1,75 @@
+/*
+ * trace.c — the event trace: one text line per kernel event or layer
+ * record, "<ns> <source> <text>", with virtual time only (no pointers, no
+ * wall time), so identical inputs give byte-identical traces.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+
+#include "kernel_impl.h"
+
+rtos_host_trace_sink trace_sink;
+static void *trace_ctx;
+
+/* Installs the sink that receives every trace line (NULL: tracing off). */
+void rtos_host_trace_set_sink(rtos_host_trace_sink sink, void *ctx)
+{
+	trace_sink = sink;
+	trace_ctx = ctx;
+}
+
+/* Records one line "<ns> <source> <text>" if a sink is installed. */
+void rtos_host_trace(const char *source, const char *fmt, ...)
+{
+	char line[512];
+	int n;
+	va_list ap;
+
+	if (trace_sink == NULL)
+		return;
+	n = snprintf(line, sizeof(line), "%llu %s ", (unsigned long long)now_ns, source);
+	if (n < 0 || (size_t)n >= sizeof(line))
+		n = 0;
+	va_start(ap, fmt);
+	vsnprintf(line + n, sizeof(line) - (size_t)n, fmt, ap);
+	va_end(ap);
+	trace_sink(line, trace_ctx);
+}
+
+/* Traces a failing service call and returns its code unchanged. */
+ER trace_svc_error(const char *svc, ER ercd)
+{
+	rtos_host_trace("kernel", "%s -> %s", svc, ercd_name(ercd));
+	return ercd;
+}
+
+/* Name of a TOPPERS main error code. */
+const char *ercd_name(ER ercd)
+{
+	switch (MERCD(ercd)) {
+	case E_OK: return "E_OK";
+	case E_SYS: return "E_SYS";
+	case E_NOSPT: return "E_NOSPT";
+	case E_RSFN: return "E_RSFN";
+	case E_RSATR: return "E_RSATR";
+	case E_PAR: return "E_PAR";
+	case E_ID: return "E_ID";
+	case E_CTX: return "E_CTX";
+	case E_MACV: return "E_MACV";
+	case E_OACV: return "E_OACV";
+	case E_ILUSE: return "E_ILUSE";
+	case E_NOMEM: return "E_NOMEM";
+	case E_NOID: return "E_NOID";
+	case E_NORES: return "E_NORES";
+	case E_OBJ: return "E_OBJ";
+	case E_NOEXS: return "E_NOEXS";
+	case E_QOVR: return "E_QOVR";
+	case E_RLWAI: return "E_RLWAI";
+	case E_TMOUT: return "E_TMOUT";
+	case E_DLT: return "E_DLT";
+	case E_CLS: return "E_CLS";
+	case E_WBLK: return "E_WBLK";
+	case E_BOVR: return "E_BOVR";
+	default: return "E_?";
+	}
+}
