@@ -173,23 +173,23 @@ static char *HwId = "03";
 module_param(HwId, charp, 0444);
 MODULE_PARM_DESC(HwId, "hardware variant, clamped to 2..4 like LEGO (pins: EP2 table)");
 
-#define DEFINE_PORT_PARAM(name, value, desc)	\
-	static int name = value;		\
-	module_param(name, int, 0444);		\
+#define PORT_PARAM(ctype, type, name, value, desc)	\
+	static ctype name = value;			\
+	module_param(name, type, 0444);			\
 	MODULE_PARM_DESC(name, desc)
 
-DEFINE_PORT_PARAM(port1_base, 0x01d0c000, "port 1 UART physical base (UART1), 0 = off");
-DEFINE_PORT_PARAM(port1_irq, 53, "port 1 UART interrupt");
-DEFINE_PORT_PARAM(port1_clock, 132000000, "port 1 UART module clock in Hz");
-DEFINE_PORT_PARAM(port2_base, 0x01c42000, "port 2 UART physical base (UART0), 0 = off");
-DEFINE_PORT_PARAM(port2_irq, 25, "port 2 UART interrupt");
-DEFINE_PORT_PARAM(port2_clock, 150000000, "port 2 UART module clock in Hz");
-DEFINE_PORT_PARAM(port3_base, 0, "port 3 16550-style UART base, 0 = off (PRU on the brick)");
-DEFINE_PORT_PARAM(port3_irq, 0, "port 3 UART interrupt");
-DEFINE_PORT_PARAM(port3_clock, 150000000, "port 3 UART module clock in Hz");
-DEFINE_PORT_PARAM(port4_base, 0, "port 4 16550-style UART base, 0 = off (PRU on the brick)");
-DEFINE_PORT_PARAM(port4_irq, 0, "port 4 UART interrupt");
-DEFINE_PORT_PARAM(port4_clock, 150000000, "port 4 UART module clock in Hz");
+PORT_PARAM(unsigned long, ulong, port1_base, 0x01d0c000, "port 1 UART base (UART1), 0 = off");
+PORT_PARAM(int, int, port1_irq, 53, "port 1 UART interrupt");
+PORT_PARAM(unsigned int, uint, port1_clock, 132000000, "port 1 UART module clock in Hz");
+PORT_PARAM(unsigned long, ulong, port2_base, 0x01c42000, "port 2 UART base (UART0), 0 = off");
+PORT_PARAM(int, int, port2_irq, 25, "port 2 UART interrupt");
+PORT_PARAM(unsigned int, uint, port2_clock, 150000000, "port 2 UART module clock in Hz");
+PORT_PARAM(unsigned long, ulong, port3_base, 0, "port 3 16550-style UART base, 0 = off");
+PORT_PARAM(int, int, port3_irq, 0, "port 3 UART interrupt");
+PORT_PARAM(unsigned int, uint, port3_clock, 150000000, "port 3 UART module clock in Hz");
+PORT_PARAM(unsigned long, ulong, port4_base, 0, "port 4 16550-style UART base, 0 = off");
+PORT_PARAM(int, int, port4_irq, 0, "port 4 UART interrupt");
+PORT_PARAM(unsigned int, uint, port4_clock, 150000000, "port 4 UART module clock in Hz");
 
 static int stale_ms = 250;
 module_param(stale_ms, int, 0444);
@@ -1330,7 +1330,8 @@ static void uart_hw_init(struct sensor_port *p)
 }
 
 /* Sets up port @index on the UART at @base, or leaves it off when @base is 0. */
-static int uart_port_init(struct sensor_port *p, unsigned int index, int base, int irq, int clock)
+static int uart_port_init(struct sensor_port *p, unsigned int index, unsigned long base, int irq,
+			  unsigned int clock)
 {
 	int ret;
 
@@ -1340,9 +1341,8 @@ static int uart_port_init(struct sensor_port *p, unsigned int index, int base, i
 	uart.shm->ext.port[index].data_mode = -1;
 	if (!base)
 		return 0;
-	if (base < 0 || irq <= 0 || clock < 16 * START_BAUD) {
-		pr_err("d_uart: port %u: bad base/irq/clock %#x/%d/%d\n",
-		       index + 1, base, irq, clock);
+	if (irq <= 0 || clock < 16 * START_BAUD) {
+		pr_err("d_uart: port %u: bad irq/clock %d/%u\n", index + 1, irq, clock);
 		return -EINVAL;
 	}
 	p->phys = base;
@@ -1450,9 +1450,13 @@ static void uart_check_layout(void)
 
 static int __init d_uart_init(void)
 {
-	const int base[LMS_UART_PORTS] = { port1_base, port2_base, port3_base, port4_base };
+	const unsigned long base[LMS_UART_PORTS] = {
+		port1_base, port2_base, port3_base, port4_base
+	};
 	const int irq[LMS_UART_PORTS] = { port1_irq, port2_irq, port3_irq, port4_irq };
-	const int clock[LMS_UART_PORTS] = { port1_clock, port2_clock, port3_clock, port4_clock };
+	const unsigned int clock[LMS_UART_PORTS] = {
+		port1_clock, port2_clock, port3_clock, port4_clock
+	};
 	unsigned int i;
 	int ret;
 
