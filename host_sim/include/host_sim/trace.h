@@ -34,6 +34,8 @@ void hs_trace_set(struct hs_signal *s, uint64_t value);
 /* Sets a 1-bit signal to high impedance ('z'). */
 void hs_trace_set_z(struct hs_signal *s);
 void hs_trace_set_real(struct hs_signal *s, double value);
+/* A 1-ns pulse on a 1-bit signal (a latched event such as an interrupt request). */
+void hs_trace_pulse(struct hs_signal *s);
 
 /* Reading back, for assertions. */
 uint64_t hs_signal_value(const struct hs_signal *s);

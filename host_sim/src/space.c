@@ -1,0 +1,684 @@
+/*
+ * space.c — the simulated register space: regions, declaration tables,
+ * CPU-visible windows, and the one access path every register access takes
+ * (accessors through rtos_stub's MMIO handler, trapped pointer accesses
+ * through trap.c).  Host only.
+ */
+#define _GNU_SOURCE
+#include <errno.h>
+#include <inttypes.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include "rtos_host.h"
+#include "host_sim/regs.h"
+#include "host_sim/psc.h"
+#include "space_internal.h"
+
+#define HS_PAGE          4096U
+#define HS_SPACE_PAGES   512U      /* 2 MiB of window space */
+#define HS_MAX_REGIONS   64U
+#define HS_NO_ELEM       (-1)
+
+/* One register, or one element of a register array. */
+struct hs_elem {
+	const struct hs_reg *reg;
+	uint16_t index;
+	uint8_t width;          /* natural width */
+	uint8_t widths;         /* allowed widths (HS_Wn bits) */
+	uint32_t offset;
+	uint32_t mask;          /* effective mask (width bits if declared 0) */
+	uint32_t *value;        /* stored value: own slot or the alias target's */
+	char name[32];          /* "CMR[3]" */
+};
+
+struct hs_region {
+	struct hs_region_cfg cfg;
+	unsigned first_page;    /* in the window space */
+	struct hs_elem *elems;
+	unsigned nelems;
+	uint32_t *values;       /* one per element */
+	int16_t *rd_map;        /* byte offset -> element readable there, or HS_NO_ELEM */
+	int16_t *wr_map;        /* byte offset -> element writable there */
+	bool logged;            /* named by the register-log filter */
+};
+
+static struct {
+	uint8_t *base;                              /* window space (PROT_NONE) */
+	struct hs_region *page_owner[HS_SPACE_PAGES];
+	struct hs_region *regions[HS_MAX_REGIONS];
+	unsigned nregions;
+	unsigned next_page;
+	uint32_t access_ns;
+	char *log_filter;
+	FILE *log_out;
+	bool logging;
+} space;
+
+static const char *const kind_names[] = {
+	[HS_RSVD] = "reserved", [HS_RW] = "read-write", [HS_RO] = "read-only",
+	[HS_WO] = "write-only", [HS_W1S] = "write-1-to-set", [HS_W1C] = "write-1-to-clear",
+	[HS_COR] = "clear-on-read",
+};
+
+/* Bit for an access width (1, 2, 4 -> HS_W8, HS_W16, HS_W32); 0 for others. */
+static unsigned width_bit(unsigned width)
+{
+	return width == 1U ? HS_W8 : width == 2U ? HS_W16 : width == 4U ? HS_W32 : 0U;
+}
+
+/* All-ones mask of width bytes. */
+static uint32_t width_mask(unsigned width)
+{
+	return width >= 4U ? 0xFFFFFFFFU : (1U << (8U * width)) - 1U;
+}
+
+static bool kind_readable(enum hs_reg_kind k)
+{
+	return k != HS_WO;
+}
+
+static bool kind_writable(enum hs_reg_kind k)
+{
+	return k != HS_RO && k != HS_COR;
+}
+
+/* Reserves the window space. */
+int hs_space_init(uint32_t access_ns)
+{
+	void *p;
+
+	if (space.base)
+		return 0;
+	p = mmap(NULL, (size_t)HS_SPACE_PAGES * HS_PAGE, PROT_NONE,
+		 MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+	if (p == MAP_FAILED)
+		return -1;
+	space.base = p;
+	space.next_page = 0;
+	space.nregions = 0;
+	space.access_ns = access_ns;
+	memset(space.page_owner, 0, sizeof(space.page_owner));
+	return 0;
+}
+
+/* Frees one region's tables. */
+static void region_free(struct hs_region *r)
+{
+	free(r->elems);
+	free(r->values);
+	free(r->rd_map);
+	free(r->wr_map);
+	free(r);
+}
+
+/* Frees every region and the window space. */
+void hs_space_fini(void)
+{
+	for (unsigned i = 0; i < space.nregions; i++)
+		region_free(space.regions[i]);
+	space.nregions = 0;
+	if (space.base)
+		munmap(space.base, (size_t)HS_SPACE_PAGES * HS_PAGE);
+	space.base = NULL;
+	memset(space.page_owner, 0, sizeof(space.page_owner));
+	hs_space_set_reglog(NULL, NULL);
+}
+
+bool hs_space_claims(uintptr_t addr)
+{
+	uintptr_t b = (uintptr_t)space.base;
+
+	return space.base && addr >= b && addr - b < (uintptr_t)HS_SPACE_PAGES * HS_PAGE;
+}
+
+void hs_space_bounds(uintptr_t *start, uintptr_t *len)
+{
+	*start = (uintptr_t)space.base;
+	*len = space.base ? (uintptr_t)HS_SPACE_PAGES * HS_PAGE : 0;
+}
+
+uintptr_t hs_space_to_phys(uintptr_t addr)
+{
+	uintptr_t rel;
+	struct hs_region *r;
+
+	if (!hs_space_claims(addr))
+		return 0;
+	rel = addr - (uintptr_t)space.base;
+	r = space.page_owner[rel / HS_PAGE];
+	if (!r)
+		return 0;
+	return r->cfg.phys + (rel - (uintptr_t)r->first_page * HS_PAGE);
+}
+
+/* Region containing physical address phys, or NULL. */
+static struct hs_region *region_at(uintptr_t phys)
+{
+	for (unsigned i = 0; i < space.nregions; i++) {
+		struct hs_region *r = space.regions[i];
+
+		if (phys >= r->cfg.phys && phys - r->cfg.phys < r->cfg.size)
+			return r;
+	}
+	return NULL;
+}
+
+struct hs_region *hs_region_find(uintptr_t phys)
+{
+	return region_at(phys);
+}
+
+struct hs_region *hs_region_by_name(const char *name)
+{
+	for (unsigned i = 0; i < space.nregions; i++)
+		if (strcmp(space.regions[i]->cfg.name, name) == 0)
+			return space.regions[i];
+	return NULL;
+}
+
+const char *hs_region_name(const struct hs_region *r)
+{
+	return r ? r->cfg.name : "(none)";
+}
+
+uintptr_t hs_region_phys(const struct hs_region *r)
+{
+	return r ? r->cfg.phys : 0;
+}
+
+void *hs_region_ctx(const struct hs_region *r)
+{
+	return r ? r->cfg.ctx : NULL;
+}
+
+volatile void *hs_region_window(uintptr_t phys)
+{
+	struct hs_region *r = region_at(phys);
+
+	if (!r)
+		return NULL;
+	return space.base + (size_t)r->first_page * HS_PAGE + (phys - r->cfg.phys);
+}
+
+/* Declaration check failure: reports and returns false. */
+static bool decl_bug(const struct hs_region_cfg *cfg, const struct hs_reg *reg, const char *why)
+{
+	rtos_host_bug("host_sim", "region %s: register %s: %s", cfg->name ? cfg->name : "(unnamed)",
+		      reg && reg->name ? reg->name : "(table)", why);
+	return false;
+}
+
+/* Marks the bytes of element e in map; false if another element is there. */
+static bool map_elem(int16_t *map, const struct hs_region *r, const struct hs_elem *e, int16_t idx)
+{
+	for (unsigned b = 0; b < e->width; b++) {
+		uint32_t off = e->offset + b;
+		/* Only the start byte maps to the element; the other bytes are claimed
+		 * with a marker so overlaps are found and mid-register accesses rejected. */
+		int16_t want = b == 0 ? idx : (int16_t)(-2 - idx);
+
+		if (map[off] != HS_NO_ELEM)
+			return false;
+		map[off] = want;
+	}
+	(void)r;
+	return true;
+}
+
+/* Builds the flattened element table of a region; false after a bug report. */
+static bool region_build(struct hs_region *r)
+{
+	const struct hs_region_cfg *cfg = &r->cfg;
+	unsigned n = 0;
+
+	for (unsigned i = 0; i < cfg->nregs; i++)
+		n += cfg->regs[i].count ? cfg->regs[i].count : 1U;
+	if (n > 30000U)
+		return decl_bug(cfg, NULL, "too many registers");
+	r->elems = calloc(n ? n : 1, sizeof(*r->elems));
+	r->values = calloc(n ? n : 1, sizeof(*r->values));
+	r->rd_map = malloc(cfg->size * sizeof(int16_t));
+	r->wr_map = malloc(cfg->size * sizeof(int16_t));
+	if (!r->elems || !r->values || !r->rd_map || !r->wr_map)
+		return decl_bug(cfg, NULL, "out of memory");
+	for (uint32_t i = 0; i < cfg->size; i++)
+		r->rd_map[i] = r->wr_map[i] = HS_NO_ELEM;
+
+	n = 0;
+	for (unsigned i = 0; i < cfg->nregs; i++) {
+		const struct hs_reg *reg = &cfg->regs[i];
+		unsigned width = reg->width ? reg->width : 4U;
+		unsigned count = reg->count ? reg->count : 1U;
+		unsigned stride = reg->stride ? reg->stride : width;
+
+		if (!reg->name)
+			return decl_bug(cfg, reg, "no name");
+		if (!width_bit(width))
+			return decl_bug(cfg, reg, "width must be 1, 2 or 4");
+		if (reg->offset % width)
+			return decl_bug(cfg, reg, "offset not aligned to its width");
+		if ((reg->widths & ~(HS_W8 | HS_W16 | HS_W32)) || (reg->widths & ~((width_bit(width) << 1) - 1U)))
+			return decl_bug(cfg, reg, "allowed widths wider than the register");
+		if ((unsigned)reg->kind > HS_COR)
+			return decl_bug(cfg, reg, "unknown kind");
+		if ((uint64_t)reg->offset + (uint64_t)(count - 1U) * stride + width > cfg->size)
+			return decl_bug(cfg, reg, "beyond the region's size");
+		if (stride < width)
+			return decl_bug(cfg, reg, "stride smaller than width");
+		for (unsigned k = 0; k < count; k++, n++) {
+			struct hs_elem *e = &r->elems[n];
+
+			e->reg = reg;
+			e->index = (uint16_t)k;
+			e->width = (uint8_t)width;
+			e->widths = (uint8_t)(reg->widths | width_bit(width));
+			e->offset = reg->offset + k * stride;
+			e->mask = (reg->mask ? reg->mask : 0xFFFFFFFFU) & width_mask(width);
+			e->value = &r->values[n];
+			r->values[n] = reg->reset & width_mask(width);
+			if (reg->count)
+				snprintf(e->name, sizeof(e->name), "%s[%u]", reg->name, k);
+			else
+				snprintf(e->name, sizeof(e->name), "%s", reg->name);
+			if (kind_readable(reg->kind) && !map_elem(r->rd_map, r, e, (int16_t)n))
+				return decl_bug(cfg, reg, "overlaps another readable register");
+			if (kind_writable(reg->kind) && !map_elem(r->wr_map, r, e, (int16_t)n))
+				return decl_bug(cfg, reg, "overlaps another writable register");
+		}
+	}
+	r->nelems = n;
+
+	/* Resolve aliases: the element shares the stored value of the target's element. */
+	for (unsigned i = 0; i < r->nelems; i++) {
+		struct hs_elem *e = &r->elems[i];
+		const struct hs_elem *t = NULL;
+		unsigned tcount = 0;
+
+		if (!e->reg->alias)
+			continue;
+		for (unsigned j = 0; j < r->nelems; j++) {
+			if (strcmp(r->elems[j].reg->name, e->reg->alias) == 0 && !r->elems[j].reg->alias) {
+				if (!t || r->elems[j].index == e->index)
+					t = &r->elems[j];
+				tcount = r->elems[j].reg->count ? r->elems[j].reg->count : 1U;
+			}
+		}
+		if (!t)
+			return decl_bug(cfg, e->reg, "alias names no (non-alias) register of the region");
+		if (tcount != 1U && t->index != e->index)
+			return decl_bug(cfg, e->reg, "alias has a different element count");
+		e->value = t->value;
+	}
+	return true;
+}
+
+struct hs_region *hs_region_add(const struct hs_region_cfg *cfg)
+{
+	struct hs_region *r;
+	unsigned pages;
+
+	if (!space.base) {
+		rtos_host_bug("host_sim", "hs_region_add(%s) without a board (call hs_board_init first)",
+			      cfg && cfg->name ? cfg->name : "?");
+		return NULL;
+	}
+	if (!cfg || !cfg->name || !cfg->regs || !cfg->size || cfg->size % HS_PAGE || cfg->phys % HS_PAGE) {
+		rtos_host_bug("host_sim", "hs_region_add: bad configuration %s (name, table, page-aligned base and size required)",
+			      cfg && cfg->name ? cfg->name : "(unnamed)");
+		return NULL;
+	}
+	for (unsigned i = 0; i < space.nregions; i++) {
+		const struct hs_region *o = space.regions[i];
+
+		if (cfg->phys < o->cfg.phys + o->cfg.size && o->cfg.phys < cfg->phys + cfg->size) {
+			rtos_host_bug("host_sim", "region %s at 0x%08" PRIxPTR " overlaps region %s",
+				      cfg->name, cfg->phys, o->cfg.name);
+			return NULL;
+		}
+		if (strcmp(o->cfg.name, cfg->name) == 0) {
+			rtos_host_bug("host_sim", "region name %s used twice", cfg->name);
+			return NULL;
+		}
+	}
+	pages = cfg->size / HS_PAGE;
+	if (space.nregions == HS_MAX_REGIONS || space.next_page + pages > HS_SPACE_PAGES) {
+		rtos_host_bug("host_sim", "region %s: no room left in the window space", cfg->name);
+		return NULL;
+	}
+	r = calloc(1, sizeof(*r));
+	if (!r) {
+		rtos_host_bug("host_sim", "region %s: out of memory", cfg->name);
+		return NULL;
+	}
+	r->cfg = *cfg;
+	if (!region_build(r)) {
+		region_free(r);
+		return NULL;
+	}
+	r->first_page = space.next_page;
+	for (unsigned p = 0; p < pages; p++)
+		space.page_owner[r->first_page + p] = r;
+	space.next_page += pages;
+	space.regions[space.nregions++] = r;
+	hs_space_set_reglog(space.log_filter, space.log_out);
+	return r;
+}
+
+/* Element starting at offset for reading (or writing); NULL if none. */
+static struct hs_elem *elem_at(const struct hs_region *r, uint32_t offset, bool write)
+{
+	int16_t i;
+
+	if (offset >= r->cfg.size)
+		return NULL;
+	i = write ? r->wr_map[offset] : r->rd_map[offset];
+	return i >= 0 ? &r->elems[i] : NULL;
+}
+
+/* Element at offset in either direction, for the model-side accessors. */
+static struct hs_elem *elem_any(const struct hs_region *r, uint32_t offset, const char *what)
+{
+	struct hs_elem *e;
+
+	if (!r) {
+		rtos_host_bug("host_sim", "%s: NULL region", what);
+		return NULL;
+	}
+	e = elem_at(r, offset, false);
+	if (!e)
+		e = elem_at(r, offset, true);
+	if (!e)
+		rtos_host_bug("host_sim", "%s: no register at %s+0x%03" PRIx32, what, r->cfg.name, offset);
+	return e;
+}
+
+uint32_t hs_reg_get(const struct hs_region *r, uint32_t offset)
+{
+	struct hs_elem *e = elem_any(r, offset, "hs_reg_get");
+
+	return e ? *e->value : 0U;
+}
+
+void hs_reg_set(struct hs_region *r, uint32_t offset, uint32_t value)
+{
+	struct hs_elem *e = elem_any(r, offset, "hs_reg_set");
+
+	if (e)
+		*e->value = value & width_mask(e->width);
+}
+
+void hs_reg_update(struct hs_region *r, uint32_t offset, uint32_t clear, uint32_t set)
+{
+	struct hs_elem *e = elem_any(r, offset, "hs_reg_update");
+
+	if (e)
+		*e->value = ((*e->value & ~clear) | set) & width_mask(e->width);
+}
+
+void hs_region_reset(struct hs_region *r)
+{
+	for (unsigned i = 0; r && i < r->nelems; i++)
+		r->values[i] = r->elems[i].reg->reset & width_mask(r->elems[i].width);
+}
+
+/* ---- The access path ---- */
+
+/* Writes one register-log line if the region is logged. */
+static void reglog(const struct hs_region *r, const struct hs_elem *e, uintptr_t phys,
+		   bool write, unsigned width, uint32_t value)
+{
+	char line[160];
+
+	if (!space.logging || !r->logged)
+		return;
+	snprintf(line, sizeof(line), "%c%u %s.%s @0x%08" PRIxPTR " = 0x%0*" PRIx32,
+		 write ? 'W' : 'R', width, r->cfg.name, e ? e->name : "?", phys,
+		 (int)(2U * width), value);
+	if (space.log_out)
+		fprintf(space.log_out, "%" PRIu64 " %s\n", rtos_host_now(), line);
+	else
+		rtos_host_trace("mmio", "%s", line);
+}
+
+/* Region of a CPU access, with the power check; NULL after a bug report. */
+static struct hs_region *access_region(uintptr_t phys, unsigned width, bool write, uint32_t value)
+{
+	struct hs_region *r = region_at(phys);
+	char val[32] = "";
+
+	if (write)
+		snprintf(val, sizeof(val), " of 0x%0*" PRIx32, (int)(2U * width), value);
+	if (!r) {
+		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": no modelled device there",
+			      write ? "write" : "read", width, val, phys);
+		return NULL;
+	}
+	if (r->cfg.power != HS_NO_PSC && !hs_psc_enabled(r->cfg.power)) {
+		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR " (%s+0x%03" PRIxPTR ")"
+			      ": %s is not powered (PSC%u module %u is %s, not Enable)",
+			      write ? "write" : "read", width, val, phys,
+			      r->cfg.name, phys - r->cfg.phys, r->cfg.name,
+			      (r->cfg.power >> 8) - 1U, r->cfg.power & 0xFFU,
+			      hs_psc_state(r->cfg.power) == HS_PSC_SWRSTDISABLE ? "SwRstDisable" :
+			      hs_psc_state(r->cfg.power) == HS_PSC_SYNCRESET ? "SyncReset" : "Disable");
+		return NULL;
+	}
+	return r;
+}
+
+/* Element accessed at phys with direction/width checks; NULL after a bug report. */
+static struct hs_elem *access_elem(struct hs_region *r, uintptr_t phys, unsigned width, bool write,
+				   uint32_t value)
+{
+	uint32_t off = (uint32_t)(phys - r->cfg.phys);
+	struct hs_elem *e = elem_at(r, off, write);
+	struct hs_elem *other;
+	char val[32] = "";
+
+	if (write)
+		snprintf(val, sizeof(val), " of 0x%0*" PRIx32, (int)(2U * width), value);
+	if (!e) {
+		other = elem_at(r, off, !write);
+		if (other)
+			rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is %s",
+				      write ? "write" : "read", width, val, phys, r->cfg.name, other->name,
+				      kind_names[other->reg->kind]);
+		else
+			rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR " (%s+0x%03" PRIx32
+				      "): no register there", write ? "write" : "read", width, val, phys,
+				      r->cfg.name, off);
+		return NULL;
+	}
+	if (!(e->widths & width_bit(width))) {
+		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is a %u-byte register",
+			      write ? "write" : "read", width, val, phys, r->cfg.name, e->name, e->width);
+		return NULL;
+	}
+	if (e->reg->kind == HS_RSVD) {
+		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is reserved",
+			      write ? "write" : "read", width, val, phys, r->cfg.name, e->name);
+		return NULL;
+	}
+	return e;
+}
+
+/* Spends the per-access CPU time (events and interrupts may run meanwhile). */
+static void access_cost(void)
+{
+	if (space.access_ns)
+		rtos_host_consume(space.access_ns);
+}
+
+uint32_t hs_cpu_read(uintptr_t phys, unsigned width)
+{
+	struct hs_region *r;
+	struct hs_elem *e = NULL;
+	uint32_t v = 0;
+
+	if (!width_bit(width)) {
+		rtos_host_bug("host_sim", "read of %u bytes at 0x%08" PRIxPTR ": unsupported width", width, phys);
+		return 0;
+	}
+	r = access_region(phys, width, false, 0);
+	if (r)
+		e = access_elem(r, phys, width, false, 0);
+	if (e) {
+		struct hs_access a = { e->reg, e->index, e->offset, width, false };
+
+		if (e->reg->before_read)
+			e->reg->before_read(r->cfg.ctx, &a, e->value);
+		v = *e->value & width_mask(width);
+		if (e->reg->kind == HS_COR)
+			*e->value &= ~e->mask;
+		reglog(r, e, phys, false, width, v);
+	}
+	access_cost();
+	return v;
+}
+
+void hs_cpu_write(uintptr_t phys, unsigned width, uint32_t value)
+{
+	struct hs_region *r;
+	struct hs_elem *e = NULL;
+
+	if (!width_bit(width)) {
+		rtos_host_bug("host_sim", "write of %u bytes at 0x%08" PRIxPTR ": unsupported width", width, phys);
+		return;
+	}
+	value &= width_mask(width);
+	r = access_region(phys, width, true, value);
+	if (r)
+		e = access_elem(r, phys, width, true, value);
+	if (e) {
+		struct hs_access a = { e->reg, e->index, e->offset, width, true };
+		uint32_t old = *e->value;
+		uint32_t bits = e->mask & width_mask(width);
+		uint32_t nv;
+
+		switch (e->reg->kind) {
+		case HS_W1S:
+			nv = old | (value & bits);
+			break;
+		case HS_W1C:
+			nv = old & ~(value & bits);
+			break;
+		default:        /* HS_RW, HS_WO */
+			nv = (old & ~bits) | (value & bits);
+			break;
+		}
+		*e->value = nv;
+		reglog(r, e, phys, true, width, value);
+		if (e->reg->after_write)
+			e->reg->after_write(r->cfg.ctx, &a, old, nv, value);
+	}
+	access_cost();
+}
+
+void hs_access_stall_until(uint64_t t_ns)
+{
+	uint64_t now = rtos_host_now();
+
+	if (t_ns > now)
+		rtos_host_consume(t_ns - now);
+}
+
+/* ---- rtos_stub's MMIO handler ---- */
+
+static bool mmio_claims(const volatile void *addr, void *ctx)
+{
+	(void)ctx;
+	return hs_space_claims((uintptr_t)addr);
+}
+
+static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
+{
+	uintptr_t phys = hs_space_to_phys((uintptr_t)addr);
+
+	(void)ctx;
+	if (!phys) {
+		rtos_host_bug("host_sim", "read of %u bytes at window address %p: outside every region",
+			      width, (const void *)addr);
+		return 0;
+	}
+	return hs_cpu_read(phys, width);
+}
+
+static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+{
+	uintptr_t phys = hs_space_to_phys((uintptr_t)addr);
+
+	(void)ctx;
+	if (!phys) {
+		rtos_host_bug("host_sim", "write of %u bytes (0x%" PRIx32 ") at window address %p: outside every region",
+			      width, data, (void *)addr);
+		return;
+	}
+	hs_cpu_write(phys, width, data);
+}
+
+static void *mmio_map(uintptr_t phys, SIZE size, void *ctx)
+{
+	struct hs_region *r = region_at(phys);
+
+	(void)ctx;
+	if (!r || size == 0 || size > r->cfg.size - (phys - r->cfg.phys)) {
+		rtos_host_trace("host_sim", "map 0x%08" PRIxPTR "+0x%zx: no modelled region covers it", phys, (size_t)size);
+		return NULL;
+	}
+	return (void *)(space.base + (size_t)r->first_page * HS_PAGE + (phys - r->cfg.phys));
+}
+
+static const struct rtos_host_mmio_ops space_mmio_ops = {
+	.claims = mmio_claims,
+	.read = mmio_read,
+	.write = mmio_write,
+	.map = mmio_map,
+	.ctx = NULL,
+};
+
+void hs_space_install_handler(void)
+{
+	rtos_host_set_mmio_handler(&space_mmio_ops);
+}
+
+void hs_space_remove_handler(void)
+{
+	rtos_host_set_mmio_handler(NULL);
+}
+
+/* true if name is in the comma-separated filter ("*" matches all). */
+static bool filter_has(const char *filter, const char *name)
+{
+	size_t n = strlen(name);
+
+	if (strcmp(filter, "*") == 0)
+		return true;
+	for (const char *p = filter; *p;) {
+		const char *end = strchr(p, ',');
+		size_t len = end ? (size_t)(end - p) : strlen(p);
+
+		if (len == n && strncmp(p, name, n) == 0)
+			return true;
+		if (!end)
+			break;
+		p = end + 1;
+	}
+	return false;
+}
+
+void hs_space_set_reglog(const char *filter, FILE *out)
+{
+	if (filter != space.log_filter) {
+		char *copy = filter ? strdup(filter) : NULL;
+
+		free(space.log_filter);
+		space.log_filter = copy;
+	}
+	space.log_out = out;
+	space.logging = space.log_filter != NULL;
+	for (unsigned i = 0; i < space.nregions; i++)
+		space.regions[i]->logged = space.logging && filter_has(space.log_filter, space.regions[i]->cfg.name);
+}

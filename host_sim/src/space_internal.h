@@ -1,0 +1,31 @@
+/*
+ * space_internal.h — the register space's window and dispatch, shared by the
+ * core's board, trap and trace code (not part of the public API).
+ */
+#ifndef HOST_SIM_SPACE_INTERNAL_H
+#define HOST_SIM_SPACE_INTERNAL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+
+/* Reserves the CPU-visible window space; returns 0 or -1. */
+int hs_space_init(uint32_t access_ns);
+/* Frees every region and the window space. */
+void hs_space_fini(void);
+
+/* true if addr lies in the window space (a trapped access belongs to us). */
+bool hs_space_claims(uintptr_t addr);
+/* Physical address of window address addr, or 0 if addr is in no region's window. */
+uintptr_t hs_space_to_phys(uintptr_t addr);
+/* Start and length of the window space (for the trap handler). */
+void hs_space_bounds(uintptr_t *start, uintptr_t *len);
+
+/* Installs/removes rtos_stub's MMIO handler for the window space. */
+void hs_space_install_handler(void);
+void hs_space_remove_handler(void);
+
+/* Register-access log (trace.h's hs_trace_reglog) state. */
+void hs_space_set_reglog(const char *filter, FILE *out);
+
+#endif /* HOST_SIM_SPACE_INTERNAL_H */

@@ -1,0 +1,276 @@
+/*
+ * trap.c — plain pointer accesses to register windows.  Host only.
+ *
+ * The window space is mapped without access rights, so a volatile load or
+ * store through a plain pointer faults.  On x86-64 Linux the SIGSEGV
+ * handler decodes the faulting instruction (the mov forms gcc emits for
+ * 8/16/32-bit volatile accesses: mov r/m<->r, mov imm->r/m, movzx, movsx,
+ * movsxd; with 0x66, REX and segment prefixes), performs the access through
+ * sil_host_read/sil_host_write — exactly the accessor path, hooks, log,
+ * cost and interrupt deferral included — writes the destination register
+ * in the saved context and resumes after the instruction.  Faults outside
+ * the window space go to the handler installed before ours (ASan's, or the
+ * default action).  Elsewhere (qemu-arm user mode) accesses are not
+ * emulated: a fault in the window space is reported clearly and aborts.
+ */
+#define _GNU_SOURCE
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <ucontext.h>
+#include <unistd.h>
+
+#include "rtos_host.h"
+#include "sil.h"
+#include "core_parts.h"
+#include "space_internal.h"
+
+static struct sigaction previous;
+static bool installed;
+
+#if defined(__x86_64__) && defined(__linux__)
+#define HS_TRAP_EMULATES 1
+
+/* gregs index of x86-64 register number 0..15 (rax, rcx, rdx, rbx, rsp, rbp, rsi, rdi, r8..r15). */
+static const int greg_of[16] = {
+	REG_RAX, REG_RCX, REG_RDX, REG_RBX, REG_RSP, REG_RBP, REG_RSI, REG_RDI,
+	REG_R8, REG_R9, REG_R10, REG_R11, REG_R12, REG_R13, REG_R14, REG_R15,
+};
+
+struct insn {
+	unsigned len;          /* bytes */
+	unsigned width;        /* memory access width */
+	bool store;
+	bool has_imm;
+	uint32_t imm;
+	unsigned reg;          /* register operand number (0..15) */
+	bool rex;              /* any REX prefix: byte registers 4..7 are spl..dil */
+	unsigned dst_width;    /* load: destination register width (1, 2, 4, 8) */
+	bool sign;             /* load: sign-extend */
+};
+
+/* Length of the ModRM/SIB/displacement part starting at p. */
+static unsigned modrm_len(const uint8_t *p)
+{
+	unsigned mod = p[0] >> 6, rm = p[0] & 7U, len = 1;
+
+	if (mod != 3U && rm == 4U) {
+		len++;                              /* SIB */
+		if (mod == 0U && (p[1] & 7U) == 5U)
+			len += 4;                   /* disp32, no base */
+	}
+	if (mod == 0U && rm == 5U)
+		len += 4;                           /* RIP-relative disp32 */
+	else if (mod == 1U)
+		len += 1;
+	else if (mod == 2U)
+		len += 4;
+	return len;
+}
+
+/* Decodes the access instruction at p; false if it is not a supported form. */
+static bool decode(const uint8_t *p, struct insn *in)
+{
+	const uint8_t *start = p;
+	bool opsize = false, rex_w = false, rex_r = false;
+	unsigned op, mlen;
+
+	memset(in, 0, sizeof(*in));
+	for (;; p++) {
+		if (*p == 0x66U)
+			opsize = true;
+		else if (*p == 0x2EU || *p == 0x3EU || *p == 0x26U || *p == 0x36U || *p == 0x64U || *p == 0x65U)
+			continue;
+		else
+			break;
+	}
+	if ((*p & 0xF0U) == 0x40U) {
+		in->rex = true;
+		rex_w = (*p & 8U) != 0;
+		rex_r = (*p & 4U) != 0;
+		p++;
+	}
+	op = *p++;
+	if (op == 0x0FU)
+		op = 0x0F00U | *p++;
+	if ((p[0] >> 6) == 3U)
+		return false;                       /* register operand: not a memory access */
+	in->reg = ((p[0] >> 3) & 7U) | (rex_r ? 8U : 0U);
+	mlen = modrm_len(p);
+	in->dst_width = rex_w ? 8U : opsize ? 2U : 4U;
+	switch (op) {
+	case 0x88:  in->store = true; in->width = 1; break;
+	case 0x89:  in->store = true; in->width = in->dst_width; break;
+	case 0x8A:  in->width = 1; in->dst_width = 1; break;
+	case 0x8B:  in->width = in->dst_width; break;
+	case 0xC6:
+		if (in->reg & 7U)
+			return false;
+		in->store = true; in->width = 1; in->has_imm = true;
+		in->imm = p[mlen];
+		mlen += 1;
+		break;
+	case 0xC7:
+		if (in->reg & 7U)
+			return false;
+		in->store = true; in->has_imm = true;
+		if (opsize) {
+			in->width = 2;
+			in->imm = (uint32_t)p[mlen] | (uint32_t)p[mlen + 1] << 8;
+			mlen += 2;
+		} else {
+			in->width = rex_w ? 8U : 4U;
+			memcpy(&in->imm, p + mlen, 4);
+			mlen += 4;
+		}
+		break;
+	case 0x0FB6: in->width = 1; break;
+	case 0x0FB7: in->width = 2; break;
+	case 0x0FBE: in->width = 1; in->sign = true; break;
+	case 0x0FBF: in->width = 2; in->sign = true; break;
+	case 0x63:   in->width = 4; in->sign = rex_w; break;
+	default:
+		return false;
+	}
+	in->len = (unsigned)(p - start) + mlen;
+	return in->width == 1U || in->width == 2U || in->width == 4U;
+}
+
+/* Value of a register operand of width bytes (byte registers 4..7 without REX are ah..bh). */
+static uint32_t reg_get(const mcontext_t *mc, const struct insn *in, unsigned width)
+{
+	if (width == 1U && !in->rex && in->reg >= 4U && in->reg < 8U)
+		return (uint32_t)(mc->gregs[greg_of[in->reg - 4U]] >> 8) & 0xFFU;
+	return (uint32_t)mc->gregs[greg_of[in->reg]];
+}
+
+/* Stores a loaded value into the destination register as the instruction would. */
+static void reg_put(mcontext_t *mc, const struct insn *in, uint32_t v)
+{
+	uint64_t x;
+
+	if (in->sign)
+		x = in->width == 1U ? (uint64_t)(int64_t)(int8_t)v :
+		    in->width == 2U ? (uint64_t)(int64_t)(int16_t)v : (uint64_t)(int64_t)(int32_t)v;
+	else
+		x = v;
+	switch (in->dst_width) {
+	case 1:
+		if (!in->rex && in->reg >= 4U && in->reg < 8U) {
+			greg_t *r = &mc->gregs[greg_of[in->reg - 4U]];
+
+			*r = (greg_t)(((uint64_t)*r & ~0xFF00ULL) | ((x & 0xFFU) << 8));
+		} else {
+			greg_t *r = &mc->gregs[greg_of[in->reg]];
+
+			*r = (greg_t)(((uint64_t)*r & ~0xFFULL) | (x & 0xFFU));
+		}
+		break;
+	case 2: {
+		greg_t *r = &mc->gregs[greg_of[in->reg]];
+
+		*r = (greg_t)(((uint64_t)*r & ~0xFFFFULL) | (x & 0xFFFFU));
+		break;
+	}
+	case 4:
+		mc->gregs[greg_of[in->reg]] = (greg_t)(x & 0xFFFFFFFFULL);   /* 32-bit writes zero-extend */
+		break;
+	default:
+		mc->gregs[greg_of[in->reg]] = (greg_t)x;
+		break;
+	}
+}
+#else
+#define HS_TRAP_EMULATES 0
+#endif
+
+/* Hands a fault that is not ours to the handler that was there before. */
+static void chain(int sig, siginfo_t *si, void *uctx)
+{
+	if (previous.sa_flags & SA_SIGINFO) {
+		if (previous.sa_sigaction) {
+			previous.sa_sigaction(sig, si, uctx);
+			return;
+		}
+	} else if (previous.sa_handler != SIG_DFL && previous.sa_handler != SIG_IGN) {
+		previous.sa_handler(sig);
+		return;
+	}
+	/* Default action: restore it; the faulting instruction runs again and dies properly. */
+	signal(sig, SIG_DFL);
+}
+
+static void trap_handler(int sig, siginfo_t *si, void *uctx)
+{
+	uintptr_t addr = (uintptr_t)si->si_addr;
+
+	if (!hs_space_claims(addr)) {
+		chain(sig, si, uctx);
+		return;
+	}
+#if HS_TRAP_EMULATES
+	{
+		ucontext_t *uc = uctx;
+		mcontext_t *mc = &uc->uc_mcontext;
+		const uint8_t *ip = (const uint8_t *)mc->gregs[REG_RIP];
+		struct insn in;
+
+		if (!decode(ip, &in)) {
+			rtos_host_bug("host_sim", "plain pointer access to register window address %p (physical 0x%08lx): "
+				      "instruction %02x %02x %02x %02x %02x %02x at %p is not an emulated 8/16/32-bit mov",
+				      (void *)addr, (unsigned long)hs_space_to_phys(addr), ip[0], ip[1], ip[2], ip[3],
+				      ip[4], ip[5], (const void *)ip);
+			abort();
+		}
+		if (in.store)
+			sil_host_write((volatile void *)addr, in.width,
+				       in.has_imm ? in.imm : reg_get(mc, &in, in.width));
+		else
+			reg_put(mc, &in, sil_host_read((const volatile void *)addr, in.width));
+		mc->gregs[REG_RIP] += (greg_t)in.len;
+	}
+#else
+	(void)uctx;
+	rtos_host_bug("host_sim", "plain pointer access to register window address %p (physical 0x%08lx): "
+		      "%s; use the accessors (readl/writel, ioread*/iowrite*, sil_*_mem)",
+		      (void *)addr, (unsigned long)hs_space_to_phys(addr), hs_trap_reason());
+	abort();
+#endif
+	(void)sig;
+}
+
+bool hs_trap_install(void)
+{
+	struct sigaction sa;
+
+	if (installed)
+		return HS_TRAP_EMULATES;
+	memset(&sa, 0, sizeof(sa));
+	sa.sa_sigaction = trap_handler;
+	/* SA_NODEFER: an access emulated here may run interrupt handlers or
+	 * switch tasks (per-access CPU time), which may trap again. */
+	sa.sa_flags = SA_SIGINFO | SA_NODEFER;
+	sigemptyset(&sa.sa_mask);
+	if (sigaction(SIGSEGV, &sa, &previous) != 0)
+		return false;
+	installed = true;
+	return HS_TRAP_EMULATES;
+}
+
+void hs_trap_remove(void)
+{
+	if (!installed)
+		return;
+	sigaction(SIGSEGV, &previous, NULL);
+	installed = false;
+}
+
+const char *hs_trap_reason(void)
+{
+#if HS_TRAP_EMULATES
+	return "";
+#else
+	return "trapping plain pointer accesses needs x86-64 Linux (not available here, e.g. qemu-arm user mode)";
+#endif
+}
