@@ -1,0 +1,391 @@
+/*
+ * irq.c — Linux IRQs on statically configured RTOS interrupt lines.
+ *
+ * One descriptor per Linux IRQ (AINTC lines 0..100, GPIO pin IRQs after
+ * them, mach/irqs.h) holds the handler list, the disable depth and the
+ * trigger type.  Handler records come from a fixed pool, so request_irq and
+ * free_irq take bounded time and do not touch the kmalloc pool.
+ *
+ * The line is "unmasked" - ena_int for an AINTC line, the pin's edge
+ * triggers for a GPIO pin IRQ (gpio.c) - exactly while it has a handler and
+ * its disable depth is 0.  List changes happen with interrupts locked, RTOS
+ * service calls (ena_int/dis_int) outside that lock, as TOPPERS requires.
+ */
+#include <linux/interrupt.h>
+#include <linux/irq.h>
+#include <linux/kernel.h>
+#include <linux/errno.h>
+#include <linux/string.h>
+#include <linux_compat/context.h>
+#include <linux_compat/irq.h>
+#include <linux_compat/report.h>
+#include <kernel.h>
+#include <sil.h>
+
+/* Consecutive unanswered interrupts after which a line is disabled ("nobody cared"). */
+#define LX_IRQ_NOBODY_CARED	100000U
+
+struct lx_irq_desc {
+	struct irqaction *action;   /* handlers, in request order */
+	unsigned int depth;         /* disable_irq nesting */
+	unsigned int type;          /* IRQ_TYPE_* as last set */
+	bool in_handler;            /* its handlers are running */
+	unsigned long count;        /* dispatches */
+	unsigned long unhandled;    /* dispatches nobody answered */
+	unsigned int unanswered_run;
+};
+
+static struct lx_irq_desc irq_descs[NR_IRQS];
+static struct irqaction action_pool[LX_NR_IRQ_ACTIONS];
+
+#define LX_IRQ_CASE(intno, isr, exinf)	case intno:
+
+/* True if the AINTC line has the plain dispatcher as its ISR in linux_irq_cfg. */
+static bool aintc_line_requestable(unsigned int irq)
+{
+	if (irq >= IRQ_DA8XX_GPIO0 && irq <= IRQ_DA8XX_GPIO8)
+		return false;   /* bank lines: demultiplexed into pin IRQs */
+	switch (irq) {
+	LX_IRQ_LINES(LX_IRQ_CASE)
+		return true;
+	default:
+		return false;
+	}
+}
+
+static inline bool is_gpio_irq(unsigned int irq)
+{
+	return irq >= DAVINCI_N_AINTC_IRQ;
+}
+
+bool lx_irq_valid(unsigned int irq)
+{
+	if (irq >= NR_IRQS)
+		return false;
+	return is_gpio_irq(irq) || aintc_line_requestable(irq);
+}
+
+/* Lets the line deliver: ena_int or the pin's triggers.  Returns 0 or -EINVAL. */
+static int line_unmask(unsigned int irq)
+{
+	ER ercd;
+
+	if (is_gpio_irq(irq)) {
+		lx_gpio_irq_unmask(irq - DAVINCI_N_AINTC_IRQ, irq_descs[irq].type);
+		return 0;
+	}
+	ercd = ena_int((INTNO)irq);
+	if (ercd != E_OK) {
+		pr_err("irq %u: ena_int failed (%d): is linux_irq_cfg in the RTOS configuration?\n",
+		       irq, ercd);
+		return -EINVAL;
+	}
+	return 0;
+}
+
+/* Stops the line delivering. */
+static void line_mask(unsigned int irq)
+{
+	if (is_gpio_irq(irq))
+		lx_gpio_irq_mask(irq - DAVINCI_N_AINTC_IRQ);
+	else
+		(void)dis_int((INTNO)irq);
+}
+
+bool lx_handle_irq(unsigned int irq)
+{
+	struct lx_irq_desc *desc = &irq_descs[irq];
+	struct irqaction *action = desc->action;
+	unsigned int ret = IRQ_NONE;
+
+	if (unlikely(!action || desc->depth)) {
+		/* An edge latched just before the line was masked: nobody to tell. */
+		desc->unhandled++;
+		return false;
+	}
+	lx_irq_enter((int)irq);
+	desc->in_handler = true;
+	do {
+		ret |= (unsigned int)action->handler((int)irq, action->dev_id);
+		action = action->next;
+	} while (action);
+	desc->in_handler = false;
+	lx_irq_exit();
+
+	desc->count++;
+	if (likely(ret != IRQ_NONE)) {
+		desc->unanswered_run = 0;
+		return true;
+	}
+	desc->unhandled++;
+	if (++desc->unanswered_run >= LX_IRQ_NOBODY_CARED) {
+		lx_report("irq: nobody cared", __FILE__, __LINE__,
+			  "irq %u: %u interrupts in a row answered IRQ_NONE by every handler; "
+			  "disabling it", irq, desc->unanswered_run);
+		desc->depth++;
+		line_mask(irq);
+	}
+	return false;
+}
+
+void lx_irq_dispatch(intptr_t exinf)
+{
+	lx_handle_irq((unsigned int)exinf);
+}
+
+/* A free handler record, or NULL.  Interrupts locked. */
+static struct irqaction *action_alloc_locked(void)
+{
+	unsigned int i;
+
+	for (i = 0; i < LX_NR_IRQ_ACTIONS; i++)
+		if (!action_pool[i].handler)
+			return &action_pool[i];
+	return NULL;
+}
+
+/* Records a trigger type for irq if the line supports it; 0 or -EINVAL. */
+static int check_type(unsigned int irq, unsigned int type)
+{
+	if (type & ~(unsigned int)IRQ_TYPE_SENSE_MASK)
+		return -EINVAL;
+	if (is_gpio_irq(irq))
+		return lx_gpio_irq_check_type(type);
+	if (type == IRQ_TYPE_NONE || type == IRQ_TYPE_LEVEL_HIGH || type == IRQ_TYPE_EDGE_RISING)
+		return 0;
+	return -EINVAL;
+}
+
+int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
+		const char *name, void *dev)
+{
+	struct lx_irq_desc *desc;
+	struct irqaction *action, **tail;
+	unsigned int type = (unsigned int)(flags & IRQF_TRIGGER_MASK);
+	bool first;
+	int err = 0;
+	SIL_PRE_LOC;
+
+	might_sleep();
+	if (!handler || !lx_irq_valid(irq))
+		return -EINVAL;
+	if ((flags & IRQF_SHARED) && !dev)
+		return -EINVAL;
+	if (type && check_type(irq, type))
+		return -EINVAL;
+	desc = &irq_descs[irq];
+
+	SIL_LOC_INT();
+	for (tail = &desc->action; *tail; tail = &(*tail)->next) {
+		if (!((*tail)->flags & IRQF_SHARED) || !(flags & IRQF_SHARED))
+			err = -EBUSY;
+		else if ((*tail)->dev_id == dev)
+			err = -EINVAL;
+		if (err)
+			break;
+	}
+	action = err ? NULL : action_alloc_locked();
+	if (!err && !action)
+		err = -ENOMEM;
+	first = !desc->action;
+	if (!err) {
+		action->handler = handler;
+		action->dev_id = dev;
+		action->next = NULL;
+		action->irq = irq;
+		action->flags = (unsigned int)flags;
+		action->name = name;
+		if (first) {
+			desc->depth = (flags & IRQF_NO_AUTOEN) ? 1U : 0U;
+			desc->unanswered_run = 0;
+			if (type)
+				desc->type = type;
+		}
+		*tail = action;
+	}
+	SIL_UNL_INT();
+
+	if (err) {
+		if (err == -ENOMEM)
+			pr_err("request_irq %u (%s): all %d handler records in use (raise LX_NR_IRQ_ACTIONS)\n",
+			       irq, name ? name : "?", LX_NR_IRQ_ACTIONS);
+		return err;
+	}
+	if (first && desc->depth == 0) {
+		err = line_unmask(irq);
+		if (err) {
+			SIL_LOC_INT();
+			desc->action = NULL;
+			memset(action, 0, sizeof(*action));
+			SIL_UNL_INT();
+		}
+	}
+	return err;
+}
+
+int request_threaded_irq(unsigned int irq, irq_handler_t handler, irq_handler_t thread_fn,
+			 unsigned long flags, const char *name, void *dev)
+{
+	if (thread_fn) {
+		pr_err("request_threaded_irq %u (%s): threaded handlers are not supported\n",
+		       irq, name ? name : "?");
+		return -EINVAL;
+	}
+	return request_irq(irq, handler, flags, name, dev);
+}
+
+const void *free_irq(unsigned int irq, void *dev_id)
+{
+	struct lx_irq_desc *desc;
+	struct irqaction *action = NULL, **link;
+	const char *name = NULL;
+	bool last = false;
+	SIL_PRE_LOC;
+
+	might_sleep();
+	if (irq >= NR_IRQS) {
+		WARN(1, "free_irq: invalid irq %u\n", irq);
+		return NULL;
+	}
+	desc = &irq_descs[irq];
+
+	SIL_LOC_INT();
+	for (link = &desc->action; *link; link = &(*link)->next) {
+		if ((*link)->dev_id == dev_id) {
+			action = *link;
+			break;
+		}
+	}
+	last = action && desc->action == action && !action->next;
+	SIL_UNL_INT();
+
+	if (!action) {
+		WARN(1, "Trying to free already-free IRQ %u\n", irq);
+		return NULL;
+	}
+	/* The last handler: stop the line before the list empties. */
+	if (last && desc->depth == 0)
+		line_mask(irq);
+
+	SIL_LOC_INT();
+	for (link = &desc->action; *link != action; link = &(*link)->next)
+		;
+	*link = action->next;
+	name = action->name;
+	memset(action, 0, sizeof(*action));
+	SIL_UNL_INT();
+	return name;
+}
+
+void disable_irq_nosync(unsigned int irq)
+{
+	struct lx_irq_desc *desc;
+	bool mask;
+	SIL_PRE_LOC;
+
+	if (irq >= NR_IRQS)
+		return;
+	desc = &irq_descs[irq];
+	SIL_LOC_INT();
+	mask = desc->depth++ == 0 && desc->action;
+	SIL_UNL_INT();
+	if (mask)
+		line_mask(irq);
+}
+
+void synchronize_irq(unsigned int irq)
+{
+	if (irq < NR_IRQS && irq_descs[irq].in_handler && lx_current_irq() == (int)irq)
+		lx_report("synchronize_irq from the IRQ's own handler", __FILE__, __LINE__,
+			  "irq %u: waiting for its own handler deadlocks in Linux", irq);
+}
+
+void disable_irq(unsigned int irq)
+{
+	if (irq < NR_IRQS && irq_descs[irq].in_handler && lx_current_irq() == (int)irq)
+		lx_report("disable_irq from the IRQ's own handler", __FILE__, __LINE__,
+			  "irq %u: disable_irq waits for the handler and deadlocks in Linux; "
+			  "use disable_irq_nosync", irq);
+	disable_irq_nosync(irq);
+}
+
+void enable_irq(unsigned int irq)
+{
+	struct lx_irq_desc *desc;
+	bool unmask = false, unbalanced = false;
+	SIL_PRE_LOC;
+
+	if (irq >= NR_IRQS)
+		return;
+	desc = &irq_descs[irq];
+	SIL_LOC_INT();
+	if (desc->depth == 0)
+		unbalanced = true;
+	else
+		unmask = --desc->depth == 0 && desc->action;
+	if (unmask)
+		desc->unanswered_run = 0;
+	SIL_UNL_INT();
+	if (unbalanced)
+		WARN(1, "Unbalanced enable for IRQ %u\n", irq);
+	else if (unmask)
+		(void)line_unmask(irq);
+}
+
+int irq_set_irq_type(unsigned int irq, unsigned int type)
+{
+	struct lx_irq_desc *desc;
+	bool live;
+	SIL_PRE_LOC;
+
+	if (irq >= NR_IRQS || !lx_irq_valid(irq))
+		return -EINVAL;
+	type &= IRQ_TYPE_SENSE_MASK;
+	if (check_type(irq, type))
+		return -EINVAL;
+	desc = &irq_descs[irq];
+	SIL_LOC_INT();
+	desc->type = type;
+	live = desc->action && desc->depth == 0;
+	SIL_UNL_INT();
+	if (live && is_gpio_irq(irq))
+		lx_gpio_irq_unmask(irq - DAVINCI_N_AINTC_IRQ, type);
+	return 0;
+}
+
+int set_irq_type(unsigned int irq, unsigned int type)
+{
+	return irq_set_irq_type(irq, type);
+}
+
+unsigned int irq_get_trigger_type(unsigned int irq)
+{
+	return irq < NR_IRQS ? irq_descs[irq].type : IRQ_TYPE_NONE;
+}
+
+unsigned long lx_irq_unhandled_count(unsigned int irq)
+{
+	return irq < NR_IRQS ? irq_descs[irq].unhandled : 0;
+}
+
+unsigned long lx_irq_count(unsigned int irq)
+{
+	return irq < NR_IRQS ? irq_descs[irq].count : 0;
+}
+
+/* Forgets every handler and IRQ state (part of lx_io_boot). */
+static void irq_boot(void)
+{
+	memset(irq_descs, 0, sizeof(irq_descs));
+	memset(action_pool, 0, sizeof(action_pool));
+}
+
+void lx_io_boot(intptr_t exinf)
+{
+	(void)exinf;
+	irq_boot();
+	lx_iomap_boot();
+	lx_gpio_boot();
+	lx_resource_boot();
+	lx_devfs_boot();
+}

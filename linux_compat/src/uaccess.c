@@ -1,0 +1,137 @@
+/*
+ * uaccess.c — user memory: every copy checks the calling task's protection
+ * domain with prb_mem first (linux/uaccess.h states the contract).
+ */
+#include <linux/uaccess.h>
+#include <linux/kernel.h>
+#include <linux/string.h>
+#include <linux_compat/context.h>
+#include <kernel.h>
+
+/*
+ * How many bytes from p on the calling task may access with mode: n, or the
+ * length of the accessible prefix.  One probe when all is accessible; else
+ * bisection on the prefix length (accessibility of prefixes is monotonic).
+ */
+static size_t accessible_prefix(const void *p, size_t n, MODE mode)
+{
+	size_t ok = 0, bad = n;
+
+	if (n == 0 || prb_mem(p, (SIZE)n, TSK_SELF, mode) == E_OK)
+		return n;
+	while (bad - ok > 1) {
+		size_t mid = ok + (bad - ok) / 2;
+
+		if (prb_mem(p, (SIZE)mid, TSK_SELF, mode) == E_OK)
+			ok = mid;
+		else
+			bad = mid;
+	}
+	return ok;
+}
+
+/*
+ * The checks every user copy starts with: reports a call from a context that
+ * may not sleep, and returns false if there is no calling task to check
+ * against (interrupt context), in which case nothing is copied.
+ */
+static bool user_copy_allowed(const char *what)
+{
+	(void)lx_might_sleep_check(what, NULL, 0);
+	return !sns_ctx();
+}
+
+unsigned long copy_from_user(void *to, const void __user *from, unsigned long n)
+{
+	size_t ok;
+
+	if (!user_copy_allowed("copy_from_user()")) {
+		memset(to, 0, n);
+		return n;
+	}
+	ok = accessible_prefix((__force const void *)from, n, TPM_READ);
+	if (ok)
+		memcpy(to, (__force const void *)from, ok);
+	if (ok < n)
+		memset((char *)to + ok, 0, n - ok);
+	return n - ok;
+}
+
+unsigned long copy_to_user(void __user *to, const void *from, unsigned long n)
+{
+	size_t ok;
+
+	if (!user_copy_allowed("copy_to_user()"))
+		return n;
+	ok = accessible_prefix((__force const void *)to, n, TPM_WRITE);
+	if (ok)
+		memcpy((__force void *)to, from, ok);
+	return n - ok;
+}
+
+unsigned long clear_user(void __user *to, unsigned long n)
+{
+	size_t ok;
+
+	if (!user_copy_allowed("clear_user()"))
+		return n;
+	ok = accessible_prefix((__force const void *)to, n, TPM_WRITE);
+	if (ok)
+		memset((__force void *)to, 0, ok);
+	return n - ok;
+}
+
+long strncpy_from_user(char *dst, const char __user *src, long count)
+{
+	size_t ok, len;
+
+	if (count <= 0)
+		return 0;
+	if (!user_copy_allowed("strncpy_from_user()"))
+		return -EFAULT;
+	ok = accessible_prefix((__force const void *)src, (size_t)count, TPM_READ);
+	len = strnlen((__force const char *)src, ok);
+	if (len == ok && ok < (size_t)count)
+		return -EFAULT;     /* ran into inaccessible memory before a NUL */
+	if (len < (size_t)count) {
+		memcpy(dst, (__force const char *)src, len + 1);
+		return (long)len;
+	}
+	memcpy(dst, (__force const char *)src, (size_t)count);
+	return count;
+}
+
+long strnlen_user(const char __user *str, long n)
+{
+	size_t ok, len;
+
+	if (n <= 0)
+		return 0;
+	if (!user_copy_allowed("strnlen_user()"))
+		return 0;
+	ok = accessible_prefix((__force const void *)str, (size_t)n, TPM_READ);
+	len = strnlen((__force const char *)str, ok);
+	if (len == ok && ok < (size_t)n)
+		return 0;
+	return len < (size_t)n ? (long)len + 1 : n + 1;
+}
+
+bool lx_access_ok(const void __user *addr, unsigned long size, int write)
+{
+	if (size == 0)
+		return true;
+	if (sns_ctx())
+		return false;
+	return prb_mem((__force const void *)addr, (SIZE)size, TSK_SELF,
+		       write ? TPM_WRITE : TPM_READ) == E_OK;
+}
+
+int lx_get_user(void *val, const void __user *ptr, size_t size)
+{
+	return copy_from_user(val, ptr, size) ? -EFAULT : 0;
+}
+
+int lx_put_user(const void *val, void __user *ptr, size_t size)
+{
+	return copy_to_user(ptr, val, size) ? -EFAULT : 0;
+}
