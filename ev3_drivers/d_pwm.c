@@ -122,6 +122,9 @@
 #define RAMP_FLOOR_SPEED   5       /* a ramp never asks for less, or a step ramp would stall */
 #define RAMP_FLOOR_POWER   10
 #define PID_SCALE          100     /* fixed point of the PID accumulators */
+#define SYNC_POSITION_GAIN 2       /* slave speed per count it is off its share */
+#define SYNC_LAG_FREE      2       /* counts a slave may lag before the master waits */
+#define SYNC_LAG_SLOWDOWN  4       /* master speed given up per count of lag beyond that */
 
 /* ---- Board wiring (EP2 tables) ---- */
 
@@ -545,7 +548,7 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 {
 	struct pwm_port *s = &ports[m->partner];
 	struct pwm_profile *pr = &m->profile;
-	s32 target, moved, expected, err, slave_target, master_target;
+	s32 target, moved, expected, err, lag, slave_target, master_target;
 	bool brake = pr->brake;
 
 	if (!profile_target(pr, profile_progress(pr, m, now), &target)) {
@@ -557,11 +560,13 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 	moved = m->position - pr->origin;
 	expected = s->profile.origin + moved * s->sync_factor / 100;
 	err = expected - s->position;
-	slave_target = clamp(target * s->sync_factor / 100 + err * 2, -SPEED_MAX, SPEED_MAX);
+	slave_target = clamp(target * s->sync_factor / 100 + err * SYNC_POSITION_GAIN,
+			     -SPEED_MAX, SPEED_MAX);
 	/* A lagging slave slows the master down so the pair keeps its shape. */
+	lag = target * s->sync_factor < 0 ? -err : err;
 	master_target = target;
-	if (abs(err) > 2) {
-		s32 slow = (abs(err) - 2) * 4;
+	if (s->sync_factor != 0 && lag > SYNC_LAG_FREE) {
+		s32 slow = (lag - SYNC_LAG_FREE) * SYNC_LAG_SLOWDOWN;
 
 		master_target = target > 0 ? max(target - slow, 0) : min(target + slow, 0);
 	}
@@ -574,10 +579,10 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 	}
 }
 
-/* Publishes a port's counters into the shared MOTORDATA. */
-static void publish(const struct pwm_port *p, struct lms_motor_data *md, bool limited)
+/* Publishes a port's counters into the shared MOTORDATA (TachoCounts 0 while unlimited). */
+static void publish(const struct pwm_port *p, struct lms_motor_data *md, bool counting)
 {
-	WRITE_ONCE(md->tacho_counts, limited ? p->position - p->command_origin : 0);
+	WRITE_ONCE(md->tacho_counts, counting ? p->position - p->command_origin : 0);
 	WRITE_ONCE(md->speed, p->speed);
 	WRITE_ONCE(md->tacho_sensor, p->position - p->sensor_origin);
 }
@@ -625,8 +630,7 @@ static enum hrtimer_restart control_tick(struct hrtimer *timer)
 			}
 			break;
 		}
-		publish(p, &motor_data[i], p->state == STATE_LIMITED ||
-			p->state == STATE_SYNC_MASTER || p->state == STATE_SYNC_SLAVE);
+		publish(p, &motor_data[i], p->state != STATE_UNREG && p->state != STATE_REG);
 	}
 	spin_unlock(&pwm_lock);
 	return HRTIMER_RESTART;
@@ -881,8 +885,9 @@ static int cmd_sync(const u8 *b, bool by_time)
 	ktime_t now;
 
 	if (hweight8(nos) != 2 || speed < -SPEED_MAX || speed > SPEED_MAX ||
-	    turn < -200 || turn > 200 || brake > 1 || step < 0)
+	    turn < -200 || turn > 200 || brake > 1 || step == S32_MIN || (by_time && step < 0))
 		return -EINVAL;
+	step = abs(step);     /* a step count carries the direction of the speed */
 	first = __ffs(nos);
 	second = __ffs(nos & ~BIT(first));
 	mi = turn >= 0 ? first : second;
