@@ -1,0 +1,141 @@
+/*
+ * ev3_motor.h — EV3 large and medium servo motors on an output port: a DC
+ * motor with gearing, friction and load behind the H-bridge, its quadrature
+ * tacho on the port's INT (pin 5) and DIR (pin 6) GPIOs, 360 counts per
+ * output revolution, and its identification voltage on pin 5.
+ * docs/host-sim-devices.md gives the parameters and their sources.  Host only.
+ *
+ * Physics works at the output shaft (gearing folded in), on a fixed 1 ms
+ * step and at every input change, with the exact solution of the linear
+ * motor equation over each step; the shaft angle is linear within a step,
+ * so the time of every tacho edge is computed, not stepped.
+ */
+#ifndef HOST_SIM_DEVICES_EV3_MOTOR_H
+#define HOST_SIM_DEVICES_EV3_MOTOR_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "host_sim/devices/ev3_ports.h"
+
+enum ev3_motor_kind {
+	EV3_MOTOR_LARGE = 0,        /* 45502, lms2012 type 7 (TACHO) */
+	EV3_MOTOR_MEDIUM = 1,       /* 45503, lms2012 type 8 (MINITACHO) */
+};
+
+/* Output-shaft parameters of a motor model. */
+struct ev3_motor_params {
+	const char *name;
+	double no_load_dps;         /* no-load speed at nominal_v, deg/s */
+	double stall_nm;            /* stall torque at nominal_v, N m */
+	double nominal_v;
+	double mech_time_s;         /* mechanical time constant J * w0 / stall */
+	double coulomb_frac;        /* dry friction as a fraction of stall torque */
+	double stall_a;             /* stall current at nominal_v (for the motor-current channel) */
+	uint16_t pin5_low_mv, pin5_high_mv;   /* ID voltage on pin 5 with the encoder low / high */
+	uint16_t pin5_pulled_mv;    /* pin 5 with encoder high while the brick pulls 5w high */
+};
+
+/* The built-in parameters of a kind. */
+const struct ev3_motor_params *ev3_motor_params_of(enum ev3_motor_kind kind);
+
+/* How the H-bridge spends each PWM period: fractions driving forward and
+ * reverse at the battery voltage, and braking (terminals shorted); the rest
+ * is coasting (terminals open). */
+struct hbridge_drive {
+	double fwd, rev, brake;
+};
+
+/* H-bridge input level: the GPIO drives it high or low, or the GPIO floats
+ * and the PWM signal drives it (low for the period's low fraction). */
+enum hbridge_input {
+	HBRIDGE_LOW,
+	HBRIDGE_HIGH,
+	HBRIDGE_PWM,
+};
+
+/* The bridge's time split for inputs in0 (DIR0, pin 1) and in1 (DIR1, pin 2)
+ * with the PWM signal low for pwm_low of each period (facts §3: forward =
+ * DIR0 high + DIR1 floating, reverse = the mirror, brake = both high,
+ * coast = both low). */
+struct hbridge_drive hbridge_resolve(enum hbridge_input in0, enum hbridge_input in1, double pwm_low);
+
+/* The shaft state of a motor. */
+struct dc_motor_state {
+	double omega;               /* rad/s at the output shaft */
+	double theta;               /* rad */
+};
+
+/* Derived constants of a motor model (computed once from the params). */
+struct dc_motor_model {
+	const struct ev3_motor_params *p;
+	double k_back;              /* N m per rad/s of back-EMF braking at full drive */
+	double k_volt;              /* N m per volt */
+	double viscous;             /* N m per rad/s */
+	double coulomb;             /* N m */
+	double inertia;             /* kg m^2 */
+};
+
+/* Fills a model from parameters. */
+void dc_motor_model_init(struct dc_motor_model *m, const struct ev3_motor_params *p);
+
+/* Advances st by dt seconds under drive at vbat volts with external load
+ * torque load_nm (signed, opposing positive rotation when positive) and
+ * extra_inertia; exact for the linear part, dry friction stops the shaft at
+ * zero speed.  A locked shaft (stall fault) stays still. */
+void dc_motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st, double dt,
+		      struct hbridge_drive drive, double vbat, double load_nm, double extra_inertia);
+
+/* ---- the motor attached to an output port ---- */
+
+struct ev3_motor;
+
+/* Options of an attached motor. */
+struct ev3_motor_options {
+	double load_nm;             /* constant external torque on the output shaft */
+	double extra_inertia;       /* kg m^2 added to the shaft (wheels, arms) */
+	double start_deg;           /* initial shaft angle */
+};
+
+/* Creates the motor on output port (0..3 = A..D): watches the H-bridge
+ * GPIOs, drives INT/DIR from the tacho.  NULL on bad arguments. */
+struct ev3_motor *ev3_motor_create(unsigned port, enum ev3_motor_kind kind,
+				   const struct ev3_motor_options *opt);
+/* Stops its events, releases the pins (they float) and frees it. */
+void ev3_motor_destroy(struct ev3_motor *m);
+
+/* The motor on output port (0..3), or NULL. */
+struct ev3_motor *ev3_motor_on_port(unsigned port);
+/* A PWM source's duty changed: every motor it drives re-reads its inputs. */
+void ev3_motor_pwm_changed(enum ev3_pwm_source src);
+
+/* The PWM duty or the bridge inputs changed: integrate to now, apply. */
+void ev3_motor_inputs_changed(struct ev3_motor *m);
+
+/* Shaft angle (deg, continuous) and speed (deg/s) now. */
+double ev3_motor_angle_deg(struct ev3_motor *m);
+double ev3_motor_speed_dps(struct ev3_motor *m);
+/* Tacho position the pins show now, in counts (each INT edge is one count). */
+int64_t ev3_motor_tacho_counts(const struct ev3_motor *m);
+/* The bridge split in effect. */
+struct hbridge_drive ev3_motor_drive(const struct ev3_motor *m);
+/* Current through the motor now, amperes (estimate, for the ADC). */
+double ev3_motor_current_a(struct ev3_motor *m);
+
+/* Scenario and faults. */
+void ev3_motor_set_load(struct ev3_motor *m, double load_nm, double extra_inertia);
+/* Locks the shaft (true) or frees it. */
+void ev3_motor_set_stalled(struct ev3_motor *m, bool stalled);
+/* Freezes the tacho outputs (true); on release they jump to the true position. */
+void ev3_motor_set_encoder_stuck(struct ev3_motor *m, bool stuck);
+/* Spurious INT glitches (2 us pulses) at a mean rate per second; 0 stops. */
+void ev3_motor_set_encoder_noise(struct ev3_motor *m, double glitches_per_s);
+/* Counts of spurious glitches emitted so far. */
+uint64_t ev3_motor_glitches(const struct ev3_motor *m);
+
+/* Pin 5 voltage in mV as the ADC sees it, given whether the brick drives
+ * the 5w detection pull high. */
+uint16_t ev3_motor_pin5_mv(const struct ev3_motor *m, bool pull5w_high);
+/* Kind of the attached motor. */
+enum ev3_motor_kind ev3_motor_kind_of(const struct ev3_motor *m);
+
+#endif /* HOST_SIM_DEVICES_EV3_MOTOR_H */

@@ -1,0 +1,82 @@
+/*
+ * ev3_ports.h — how the EV3's input ports 1-4 and output ports A-D are wired
+ * to the AM1808 (EP2 board, facts §3 and §6): GPIO pins, PWM sources, ADC
+ * channels, and the UART behind each input port.  Host only; the tables
+ * are data the device models and the tests share.
+ *
+ * Input ports 3 and 4 use PRU soft UARTs on the real brick.  ev3lx models
+ * them as two more 16550-style UARTs at stand-in addresses in a range the
+ * AM1808 memory map leaves reserved, on the AINTC lines of the PRU events
+ * LEGO uses for those ports (EVTOUT1 = 4 for port 3, EVTOUT0 = 3 for port 4).
+ */
+#ifndef HOST_SIM_DEVICES_EV3_PORTS_H
+#define HOST_SIM_DEVICES_EV3_PORTS_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "host_sim/board.h"
+#include "host_sim/gpio.h"
+
+#define EV3_INPUT_PORTS   4U
+#define EV3_OUTPUT_PORTS  4U
+
+/* GPIOs of an input port (facts §3, EP2). */
+struct ev3_input_pins {
+	unsigned pin1_9v;           /* pin 1: switches 9 V for NXT sensors (brick output) */
+	unsigned pin2;              /* LEGDET: NXT device detect (input) */
+	unsigned pin5;              /* brick -> sensor: UART TX via buffer, and GPIO */
+	unsigned pin6;              /* sensor -> brick: UART RX, GPIO and ADC */
+	unsigned tx_buffer_off;     /* TX buffer disable (low = buffer on) */
+	uint8_t adc_pin1, adc_pin6; /* ADC channels of pin 1 and pin 6 */
+};
+
+/* GPIOs of an output port. */
+struct ev3_output_pins {
+	unsigned dir0, dir1;        /* pins 1 / 2: H-bridge inputs */
+	unsigned tacho_int;         /* pin 5: tacho INT (both edges) and ADC OutPin5 */
+	unsigned det_5w;            /* pin 5w: DETx0 detection pull */
+	unsigned tacho_dir;         /* pin 6: tacho DIR */
+	uint8_t adc_pin5;           /* ADC channel of pin 5 */
+};
+
+/* Which PWM drives an output port. */
+enum ev3_pwm_source {
+	EV3_PWM_EHRPWM1_A,
+	EV3_PWM_EHRPWM1_B,
+	EV3_PWM_ECAP0,
+	EV3_PWM_ECAP1,
+};
+
+extern const struct ev3_input_pins ev3_input_pins[EV3_INPUT_PORTS];
+extern const struct ev3_output_pins ev3_output_pins[EV3_OUTPUT_PORTS];
+extern const enum ev3_pwm_source ev3_output_pwm[EV3_OUTPUT_PORTS];
+
+/* ADC channels of the brick's own signals (facts §6). */
+#define EV3_ADC_BATTERY_TEMP     2U
+#define EV3_ADC_MOTOR_CURRENT    15U
+#define EV3_ADC_BATTERY_CURRENT  3U
+#define EV3_ADC_BATTERY_VOLTAGE  4U
+
+/* The UART behind each input port: register base, AINTC line, module clock. */
+struct ev3_port_uart {
+	const char *name;           /* region name */
+	uintptr_t base;
+	unsigned intno;
+	uint32_t clock_hz;          /* module clock: baud = clock / (16 or 13 * divisor) */
+	bool stand_in;              /* true: not a real AM1808 UART (PRU soft UART stand-in) */
+};
+
+extern const struct ev3_port_uart ev3_port_uart[EV3_INPUT_PORTS];
+
+/* Stand-in UARTs for the PRU soft UARTs of ports 3 and 4 (reserved range
+ * after the McBSP FIFO registers in the AM1808 memory map). */
+#define EV3_SUART_PORT3_BASE  0x01F18000U
+#define EV3_SUART_PORT4_BASE  0x01F19000U
+#define EV3_SUART_PORT3_INTNO 4U            /* PRU EVTOUT1, as LEGO's port 3 */
+#define EV3_SUART_PORT4_INTNO 3U            /* PRU EVTOUT0, as LEGO's port 4 */
+#define EV3_SUART_CLOCK_HZ    150000000U
+
+#define EV3_UART0_INTNO       25U
+#define EV3_UART1_INTNO       53U
+
+#endif /* HOST_SIM_DEVICES_EV3_PORTS_H */

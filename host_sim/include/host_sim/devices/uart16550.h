@@ -1,0 +1,61 @@
+/*
+ * uart16550.h — the AM1808 UART (16550-compatible) as used behind the EV3
+ * input ports: UART1 (port 1), UART0 (port 2) and two stand-ins for the PRU
+ * soft UARTs of ports 3 and 4 (ev3_ports.h: ev3_port_uart).  Host only.
+ *
+ * Registers are 32-bit words (facts §2): RBR/THR 0x00, IER 0x04, IIR/FCR
+ * 0x08, LCR 0x0C, MCR 0x10, LSR 0x14, MSR 0x18, SCR 0x1C, DLL 0x20, DLH
+ * 0x24, REVID1/2 0x28/0x2C, PWREMU_MGMT 0x30, MDR 0x34; byte accesses are
+ * accepted too.  DLL/DLH also appear at 0x00/0x04 while LCR.DLAB is set.
+ * Baud = module clock / (16 or 13 (MDR.OSM_SEL) x divisor).  Each byte
+ * takes (1 + data + parity + stop) bit times on the wire; 16-byte FIFOs
+ * with the FCR trigger level and the 4-character timeout; LSR error bits
+ * clear on read; reading IIR clears a THRE interrupt; PWREMU_MGMT URRST /
+ * UTRST at 0 hold receiver / transmitter in reset; LCR.BC sends a break.
+ * A received byte whose baud differs from the UART's by more than 4 % is
+ * garbled (framing error), as a real receiver samples the wrong bits.
+ */
+#ifndef HOST_SIM_DEVICES_UART16550_H
+#define HOST_SIM_DEVICES_UART16550_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "host_sim/board.h"
+
+extern const struct hs_device ev3_uart1_device;     /* input port 1 */
+extern const struct hs_device ev3_uart0_device;     /* input port 2 */
+extern const struct hs_device ev3_suart_in3_device; /* input port 3 stand-in */
+extern const struct hs_device ev3_suart_in4_device; /* input port 4 stand-in */
+
+struct ev3_uart;
+
+/* The UART behind input port (0..3), or NULL if its device is not on the board. */
+struct ev3_uart *ev3_uart_of_port(unsigned port);
+
+/* The far end: called when a byte the UART sent has left the wire, and
+ * when the UART starts/stops sending a break (LCR.BC). */
+struct ev3_uart_peer {
+	void (*tx_byte)(void *ctx, uint8_t byte, uint32_t baud);
+	void (*tx_break)(void *ctx, bool active);
+	void *ctx;
+};
+void ev3_uart_set_peer(struct ev3_uart *u, const struct ev3_uart_peer *peer);
+
+/* A byte finished arriving on the RX line, sent at baud. */
+void ev3_uart_rx_byte(struct ev3_uart *u, uint8_t byte, uint32_t baud);
+/* The RX line level: held low for a character time or more is a break. */
+void ev3_uart_rx_line(struct ev3_uart *u, bool high);
+
+/* Current baud (0 if the divisor is 0 or the UART is in reset). */
+uint32_t ev3_uart_baud(const struct ev3_uart *u);
+
+struct ev3_uart_stats {
+	uint32_t rx_bytes, tx_bytes;
+	uint32_t overruns;          /* bytes lost because the RX FIFO was full */
+	uint32_t framing_errors;    /* garbled bytes (speed mismatch, break) */
+	uint32_t breaks;
+	uint32_t rx_in_reset;       /* bytes that arrived while the receiver was in reset */
+};
+const struct ev3_uart_stats *ev3_uart_get_stats(const struct ev3_uart *u);
+
+#endif /* HOST_SIM_DEVICES_UART16550_H */
