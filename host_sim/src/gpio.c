@@ -151,20 +151,19 @@ static void pin_state_of(unsigned pin, struct hs_pin_state *st)
 }
 
 /* Recomputes pin from both sides; handles edges, interrupts, trace, watchers. */
-static void pin_resolve(unsigned pin)
+static void pin_resolve(unsigned pin, bool notify)
 {
 	struct pin *p = &g.pins[pin];
 	unsigned pair = pin / 32U, bit = pin % 32U;
 	uint32_t m = 1U << bit;
-	bool out = false, drives, level, changed;
+	bool out, drives, level, changed;
 	bool old_drives = p->soc_drives, old_level = p->level, old_cont = p->contention;
 
 	if (!g.region)
 		return;
 	p->muxed = pin_muxed(pin);
 	drives = p->muxed && !(pair_reg(pair, R_DIR) & m);
-	if (drives)
-		out = (pair_reg(pair, R_OUT_DATA) & m) != 0;
+	out = (pair_reg(pair, R_OUT_DATA) & m) != 0;
 	if (drives)
 		level = out;
 	else
@@ -195,7 +194,7 @@ static void pin_resolve(unsigned pin)
 		}
 	}
 	pin_trace(pin);
-	if (changed || drives != old_drives || p->contention != old_cont) {
+	if (notify || changed || drives != old_drives || p->contention != old_cont) {
 		struct hs_pin_state st;
 
 		pin_state_of(pin, &st);
@@ -238,7 +237,7 @@ static void soc_side_written(void *ctx, const struct hs_access *a, uint32_t old,
 		unsigned pin = 32U * pair + b;
 
 		if ((diff & (1U << b)) && pin < HS_GPIO_NPINS)
-			pin_resolve(pin);
+			pin_resolve(pin, true);
 	}
 }
 
@@ -260,7 +259,7 @@ static void pinmux_changed(void *ctx, uint32_t offset, uint32_t old, uint32_t no
 
 		if (pin_mux_field(pin, &reg, &shift) && 0x120U + 4U * reg == offset &&
 		    (((old ^ now) >> shift) & 0xFU))
-			pin_resolve(pin);
+			pin_resolve(pin, true);
 	}
 }
 
@@ -352,7 +351,7 @@ void hs_gpio_drive(unsigned pin, enum hs_pin_ext ext)
 		return;
 	p->ext = (uint8_t)ext;
 	pin_trace_declare(pin);
-	pin_resolve(pin);
+	pin_resolve(pin, true);
 }
 
 void hs_gpio_set_input(unsigned pin, int level)
