@@ -118,7 +118,7 @@ int misc_register(struct miscdevice *misc)
 	int minor, err;
 	SIL_PRE_LOC;
 
-	might_sleep();
+	(void)lx_might_sleep_check("misc_register()", __FILE__, __LINE__);
 	if (!misc || !misc->fops || !name_ok(misc->name))
 		return -EINVAL;
 	dynamic = misc->minor == MISC_DYNAMIC_MINOR;
@@ -152,7 +152,7 @@ void misc_deregister(struct miscdevice *misc)
 	unsigned int i;
 	SIL_PRE_LOC;
 
-	might_sleep();
+	(void)lx_might_sleep_check("misc_deregister()", __FILE__, __LINE__);
 	if (!misc)
 		return;
 	SIL_LOC_INT();
@@ -176,7 +176,7 @@ int register_chrdev(unsigned int major, const char *name, const struct file_oper
 	int err = 0;
 	SIL_PRE_LOC;
 
-	might_sleep();
+	(void)lx_might_sleep_check("register_chrdev()", __FILE__, __LINE__);
 	if (!fops || !name_ok(name) || major > 511 || major == MISC_MAJOR)
 		return -EINVAL;
 	SIL_LOC_INT();
@@ -203,7 +203,7 @@ void unregister_chrdev(unsigned int major, const char *name)
 	unsigned int i;
 	SIL_PRE_LOC;
 
-	might_sleep();
+	(void)lx_might_sleep_check("unregister_chrdev()", __FILE__, __LINE__);
 	SIL_LOC_INT();
 	for (i = 0; i < LX_NR_DEV_NODES; i++) {
 		if (nodes[i].in_use && !nodes[i].misc && MAJOR(nodes[i].devt) == major &&
@@ -239,7 +239,7 @@ int lx_dev_open(const char *path, int flags, struct file **filep)
 	int err;
 	SIL_PRE_LOC;
 
-	might_sleep();
+	(void)lx_might_sleep_check("lx_dev_open()", __FILE__, __LINE__);
 	if (!filep)
 		return -EINVAL;
 	*filep = NULL;
@@ -293,7 +293,7 @@ int lx_dev_close(struct file *file)
 {
 	struct open_file *of;
 
-	might_sleep();
+	(void)lx_might_sleep_check("lx_dev_close()", __FILE__, __LINE__);
 	if (!file)
 		return -EBADF;
 	of = container_of(file, struct open_file, file);
@@ -315,7 +315,7 @@ int lx_dev_mmap(struct file *file, size_t length, void **addr)
 	struct vm_area_struct vma;
 	int err;
 
-	might_sleep();
+	(void)lx_might_sleep_check("lx_dev_mmap()", __FILE__, __LINE__);
 	if (!file)
 		return -EBADF;
 	if (!addr)

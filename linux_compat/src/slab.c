@@ -245,7 +245,7 @@ void *kmalloc(size_t size, gfp_t flags)
 	SIL_PRE_LOC;
 
 	if (gfpflags_allow_blocking(flags))
-		might_sleep();
+		(void)lx_might_sleep_check("kmalloc(GFP_KERNEL)", __FILE__, __LINE__);
 	if (size == 0)
 		return ZERO_SIZE_PTR;
 
@@ -300,8 +300,8 @@ void kfree(const void *objp)
 	}
 	SIL_UNL_INT();
 	if (g == NO_BLOCK)
-		lx_report("kfree of a pointer that is not a live kmalloc block", __FILE__, __LINE__,
-			  "kfree(%p): double free or not from kmalloc", objp);
+		lx_report("bad kfree", __FILE__, __LINE__,
+			  "kfree(%p): not a live kmalloc block (double free, or not from kmalloc)", objp);
 }
 
 size_t ksize(const void *objp)
@@ -318,8 +318,8 @@ size_t ksize(const void *objp)
 		size = order_bytes(block_state[g] & BLK_ORDER);
 	SIL_UNL_INT();
 	if (g == NO_BLOCK) {
-		lx_report("ksize of a pointer that is not a live kmalloc block", __FILE__, __LINE__,
-			  "ksize(%p)", objp);
+		lx_report("bad ksize", __FILE__, __LINE__,
+			  "ksize(%p): not a live kmalloc block", objp);
 		return 0;
 	}
 	/* As with KASAN: the caller may now use the whole block. */
@@ -412,7 +412,7 @@ struct kmem_cache *kmem_cache_create(const char *name, unsigned int size, unsign
 {
 	struct kmem_cache *cache;
 
-	might_sleep();
+	(void)lx_might_sleep_check("kmem_cache_create()", __FILE__, __LINE__);
 	if (align == 0)
 		align = ARCH_KMALLOC_MINALIGN;
 	if ((__force unsigned int)flags & (__force unsigned int)SLAB_HWCACHE_ALIGN && align < 32)
