@@ -48,9 +48,9 @@ static void protected_written(void *ctx, const struct hs_access *a, uint32_t old
 		hs_reg_set(sc.r0, a->offset, old);
 		if (a->reg->count)
 			snprintf(idx, sizeof(idx), "[%u]", a->index);
-		rtos_host_bug("host_sim", "write of 0x%08" PRIx32 " to SYSCFG0.%s%s (0x%08" PRIx32 ") at %" PRIu64
-			      " ns while SYSCFG0 is locked: dropped (write KICK0R=0x%08X and KICK1R=0x%08X first)",
-			      written, a->reg->name, idx, (uint32_t)(HS_SYSCFG0_BASE + a->offset), rtos_host_now(),
+		rtos_host_bug("host_sim", "write of 0x%08" PRIx32 " to SYSCFG0.%s%s (0x%08" PRIx32 ")"
+			      " while SYSCFG0 is locked: dropped (write KICK0R=0x%08X and KICK1R=0x%08X first)",
+			      written, a->reg->name, idx, (uint32_t)(HS_SYSCFG0_BASE + a->offset),
 			      HS_KICK0_UNLOCK, HS_KICK1_UNLOCK);
 		return;
 	}
