@@ -22,9 +22,9 @@ static void emit_report(const char *what, const char *file, int line, const char
 {
 #if defined(EV3LX_HOST)
 	if (file != NULL)
-		rtos_host_bug(what, "%s at %s:%d: %s", what, file, line, detail);
+		rtos_host_bug(what, "at %s:%d: %s", file, line, detail);
 	else
-		rtos_host_bug(what, "%s: %s", what, detail);
+		rtos_host_bug(what, "%s", detail);
 #else
 	if (file != NULL)
 		syslog(LOG_EMERG, "BUG: %s at %s:%d: %s", what, file, line, detail);

@@ -1,0 +1,45 @@
+/*
+ * linux_compat/config.h — linux_compat's RTOS configuration.
+ *
+ * An application INCLUDEs linux_compat_cfg in its rtos_cfg (.includes).  It
+ * brings:
+ *   - the kernel worker task LX_WORKER_TSKID (TNUM_TSKID, the top of the
+ *     task range) at priority LX_WORKER_PRIORITY: it runs every module_init
+ *     at boot (linux/module.h), then serves the workqueues;
+ *   - the ISR lx_tick_isr on the tick line INTNO_TICK (hrtimers, jiffies,
+ *     timer_list, deferred wakeups);
+ *   - the ATT_INI lx_compat_boot, which resets linux_compat's state;
+ *   - linux_irq_cfg: the Linux interrupt lines (CFG_INT + ATT_ISR rows, see
+ *     linux_compat/irq.h) - do not include it a second time.
+ * Reserved IDs: task TNUM_TSKID.  No semaphores, eventflags, cyclics or
+ * alarms are used (linux_compat's primitives are native).
+ *
+ * LX_WORKER_PRIORITY and LX_WORKER_STACK may be overridden at build time
+ * (-D); the priority can also be changed at run time with chg_pri.
+ */
+#ifndef _LINUX_COMPAT_CONFIG_H
+#define _LINUX_COMPAT_CONFIG_H
+
+#include <rtos_cfg.h>
+
+#define LX_WORKER_TSKID		TNUM_TSKID
+
+#ifndef LX_WORKER_PRIORITY
+#define LX_WORKER_PRIORITY	4
+#endif
+
+#ifndef LX_WORKER_STACK
+#define LX_WORKER_STACK		(32 * 1024)
+#endif
+
+/* linux_compat's configuration fragment (includes linux_irq_cfg). */
+extern const struct rtos_cfg linux_compat_cfg;
+/* The Linux interrupt lines (linux_compat/src/irq_cfg.c). */
+extern const struct rtos_cfg linux_irq_cfg;
+
+/* ATT_INI of linux_compat_cfg: clears all linux_compat state (a fresh boot). */
+void lx_compat_boot(intptr_t exinf);
+/* The worker task's body: module inits, then the workqueues. */
+void lx_worker_task(intptr_t exinf);
+
+#endif /* _LINUX_COMPAT_CONFIG_H */

@@ -1,0 +1,34 @@
+/*
+ * config.c — linux_compat_cfg, linux_compat's RTOS configuration fragment
+ * (linux_compat/config.h lists what it brings and which IDs it reserves).
+ * On the AM1808 the same rows go into the HRP2 .cfg.
+ */
+#include <rtos_cfg.h>
+#include <linux_compat/config.h>
+#include <linux_compat/clock.h>
+
+static const struct rtos_task_cfg lx_tasks[] = {
+	{ LX_WORKER_TSKID, TA_ACT, 0, lx_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
+	  TDOM_KERNEL, "lx_worker" },
+};
+
+static const struct rtos_isr_cfg lx_isrs[] = {
+	{ TA_NULL, 0, INTNO_TICK, lx_tick_isr, 1 },
+};
+
+static const struct rtos_ini_cfg lx_inis[] = {
+	{ lx_compat_boot, 0 },
+};
+
+static const struct rtos_cfg *const lx_includes[] = {
+	&linux_irq_cfg,
+	NULL,
+};
+
+const struct rtos_cfg linux_compat_cfg = {
+	.name = "linux_compat",
+	.tasks = RTOS_TABLE(lx_tasks),
+	.isrs = RTOS_TABLE(lx_isrs),
+	.inis = RTOS_TABLE(lx_inis),
+	.includes = lx_includes,
+};

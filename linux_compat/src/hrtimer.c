@@ -1,0 +1,335 @@
+/*
+ * hrtimer.c — hrtimers on the RTOS tick.
+ *
+ * One doubly linked queue sorted by (expiry, queueing sequence).  The tick
+ * ISR compares the head's expiry with the tick's time - the whole cost of a
+ * tick with nothing due - and runs due callbacks one after another in its
+ * own interrupt context.  Queue updates are made under SIL_LOC_INT, so
+ * timers may be started and cancelled from any context.
+ */
+#include <linux/hrtimer.h>
+#include <linux/kernel.h>
+#include <linux_compat/clock.h>
+#include <linux_compat/context.h>
+#include <linux_compat/report.h>
+#include <kernel.h>
+#include <sil.h>
+
+#define HRTIMER_MAGIC	0x68727469U    /* "hrti": set by hrtimer_init */
+
+const unsigned int hrtimer_resolution = (unsigned int)TIC_NS;
+
+static struct {
+	struct hrtimer *head;
+	u64 next_seq;
+	/* The timer whose callback runs; the timer itself is not touched after a
+	 * callback returning HRTIMER_NORESTART (it may have freed it). */
+	struct hrtimer *running;
+} queue;
+
+/* Empties the queue (boot). */
+void lx_hrtimer_reset(void)
+{
+	queue.head = NULL;
+	queue.next_seq = 0;
+	queue.running = NULL;
+	lx_set_running_hrtimer(NULL);
+}
+
+/* True if a sorts before b: earlier expiry, or equal expiry queued earlier. */
+static bool sorts_before(const struct hrtimer *a, const struct hrtimer *b)
+{
+	return a->lx_expires < b->lx_expires ||
+	       (a->lx_expires == b->lx_expires && a->lx_seq < b->lx_seq);
+}
+
+/* Inserts timer in order; interrupts locked by the caller. */
+static void enqueue_locked(struct hrtimer *timer)
+{
+	struct hrtimer *prev = NULL, *cur = queue.head;
+
+	timer->lx_seq = queue.next_seq++;
+	while (cur != NULL && !sorts_before(timer, cur)) {
+		prev = cur;
+		cur = cur->lx_next;
+	}
+	timer->lx_prev = prev;
+	timer->lx_next = cur;
+	if (cur != NULL)
+		cur->lx_prev = timer;
+	if (prev != NULL)
+		prev->lx_next = timer;
+	else
+		queue.head = timer;
+	timer->lx_queued = 1;
+}
+
+/* Unlinks a queued timer; interrupts locked by the caller. */
+static void dequeue_locked(struct hrtimer *timer)
+{
+	if (timer->lx_prev != NULL)
+		timer->lx_prev->lx_next = timer->lx_next;
+	else
+		queue.head = timer->lx_next;
+	if (timer->lx_next != NULL)
+		timer->lx_next->lx_prev = timer->lx_prev;
+	timer->lx_next = timer->lx_prev = NULL;
+	timer->lx_queued = 0;
+}
+
+/* Prepares timer; reports re-initialisation of a queued timer (which is dequeued first). */
+void hrtimer_init(struct hrtimer *timer, clockid_t clock_id, enum hrtimer_mode mode)
+{
+	SIL_PRE_LOC;
+
+	(void)mode;
+	if (timer == NULL) {
+		lx_report("hrtimer_init", NULL, 0, "NULL timer");
+		return;
+	}
+	SIL_LOC_INT();
+	if (timer->lx_magic == HRTIMER_MAGIC && timer->lx_queued) {
+		dequeue_locked(timer);
+		SIL_UNL_INT();
+		lx_report("hrtimer_init on an active timer", NULL, 0,
+			  "timer %p was queued; it is dequeued", (void *)timer);
+		SIL_LOC_INT();
+	}
+	timer->function = NULL;
+	timer->lx_next = timer->lx_prev = NULL;
+	timer->lx_expires = 0;
+	timer->lx_seq = 0;
+	timer->lx_clockid = clock_id;
+	timer->lx_queued = 0;
+	timer->lx_cancelled = 0;
+	timer->lx_magic = HRTIMER_MAGIC;
+	SIL_UNL_INT();
+}
+
+/* hrtimer_init plus the callback (Linux 6.13's form). */
+void hrtimer_setup(struct hrtimer *timer, enum hrtimer_restart (*function)(struct hrtimer *),
+		   clockid_t clock_id, enum hrtimer_mode mode)
+{
+	hrtimer_init(timer, clock_id, mode);
+	if (timer != NULL)
+		timer->function = function;
+}
+
+/* Checks that timer can be queued; reports and returns false if not. */
+static bool startable(struct hrtimer *timer, const char *what)
+{
+	if (timer == NULL) {
+		lx_report(what, NULL, 0, "NULL timer");
+		return false;
+	}
+	if (timer->lx_magic != HRTIMER_MAGIC) {
+		lx_report(what, NULL, 0, "timer %p was never initialised (hrtimer_init/hrtimer_setup)",
+			  (void *)timer);
+		return false;
+	}
+	if (timer->function == NULL) {
+		lx_report(what, NULL, 0, "timer %p has no callback (function is NULL)", (void *)timer);
+		return false;
+	}
+	return true;
+}
+
+/* Queues timer at its absolute expiry (dequeuing it first if queued). */
+static void requeue_at(struct hrtimer *timer, ktime_t expires)
+{
+	SIL_PRE_LOC;
+
+	SIL_LOC_INT();
+	if (timer->lx_queued)
+		dequeue_locked(timer);
+	timer->lx_expires = expires;
+	timer->lx_cancelled = 0;
+	enqueue_locked(timer);
+	SIL_UNL_INT();
+}
+
+/* (Re)queues timer at tim (ABS) or now + tim (REL). */
+void hrtimer_start(struct hrtimer *timer, ktime_t tim, const enum hrtimer_mode mode)
+{
+	if (!startable(timer, "hrtimer_start"))
+		return;
+	if (mode & HRTIMER_MODE_REL)
+		tim = ktime_add_safe(ktime_get(), tim < 0 ? 0 : tim);
+	requeue_at(timer, tim);
+}
+
+/* hrtimer_start; the slack is not used (expiry is served at tim). */
+void hrtimer_start_range_ns(struct hrtimer *timer, ktime_t tim, u64 delta_ns,
+			    const enum hrtimer_mode mode)
+{
+	(void)delta_ns;
+	hrtimer_start(timer, tim, mode);
+}
+
+/* Requeues timer at its current expiry. */
+void hrtimer_restart(struct hrtimer *timer)
+{
+	if (startable(timer, "hrtimer_restart"))
+		requeue_at(timer, timer->lx_expires);
+}
+
+/* Dequeues timer: 1 if it was queued, 0 if inactive, -1 while its callback runs. */
+int hrtimer_try_to_cancel(struct hrtimer *timer)
+{
+	int ret;
+	SIL_PRE_LOC;
+
+	if (timer == NULL || timer->lx_magic != HRTIMER_MAGIC)
+		return 0;
+	SIL_LOC_INT();
+	if (queue.running == timer) {
+		ret = -1;
+	} else if (timer->lx_queued) {
+		dequeue_locked(timer);
+		ret = 1;
+	} else {
+		ret = 0;
+	}
+	SIL_UNL_INT();
+	return ret;
+}
+
+/* Stops timer; 1 if it was active.  Self-cancellation is reported, never waited for. */
+int hrtimer_cancel(struct hrtimer *timer)
+{
+	int ret;
+	SIL_PRE_LOC;
+
+	if (timer == NULL || timer->lx_magic != HRTIMER_MAGIC)
+		return 0;
+	SIL_LOC_INT();
+	if (queue.running != timer) {
+		ret = timer->lx_queued ? 1 : 0;
+		if (timer->lx_queued)
+			dequeue_locked(timer);
+		SIL_UNL_INT();
+		return ret;
+	}
+	/* Linux would wait for the callback to finish: from the callback itself
+	 * (or anything it interrupted) that never happens. */
+	if (timer->lx_queued)
+		dequeue_locked(timer);
+	timer->lx_cancelled = 1;
+	SIL_UNL_INT();
+	lx_report("hrtimer_cancel would deadlock", NULL, 0,
+		  "timer %p cancelled while its callback runs (%s); use hrtimer_try_to_cancel "
+		  "or return HRTIMER_NORESTART", (void *)timer,
+		  lx_running_hrtimer() == timer ? "from its own callback" : "from a context it interrupted");
+	return 1;
+}
+
+/* Advances the expiry from the previous expiry past now in whole intervals; their count. */
+u64 hrtimer_forward(struct hrtimer *timer, ktime_t now, ktime_t interval)
+{
+	u64 overruns;
+
+	if (timer == NULL)
+		return 0;
+	if (timer->lx_queued) {
+		lx_report("hrtimer_forward on a queued timer", NULL, 0,
+			  "timer %p is queued; forward it only from its callback or when stopped",
+			  (void *)timer);
+		return 0;
+	}
+	if (now < timer->lx_expires)
+		return 0;
+	if (interval <= 0) {
+		lx_report("hrtimer_forward", NULL, 0, "interval %lld ns is not positive",
+			  (long long)interval);
+		interval = 1;
+	}
+	overruns = (u64)(now - timer->lx_expires) / (u64)interval + 1U;
+	timer->lx_expires = ktime_add_safe(timer->lx_expires, (ktime_t)(overruns * (u64)interval));
+	return overruns;
+}
+
+/* hrtimer_forward from the current time. */
+u64 hrtimer_forward_now(struct hrtimer *timer, ktime_t interval)
+{
+	return hrtimer_forward(timer, ktime_get(), interval);
+}
+
+/* Queued or running. */
+bool hrtimer_active(const struct hrtimer *timer)
+{
+	return timer != NULL && timer->lx_magic == HRTIMER_MAGIC &&
+	       (timer->lx_queued || queue.running == timer);
+}
+
+/* Queued. */
+bool hrtimer_is_queued(struct hrtimer *timer)
+{
+	return timer != NULL && timer->lx_magic == HRTIMER_MAGIC && timer->lx_queued;
+}
+
+/* Callback running. */
+bool hrtimer_callback_running(struct hrtimer *timer)
+{
+	return timer != NULL && queue.running == timer;
+}
+
+/* Expiry minus now. */
+ktime_t hrtimer_get_remaining(const struct hrtimer *timer)
+{
+	return timer->lx_expires - ktime_get();
+}
+
+/*
+ * Takes the first due timer queued before this tick's pass began (limit) off the
+ * queue and marks it running; NULL if none.  Timers a callback re-queues at a time
+ * already due wait for the next tick instead of looping.
+ */
+static struct hrtimer *take_due(u64 now, u64 limit)
+{
+	struct hrtimer *t;
+	SIL_PRE_LOC;
+
+	SIL_LOC_INT();
+	for (t = queue.head; t != NULL && t->lx_expires <= (ktime_t)now; t = t->lx_next)
+		if (t->lx_seq < limit)
+			break;
+	if (t != NULL && t->lx_expires <= (ktime_t)now) {
+		dequeue_locked(t);
+		t->lx_cancelled = 0;
+		queue.running = t;
+	} else {
+		t = NULL;
+	}
+	SIL_UNL_INT();
+	return t;
+}
+
+/* Runs every timer due at now, in expiry order, in the calling (tick ISR) context. */
+void lx_hrtimer_run_due(uint64_t now)
+{
+	struct hrtimer *t;
+	enum hrtimer_restart ret;
+	u64 limit;
+	SIL_PRE_LOC;
+
+	/* The per-tick fast path: nothing due. */
+	t = queue.head;
+	if (t == NULL || t->lx_expires > (ktime_t)now)
+		return;
+	limit = queue.next_seq;
+	while ((t = take_due(now, limit)) != NULL) {
+		lx_set_running_hrtimer(t);
+		lx_timer_callback_enter(true, t);
+		ret = t->function(t);
+		lx_timer_callback_exit();
+		lx_set_running_hrtimer(NULL);
+		SIL_LOC_INT();
+		queue.running = NULL;
+		/* A timer the callback started again stays where it was put. */
+		if (ret == HRTIMER_RESTART && !t->lx_queued && !t->lx_cancelled)
+			enqueue_locked(t);
+		if (ret == HRTIMER_RESTART)
+			t->lx_cancelled = 0;
+		SIL_UNL_INT();
+	}
+}

@@ -1,0 +1,383 @@
+/*
+ * module.c — the module table: init order, exit, references, parameters.
+ *
+ * Initcalls and parameters are found through the linker sections
+ * "lx_initcalls" and "lx_module_params" (linux/module.h): GNU ld defines
+ * __start_<section> / __stop_<section> for them.  They are declared weak so
+ * that an image without any module links too.
+ */
+#include <linux/module.h>
+#include <linux/moduleparam.h>
+#include <linux/kernel.h>
+#include <linux/string.h>
+#include <linux/errno.h>
+#include <linux_compat/report.h>
+#include <stdio.h>
+#include <sil.h>
+
+extern const struct lx_initcall *const __start_lx_initcalls[] __attribute__((__weak__));
+extern const struct lx_initcall *const __stop_lx_initcalls[] __attribute__((__weak__));
+extern const struct lx_module_param *const __start_lx_module_params[] __attribute__((__weak__));
+extern const struct lx_module_param *const __stop_lx_module_params[] __attribute__((__weak__));
+
+/* Live modules, most recently initialised first (the exit order). */
+static struct module *live_modules;
+
+/* The number of initcall entries linked. */
+static size_t initcall_count(void)
+{
+	if (__start_lx_initcalls == NULL || __stop_lx_initcalls == NULL)
+		return 0;
+	return (size_t)(__stop_lx_initcalls - __start_lx_initcalls);
+}
+
+/* The number of parameter entries linked. */
+static size_t param_count(void)
+{
+	if (__start_lx_module_params == NULL || __stop_lx_module_params == NULL)
+		return 0;
+	return (size_t)(__stop_lx_module_params - __start_lx_module_params);
+}
+
+/* True if a runs before b: lower level, then module name, then init before exit entries. */
+static bool init_order_before(const struct lx_initcall *a, const struct lx_initcall *b)
+{
+	int cmp;
+
+	if (a->level != b->level)
+		return a->level < b->level;
+	cmp = strcmp(module_name(a->module), module_name(b->module));
+	if (cmp != 0)
+		return cmp < 0;
+	return (uintptr_t)a < (uintptr_t)b;
+}
+
+/* The module_exit function linked for mod, or NULL. */
+static void (*exit_of(const struct module *mod))(void)
+{
+	size_t i, n = initcall_count();
+
+	for (i = 0; i < n; i++)
+		if (__start_lx_initcalls[i]->module == mod && __start_lx_initcalls[i]->exit != NULL)
+			return __start_lx_initcalls[i]->exit;
+	return NULL;
+}
+
+/* The next init entry to run after `prev` in the documented order (NULL = first). */
+static const struct lx_initcall *next_init(const struct lx_initcall *prev)
+{
+	const struct lx_initcall *best = NULL, *c;
+	size_t i, n = initcall_count();
+
+	for (i = 0; i < n; i++) {
+		c = __start_lx_initcalls[i];
+		if (c->init == NULL)
+			continue;
+		if (prev != NULL && !init_order_before(prev, c))
+			continue;
+		if (best == NULL || init_order_before(c, best))
+			best = c;
+	}
+	return best;
+}
+
+/* Makes mod live: at the head of the live list. */
+static void make_live(struct module *mod)
+{
+	mod->state = MODULE_STATE_LIVE;
+	mod->next_live = live_modules;
+	live_modules = mod;
+}
+
+/* Runs each module_init once in order; the number that failed. */
+int lx_modules_init(void)
+{
+	const struct lx_initcall *c = NULL;
+	size_t i, n = initcall_count();
+	struct module *mod;
+	int failed = 0, ret;
+
+	while ((c = next_init(c)) != NULL) {
+		mod = c->module;
+		if (mod == NULL || mod->state != MODULE_STATE_UNFORMED)
+			continue;
+		mod->state = MODULE_STATE_COMING;
+		ret = c->init();
+		mod->init_result = ret;
+		if (ret != 0) {
+			mod->state = MODULE_STATE_FAILED;
+			pr_err("module %s: init failed (%d); its exit will not be called\n",
+			       mod->name, ret);
+			failed++;
+			continue;
+		}
+		make_live(mod);
+	}
+	/* Modules with only a module_exit are live from the start, as in Linux. */
+	for (i = 0; i < n; i++) {
+		mod = __start_lx_initcalls[i]->module;
+		if (mod != NULL && mod->state == MODULE_STATE_UNFORMED)
+			make_live(mod);
+	}
+	return failed;
+}
+
+/* Runs module_exit of the live modules, newest first; all become uninitialised. */
+void lx_modules_exit(void)
+{
+	struct module *mod;
+	void (*exit_fn)(void);
+	size_t i, n = initcall_count();
+
+	while ((mod = live_modules) != NULL) {
+		live_modules = mod->next_live;
+		mod->next_live = NULL;
+		if (mod->refcnt != 0)
+			pr_warn("module %s: unloaded with %d references held\n", mod->name, mod->refcnt);
+		mod->state = MODULE_STATE_GOING;
+		exit_fn = exit_of(mod);
+		if (exit_fn != NULL)
+			exit_fn();
+		mod->state = MODULE_STATE_UNFORMED;
+	}
+	/* Failed modules may be tried again at the next lx_modules_init. */
+	for (i = 0; i < n; i++) {
+		mod = __start_lx_initcalls[i]->module;
+		if (mod != NULL) {
+			mod->state = MODULE_STATE_UNFORMED;
+			mod->init_result = 0;
+			mod->refcnt = 0;
+		}
+	}
+}
+
+/* The linked module called name, or NULL. */
+struct module *lx_module_find(const char *name)
+{
+	size_t i, n = initcall_count();
+
+	if (name == NULL)
+		return NULL;
+	for (i = 0; i < n; i++) {
+		struct module *mod = __start_lx_initcalls[i]->module;
+
+		if (mod != NULL && strcmp(mod->name, name) == 0)
+			return mod;
+	}
+	return NULL;
+}
+
+/* The module's name; "kernel" for built-in code. */
+const char *module_name(const struct module *mod)
+{
+	return mod != NULL ? mod->name : "kernel";
+}
+
+/* A reference unless the module is going or failed. */
+bool try_module_get(struct module *mod)
+{
+	bool ok;
+	SIL_PRE_LOC;
+
+	if (mod == NULL)
+		return true;
+	SIL_LOC_INT();
+	ok = mod->state == MODULE_STATE_LIVE || mod->state == MODULE_STATE_COMING;
+	if (ok)
+		mod->refcnt++;
+	SIL_UNL_INT();
+	return ok;
+}
+
+/* A reference, unconditionally. */
+void __module_get(struct module *mod)
+{
+	SIL_PRE_LOC;
+
+	if (mod == NULL)
+		return;
+	SIL_LOC_INT();
+	mod->refcnt++;
+	SIL_UNL_INT();
+}
+
+/* Drops a reference; reports an unbalanced put. */
+void module_put(struct module *mod)
+{
+	bool underflow;
+	SIL_PRE_LOC;
+
+	if (mod == NULL)
+		return;
+	SIL_LOC_INT();
+	underflow = mod->refcnt <= 0;
+	if (!underflow)
+		mod->refcnt--;
+	SIL_UNL_INT();
+	if (underflow)
+		lx_report("module_put without a reference", NULL, 0, "module %s", mod->name);
+}
+
+/* References held. */
+int module_refcount(struct module *mod)
+{
+	return mod != NULL ? mod->refcnt : 0;
+}
+
+/* The parameter entry for module/param, or NULL. */
+static const struct lx_module_param *find_param(const char *module, const char *param)
+{
+	size_t i, n = param_count();
+
+	for (i = 0; i < n; i++) {
+		const struct lx_module_param *p = __start_lx_module_params[i];
+
+		if (strcmp(p->module, module) == 0 && strcmp(p->name, param) == 0)
+			return p;
+	}
+	return NULL;
+}
+
+/* Parses value for p and stores it: 0 or -EINVAL / -ERANGE. */
+static int store_param(const struct lx_module_param *p, const char *value)
+{
+	long long sv;
+	unsigned long long uv;
+	bool bv;
+	int ret = 0;
+
+	switch (p->type) {
+	case LX_PARAM_charp:
+		*(const char **)p->arg = value;
+		return 0;
+	case LX_PARAM_bool:
+	case LX_PARAM_invbool:
+		/* Linux also accepts an empty value (a bare flag) as true. */
+		if (value[0] == '\0')
+			bv = true;
+		else
+			ret = kstrtobool(value, &bv);
+		if (ret == 0)
+			*(bool *)p->arg = p->type == LX_PARAM_bool ? bv : !bv;
+		return ret;
+	case LX_PARAM_int:
+		ret = kstrtoll(value, 0, &sv);
+		if (ret == 0 && (sv < INT_MIN || sv > INT_MAX))
+			ret = -ERANGE;
+		if (ret == 0)
+			*(int *)p->arg = (int)sv;
+		return ret;
+	case LX_PARAM_short:
+		ret = kstrtoll(value, 0, &sv);
+		if (ret == 0 && (sv < SHRT_MIN || sv > SHRT_MAX))
+			ret = -ERANGE;
+		if (ret == 0)
+			*(short *)p->arg = (short)sv;
+		return ret;
+	case LX_PARAM_long:
+		ret = kstrtoll(value, 0, &sv);
+		if (ret == 0 && (sv < LONG_MIN || sv > LONG_MAX))
+			ret = -ERANGE;
+		if (ret == 0)
+			*(long *)p->arg = (long)sv;
+		return ret;
+	case LX_PARAM_uint:
+		ret = kstrtoull(value, 0, &uv);
+		if (ret == 0 && uv > UINT_MAX)
+			ret = -ERANGE;
+		if (ret == 0)
+			*(unsigned int *)p->arg = (unsigned int)uv;
+		return ret;
+	case LX_PARAM_ushort:
+		ret = kstrtoull(value, 0, &uv);
+		if (ret == 0 && uv > USHRT_MAX)
+			ret = -ERANGE;
+		if (ret == 0)
+			*(unsigned short *)p->arg = (unsigned short)uv;
+		return ret;
+	case LX_PARAM_ulong:
+		ret = kstrtoull(value, 0, &uv);
+		if (ret == 0 && uv > ULONG_MAX)
+			ret = -ERANGE;
+		if (ret == 0)
+			*(unsigned long *)p->arg = (unsigned long)uv;
+		return ret;
+	case LX_PARAM_byte:
+		ret = kstrtoull(value, 0, &uv);
+		if (ret == 0 && uv > UCHAR_MAX)
+			ret = -ERANGE;
+		if (ret == 0)
+			*(unsigned char *)p->arg = (unsigned char)uv;
+		return ret;
+	}
+	return -EINVAL;
+}
+
+/* Sets a module parameter from text before the module is initialised. */
+ER lx_module_param_set(const char *module, const char *param, const char *value)
+{
+	const struct lx_module_param *p;
+	struct module *mod;
+
+	if (module == NULL || param == NULL || value == NULL)
+		return E_PAR;
+	p = find_param(module, param);
+	if (p == NULL)
+		return E_NOEXS;
+	mod = lx_module_find(module);
+	if (mod != NULL && mod->state != MODULE_STATE_UNFORMED)
+		return E_OBJ;
+	if (store_param(p, value) != 0) {
+		pr_err("module %s: bad value \"%s\" for parameter %s\n", module, value, param);
+		return E_PAR;
+	}
+	return E_OK;
+}
+
+/* Formats a module parameter's value into buf. */
+ER lx_module_param_get(const char *module, const char *param, char *buf, SIZE len)
+{
+	const struct lx_module_param *p;
+
+	if (module == NULL || param == NULL || buf == NULL || len == 0)
+		return E_PAR;
+	p = find_param(module, param);
+	if (p == NULL)
+		return E_NOEXS;
+	switch (p->type) {
+	case LX_PARAM_charp: {
+		const char *s = *(const char **)p->arg;
+
+		snprintf(buf, len, "%s", s != NULL ? s : "(null)");
+		break;
+	}
+	case LX_PARAM_bool:
+		snprintf(buf, len, "%c", *(bool *)p->arg ? 'Y' : 'N');
+		break;
+	case LX_PARAM_invbool:
+		snprintf(buf, len, "%c", *(bool *)p->arg ? 'N' : 'Y');
+		break;
+	case LX_PARAM_int:
+		snprintf(buf, len, "%d", *(int *)p->arg);
+		break;
+	case LX_PARAM_short:
+		snprintf(buf, len, "%hd", *(short *)p->arg);
+		break;
+	case LX_PARAM_long:
+		snprintf(buf, len, "%ld", *(long *)p->arg);
+		break;
+	case LX_PARAM_uint:
+		snprintf(buf, len, "%u", *(unsigned int *)p->arg);
+		break;
+	case LX_PARAM_ushort:
+		snprintf(buf, len, "%hu", *(unsigned short *)p->arg);
+		break;
+	case LX_PARAM_ulong:
+		snprintf(buf, len, "%lu", *(unsigned long *)p->arg);
+		break;
+	case LX_PARAM_byte:
+		snprintf(buf, len, "%hhu", *(unsigned char *)p->arg);
+		break;
+	}
+	return E_OK;
+}

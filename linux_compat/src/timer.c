@@ -1,0 +1,237 @@
+/*
+ * timer.c — jiffies and timer_list timers, served by the tick ISR.
+ */
+#include <linux/timer.h>
+#include <linux/jiffies.h>
+#include <linux/kernel.h>
+#include <linux_compat/clock.h>
+#include <linux_compat/context.h>
+#include <linux_compat/report.h>
+#include <linux_compat/sched.h>
+#include <kernel.h>
+#include <sil.h>
+
+#define TIMER_MAGIC	LX_TIMER_MAGIC
+
+volatile unsigned long jiffies = INITIAL_JIFFIES;
+u64 jiffies_64 = INITIAL_JIFFIES;
+
+static struct {
+	struct timer_list *head;
+	u64 next_seq;
+	/* The timer whose callback runs (the timer is not touched after its
+	 * callback: the callback may free it). */
+	const struct timer_list *running;
+} tq;
+
+/* Empties the queue and restarts jiffies (boot). */
+void lx_timers_reset(void)
+{
+	tq.head = NULL;
+	tq.next_seq = 0;
+	tq.running = NULL;
+	jiffies_64 = INITIAL_JIFFIES;
+	jiffies = (unsigned long)jiffies_64;
+}
+
+/* Sets jiffies from the clock (tick ISR). */
+void lx_jiffies_update(uint64_t now)
+{
+	u64 j = (u64)INITIAL_JIFFIES + now / TICK_NSEC;
+	SIL_PRE_LOC;
+
+	SIL_LOC_INT();
+	jiffies_64 = j;
+	jiffies = (unsigned long)j;
+	SIL_UNL_INT();
+}
+
+/* jiffies_64 without tearing. */
+u64 get_jiffies_64(void)
+{
+	u64 j;
+	SIL_PRE_LOC;
+
+	SIL_LOC_INT();
+	j = jiffies_64;
+	SIL_UNL_INT();
+	return j;
+}
+
+/* Inserts timer sorted by expiry (wrap-safe), FIFO among equals; locked by the caller. */
+static void enqueue_locked(struct timer_list *timer)
+{
+	struct timer_list *prev = NULL, *cur = tq.head;
+
+	timer->lx_seq = tq.next_seq++;
+	while (cur != NULL && !time_before(timer->expires, cur->expires)) {
+		prev = cur;
+		cur = cur->lx_next;
+	}
+	timer->lx_prev = prev;
+	timer->lx_next = cur;
+	if (cur != NULL)
+		cur->lx_prev = timer;
+	if (prev != NULL)
+		prev->lx_next = timer;
+	else
+		tq.head = timer;
+	timer->lx_pending = 1;
+}
+
+/* Unlinks a pending timer; locked by the caller. */
+static void dequeue_locked(struct timer_list *timer)
+{
+	if (timer->lx_prev != NULL)
+		timer->lx_prev->lx_next = timer->lx_next;
+	else
+		tq.head = timer->lx_next;
+	if (timer->lx_next != NULL)
+		timer->lx_next->lx_prev = timer->lx_prev;
+	timer->lx_next = timer->lx_prev = NULL;
+	timer->lx_pending = 0;
+}
+
+/* Prepares timer with callback fn. */
+void timer_setup(struct timer_list *timer, void (*fn)(struct timer_list *), unsigned int flags)
+{
+	if (timer == NULL) {
+		lx_report("timer_setup", NULL, 0, "NULL timer");
+		return;
+	}
+	if (timer->lx_magic == TIMER_MAGIC && timer->lx_pending) {
+		lx_report("timer_setup on a pending timer", NULL, 0, "timer %p is dequeued",
+			  (void *)timer);
+		del_timer(timer);
+	}
+	timer->expires = 0;
+	timer->function = fn;
+	timer->flags = flags;
+	timer->lx_next = timer->lx_prev = NULL;
+	timer->lx_seq = 0;
+	timer->lx_pending = 0;
+	timer->lx_magic = TIMER_MAGIC;
+}
+
+/* Checks that timer is usable; reports if not. */
+static bool usable(struct timer_list *timer, const char *what)
+{
+	if (timer == NULL) {
+		lx_report(what, NULL, 0, "NULL timer");
+		return false;
+	}
+	if (timer->lx_magic != TIMER_MAGIC) {
+		lx_report(what, NULL, 0, "timer %p was never set up (timer_setup)", (void *)timer);
+		return false;
+	}
+	if (timer->function == NULL) {
+		lx_report(what, NULL, 0, "timer %p has no callback", (void *)timer);
+		return false;
+	}
+	return true;
+}
+
+/* (Re)queues timer at expires; 1 if it was pending. */
+int mod_timer(struct timer_list *timer, unsigned long expires)
+{
+	int was_pending;
+	SIL_PRE_LOC;
+
+	if (!usable(timer, "mod_timer"))
+		return 0;
+	SIL_LOC_INT();
+	was_pending = timer->lx_pending;
+	if (was_pending)
+		dequeue_locked(timer);
+	timer->expires = expires;
+	enqueue_locked(timer);
+	SIL_UNL_INT();
+	return was_pending;
+}
+
+/* Moves a pending timer earlier (never later), or queues an idle one. */
+int timer_reduce(struct timer_list *timer, unsigned long expires)
+{
+	if (timer != NULL && timer->lx_pending && !time_before(expires, timer->expires))
+		return 1;
+	return mod_timer(timer, expires);
+}
+
+/* Queues an idle timer at timer->expires. */
+void add_timer(struct timer_list *timer)
+{
+	if (timer != NULL && timer->lx_pending) {
+		lx_report("add_timer on a pending timer", NULL, 0, "timer %p (use mod_timer)",
+			  (void *)timer);
+		return;
+	}
+	if (timer != NULL)
+		(void)mod_timer(timer, timer->expires);
+}
+
+/* Dequeues timer; 1 if it was pending. */
+int del_timer(struct timer_list *timer)
+{
+	int was_pending;
+	SIL_PRE_LOC;
+
+	if (timer == NULL || timer->lx_magic != TIMER_MAGIC)
+		return 0;
+	SIL_LOC_INT();
+	was_pending = timer->lx_pending;
+	if (was_pending)
+		dequeue_locked(timer);
+	SIL_UNL_INT();
+	return was_pending;
+}
+
+/* del_timer; waiting for a running callback would deadlock from it, so that is reported. */
+int del_timer_sync(struct timer_list *timer)
+{
+	if (timer != NULL && tq.running == timer)
+		lx_report("del_timer_sync would deadlock", NULL, 0,
+			  "timer %p's callback is running (called from it or from what it interrupted)",
+			  (void *)timer);
+	else if (timer != NULL && lx_in_interrupt() && !(timer->flags & TIMER_IRQSAFE))
+		lx_report("del_timer_sync in interrupt context", NULL, 0,
+			  "timer %p: Linux forbids this for timers without TIMER_IRQSAFE", (void *)timer);
+	return del_timer(timer);
+}
+
+/* Takes the first due timer off the queue (marked running), or NULL. */
+static struct timer_list *take_due(unsigned long now, u64 limit)
+{
+	struct timer_list *t;
+	SIL_PRE_LOC;
+
+	SIL_LOC_INT();
+	for (t = tq.head; t != NULL && time_after_eq(now, t->expires); t = t->lx_next)
+		if (t->lx_seq < limit)
+			break;
+	if (t != NULL && time_after_eq(now, t->expires)) {
+		dequeue_locked(t);
+		tq.running = t;
+	} else {
+		t = NULL;
+	}
+	SIL_UNL_INT();
+	return t;
+}
+
+/* Runs the due timer_list callbacks (tick ISR), unless bottom halves are disabled. */
+void lx_timers_run_due(void)
+{
+	struct timer_list *t;
+	unsigned long now = jiffies;
+	u64 limit;
+
+	if (tq.head == NULL || time_before(now, tq.head->expires) || lx_bh_disabled())
+		return;
+	limit = tq.next_seq;
+	while ((t = take_due(now, limit)) != NULL) {
+		lx_timer_callback_enter(false, t);
+		t->function(t);
+		lx_timer_callback_exit();
+		tq.running = NULL;
+	}
+}

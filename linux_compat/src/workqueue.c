@@ -1,0 +1,425 @@
+/*
+ * workqueue.c — the kernel worker task and the one FIFO of work it serves.
+ *
+ * A work item's identity while queued or running is its queueing sequence
+ * number, so flushes wait for exactly the instance that was there when they
+ * started, and the worker never touches a work item after its function
+ * returned (the function may free it).
+ */
+#include <linux/workqueue.h>
+#include <linux/kernel.h>
+#include <linux/module.h>
+#include <linux/string.h>
+#include <linux/wait.h>
+#include <linux_compat/config.h>
+#include <linux_compat/context.h>
+#include <linux_compat/report.h>
+#include <linux_compat/sched.h>
+#include <linux_compat/workqueue.h>
+#include <stdio.h>
+#include <sil.h>
+
+static struct workqueue_struct default_wq = { .name = "events", .in_use = true };
+struct workqueue_struct *system_wq = &default_wq;
+struct workqueue_struct *system_highpri_wq = &default_wq;
+struct workqueue_struct *system_long_wq = &default_wq;
+struct workqueue_struct *system_unbound_wq = &default_wq;
+struct workqueue_struct *system_freezable_wq = &default_wq;
+struct workqueue_struct *system_power_efficient_wq = &default_wq;
+struct workqueue_struct *system_freezable_power_efficient_wq = &default_wq;
+
+static struct workqueue_struct wq_pool[LX_NR_WORKQUEUES];
+
+static struct {
+	struct work_struct *head, *tail;
+	u64 next_seq;                /* sequence numbers start at 1; 0 = none */
+	u64 running_seq;             /* the instance running now, or 0 */
+	const struct work_struct *running;
+	bool ready;                  /* module inits done */
+} wq;
+
+static DECLARE_WAIT_QUEUE_HEAD(flush_waiters);
+
+/* Forgets queued work and frees the pool. */
+void lx_workqueue_reset(void)
+{
+	memset(&wq, 0, sizeof(wq));
+	wq.next_seq = 1;
+	memset(wq_pool, 0, sizeof(wq_pool));
+	lx_init_waitqueue_head(&flush_waiters, "flush_waiters");
+}
+
+/* True in the worker task. */
+bool lx_in_worker(void)
+{
+	return lx_current_tskid() == LX_WORKER_TSKID;
+}
+
+/* True once module inits are done. */
+bool lx_worker_ready(void)
+{
+	return wq.ready;
+}
+
+/* Initialises work. */
+void lx_init_work(struct work_struct *work, work_func_t func)
+{
+	if (work->lx_magic == LX_WORK_MAGIC && work->lx_pending) {
+		lx_report("INIT_WORK on a pending work", NULL, 0, "work %p is cancelled first",
+			  (void *)work);
+		(void)cancel_work(work);
+	}
+	work->func = func;
+	work->lx_next = NULL;
+	work->lx_wq = NULL;
+	work->lx_seq = 0;
+	work->lx_pending = 0;
+	work->lx_magic = LX_WORK_MAGIC;
+}
+
+/* Queues the work of a delayed work whose delay ended (timer context). */
+void lx_delayed_work_timer_fn(struct timer_list *t)
+{
+	struct delayed_work *dwork = from_timer(dwork, t, timer);
+
+	(void)queue_work(dwork->wq != NULL ? dwork->wq : system_wq, &dwork->work);
+}
+
+/* Initialises delayed work. */
+void lx_init_delayed_work(struct delayed_work *dwork, work_func_t func)
+{
+	lx_init_work(&dwork->work, func);
+	timer_setup(&dwork->timer, lx_delayed_work_timer_fn, 0);
+	dwork->wq = NULL;
+}
+
+/* Appends work to the FIFO; interrupts locked. */
+static void enqueue_locked(struct workqueue_struct *q, struct work_struct *work)
+{
+	work->lx_next = NULL;
+	work->lx_wq = q;
+	work->lx_seq = wq.next_seq++;
+	work->lx_pending = 1;
+	if (wq.tail != NULL)
+		wq.tail->lx_next = work;
+	else
+		wq.head = work;
+	wq.tail = work;
+}
+
+/* Unlinks a pending work from the FIFO; interrupts locked. */
+static void dequeue_locked(struct work_struct *work)
+{
+	struct work_struct *prev = NULL, *cur;
+
+	for (cur = wq.head; cur != NULL; prev = cur, cur = cur->lx_next) {
+		if (cur != work)
+			continue;
+		if (prev != NULL)
+			prev->lx_next = cur->lx_next;
+		else
+			wq.head = cur->lx_next;
+		if (wq.tail == cur)
+			wq.tail = prev;
+		break;
+	}
+	work->lx_next = NULL;
+	work->lx_pending = 0;
+}
+
+/* Checks a work before queueing; reports and returns false if unusable. */
+static bool queueable(struct work_struct *work, const char *what)
+{
+	if (work == NULL) {
+		lx_report(what, NULL, 0, "NULL work");
+		return false;
+	}
+	if (work->lx_magic != LX_WORK_MAGIC || work->func == NULL) {
+		lx_report(what, NULL, 0, "work %p was not initialised (INIT_WORK) or has no function",
+			  (void *)work);
+		return false;
+	}
+	return true;
+}
+
+/* Queues work; false if already pending. */
+bool queue_work(struct workqueue_struct *q, struct work_struct *work)
+{
+	bool queued = false;
+	SIL_PRE_LOC;
+
+	if (!queueable(work, "queue_work"))
+		return false;
+	SIL_LOC_INT();
+	if (!work->lx_pending) {
+		enqueue_locked(q != NULL ? q : system_wq, work);
+		queued = true;
+	}
+	SIL_UNL_INT();
+	if (queued)
+		lx_wake_task(LX_WORKER_TSKID);
+	return queued;
+}
+
+/* Queues dwork after delay jiffies; false if already pending. */
+bool queue_delayed_work(struct workqueue_struct *q, struct delayed_work *dwork, unsigned long delay)
+{
+	if (dwork == NULL || !queueable(&dwork->work, "queue_delayed_work"))
+		return false;
+	if (delayed_work_pending(dwork))
+		return false;
+	dwork->wq = q;
+	if (delay == 0)
+		return queue_work(q, &dwork->work);
+	(void)mod_timer(&dwork->timer, jiffies + delay);
+	return true;
+}
+
+/* Re-arms dwork after delay; true if it was pending. */
+bool mod_delayed_work(struct workqueue_struct *q, struct delayed_work *dwork, unsigned long delay)
+{
+	bool was_pending = cancel_delayed_work(dwork);
+
+	(void)queue_delayed_work(q, dwork, delay);
+	return was_pending;
+}
+
+/* Dequeues work; true if it was pending. */
+bool cancel_work(struct work_struct *work)
+{
+	bool was_pending;
+	SIL_PRE_LOC;
+
+	if (work == NULL || work->lx_magic != LX_WORK_MAGIC)
+		return false;
+	SIL_LOC_INT();
+	was_pending = work->lx_pending;
+	if (was_pending)
+		dequeue_locked(work);
+	SIL_UNL_INT();
+	if (was_pending)
+		wake_up_all(&flush_waiters);
+	return was_pending;
+}
+
+/*
+ * Runs the first queued work in the calling (worker) task; false if the FIFO
+ * is empty.  Nests (a flush inside a work runs others in place), so the
+ * running state is saved and restored.
+ */
+static bool run_one(void)
+{
+	struct work_struct *work;
+	const struct work_struct *outer_running;
+	u64 outer_seq;
+	work_func_t func;
+	SIL_PRE_LOC;
+
+	SIL_LOC_INT();
+	work = wq.head;
+	if (work == NULL) {
+		SIL_UNL_INT();
+		return false;
+	}
+	wq.head = work->lx_next;
+	if (wq.head == NULL)
+		wq.tail = NULL;
+	work->lx_next = NULL;
+	work->lx_pending = 0;
+	outer_running = wq.running;
+	outer_seq = wq.running_seq;
+	wq.running = work;
+	wq.running_seq = work->lx_seq;
+	func = work->func;
+	SIL_UNL_INT();
+
+	func(work);    /* work may be freed or re-queued from here on */
+
+	SIL_LOC_INT();
+	wq.running = outer_running;
+	wq.running_seq = outer_seq;
+	SIL_UNL_INT();
+	wake_up_all(&flush_waiters);
+	return true;
+}
+
+/* True while the instance seq of work is queued or running. */
+static bool instance_alive(const struct work_struct *work, u64 seq)
+{
+	return (READ_ONCE(work->lx_pending) && READ_ONCE(work->lx_seq) == seq) ||
+	       READ_ONCE(wq.running_seq) == seq;
+}
+
+/* Waits until instance seq of work is gone; false (reported) if that would deadlock. */
+static bool wait_instance(const struct work_struct *work, u64 seq, const char *what)
+{
+	if (!lx_might_sleep_check(what, NULL, 0))
+		return false;
+	if (!lx_in_worker()) {
+		wait_event(flush_waiters, !instance_alive(work, seq));
+		return true;
+	}
+	/* The worker waits for itself: run the queue in place. */
+	while (instance_alive(work, seq)) {
+		if (READ_ONCE(wq.running_seq) == seq || !run_one()) {
+			lx_report("workqueue deadlock", NULL, 0,
+				  "%s on work %p from the worker while that work runs", what,
+				  (void *)work);
+			return false;
+		}
+	}
+	return true;
+}
+
+/* Sleeps until the instance of work queued or running now has finished. */
+bool flush_work(struct work_struct *work)
+{
+	u64 seq;
+	SIL_PRE_LOC;
+
+	if (work == NULL || work->lx_magic != LX_WORK_MAGIC)
+		return false;
+	SIL_LOC_INT();
+	if (work->lx_pending)
+		seq = work->lx_seq;
+	else if (wq.running == work)
+		seq = wq.running_seq;
+	else
+		seq = 0;
+	SIL_UNL_INT();
+	if (seq == 0)
+		return false;
+	(void)wait_instance(work, seq, "flush_work()");
+	return true;
+}
+
+/* Dequeues work and waits for a running instance. */
+bool cancel_work_sync(struct work_struct *work)
+{
+	bool was_pending;
+	u64 seq;
+	SIL_PRE_LOC;
+
+	if (work == NULL || work->lx_magic != LX_WORK_MAGIC)
+		return false;
+	was_pending = cancel_work(work);
+	SIL_LOC_INT();
+	seq = wq.running == work ? wq.running_seq : 0;
+	SIL_UNL_INT();
+	if (seq != 0)
+		(void)wait_instance(work, seq, "cancel_work_sync()");
+	return was_pending;
+}
+
+/* Stops the delay or dequeues. */
+bool cancel_delayed_work(struct delayed_work *dwork)
+{
+	bool timer_was = del_timer(&dwork->timer) != 0;
+	bool work_was = cancel_work(&dwork->work);
+
+	return timer_was || work_was;
+}
+
+/* cancel_delayed_work and wait for a running instance. */
+bool cancel_delayed_work_sync(struct delayed_work *dwork)
+{
+	bool timer_was = del_timer_sync(&dwork->timer) != 0;
+	bool work_was = cancel_work_sync(&dwork->work);
+
+	return timer_was || work_was;
+}
+
+/* Ends the delay now and waits for the work. */
+bool flush_delayed_work(struct delayed_work *dwork)
+{
+	if (del_timer(&dwork->timer))
+		(void)queue_work(dwork->wq != NULL ? dwork->wq : system_wq, &dwork->work);
+	return flush_work(&dwork->work);
+}
+
+/* True while an item queued at or before seq_limit is queued or running. */
+static bool older_work_alive(u64 seq_limit)
+{
+	const struct work_struct *head = READ_ONCE(wq.head);
+	u64 running = READ_ONCE(wq.running_seq);
+
+	return (head != NULL && head->lx_seq <= seq_limit) || (running != 0 && running <= seq_limit);
+}
+
+/* Sleeps until all work queued before the call has run. */
+void flush_workqueue(struct workqueue_struct *q)
+{
+	u64 limit;
+	SIL_PRE_LOC;
+
+	(void)q;
+	if (!lx_might_sleep_check("flush_workqueue()", NULL, 0))
+		return;
+	SIL_LOC_INT();
+	limit = wq.next_seq - 1;
+	SIL_UNL_INT();
+	if (!lx_in_worker()) {
+		wait_event(flush_waiters, !older_work_alive(limit));
+		return;
+	}
+	while (older_work_alive(limit)) {
+		const struct work_struct *head = READ_ONCE(wq.head);
+
+		if (head == NULL || head->lx_seq > limit || !run_one()) {
+			lx_report("workqueue deadlock", NULL, 0,
+				  "flush_workqueue from the work item it would wait for");
+			return;
+		}
+	}
+}
+
+/* A pool workqueue named from fmt, or NULL. */
+struct workqueue_struct *alloc_workqueue(const char *fmt, unsigned int flags, int max_active, ...)
+{
+	struct workqueue_struct *q = NULL;
+	unsigned int i;
+	va_list args;
+	SIL_PRE_LOC;
+
+	(void)max_active;
+	SIL_LOC_INT();
+	for (i = 0; i < LX_NR_WORKQUEUES; i++) {
+		if (!wq_pool[i].in_use) {
+			q = &wq_pool[i];
+			q->in_use = true;
+			break;
+		}
+	}
+	SIL_UNL_INT();
+	if (q == NULL) {
+		pr_err("alloc_workqueue: all %d workqueues are in use\n", LX_NR_WORKQUEUES);
+		return NULL;
+	}
+	q->flags = flags;
+	va_start(args, max_active);
+	vscnprintf(q->name, sizeof(q->name), fmt, args);
+	va_end(args);
+	return q;
+}
+
+/* Drains wq and returns it to the pool. */
+void destroy_workqueue(struct workqueue_struct *q)
+{
+	if (q == NULL)
+		return;
+	flush_workqueue(q);
+	if (q >= wq_pool && q < wq_pool + LX_NR_WORKQUEUES)
+		q->in_use = false;
+}
+
+/* The worker task: every module_init, then work forever. */
+void lx_worker_task(intptr_t exinf)
+{
+	(void)exinf;
+	(void)lx_modules_init();
+	wq.ready = true;
+	for (;;) {
+		if (!run_one())
+			(void)slp_tsk();
+	}
+}
