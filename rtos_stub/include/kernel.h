@@ -96,7 +96,7 @@ typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 ER      act_tsk(ID tskid);                 /* activate (queue one activation if not dormant) */
 ER      iact_tsk(ID tskid);                /* act_tsk from non-task context */
 ER_UINT can_act(ID tskid);                 /* cancel queued activations, return their count */
-void    ext_tsk(void);                     /* end the calling task (returns E_CTX code via syslog if misused) */
+void    ext_tsk(void);                     /* end the calling task (from non-task context: reported, returns) */
 ER      chg_pri(ID tskid, PRI tskpri);     /* change base priority */
 ER      get_pri(ID tskid, PRI *p_tskpri);  /* read current priority */
 ER      get_tid(ID *p_tskid);              /* ID of the running task */

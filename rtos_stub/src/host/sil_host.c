@@ -14,12 +14,15 @@ uint_t sil_host_loc_int(void)
 	return cpu.sil_lock++;
 }
 
-/* Restores the lock depth sil_host_loc_int returned; pending interrupts run at depth 0. */
+/* Restores the lock depth sil_host_loc_int returned; at depth 0 pending interrupts
+ * run, then a dispatch held off by the lock happens. */
 void sil_host_unl_int(uint_t saved)
 {
 	cpu.sil_lock = saved;
-	if (saved == 0)
+	if (saved == 0) {
 		irq_dispatch_pending();
+		dispatch_if_needed();
+	}
 }
 
 static bool width_ok(const char *fn, const volatile void *mem, uint_t width)
