@@ -167,7 +167,7 @@ void misc_deregister(struct miscdevice *misc)
 		}
 	}
 	SIL_UNL_INT();
-	WARN(!found, "misc_deregister(%s): not registered\n", misc->name ? misc->name : "?");
+	WARN(!found, "misc_deregister(%s): not registered", misc->name ? misc->name : "?");
 }
 
 int register_chrdev(unsigned int major, const char *name, const struct file_operations *fops)
@@ -214,7 +214,7 @@ void unregister_chrdev(unsigned int major, const char *name)
 		}
 	}
 	SIL_UNL_INT();
-	WARN(!found, "unregister_chrdev(%u, %s): not registered\n", major, name ? name : "?");
+	WARN(!found, "unregister_chrdev(%u, %s): not registered", major, name ? name : "?");
 }
 
 bool lx_dev_exists(const char *path)

@@ -84,7 +84,7 @@ void gpio_free(unsigned int gpio)
 		gpio_labels[gpio] = NULL;
 		SIL_UNL_INT();
 	}
-	WARN(!was_requested, "gpio_free(%u): not requested\n", gpio);
+	WARN(!was_requested, "gpio_free(%u): not requested", gpio);
 }
 
 const char *gpio_label(unsigned int gpio)

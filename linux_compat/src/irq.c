@@ -244,7 +244,7 @@ const void *free_irq(unsigned int irq, void *dev_id)
 
 	(void)lx_might_sleep_check("free_irq()", __FILE__, __LINE__);
 	if (irq >= NR_IRQS) {
-		WARN(1, "free_irq: invalid irq %u\n", irq);
+		WARN(1, "free_irq: invalid irq %u", irq);
 		return NULL;
 	}
 	desc = &irq_descs[irq];
@@ -260,7 +260,7 @@ const void *free_irq(unsigned int irq, void *dev_id)
 	SIL_UNL_INT();
 
 	if (!action) {
-		WARN(1, "Trying to free already-free IRQ %u\n", irq);
+		WARN(1, "Trying to free already-free IRQ %u", irq);
 		return NULL;
 	}
 	/* The last handler: stop the line before the list empties. */
@@ -327,7 +327,7 @@ void enable_irq(unsigned int irq)
 		desc->unanswered_run = 0;
 	SIL_UNL_INT();
 	if (unbalanced)
-		WARN(1, "Unbalanced enable for IRQ %u\n", irq);
+		WARN(1, "Unbalanced enable for IRQ %u", irq);
 	else if (unmask)
 		(void)line_unmask(irq);
 }

@@ -100,7 +100,7 @@ void __release_region(struct resource *parent, resource_size_t start, resource_s
 		}
 		SIL_UNL_INT();
 	}
-	WARN(!res, "Trying to free nonexistent resource <%#llx-%#llx>\n",
+	WARN(!res, "Trying to free nonexistent resource <%#llx-%#llx>",
 	     (unsigned long long)start, (unsigned long long)end);
 }
 

@@ -110,10 +110,12 @@ static inline int fake_gpio_reg(uint32_t off, uint32_t *reg)
 
 static inline uint32_t fake_read(const volatile void *addr, unsigned width, void *ctx)
 {
-	uint32_t off, reg, v;
+	uint32_t off = 0, reg, v;
 	int b = fake_block_of(addr, &off), pair;
 
 	(void)ctx;
+	if (b < 0 || off + width > FAKE_BLOCK_SIZE)
+		return 0;
 	v = fake_plain_read(b, off, width);
 	if (b == FAKE_GPIO && width == 4 && (pair = fake_gpio_reg(off, &reg)) >= 0) {
 		switch (reg) {
@@ -139,10 +141,12 @@ static inline uint32_t fake_read(const volatile void *addr, unsigned width, void
 
 static inline void fake_write(volatile void *addr, unsigned width, uint32_t v, void *ctx)
 {
-	uint32_t off, reg, out;
+	uint32_t off = 0, reg, out;
 	int b = fake_block_of(addr, &off), pair;
 
 	(void)ctx;
+	if (b < 0 || off + width > FAKE_BLOCK_SIZE)
+		return;
 	fake_log(b, off, width, true, v);
 	if (b == FAKE_GPIO && width == 4 && (pair = fake_gpio_reg(off, &reg)) >= 0) {
 		uint32_t out_off = off - reg + FG_OUT;
