@@ -139,8 +139,12 @@ static const struct analog_burst analog_bursts[] = {
 #define DCM_IN_PIN5_LOW		BIT(2)
 #define DCM_IN_PIN6_HIGH	BIT(3)
 
-/* Output-port events. */
-#define DCM_OUT_PIN6_LOW	BIT(0)
+/*
+ * Output-port events.  LEGO's notes call the pin 6 event "pin 6 low", but the branch its
+ * driver is built with tests for high, which is what works: pin 6 of an empty port floats
+ * low, and a motor's encoder or a load pulls it up.
+ */
+#define DCM_OUT_PIN6_HIGH	BIT(0)
 #define DCM_OUT_PIN5_ACTIVE	BIT(1)	/* pin 5 outside 2400..2600 mV */
 
 enum analog_dcm_state {
@@ -683,8 +687,8 @@ static u8 analog_output_events(unsigned int port)
 	unsigned int pin5 = analog_output_pin5_mv(port);
 	u8 events = 0;
 
-	if (!gpio_get_value(analog_output_pins[port].pin6))
-		events |= DCM_OUT_PIN6_LOW;
+	if (gpio_get_value(analog_output_pins[port].pin6))
+		events |= DCM_OUT_PIN6_HIGH;
 	if (pin5 < 2400 || pin5 > 2600)
 		events |= DCM_OUT_PIN5_ACTIVE;
 	return events;
@@ -712,7 +716,7 @@ static void analog_output_evaluate(unsigned int port, unsigned int low_mv)
 	if (diff >= 50) {
 		/* Pin 5 follows pin 6: a plain load between them. */
 		dev = low_mv >= 100 && low_mv <= 2400 ? DEV_OUTPUT_DUMB : DEV_ERROR;
-	} else if ((first >= 2400 && first <= 2600 && (p->events & DCM_OUT_PIN6_LOW)) ||
+	} else if ((first >= 2400 && first <= 2600 && (p->events & DCM_OUT_PIN6_HIGH)) ||
 		   first < 100 || (first >= 650 && first <= 850) ||
 		   (first >= 2800 && first <= 3700)) {
 		dev = DEV_ERROR;
