@@ -45,6 +45,24 @@ void hs_sim_shutdown(void);
 /* The scenario seed (0 without a scenario). */
 uint64_t hs_sim_seed(void);
 
+/*
+ * Scenario scripts: one command per line, '#' starts a comment.  Times and
+ * durations take a unit (ns, us, ms, s; none = ns).  "at <time>" before a
+ * command schedules it at that absolute virtual time instead of running it
+ * now.
+ *   run <duration>                 run the system that long
+ *   until <time>                   run until the absolute time
+ *   drive <pin> high|low|float|pullup|pulldown
+ *   irq <sysint>                   a request on an AINTC system interrupt
+ *   expect <pin> 0|1               the pin's level now
+ *   expect <scope>.<name> <value>  a trace signal's value now
+ *   expect-bugs <n>                bug reports since boot
+ * Pins are named GP<bank>_<bit>.  Returns E_OK; E_PAR with "line N: ..." in
+ * err for a malformed line (nothing after it runs); E_OBJ with the first
+ * failed expectation in err (the script runs to its end).
+ */
+ER hs_sim_script(const char *text, char *err, size_t errlen);
+
 /* Deterministic PRNG: xoshiro256** seeded through splitmix64. */
 struct hs_rng { uint64_t s[4]; };
 void hs_rng_seed(struct hs_rng *rng, uint64_t seed);
