@@ -137,7 +137,8 @@ void rtos_host_consume(uint64_t ns)
 		rtos_host_bug("consume", "rtos_host_consume before rtos_host_boot");
 		return;
 	}
-	task_level = cpu.kind == EXEC_TASK && cpu.isr_depth == 0;
+	/* Inside a register access (irq_defer) the access completes before any switch. */
+	task_level = cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && cpu.irq_defer == 0;
 	while (remaining > 0) {
 		uint64_t limit, next;
 

@@ -25,6 +25,14 @@ void sil_host_unl_int(uint_t saved)
 	}
 }
 
+/* After a device access: interrupts it raised are taken, then a switch to a task it readied. */
+static void access_done(void)
+{
+	cpu.irq_defer--;
+	irq_dispatch_pending();
+	dispatch_if_needed();
+}
+
 static bool width_ok(const char *fn, const volatile void *mem, uint_t width)
 {
 	if (width != 1U && width != 2U && width != 4U) {
@@ -50,8 +58,7 @@ uint32_t sil_host_read(const volatile void *mem, uint_t width)
 	if (ops != NULL && ops->claims(mem, ops->ctx)) {
 		cpu.irq_defer++;
 		v = ops->read(mem, width, ops->ctx);
-		cpu.irq_defer--;
-		irq_dispatch_pending();
+		access_done();
 		return v;
 	}
 	switch (width) {
@@ -74,8 +81,7 @@ void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
 	if (ops != NULL && ops->claims(mem, ops->ctx)) {
 		cpu.irq_defer++;
 		ops->write(mem, width, data, ops->ctx);
-		cpu.irq_defer--;
-		irq_dispatch_pending();
+		access_done();
 		return;
 	}
 	switch (width) {

@@ -108,7 +108,7 @@ void task_switch(void)
 void dispatch_if_needed(void)
 {
 	if (schedtsk != runtsk && cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && !cpu.locked &&
-	    !cpu.dsp_disabled && cpu.sil_lock == 0)
+	    !cpu.dsp_disabled && cpu.sil_lock == 0 && cpu.irq_defer == 0)
 		switch_from_task(false);
 }
 

@@ -14,6 +14,7 @@
 #define IRQ_DEV 120U
 
 static uint64_t low_done, high_start, high_done, dly_end;
+static uint32_t dev_regs[16];      /* registers of a fake device (MMIO tests) */
 static int isr_runs;
 
 static void isr_dev(intptr_t x)
@@ -43,11 +44,20 @@ static void high_task(intptr_t x)
 	high_start = rtos_host_now();
 	rtos_host_consume(200 * US);
 	high_done = rtos_host_now();
+	slp_tsk();
+	rt_log("high");
+}
+
+static void poll_task(intptr_t x)
+{
+	(void)sil_rew_mem(&dev_regs[15]);
+	rt_log("poll-done");
 }
 
 static const struct rtos_task_cfg tasks[] = {
 	{ 1, TA_ACT, 0, low_task, 8, 1024, TDOM_KERNEL, "low" },
 	{ 2, TA_ACT, 0, high_task, 2, 1024, TDOM_KERNEL, "high" },
+	{ 3, TA_NULL, 0, poll_task, 6, 1024, TDOM_KERNEL, "poll" },
 };
 static const struct rtos_int_cfg ints[] = { { IRQ_DEV, TA_ENAINT, -2 } };
 static const struct rtos_isr_cfg isrs[] = { { TA_NULL, 0, IRQ_DEV, isr_dev, 1 } };
@@ -56,7 +66,6 @@ static const struct rtos_cfg cfg = {
 };
 
 /* ---- MMIO ---- */
-static uint32_t dev_regs[16];
 static uint32_t plain[4];
 static uint32_t last_write_val;
 static uint_t last_width, reads;
@@ -68,10 +77,23 @@ static bool dev_claims(const volatile void *addr, void *ctx)
 	       (const volatile char *)addr < (const volatile char *)(dev_regs + 16);
 }
 
+static void wake_event(void *arg)
+{
+	rt_log("wake-event");
+	iwup_tsk(2);
+}
+
 static uint32_t dev_read(const volatile void *addr, uint_t width, void *ctx)
 {
 	reads++;
 	last_width = width;
+	if (addr == &dev_regs[15]) {
+		/* a slow register: the bus stalls 2 us, meanwhile an event readies a task */
+		rtos_host_event_at(rtos_host_now() + 1000, wake_event, NULL);
+		rt_log("read(");
+		rtos_host_consume(2000);
+		rt_log(")read");
+	}
 	return 0xabcd0000U | (uint32_t)((const volatile char *)addr - (const volatile char *)dev_regs);
 }
 
@@ -91,6 +113,11 @@ static void *dev_map(uintptr_t phys, SIZE size, void *ctx)
 
 static const struct rtos_host_mmio_ops ops = { dev_claims, dev_read, dev_write, dev_map, NULL };
 
+static void act_poll(void *arg)
+{
+	iact_tsk(3);
+}
+
 static int ev_order[4];
 static int nev;
 static void order_event(void *arg)
@@ -102,8 +129,9 @@ int main(void)
 {
 	rtos_host_event_t cancelled;
 	char expect_log[64];
+	uint64_t t_access;
 
-	tap_plan(16);
+	tap_plan(17);
 	rt_log_reset();
 	is_int(rtos_host_boot(&cfg), E_OK, "boot");
 	rtos_host_event_at(300 * US, raise_event, NULL);
@@ -161,6 +189,20 @@ int main(void)
 	   "unclaimed addresses are plain memory of the exact width");
 	ok(rtos_host_map_io(0x01c42000U, 16) == map_window && rtos_host_map_io(0x01c43000U, 16) == NULL,
 	   "rtos_host_map_io asks the handler's map()");
+	rt_log_reset();
+	reads = 0;
+		rtos_host_shutdown();
+	rtos_host_boot(&cfg);
+	rtos_host_run_for(300 * US);          /* high ran and sleeps again, low consumes */
+	rt_log_reset();
+	t_access = rtos_host_now();
+	high_start = 0;
+	rtos_host_event_at(t_access, act_poll, NULL);
+	rtos_host_run_for(10 * US);
+	ok(strcmp(rt_log_text(), "read( wake-event )read") == 0 && high_start == t_access + 2000,
+	   "a task readied during a register access runs when the access completes, not in the middle");
+	tap_diag("log \"%s\", high started %llu ns after the access began", rt_log_text(),
+		 (unsigned long long)(high_start - t_access));
 	rtos_host_set_mmio_handler(NULL);
 	rtos_host_shutdown();
 	return tap_done();
