@@ -36,6 +36,7 @@
 #include <linux/init.h>
 #include <linux/kernel.h>
 #include <linux/types.h>
+#include <linux/bits.h>
 #include <linux/errno.h>
 #include <linux/string.h>
 #include <linux/fs.h>
@@ -241,8 +242,8 @@ struct analog_spi_regs {
 
 static struct {
 	struct lms_analog *shm;		/* the mmap'ed ANALOG area, user-writable */
-	void __iomem *spi;
-	void __iomem *syscfg1;
+	u8 __iomem *spi;
+	u8 __iomem *syscfg1;
 	struct analog_spi_regs spi_saved;
 	u32 pupd_saved;
 	unsigned int owned_pins[ANALOG_OWNED_PINS];
@@ -308,7 +309,7 @@ static int analog_spi_transfer(u16 frame)
 /* Saves SPI0's setup and configures it as a 2 MHz 16-bit master for the ADC. */
 static void analog_spi_setup(void)
 {
-	void __iomem *spi = analog.spi;
+	u8 __iomem *spi = analog.spi;
 	struct analog_spi_regs *saved = &analog.spi_saved;
 
 	saved->gcr0 = ioread32(spi + SPIGCR0);
@@ -333,7 +334,7 @@ static void analog_spi_setup(void)
 /* Puts SPI0 back the way analog_spi_setup found it. */
 static void analog_spi_restore(void)
 {
-	void __iomem *spi = analog.spi;
+	u8 __iomem *spi = analog.spi;
 	const struct analog_spi_regs *saved = &analog.spi_saved;
 
 	iowrite32(saved->gcr1 & ~SPIGCR1_ENABLE, spi + SPIGCR1);
