@@ -240,6 +240,6 @@ bool lx_might_sleep_check(const char *what, const char *file, int line)
 	if (!lx_context_forbids_sleep(why, sizeof(why)))
 		return true;
 	lx_report("sleeping function called from invalid context", file, line,
-		  "%s in %s", what != NULL ? what : "?", why);
+		  "%s; context: %s", what != NULL ? what : "?", why);
 	return false;
 }

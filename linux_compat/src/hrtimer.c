@@ -92,7 +92,7 @@ void hrtimer_init(struct hrtimer *timer, clockid_t clock_id, enum hrtimer_mode m
 		dequeue_locked(timer);
 		SIL_UNL_INT();
 		lx_report("hrtimer_init on an active timer", NULL, 0,
-			  "timer %p was queued; it is dequeued", (void *)timer);
+			  "the timer was queued; it is dequeued");
 		SIL_LOC_INT();
 	}
 	timer->function = NULL;
@@ -123,12 +123,11 @@ static bool startable(struct hrtimer *timer, const char *what)
 		return false;
 	}
 	if (timer->lx_magic != HRTIMER_MAGIC) {
-		lx_report(what, NULL, 0, "timer %p was never initialised (hrtimer_init/hrtimer_setup)",
-			  (void *)timer);
+		lx_report(what, NULL, 0, "the timer was never initialised (hrtimer_init/hrtimer_setup)");
 		return false;
 	}
 	if (timer->function == NULL) {
-		lx_report(what, NULL, 0, "timer %p has no callback (function is NULL)", (void *)timer);
+		lx_report(what, NULL, 0, "the timer has no callback (function is NULL)");
 		return false;
 	}
 	return true;
@@ -194,8 +193,8 @@ int hrtimer_try_to_cancel(struct hrtimer *timer)
 	return ret;
 }
 
-/* Stops timer; 1 if it was active.  Self-cancellation is reported, never waited for. */
-int hrtimer_cancel(struct hrtimer *timer)
+/* Stops timer; 1 if it was active.  Self-cancellation is reported (at file:line), never waited for. */
+int lx_hrtimer_cancel_at(struct hrtimer *timer, const char *file, int line)
 {
 	int ret;
 	SIL_PRE_LOC;
@@ -216,11 +215,17 @@ int hrtimer_cancel(struct hrtimer *timer)
 		dequeue_locked(timer);
 	timer->lx_cancelled = 1;
 	SIL_UNL_INT();
-	lx_report("hrtimer_cancel would deadlock", NULL, 0,
-		  "timer %p cancelled while its callback runs (%s); use hrtimer_try_to_cancel "
-		  "or return HRTIMER_NORESTART", (void *)timer,
+	lx_report("hrtimer_cancel would deadlock", file, line,
+		  "the timer is cancelled while its callback runs (%s); use hrtimer_try_to_cancel "
+		  "or return HRTIMER_NORESTART",
 		  lx_running_hrtimer() == timer ? "from its own callback" : "from a context it interrupted");
 	return 1;
+}
+
+/* hrtimer_cancel without a call site. */
+int (hrtimer_cancel)(struct hrtimer *timer)
+{
+	return lx_hrtimer_cancel_at(timer, NULL, 0);
 }
 
 /* Advances the expiry from the previous expiry past now in whole intervals; their count. */
@@ -232,8 +237,7 @@ u64 hrtimer_forward(struct hrtimer *timer, ktime_t now, ktime_t interval)
 		return 0;
 	if (timer->lx_queued) {
 		lx_report("hrtimer_forward on a queued timer", NULL, 0,
-			  "timer %p is queued; forward it only from its callback or when stopped",
-			  (void *)timer);
+			  "the timer is queued; forward it only from its callback or when stopped");
 		return 0;
 	}
 	if (now < timer->lx_expires)

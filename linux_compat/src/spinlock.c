@@ -75,9 +75,9 @@ static void take(spinlock_t *lock, const char *file, int line)
 	if (lock->locked) {
 		lx_context_forbids_sleep(why, sizeof(why));
 		lx_report("spinlock recursion (deadlock)", file, line,
-			  "lock %s (%p) is already held; taken again in %s - did a task take it "
+			  "lock %s is already held; taken again in %s - did a task take it "
 			  "without disabling the interrupt that also takes it?",
-			  lock->name ? lock->name : "?", (void *)lock, why);
+			  lock->name ? lock->name : "?", why);
 	}
 	lock->locked = 1;
 }
@@ -86,8 +86,8 @@ static void take(spinlock_t *lock, const char *file, int line)
 static void give(spinlock_t *lock, const char *file, int line)
 {
 	if (!lock->locked)
-		lx_report("spin_unlock of an unlocked lock", file, line, "lock %s (%p)",
-			  lock->name ? lock->name : "?", (void *)lock);
+		lx_report("spin_unlock of an unlocked lock", file, line, "lock %s",
+			  lock->name ? lock->name : "?");
 	lock->locked = 0;
 }
 
@@ -154,8 +154,8 @@ void lx_spin_unlock_irq(spinlock_t *lock, const char *file, int line)
 	if (masked)
 		arch_local_irq_restore(flags);
 	else
-		lx_report("spin_unlock_irq without spin_lock_irq", file, line, "lock %s (%p)",
-			  lock->name ? lock->name : "?", (void *)lock);
+		lx_report("spin_unlock_irq without spin_lock_irq", file, line, "lock %s",
+			  lock->name ? lock->name : "?");
 }
 
 /* timer_list callbacks held off, then the lock. */

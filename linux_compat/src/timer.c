@@ -100,8 +100,7 @@ void timer_setup(struct timer_list *timer, void (*fn)(struct timer_list *), unsi
 		return;
 	}
 	if (timer->lx_magic == TIMER_MAGIC && timer->lx_pending) {
-		lx_report("timer_setup on a pending timer", NULL, 0, "timer %p is dequeued",
-			  (void *)timer);
+		lx_report("timer_setup on a pending timer", NULL, 0, "the timer is dequeued first");
 		del_timer(timer);
 	}
 	timer->expires = 0;
@@ -121,11 +120,11 @@ static bool usable(struct timer_list *timer, const char *what)
 		return false;
 	}
 	if (timer->lx_magic != TIMER_MAGIC) {
-		lx_report(what, NULL, 0, "timer %p was never set up (timer_setup)", (void *)timer);
+		lx_report(what, NULL, 0, "the timer was never set up (timer_setup)");
 		return false;
 	}
 	if (timer->function == NULL) {
-		lx_report(what, NULL, 0, "timer %p has no callback", (void *)timer);
+		lx_report(what, NULL, 0, "the timer has no callback");
 		return false;
 	}
 	return true;
@@ -161,8 +160,7 @@ int timer_reduce(struct timer_list *timer, unsigned long expires)
 void add_timer(struct timer_list *timer)
 {
 	if (timer != NULL && timer->lx_pending) {
-		lx_report("add_timer on a pending timer", NULL, 0, "timer %p (use mod_timer)",
-			  (void *)timer);
+		lx_report("add_timer on a pending timer", NULL, 0, "use mod_timer to re-arm");
 		return;
 	}
 	if (timer != NULL)
@@ -186,16 +184,21 @@ int del_timer(struct timer_list *timer)
 }
 
 /* del_timer; waiting for a running callback would deadlock from it, so that is reported. */
-int del_timer_sync(struct timer_list *timer)
+int lx_del_timer_sync_at(struct timer_list *timer, const char *file, int line)
 {
 	if (timer != NULL && tq.running == timer)
-		lx_report("del_timer_sync would deadlock", NULL, 0,
-			  "timer %p's callback is running (called from it or from what it interrupted)",
-			  (void *)timer);
+		lx_report("del_timer_sync would deadlock", file, line,
+			  "the timer's callback is running (called from it or from what it interrupted)");
 	else if (timer != NULL && lx_in_interrupt() && !(timer->flags & TIMER_IRQSAFE))
-		lx_report("del_timer_sync in interrupt context", NULL, 0,
-			  "timer %p: Linux forbids this for timers without TIMER_IRQSAFE", (void *)timer);
+		lx_report("del_timer_sync in interrupt context", file, line,
+			  "Linux forbids this for timers without TIMER_IRQSAFE");
 	return del_timer(timer);
+}
+
+/* del_timer_sync without a call site. */
+int (del_timer_sync)(struct timer_list *timer)
+{
+	return lx_del_timer_sync_at(timer, NULL, 0);
 }
 
 /* Takes the first due timer off the queue (marked running), or NULL. */

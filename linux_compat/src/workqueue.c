@@ -65,8 +65,7 @@ bool lx_worker_ready(void)
 void lx_init_work(struct work_struct *work, work_func_t func)
 {
 	if (work->lx_magic == LX_WORK_MAGIC && work->lx_pending) {
-		lx_report("INIT_WORK on a pending work", NULL, 0, "work %p is cancelled first",
-			  (void *)work);
+		lx_report("INIT_WORK on a pending work", NULL, 0, "the work is cancelled first");
 		(void)cancel_work(work);
 	}
 	work->func = func;
@@ -135,8 +134,7 @@ static bool queueable(struct work_struct *work, const char *what)
 		return false;
 	}
 	if (work->lx_magic != LX_WORK_MAGIC || work->func == NULL) {
-		lx_report(what, NULL, 0, "work %p was not initialised (INIT_WORK) or has no function",
-			  (void *)work);
+		lx_report(what, NULL, 0, "the work was not initialised (INIT_WORK) or has no function");
 		return false;
 	}
 	return true;
@@ -251,9 +249,10 @@ static bool instance_alive(const struct work_struct *work, u64 seq)
 }
 
 /* Waits until instance seq of work is gone; false (reported) if that would deadlock. */
-static bool wait_instance(const struct work_struct *work, u64 seq, const char *what)
+static bool wait_instance(const struct work_struct *work, u64 seq, const char *what,
+			  const char *file, int line)
 {
-	if (!lx_might_sleep_check(what, NULL, 0))
+	if (!lx_might_sleep_check(what, file, line))
 		return false;
 	if (!lx_in_worker()) {
 		wait_event(flush_waiters, !instance_alive(work, seq));
@@ -262,9 +261,8 @@ static bool wait_instance(const struct work_struct *work, u64 seq, const char *w
 	/* The worker waits for itself: run the queue in place. */
 	while (instance_alive(work, seq)) {
 		if (READ_ONCE(wq.running_seq) == seq || !run_one()) {
-			lx_report("workqueue deadlock", NULL, 0,
-				  "%s on work %p from the worker while that work runs", what,
-				  (void *)work);
+			lx_report("workqueue deadlock", file, line,
+				  "%s from the worker while that very work runs", what);
 			return false;
 		}
 	}
@@ -272,7 +270,7 @@ static bool wait_instance(const struct work_struct *work, u64 seq, const char *w
 }
 
 /* Sleeps until the instance of work queued or running now has finished. */
-bool flush_work(struct work_struct *work)
+bool lx_flush_work_at(struct work_struct *work, const char *file, int line)
 {
 	u64 seq;
 	SIL_PRE_LOC;
@@ -289,12 +287,12 @@ bool flush_work(struct work_struct *work)
 	SIL_UNL_INT();
 	if (seq == 0)
 		return false;
-	(void)wait_instance(work, seq, "flush_work()");
+	(void)wait_instance(work, seq, "flush_work()", file, line);
 	return true;
 }
 
 /* Dequeues work and waits for a running instance. */
-bool cancel_work_sync(struct work_struct *work)
+bool lx_cancel_work_sync_at(struct work_struct *work, const char *file, int line)
 {
 	bool was_pending;
 	u64 seq;
@@ -307,7 +305,7 @@ bool cancel_work_sync(struct work_struct *work)
 	seq = wq.running == work ? wq.running_seq : 0;
 	SIL_UNL_INT();
 	if (seq != 0)
-		(void)wait_instance(work, seq, "cancel_work_sync()");
+		(void)wait_instance(work, seq, "cancel_work_sync()", file, line);
 	return was_pending;
 }
 
@@ -321,20 +319,20 @@ bool cancel_delayed_work(struct delayed_work *dwork)
 }
 
 /* cancel_delayed_work and wait for a running instance. */
-bool cancel_delayed_work_sync(struct delayed_work *dwork)
+bool lx_cancel_delayed_work_sync_at(struct delayed_work *dwork, const char *file, int line)
 {
-	bool timer_was = del_timer_sync(&dwork->timer) != 0;
-	bool work_was = cancel_work_sync(&dwork->work);
+	bool timer_was = lx_del_timer_sync_at(&dwork->timer, file, line) != 0;
+	bool work_was = lx_cancel_work_sync_at(&dwork->work, file, line);
 
 	return timer_was || work_was;
 }
 
 /* Ends the delay now and waits for the work. */
-bool flush_delayed_work(struct delayed_work *dwork)
+bool lx_flush_delayed_work_at(struct delayed_work *dwork, const char *file, int line)
 {
 	if (del_timer(&dwork->timer))
 		(void)queue_work(dwork->wq != NULL ? dwork->wq : system_wq, &dwork->work);
-	return flush_work(&dwork->work);
+	return lx_flush_work_at(&dwork->work, file, line);
 }
 
 /* True while an item queued at or before seq_limit is queued or running. */
@@ -347,13 +345,13 @@ static bool older_work_alive(u64 seq_limit)
 }
 
 /* Sleeps until all work queued before the call has run. */
-void flush_workqueue(struct workqueue_struct *q)
+void lx_flush_workqueue_at(struct workqueue_struct *q, const char *file, int line)
 {
 	u64 limit;
 	SIL_PRE_LOC;
 
 	(void)q;
-	if (!lx_might_sleep_check("flush_workqueue()", NULL, 0))
+	if (!lx_might_sleep_check("flush_workqueue()", file, line))
 		return;
 	SIL_LOC_INT();
 	limit = wq.next_seq - 1;
@@ -366,11 +364,36 @@ void flush_workqueue(struct workqueue_struct *q)
 		const struct work_struct *head = READ_ONCE(wq.head);
 
 		if (head == NULL || head->lx_seq > limit || !run_one()) {
-			lx_report("workqueue deadlock", NULL, 0,
+			lx_report("workqueue deadlock", file, line,
 				  "flush_workqueue from the work item it would wait for");
 			return;
 		}
 	}
+}
+
+bool (flush_work)(struct work_struct *work)
+{
+	return lx_flush_work_at(work, NULL, 0);
+}
+
+bool (cancel_work_sync)(struct work_struct *work)
+{
+	return lx_cancel_work_sync_at(work, NULL, 0);
+}
+
+bool (cancel_delayed_work_sync)(struct delayed_work *dwork)
+{
+	return lx_cancel_delayed_work_sync_at(dwork, NULL, 0);
+}
+
+bool (flush_delayed_work)(struct delayed_work *dwork)
+{
+	return lx_flush_delayed_work_at(dwork, NULL, 0);
+}
+
+void (flush_workqueue)(struct workqueue_struct *q)
+{
+	lx_flush_workqueue_at(q, NULL, 0);
 }
 
 /* A pool workqueue named from fmt, or NULL. */

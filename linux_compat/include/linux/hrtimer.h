@@ -81,6 +81,8 @@ void hrtimer_restart(struct hrtimer *timer);
  * timer is dequeued and the callback's RESTART ignored.
  */
 int hrtimer_cancel(struct hrtimer *timer);
+int lx_hrtimer_cancel_at(struct hrtimer *timer, const char *file, int line);
+#define hrtimer_cancel(timer)	lx_hrtimer_cancel_at((timer), __FILE__, __LINE__)
 /* Dequeues timer: 1 if it was queued, 0 if inactive, -1 if its callback is running. */
 int hrtimer_try_to_cancel(struct hrtimer *timer);
 /*

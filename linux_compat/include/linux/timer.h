@@ -53,6 +53,8 @@ int timer_reduce(struct timer_list *timer, unsigned long expires);
 int del_timer(struct timer_list *timer);
 /* del_timer, and the callback is not running on return (reported if called from it). */
 int del_timer_sync(struct timer_list *timer);
+int lx_del_timer_sync_at(struct timer_list *timer, const char *file, int line);
+#define del_timer_sync(timer)	lx_del_timer_sync_at((timer), __FILE__, __LINE__)
 #define timer_delete(t)		del_timer(t)
 #define timer_delete_sync(t)	del_timer_sync(t)
 #define try_to_del_timer_sync(t) del_timer(t)

@@ -126,6 +126,18 @@ bool flush_delayed_work(struct delayed_work *dwork);
 void flush_workqueue(struct workqueue_struct *wq);
 #define drain_workqueue(wq)	flush_workqueue(wq)
 
+/* Call-site forms: deadlock and context reports name the caller's file and line. */
+bool lx_flush_work_at(struct work_struct *work, const char *file, int line);
+bool lx_cancel_work_sync_at(struct work_struct *work, const char *file, int line);
+bool lx_cancel_delayed_work_sync_at(struct delayed_work *dwork, const char *file, int line);
+bool lx_flush_delayed_work_at(struct delayed_work *dwork, const char *file, int line);
+void lx_flush_workqueue_at(struct workqueue_struct *wq, const char *file, int line);
+#define flush_work(w)			lx_flush_work_at((w), __FILE__, __LINE__)
+#define cancel_work_sync(w)		lx_cancel_work_sync_at((w), __FILE__, __LINE__)
+#define cancel_delayed_work_sync(dw)	lx_cancel_delayed_work_sync_at((dw), __FILE__, __LINE__)
+#define flush_delayed_work(dw)		lx_flush_delayed_work_at((dw), __FILE__, __LINE__)
+#define flush_workqueue(wq)		lx_flush_workqueue_at((wq), __FILE__, __LINE__)
+
 /* A workqueue from the pool (name formatted like printf), or NULL if the pool is used up. */
 __printf(1, 4) struct workqueue_struct *alloc_workqueue(const char *fmt, unsigned int flags,
 							int max_active, ...);
