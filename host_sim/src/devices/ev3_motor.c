@@ -25,6 +25,8 @@
 #include "host_sim/devices/pwm.h"
 
 #define STEP_NS 1000000ULL          /* physics step: 1 ms */
+#define STEADY_STEP_NS 10000000ULL  /* step once the speed has settled: 10 ms */
+#define STEADY_RAD_S 1e-4           /* "settled": speed changes less than this per 1 ms step */
 #define GLITCH_NS 2000ULL           /* width of an encoder glitch */
 #define RAD_PER_DEG (3.14159265358979323846 / 180.0)
 
@@ -268,10 +270,19 @@ static void motor_new_segment(struct ev3_motor *m)
 	m->seg_t1 = now + STEP_NS;
 	m->seg_theta0 = st.theta;
 	m->seg_omega0 = st.omega;
-	if (!m->stalled)
+	if (!m->stalled) {
 		dc_motor_advance(&m->model, &st, STEP_NS * 1e-9, m->drive, v, m->load_nm,
 				 m->extra_inertia);
-	m->seg_rate = (st.theta - m->seg_theta0) / (STEP_NS * 1e-9);
+		if (fabs(st.omega - m->seg_omega0) < STEADY_RAD_S && st.omega != 0.0) {
+			/* settled: a longer step loses nothing (inputs changes still cut it) */
+			st.theta = m->seg_theta0;
+			st.omega = m->seg_omega0;
+			dc_motor_advance(&m->model, &st, STEADY_STEP_NS * 1e-9, m->drive, v, m->load_nm,
+					 m->extra_inertia);
+			m->seg_t1 = now + STEADY_STEP_NS;
+		}
+	}
+	m->seg_rate = (st.theta - m->seg_theta0) / ((double)(m->seg_t1 - now) * 1e-9);
 	m->seg_omega1 = st.omega;
 	if (m->sig_angle) {
 		hs_trace_set_real(m->sig_angle, m->seg_theta0 / RAD_PER_DEG);

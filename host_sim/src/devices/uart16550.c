@@ -43,6 +43,9 @@ struct ev3_uart {
 	unsigned port;
 	struct hs_region *r;
 	uint8_t fcr;                /* FCR is write-only: its state lives here */
+	/* copies of the registers the byte path consults, kept by the write hooks */
+	uint32_t lcr, mcr, ier, dll, dlh, mdr, pwremu;
+	uint64_t last_rx_activity;  /* for the character timeout */
 	uint8_t rx[FIFO_SIZE], rx_err[FIFO_SIZE];
 	unsigned rx_head, rx_count;
 	uint8_t tx[FIFO_SIZE];
@@ -83,18 +86,18 @@ static unsigned rx_trigger(const struct ev3_uart *u)
 
 static uint32_t divisor(const struct ev3_uart *u)
 {
-	return hs_reg_get(u->r, DLL) | (hs_reg_get(u->r, DLH) << 8);
+	return u->dll | (u->dlh << 8);
 }
 
 static unsigned oversampling(const struct ev3_uart *u)
 {
-	return (hs_reg_get(u->r, MDR) & 1U) ? 13U : 16U;
+	return (u->mdr & 1U) ? 13U : 16U;
 }
 
 /* Bits per character: start, data, parity, stop. */
 static unsigned char_bits(const struct ev3_uart *u)
 {
-	uint32_t lcr = hs_reg_get(u->r, LCR);
+	uint32_t lcr = u->lcr;
 	unsigned data = 5U + (lcr & 3U);
 
 	return 1U + data + ((lcr & 0x08U) ? 1U : 0U) + ((lcr & 0x04U) ? 2U : 1U);
@@ -121,18 +124,18 @@ uint32_t ev3_uart_baud(const struct ev3_uart *u)
 
 static bool rx_enabled(const struct ev3_uart *u)
 {
-	return hs_reg_get(u->r, PWREMU) & PWREMU_URRST;
+	return u->pwremu & PWREMU_URRST;
 }
 
 static bool tx_enabled(const struct ev3_uart *u)
 {
-	return hs_reg_get(u->r, PWREMU) & PWREMU_UTRST;
+	return u->pwremu & PWREMU_UTRST;
 }
 
 /* The interrupt identification now (IIR bits 3:0). */
 static unsigned iir_id(const struct ev3_uart *u)
 {
-	uint32_t ier = hs_reg_get(u->r, IER);
+	uint32_t ier = u->ier;
 	bool rx_error = u->overrun || (u->rx_count && u->rx_err[u->rx_head]);
 
 	if ((ier & IER_ELSI) && rx_error)
@@ -159,15 +162,31 @@ static void irq_update(struct ev3_uart *u)
 
 /* ---- receiver ---- */
 
+/* Event: the character timeout may be due; activity since it was armed
+ * moves it instead of cancelling and re-scheduling on every byte. */
 static void timeout_due(void *arg)
 {
 	struct ev3_uart *u = arg;
+	uint64_t due = u->last_rx_activity + bits_ns(u, 4U * char_bits(u));
 
 	u->timeout_ev = 0;
-	if (fifo_mode(u) && u->rx_count) {
-		u->timeout_int = true;
-		irq_update(u);
+	if (!fifo_mode(u) || !u->rx_count || !(u->ier & IER_ERBI))
+		return;
+	if (hs_now() < due) {
+		u->timeout_ev = hs_event_at(due, timeout_due, u);
+		return;
 	}
+	u->timeout_int = true;
+	irq_update(u);
+}
+
+/* Notes RX activity (a byte in or out of the FIFO) for the character timeout. */
+static void rx_activity(struct ev3_uart *u)
+{
+	u->last_rx_activity = hs_now();
+	u->timeout_int = false;
+	if (!u->timeout_ev && fifo_mode(u) && u->rx_count && (u->ier & IER_ERBI))
+		u->timeout_ev = hs_event_at(u->last_rx_activity + bits_ns(u, 4U * char_bits(u)), timeout_due, u);
 }
 
 static void rx_push(struct ev3_uart *u, uint8_t byte, uint8_t err)
@@ -188,10 +207,7 @@ static void rx_push(struct ev3_uart *u, uint8_t byte, uint8_t err)
 		u->rx_count++;
 		u->stats.rx_bytes++;
 	}
-	u->timeout_int = false;
-	hs_event_cancel(&u->timeout_ev);
-	if (fifo_mode(u))
-		u->timeout_ev = hs_event_after(bits_ns(u, 4U * char_bits(u)), timeout_due, u);
+	rx_activity(u);
 	irq_update(u);
 }
 
@@ -200,7 +216,7 @@ void ev3_uart_rx_byte(struct ev3_uart *u, uint8_t byte, uint32_t baud)
 {
 	uint32_t mine = ev3_uart_baud(u);
 
-	if (!u || (hs_reg_get(u->r, MCR) & MCR_LOOP))
+	if (!u || (u->mcr & MCR_LOOP))
 		return;
 	if (!mine || baud < mine - mine / 25U || baud > mine + mine / 25U) {
 		/* sampled at the wrong rate: the receiver assembles other bits and misses the stop bit */
@@ -244,9 +260,9 @@ static void tx_done(void *arg)
 	u->tx_ev = 0;
 	u->tsr_busy = false;
 	u->stats.tx_bytes++;
-	if (hs_reg_get(u->r, MCR) & MCR_LOOP)
+	if (u->mcr & MCR_LOOP)
 		rx_push(u, b, 0);
-	else if (!(hs_reg_get(u->r, LCR) & LCR_BC) && u->peer.tx_byte)
+	else if (!(u->lcr & LCR_BC) && u->peer.tx_byte)
 		u->peer.tx_byte(u->peer.ctx, b, baud);
 	tx_start(u);
 	irq_update(u);
@@ -277,8 +293,8 @@ static void read_rbr(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct ev3_uart *u = ctx;
 
-	if (hs_reg_get(u->r, LCR) & LCR_DLAB) {
-		*value = hs_reg_get(u->r, DLL);
+	if (u->lcr & LCR_DLAB) {
+		*value = u->dll;
 		return;
 	}
 	if (!u->rx_count) {
@@ -288,10 +304,7 @@ static void read_rbr(void *ctx, const struct hs_access *a, uint32_t *value)
 	*value = u->rx[u->rx_head];
 	u->rx_head = (u->rx_head + 1U) % FIFO_SIZE;
 	u->rx_count--;
-	u->timeout_int = false;
-	hs_event_cancel(&u->timeout_ev);
-	if (fifo_mode(u) && u->rx_count)
-		u->timeout_ev = hs_event_after(bits_ns(u, 4U * char_bits(u)), timeout_due, u);
+	rx_activity(u);
 	irq_update(u);
 }
 
@@ -299,8 +312,10 @@ static void write_thr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 {
 	struct ev3_uart *u = ctx;
 
-	if (hs_reg_get(u->r, LCR) & LCR_DLAB) {
+	if (u->lcr & LCR_DLAB) {
 		hs_reg_set(u->r, DLL, written & 0xFFU);
+		u->dll = written & 0xFFU;
+		tx_start(u);
 		return;
 	}
 	if (!tx_enabled(u)) {
@@ -323,22 +338,26 @@ static void read_ier(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct ev3_uart *u = ctx;
 
-	if (hs_reg_get(u->r, LCR) & LCR_DLAB)
-		*value = hs_reg_get(u->r, DLH);
+	if (u->lcr & LCR_DLAB)
+		*value = u->dlh;
 }
 
 static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct ev3_uart *u = ctx;
 
-	if (hs_reg_get(u->r, LCR) & LCR_DLAB) {
+	if (u->lcr & LCR_DLAB) {
 		hs_reg_set(u->r, IER, old);
 		hs_reg_set(u->r, DLH, written & 0xFFU);
+		u->dlh = written & 0xFFU;
+		tx_start(u);
 		return;
 	}
+	u->ier = nv;
 	/* enabling ETBEI while the holding register is empty raises THRE at once */
 	if ((nv & IER_ETBEI) && !(old & IER_ETBEI) && !u->tx_count)
 		u->thre_int = true;
+	rx_activity(u);
 	irq_update(u);
 }
 
@@ -374,6 +393,7 @@ static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	struct ev3_uart *u = ctx;
 	bool brk = nv & LCR_BC;
 
+	u->lcr = nv;
 	if (brk != u->break_sent) {
 		u->break_sent = brk;
 		if (u->peer.tx_break)
@@ -408,13 +428,30 @@ static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
 
 static void write_div(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	tx_start(ctx);
+	struct ev3_uart *u = ctx;
+
+	if (a->offset == DLL)
+		u->dll = nv;
+	else
+		u->dlh = nv;
+	tx_start(u);
+}
+
+static void write_mcr_mdr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+{
+	struct ev3_uart *u = ctx;
+
+	if (a->offset == MCR)
+		u->mcr = nv;
+	else
+		u->mdr = nv;
 }
 
 static void write_pwremu(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct ev3_uart *u = ctx;
 
+	u->pwremu = nv;
 	if (!(nv & PWREMU_URRST)) {
 		u->rx_count = 0;
 		u->overrun = false;
@@ -441,7 +478,8 @@ static const struct hs_reg uart_regs[] = {
 	  .after_write = write_fcr },
 	{ .name = "LCR", .offset = LCR, .widths = HS_W8 | HS_W32, .kind = HS_RW, .mask = 0xFF,
 	  .after_write = write_lcr },
-	{ .name = "MCR", .offset = MCR, .widths = HS_W8 | HS_W32, .kind = HS_RW, .mask = 0x3F },
+	{ .name = "MCR", .offset = MCR, .widths = HS_W8 | HS_W32, .kind = HS_RW, .mask = 0x3F,
+	  .after_write = write_mcr_mdr },
 	{ .name = "LSR", .offset = LSR, .widths = HS_W8 | HS_W32, .kind = HS_RO, .reset = 0x60,
 	  .before_read = read_lsr },
 	{ .name = "MSR", .offset = MSR, .widths = HS_W8 | HS_W32, .kind = HS_RO },
@@ -454,7 +492,8 @@ static const struct hs_reg uart_regs[] = {
 	{ .name = "REVID2", .offset = REVID2, .kind = HS_RO },
 	{ .name = "PWREMU_MGMT", .offset = PWREMU, .widths = HS_W16 | HS_W32, .kind = HS_RW,
 	  .reset = 0x0002, .mask = 0x6001, .after_write = write_pwremu },
-	{ .name = "MDR", .offset = MDR, .widths = HS_W8 | HS_W32, .kind = HS_RW, .mask = 0x01 },
+	{ .name = "MDR", .offset = MDR, .widths = HS_W8 | HS_W32, .kind = HS_RW, .mask = 0x01,
+	  .after_write = write_mcr_mdr },
 };
 
 /* ---- devices ---- */
@@ -476,8 +515,11 @@ static ER uart_create_port(unsigned port, unsigned power, void **ctx)
 		return E_PAR;
 	}
 	/* Linux (or the stand-in's firmware loader) leaves the UART out of reset */
-	if (!bc || !bc->cold_reset)
-		hs_reg_set(u->r, PWREMU, 0x6003);
+	u->pwremu = 0x0002;
+	if (!bc || !bc->cold_reset) {
+		u->pwremu = 0x6003;
+		hs_reg_set(u->r, PWREMU, u->pwremu);
+	}
 	u->line_high = true;
 	port_uarts[port] = u;
 	*ctx = u;
