@@ -23,6 +23,6 @@ int main(void)
 	   r.tacho_counts[3] < -5000, "the motors turned both ways (%lld %lld %lld %lld)",
 	   (long long)r.tacho_counts[0], (long long)r.tacho_counts[1], (long long)r.tacho_counts[2],
 	   (long long)r.tacho_counts[3]);
-	ok(r.cpu_speedup > 20, "faster than real time by a wide margin (%.0fx per CPU second)", r.cpu_speedup);
+	ok(r.cpu_speedup > 2, "faster than real time even under sanitizers or qemu (%.0fx per CPU second)", r.cpu_speedup);
 	return tap_done();
 }
