@@ -17,8 +17,8 @@
 extern void __iomem *da8xx_syscfg0_base;
 extern void __iomem *da8xx_syscfg1_base;
 
-#define DA8XX_SYSCFG0_VIRT(x)	(da8xx_syscfg0_base + (x))
-#define DA8XX_SYSCFG1_VIRT(x)	(da8xx_syscfg1_base + (x))
+#define DA8XX_SYSCFG0_VIRT(x)	((void __iomem *)((char __iomem *)da8xx_syscfg0_base + (x)))
+#define DA8XX_SYSCFG1_VIRT(x)	((void __iomem *)((char __iomem *)da8xx_syscfg1_base + (x)))
 
 #define DA8XX_JTAG_ID_REG	0x18
 #define DA8XX_KICK0_REG		0x38
