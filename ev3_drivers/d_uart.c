@@ -52,6 +52,7 @@
 #include <linux/bits.h>
 #include <linux/string.h>
 #include <linux/fs.h>
+#include <linux/ioctl.h>
 #include <linux/miscdevice.h>
 #include <linux/mm.h>
 #include <linux/slab.h>
