@@ -105,11 +105,11 @@ static struct module __this_module __maybe_unused = {
 /* Module information: documentation only (nothing reads it at run time). */
 #define __lx_modinfo(tag, info) \
 	static const char __UNIQUE_ID(modinfo_##tag)[] __maybe_unused = #tag "=" info
-#define MODULE_LICENSE(license)		__lx_modinfo(license, license)
-#define MODULE_AUTHOR(author)		__lx_modinfo(author, author)
+#define MODULE_LICENSE(_license)	__lx_modinfo(license, _license)
+#define MODULE_AUTHOR(_author)		__lx_modinfo(author, _author)
 #define MODULE_DESCRIPTION(desc)	__lx_modinfo(description, desc)
-#define MODULE_VERSION(version)		__lx_modinfo(version, version)
-#define MODULE_ALIAS(alias)		__lx_modinfo(alias, alias)
+#define MODULE_VERSION(_version)	__lx_modinfo(version, _version)
+#define MODULE_ALIAS(_alias)		__lx_modinfo(alias, _alias)
 #define MODULE_SOFTDEP(dep)		__lx_modinfo(softdep, dep)
 #define MODULE_FIRMWARE(fw)		__lx_modinfo(firmware, fw)
 #define MODULE_INFO(tag, info)		__lx_modinfo(tag, info)

@@ -42,6 +42,9 @@ enum lx_param_type {
 #define __lx_param_ctype_long		long
 #define __lx_param_ctype_ulong		unsigned long
 #define __lx_param_ctype_byte		unsigned char
+/* stdbool's `bool` is a macro for _Bool, so module_param(x, bool, ...) arrives here as _Bool. */
+#define __lx_param_ctype__Bool		bool
+#define LX_PARAM__Bool			LX_PARAM_bool
 
 struct lx_module_param {
 	const char *module;      /* KBUILD_MODNAME */
