@@ -35,7 +35,8 @@ int main(void)
 	for (size_t i = 0; i < n; i++)
 		got += lump_parser_push(&p, f[i], &m);
 	ok(got == 1 && m.header == 0x43 && m.payload[0] == 3 && m.check_ok, "parser: SELECT 3");
-	f[n - 1] ^= 1;
+	if (n > 0)
+		f[n - 1] ^= 1;
 	got = 0;
 	for (size_t i = 0; i < n; i++)
 		got += lump_parser_push(&p, f[i], &m);
