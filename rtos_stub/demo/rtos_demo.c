@@ -16,6 +16,7 @@ enum { CYC_CONTROL = 1 };
 
 static unsigned samples;
 
+/* Prints one line stamped with the virtual time. */
 static void say(const char *fmt, unsigned v)
 {
 	printf("[%8.3f ms] ", (double)rtos_host_now() / 1e6);
@@ -56,11 +57,13 @@ static void logger_task(intptr_t exinf)
 	}
 }
 
+/* Cyclic handler: wakes the control task every 10 ms. */
 static void control_cyclic(intptr_t exinf)
 {
 	iwup_tsk(TSK_CONTROL);
 }
 
+/* ISR of the device line: wakes the sensor task. */
 static void device_isr(intptr_t exinf)
 {
 	say("isr %u: device interrupt, waking the sensor task", INTNO_DEVICE);
@@ -88,6 +91,7 @@ static const struct rtos_cfg demo_cfg = {
 	.isrs = RTOS_TABLE(isrs),
 };
 
+/* Boots the demo, schedules three device interrupts, runs 60 ms of virtual time. */
 int main(void)
 {
 	if (rtos_host_boot(&demo_cfg) != E_OK)

@@ -70,6 +70,7 @@ static ER collect_configs(const struct rtos_cfg *cfg, const struct rtos_cfg *par
 	return E_OK;
 }
 
+/* Checks and applies the CFG_INT rows of one configuration. */
 static ER check_ints(const struct rtos_cfg *cfg)
 {
 	for (uint_t i = 0; i < cfg->nints; i++) {
@@ -98,6 +99,7 @@ static ER check_ints(const struct rtos_cfg *cfg)
 	return E_OK;
 }
 
+/* Checks the CRE_TSK rows and allocates their control blocks. */
 static ER check_tasks(const struct rtos_cfg *cfg)
 {
 	for (uint_t i = 0; i < cfg->ntasks; i++) {
@@ -134,6 +136,7 @@ static ER check_tasks(const struct rtos_cfg *cfg)
 	return E_OK;
 }
 
+/* Checks the CRE_SEM rows and creates the semaphores. */
 static ER check_sems(const struct rtos_cfg *cfg)
 {
 	for (uint_t i = 0; i < cfg->nsems; i++) {
@@ -163,6 +166,7 @@ static ER check_sems(const struct rtos_cfg *cfg)
 	return E_OK;
 }
 
+/* Checks the CRE_FLG rows and creates the eventflags. */
 static ER check_flgs(const struct rtos_cfg *cfg)
 {
 	const ATR known = TA_TPRI | TA_WMUL | TA_CLR;
@@ -189,6 +193,7 @@ static ER check_flgs(const struct rtos_cfg *cfg)
 	return E_OK;
 }
 
+/* Checks the CRE_CYC and CRE_ALM rows and registers the handlers. */
 static ER check_cycs_alms(const struct rtos_cfg *cfg)
 {
 	const ATR known = TA_STA | TA_PHS;
@@ -234,6 +239,7 @@ static ER check_cycs_alms(const struct rtos_cfg *cfg)
 	return E_OK;
 }
 
+/* Checks ATT_ISR, DEF_SVC, memory-region and ATT_INI rows and applies them. */
 static ER check_isrs_svcs_mems_inis(const struct rtos_cfg *cfg)
 {
 	for (uint_t i = 0; i < cfg->nisrs; i++) {
@@ -288,6 +294,7 @@ static ER check_isrs_svcs_mems_inis(const struct rtos_cfg *cfg)
 	return E_OK;
 }
 
+/* Frees every kernel object and resets the clock, lines and events. */
 static void free_objects(void)
 {
 	task_destroy_all();

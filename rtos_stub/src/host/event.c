@@ -30,6 +30,7 @@ static uint32_t ev_len;
 static uint64_t ev_seq;
 static uint_t ev_user;
 
+/* Heap order: earlier time first, then scheduling order. */
 static bool ev_before(uint32_t a, uint32_t b)
 {
 	const struct event *ea = &ev_pool[a], *eb = &ev_pool[b];
@@ -37,12 +38,14 @@ static bool ev_before(uint32_t a, uint32_t b)
 	return ea->time < eb->time || (ea->time == eb->time && ea->seq < eb->seq);
 }
 
+/* Puts event idx at heap position pos. */
 static void ev_place(uint32_t pos, uint32_t idx)
 {
 	ev_heap[pos] = idx;
 	ev_pool[idx].heap_pos = pos;
 }
 
+/* Restores heap order upwards from pos. */
 static void ev_sift_up(uint32_t pos)
 {
 	uint32_t idx = ev_heap[pos];
@@ -58,6 +61,7 @@ static void ev_sift_up(uint32_t pos)
 	ev_place(pos, idx);
 }
 
+/* Restores heap order downwards from pos. */
 static void ev_sift_down(uint32_t pos)
 {
 	uint32_t idx = ev_heap[pos];
@@ -77,6 +81,7 @@ static void ev_sift_down(uint32_t pos)
 	ev_place(pos, idx);
 }
 
+/* Removes the event at heap position pos. */
 static void ev_heap_remove(uint32_t pos)
 {
 	uint32_t last = ev_heap[--ev_len];
@@ -88,6 +93,7 @@ static void ev_heap_remove(uint32_t pos)
 	ev_sift_up(ev_pool[last].heap_pos);
 }
 
+/* Returns an event to the free list; its handle becomes stale. */
 static void ev_release(uint32_t idx)
 {
 	struct event *ev = &ev_pool[idx];
@@ -101,6 +107,7 @@ static void ev_release(uint32_t idx)
 	ev_free = idx;
 }
 
+/* Doubles the event pool; false on ENOMEM. */
 static bool ev_grow(void)
 {
 	uint32_t ncap = ev_cap ? ev_cap * 2 : 256;
@@ -124,6 +131,7 @@ static bool ev_grow(void)
 	return true;
 }
 
+/* Schedules fn(arg) at t_ns; a time in the past is a bug and runs now. */
 static rtos_host_event_t ev_schedule(uint64_t t_ns, rtos_host_event_fn fn, void *arg, bool kernel)
 {
 	uint32_t idx;

@@ -8,6 +8,7 @@
 
 struct flgcb *flg_table[TNUM_FLGID + 1];
 
+/* Resolves an eventflag ID; NULL and *ercd (E_ID/E_NOEXS) on failure. */
 static struct flgcb *flg_lookup(ID flgid, ER *ercd)
 {
 	if (flgid < 1 || flgid > TNUM_FLGID) {
@@ -21,6 +22,7 @@ static struct flgcb *flg_lookup(ID flgid, ER *ercd)
 	return flg_table[flgid];
 }
 
+/* True if ptn satisfies waiptn in mode wfmode. */
 static bool flg_match(FLGPTN ptn, FLGPTN waiptn, MODE wfmode)
 {
 	return wfmode == TWF_ORW ? (ptn & waiptn) != 0 : (ptn & waiptn) == waiptn;

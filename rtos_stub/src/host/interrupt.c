@@ -40,6 +40,7 @@ struct cpu_state cpu;
 static struct irq_line lines[TMAX_INTNO + 1];
 static uint64_t pending_bits[IRQ_WORDS];
 
+/* Keeps the pending bitmap in step with the line's edge and level. */
 static void pend_update(INTNO n)
 {
 	uint64_t bit = 1ULL << (n % 64U);
@@ -50,6 +51,7 @@ static void pend_update(INTNO n)
 		pending_bits[n / 64U] &= ~bit;
 }
 
+/* True if any line has a request. */
 static bool any_pending(void)
 {
 	for (uint_t w = 0; w < IRQ_WORDS; w++)
@@ -96,6 +98,7 @@ void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exin
 	cpu.exec_id = saved_id;
 }
 
+/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order. */
 static void irq_run(INTNO n)
 {
 	struct irq_line *l = &lines[n];
@@ -216,6 +219,7 @@ void irq_reset(void)
 
 /* ---- Service calls ---- */
 
+/* E_PAR for a number out of range, E_OBJ for an unconfigured line. */
 static ER line_check(INTNO intno)
 {
 	if (intno > TMAX_INTNO)
@@ -254,6 +258,7 @@ ER ena_int(INTNO intno)
 
 /* ---- Harness side: the hardware's interrupt requests ---- */
 
+/* Reports a bad line number from the hardware side. */
 static bool harness_line_ok(const char *fn, INTNO intno)
 {
 	if (intno > TMAX_INTNO) {

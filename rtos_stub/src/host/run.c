@@ -49,11 +49,13 @@ void pause_to_harness(void)
 	co_switch(&t->co, &harness_co, false);
 }
 
+/* True if nothing but time events is left to do. */
 static bool idle_reached(void)
 {
 	return schedtsk == NULL && paused_task == NULL && event_user_count() == 0 && !irq_deliverable();
 }
 
+/* Reports harness calls before boot or from inside the kernel. */
 static bool harness_may_run(const char *fn)
 {
 	if (!kernel_booted) {

@@ -8,6 +8,7 @@
 
 struct semcb *sem_table[TNUM_SEMID + 1];
 
+/* Resolves a semaphore ID; NULL and *ercd (E_ID/E_NOEXS) on failure. */
 static struct semcb *sem_lookup(ID semid, ER *ercd)
 {
 	if (semid < 1 || semid > TNUM_SEMID) {

@@ -33,6 +33,7 @@ static void access_done(void)
 	dispatch_if_needed();
 }
 
+/* Reports register accesses of a bad width or alignment. */
 static bool width_ok(const char *fn, const volatile void *mem, uint_t width)
 {
 	if (width != 1U && width != 2U && width != 4U) {

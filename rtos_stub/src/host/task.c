@@ -22,6 +22,7 @@ static uint32_t ready_map;                        /* bit pri-1 set: queue not em
 
 static void wait_timeout(struct tmevt *ev);
 
+/* Traces a task event. */
 static void trace_task(const char *what, const struct tcb *t)
 {
 	if (trace_on())
@@ -209,6 +210,7 @@ void wait_release(struct tcb *t, ER ercd)
 	ready_insert_tail(t);
 }
 
+/* Time event of a waiting task: E_TMOUT (E_OK for dly_tsk). */
 static void wait_timeout(struct tmevt *ev)
 {
 	struct tcb *t = container_of_kernel(ev, struct tcb, tmevt);
@@ -286,6 +288,7 @@ void task_destroy_all(void)
 
 /* ---- Task management ---- */
 
+/* Activates a dormant task or queues one activation (E_QOVR beyond). */
 static ER activate_or_queue(struct tcb *t)
 {
 	if (t->state == TTS_DMT) {
@@ -457,6 +460,7 @@ ER tslp_tsk(TMO tmout)
 	return svc_result("tslp_tsk", wait_block(WAIT_SLP, 0, NULL, false, tmout));
 }
 
+/* Wakes a sleeping task or queues one wakeup (E_OBJ dormant, E_QOVR beyond). */
 static ER wakeup(struct tcb *t)
 {
 	if (t->state == TTS_DMT)
@@ -517,6 +521,7 @@ ER_UINT can_wup(ID tskid)
 	return (ER_UINT)n;
 }
 
+/* Forces a waiting task out with E_RLWAI (E_OBJ if not waiting). */
 static ER release_wait(struct tcb *t)
 {
 	if (t->state != TTS_WAI)

@@ -47,17 +47,20 @@ static struct almcb *alm_table[TNUM_ALMID + 1];
 
 /* ---- The time-event heap ---- */
 
+/* Heap order: earlier tick first, then queueing order. */
 static bool tm_before(const struct tmevt *a, const struct tmevt *b)
 {
 	return a->tick < b->tick || (a->tick == b->tick && a->seq < b->seq);
 }
 
+/* Puts ev at heap position pos. */
 static void tm_place(uint_t pos, struct tmevt *ev)
 {
 	tm_heap[pos] = ev;
 	ev->heap_index = pos;
 }
 
+/* Restores heap order upwards from pos. */
 static void tm_sift_up(uint_t pos)
 {
 	struct tmevt *ev = tm_heap[pos];
@@ -69,6 +72,7 @@ static void tm_sift_up(uint_t pos)
 	tm_place(pos, ev);
 }
 
+/* Restores heap order downwards from pos. */
 static void tm_sift_down(uint_t pos)
 {
 	struct tmevt *ev = tm_heap[pos];
@@ -213,12 +217,14 @@ void time_start(void)
 
 /* ---- Cyclic handlers ---- */
 
+/* Virtual time activation k is due (from k: no accumulated drift). */
 static uint64_t cyc_due_ns(const struct cyccb *c, uint64_t k)
 {
 	return c->origin_ns + (uint64_t)c->cfg->cycphs * NS_PER_MS +
 	       k * (uint64_t)c->cfg->cyctim * NS_PER_MS;
 }
 
+/* Tick at which activation k runs: the first boundary at or after its due time. */
 static uint64_t cyc_tick(const struct cyccb *c, uint64_t k)
 {
 	return (cyc_due_ns(c, k) + TIC_NS - 1) / TIC_NS;
@@ -254,6 +260,7 @@ static void cyc_start(struct cyccb *c, uint64_t origin, bool keep_phase)
 	tmevt_enqueue(&c->ev, tick);
 }
 
+/* Resolves a cyclic handler ID; NULL and *ercd on failure. */
 static struct cyccb *cyc_lookup(ID cycid, ER *ercd)
 {
 	if (cycid < 1 || cycid > TNUM_CYCID) {
@@ -306,6 +313,7 @@ ER stp_cyc(ID cycid)
 
 /* ---- Alarm handlers ---- */
 
+/* Time event of an alarm: runs its handler once. */
 static void alm_fire(struct tmevt *ev)
 {
 	struct almcb *a = container_of_kernel(ev, struct almcb, ev);
@@ -313,6 +321,7 @@ static void alm_fire(struct tmevt *ev)
 	run_handler(EXEC_ALM, a->cfg->almid, a->cfg->almhdr, a->cfg->exinf);
 }
 
+/* Resolves an alarm ID; NULL and *ercd on failure. */
 static struct almcb *alm_lookup(ID almid, ER *ercd)
 {
 	if (almid < 1 || almid > TNUM_ALMID) {
@@ -326,6 +335,7 @@ static struct almcb *alm_lookup(ID almid, ER *ercd)
 	return alm_table[almid];
 }
 
+/* Common body of sta_alm/ista_alm. */
 static ER alm_start(const char *svc, ID almid, RELTIM almtim)
 {
 	struct almcb *a;
@@ -341,6 +351,7 @@ static ER alm_start(const char *svc, ID almid, RELTIM almtim)
 	return E_OK;
 }
 
+/* Common body of stp_alm/istp_alm. */
 static ER alm_stop(const char *svc, ID almid)
 {
 	struct almcb *a;
@@ -415,12 +426,13 @@ ER alm_register(const struct rtos_alm_cfg *cfg)
 	return E_OK;
 }
 
-/* True if the ID is taken (boot duplicate check). */
+/* True if the cyclic handler ID is taken (boot duplicate check). */
 bool cyc_exists(ID cycid)
 {
 	return cyc_table[cycid] != NULL;
 }
 
+/* True if the alarm ID is taken (boot duplicate check). */
 bool alm_exists(ID almid)
 {
 	return alm_table[almid] != NULL;
