@@ -13,7 +13,7 @@ WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes 
 # linux_compat/include and use gnu11 (typeof, statement expressions).
 LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers
 
-COMMON_INC := -Irtos_stub/include -Ihost_sim/include -Iapi -Itests -Iev3_drivers
+COMMON_INC := -Irtos_stub/include -Ihost_sim/include -Iapi -Itests -Iev3_drivers -Ihacks
 LINUX_INC  := -D__KERNEL__ -Ilinux_compat/include
 
 # Build-time kernel settings (TIC_NUME/TIC_DENO: tick length in ms).
