@@ -38,21 +38,25 @@ static void *reg_addr(uintptr_t phys)
 	return windows[i].window + (phys & 0xFFF);
 }
 
+/* 32-bit register read through the window. */
 static uint32_t reg_rd(uintptr_t phys)
 {
 	return sil_rew_mem(reg_addr(phys));
 }
 
+/* 32-bit register write through the window. */
 static void reg_wr(uintptr_t phys, uint32_t v)
 {
 	sil_wrw_mem(reg_addr(phys), v);
 }
 
+/* 16-bit register write through the window. */
 static void reg_wr16(uintptr_t phys, uint16_t v)
 {
 	sil_wrh_mem(reg_addr(phys), v);
 }
 
+/* Drives a GPIO as an output at level, as a driver does. */
 static void gpio_drive(unsigned pin, int level)
 {
 	uintptr_t pair = HS_GPIO_BASE + 0x10U + 0x28U * (pin / 32U);
@@ -62,6 +66,7 @@ static void gpio_drive(unsigned pin, int level)
 	reg_wr(pair, reg_rd(pair) & ~bit);
 }
 
+/* Floats a GPIO (DIR = input). */
 static void gpio_release(unsigned pin)
 {
 	uintptr_t pair = HS_GPIO_BASE + 0x10U + 0x28U * (pin / 32U);
@@ -69,6 +74,7 @@ static void gpio_release(unsigned pin)
 	reg_wr(pair, reg_rd(pair) | (1U << (pin % 32U)));
 }
 
+/* Sets a UART divisor for baud and flushes its FIFOs. */
 static void uart_baud(uintptr_t base, uint32_t clock, uint32_t baud)
 {
 	uint32_t div = (clock + 8U * baud) / (16U * baud);
@@ -117,6 +123,7 @@ static void host_service(struct bench_host *h, unsigned port)
 	}
 }
 
+/* Seconds on a host clock. */
 static double clock_s(clockid_t id)
 {
 	struct timespec ts;

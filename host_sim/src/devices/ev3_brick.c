@@ -85,6 +85,7 @@ static uint32_t divider_mv(uint32_t ohms)
 	return (uint32_t)((5000ULL * ohms + (ohms + PULLUP_OHMS) / 2U) / (ohms + PULLUP_OHMS));
 }
 
+/* What the pins show: the device, or nothing while it is unplugged. */
 static enum ev3_input_kind effective_kind(const struct in_port *p)
 {
 	return p->plugged ? p->kind : EV3_INPUT_NONE;
@@ -237,6 +238,7 @@ static void link_deliver(void *ctx, uint8_t byte, uint32_t baud)
 	}
 }
 
+/* The sensor's TX line level: pin 6 and the UART's RX line. */
 static void link_line(void *ctx, bool high)
 {
 	struct in_port *p = ctx;
@@ -264,6 +266,7 @@ static void peer_tx_byte(void *ctx, uint8_t byte, uint32_t baud)
 	uart_sensor_host_byte(p->sensor, byte, baud);
 }
 
+/* The UART's break reaches the sensor's receiver. */
 static void peer_tx_break(void *ctx, bool active)
 {
 	struct in_port *p = ctx;
@@ -360,11 +363,13 @@ ER ev3_detach_input(unsigned port)
 	return E_OK;
 }
 
+/* Kind of device on an input port. */
 enum ev3_input_kind ev3_input_kind_of(unsigned port)
 {
 	return port < EV3_INPUT_PORTS ? brick.in[port].kind : EV3_INPUT_NONE;
 }
 
+/* The UART sensor on an input port, or NULL. */
 struct uart_sensor *ev3_input_uart_sensor(unsigned port)
 {
 	return port < EV3_INPUT_PORTS ? brick.in[port].sensor : NULL;
@@ -429,6 +434,7 @@ ER ev3_detach_output(unsigned port)
 	return E_OK;
 }
 
+/* The motor on an output port, or NULL. */
 struct ev3_motor *ev3_output_motor(unsigned port)
 {
 	return port < EV3_OUTPUT_PORTS ? brick.out[port].motor : NULL;
@@ -481,11 +487,13 @@ uint32_t ev3_adc_channel_mv(unsigned ch)
 	}
 }
 
+/* ADC noise standard deviation now (mV). */
 double ev3_adc_noise_mv(void)
 {
 	return brick.adc_noise_mv;
 }
 
+/* One standard-normal draw from the ADC noise stream. */
 double ev3_adc_noise_sample(void)
 {
 	return hs_rng_gauss(&brick.adc_rng);
@@ -502,6 +510,7 @@ struct fault_job {
 
 static struct fault_job *fault_jobs;
 
+/* Unlinks and frees a fault job. */
 static void fault_job_free(struct fault_job *j)
 {
 	struct fault_job **pp = &fault_jobs;
@@ -513,6 +522,7 @@ static void fault_job_free(struct fault_job *j)
 	free(j);
 }
 
+/* Records and traces a fault start or end. */
 static void fault_log(const struct ev3_fault *f, bool start)
 {
 	if (brick.nlog < MAX_FAULT_LOG)
@@ -521,6 +531,7 @@ static void fault_log(const struct ev3_fault *f, bool start)
 			(int)f->kind, f->port, f->value);
 }
 
+/* Starts (on) or ends a fault. */
 static void fault_apply(const struct ev3_fault *f, bool on)
 {
 	struct in_port *ip = &brick.in[f->port % EV3_INPUT_PORTS];
@@ -558,6 +569,7 @@ static void fault_apply(const struct ev3_fault *f, bool on)
 	}
 }
 
+/* Event: a fault starts, or ends after its duration. */
 static void fault_due(void *arg)
 {
 	struct fault_job *j = arg;
@@ -606,16 +618,19 @@ ER ev3_fault_at(uint64_t t_ns, const struct ev3_fault *f)
 	return E_OK;
 }
 
+/* Number of fault log entries. */
 unsigned ev3_fault_log_count(void)
 {
 	return brick.nlog;
 }
 
+/* Fault log entry i, or NULL. */
 const struct ev3_fault_record *ev3_fault_log(unsigned i)
 {
 	return i < brick.nlog ? &brick.log[i] : NULL;
 }
 
+/* Bytes the UART faults changed on an input port. */
 void ev3_fault_uart_counts(unsigned port, uint32_t *flipped, uint32_t *dropped, uint32_t *duplicated)
 {
 	const struct in_port *p = &brick.in[port % EV3_INPUT_PORTS];
@@ -649,6 +664,7 @@ static ER ports_create(const struct hs_board_cfg *cfg, void **ctx)
 	return E_OK;
 }
 
+/* Unplugs everything and cancels pending faults. */
 static void ports_destroy(void *ctx)
 {
 	for (unsigned p = 0; p < EV3_INPUT_PORTS; p++)

@@ -157,6 +157,7 @@ static void quad_levels(int64_t h, bool *int_lvl, bool *dir_lvl)
 	*dir_lvl = q == 2 || q == 3;
 }
 
+/* Shows quadrature index h on the INT and DIR pins (only changed pins are driven). */
 static void show_index(struct ev3_motor *m, int64_t h)
 {
 	bool il, dl;
@@ -222,6 +223,7 @@ static void motor_schedule_edge(struct ev3_motor *m)
 	m->edge_ev = hs_event_at(t, edge_due, m);
 }
 
+/* Battery voltage in volts. */
 static double battery_v(void)
 {
 	return ev3_battery_mv() / 1000.0;
@@ -320,6 +322,7 @@ void ev3_motor_inputs_changed(struct ev3_motor *m)
 	motor_new_segment(m);
 }
 
+/* Watcher: a bridge GPIO changed. */
 static void bridge_pin_changed(void *ctx, unsigned pin, const struct hs_pin_state *st)
 {
 	(void)pin;
@@ -339,6 +342,7 @@ static void glitch_end(void *arg)
 
 static void glitch_schedule(struct ev3_motor *m);
 
+/* Event: an encoder glitch starts (a 2 us pulse on INT). */
 static void glitch_due(void *arg)
 {
 	struct ev3_motor *m = arg;
@@ -352,6 +356,7 @@ static void glitch_due(void *arg)
 	glitch_schedule(m);
 }
 
+/* Draws the time of the next glitch (Poisson). */
 static void glitch_schedule(struct ev3_motor *m)
 {
 	double u;
@@ -437,27 +442,32 @@ void ev3_motor_pwm_changed(enum ev3_pwm_source src)
 			ev3_motor_inputs_changed(port_motor[p]);
 }
 
+/* Shaft angle now, degrees. */
 double ev3_motor_angle_deg(struct ev3_motor *m)
 {
 	return seg_theta(m, hs_now()) / RAD_PER_DEG;
 }
 
+/* Shaft speed on the current step, deg/s. */
 double ev3_motor_speed_dps(struct ev3_motor *m)
 {
 	return m->seg_rate / RAD_PER_DEG;
 }
 
+/* Counts the pins show (INT edges from 0). */
 int64_t ev3_motor_tacho_counts(const struct ev3_motor *m)
 {
 	/* INT edges sit at odd half-count indices: count = round(index / 2) */
 	return m->shown >= 0 ? (m->shown + 1) / 2 : -((-m->shown) / 2);
 }
 
+/* Bridge split in effect. */
 struct hbridge_drive ev3_motor_drive(const struct ev3_motor *m)
 {
 	return m->drive;
 }
 
+/* Estimated motor current now, amperes. */
 double ev3_motor_current_a(struct ev3_motor *m)
 {
 	const struct dc_motor_model *md = &m->model;
@@ -468,6 +478,7 @@ double ev3_motor_current_a(struct ev3_motor *m)
 	return fabs(torque) / md->p->stall_nm * md->p->stall_a;
 }
 
+/* Sets the external load from now on. */
 void ev3_motor_set_load(struct ev3_motor *m, double load_nm, double extra_inertia)
 {
 	m->seg_omega1 = omega_now(m);
@@ -476,6 +487,7 @@ void ev3_motor_set_load(struct ev3_motor *m, double load_nm, double extra_inerti
 	motor_new_segment(m);
 }
 
+/* Locks or frees the shaft from now on. */
 void ev3_motor_set_stalled(struct ev3_motor *m, bool stalled)
 {
 	m->seg_omega1 = omega_now(m);
@@ -483,6 +495,7 @@ void ev3_motor_set_stalled(struct ev3_motor *m, bool stalled)
 	motor_new_segment(m);
 }
 
+/* Freezes or releases the tacho outputs. */
 void ev3_motor_set_encoder_stuck(struct ev3_motor *m, bool stuck)
 {
 	m->stuck = stuck;
@@ -491,17 +504,20 @@ void ev3_motor_set_encoder_stuck(struct ev3_motor *m, bool stuck)
 	motor_schedule_edge(m);
 }
 
+/* Sets the glitch rate of the encoder. */
 void ev3_motor_set_encoder_noise(struct ev3_motor *m, double glitches_per_s)
 {
 	m->noise_rate = glitches_per_s;
 	glitch_schedule(m);
 }
 
+/* Glitches emitted so far. */
 uint64_t ev3_motor_glitches(const struct ev3_motor *m)
 {
 	return m->glitches;
 }
 
+/* Pin 5 ID voltage for the encoder level and the 5w pull. */
 uint16_t ev3_motor_pin5_mv(const struct ev3_motor *m, bool pull5w_high)
 {
 	const struct ev3_motor_params *p = m->model.p;
@@ -511,6 +527,7 @@ uint16_t ev3_motor_pin5_mv(const struct ev3_motor *m, bool pull5w_high)
 	return pull5w_high ? p->pin5_pulled_mv : p->pin5_high_mv;
 }
 
+/* Kind of the motor. */
 enum ev3_motor_kind ev3_motor_kind_of(const struct ev3_motor *m)
 {
 	return m->kind;

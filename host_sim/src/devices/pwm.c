@@ -133,6 +133,7 @@ struct ehrpwm {
 
 static struct ehrpwm *ehrpwm1;
 
+/* Time-base clock for TBCTL dividers. */
 static uint64_t tbclk_hz(uint32_t tbctl)
 {
 	unsigned hsp = (tbctl >> 7) & 7U, clk = (tbctl >> 10) & 7U;
@@ -270,12 +271,14 @@ static void ehrpwm_rebase(struct ehrpwm *e)
 	ehrpwm_schedule_load(e);
 }
 
+/* Watcher: TBCLKSYNC starts or stops the time base. */
 static void ehrpwm_syscfg_changed(void *ctx, uint32_t offset, uint32_t old, uint32_t now)
 {
 	if (offset == 0x180U && ((old ^ now) & HS_CFGCHIP1_TBCLKSYNC))
 		ehrpwm_rebase(ctx);
 }
 
+/* TBCNT read: the counter now. */
 static void ehrpwm_read_tbcnt(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct ehrpwm *e = ctx;
@@ -283,6 +286,7 @@ static void ehrpwm_read_tbcnt(void *ctx, const struct hs_access *a, uint32_t *va
 	*value = tb_counter(e, tb_position(e));
 }
 
+/* TBSTS read: counting direction now. */
 static void ehrpwm_read_tbsts(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct ehrpwm *e = ctx;
@@ -292,6 +296,7 @@ static void ehrpwm_read_tbsts(void *ctx, const struct hs_access *a, uint32_t *va
 	*value = (*value & ~1U) | (up ? 1U : 0U);
 }
 
+/* Time-base writes: counter, period (shadowed), software sync. */
 static void ehrpwm_write_tb(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv,
 			   uint32_t written)
 {
@@ -322,6 +327,7 @@ static void ehrpwm_write_tb(void *ctx, const struct hs_access *a, uint32_t old, 
 	ehrpwm_rebase(e);
 }
 
+/* CMPA/CMPB/CMPCTL writes: shadow or immediate. */
 static void ehrpwm_write_cmp(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv,
 			    uint32_t written)
 {
@@ -347,6 +353,7 @@ static void ehrpwm_write_cmp(void *ctx, const struct hs_access *a, uint32_t old,
 	ehrpwm_schedule_load(e);
 }
 
+/* Action-qualifier writes and software forces. */
 static void ehrpwm_write_aq(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv,
 			   uint32_t written)
 {
@@ -412,6 +419,7 @@ static const struct hs_reg ehrpwm_regs[] = {
 	{ .name = "PCCTL", .offset = PCCTL, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_unmodelled },
 };
 
+/* Creates the EHRPWM1 region and state. */
 static ER ehrpwm_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	struct ehrpwm *e = calloc(1, sizeof(*e));
@@ -432,6 +440,7 @@ static ER ehrpwm_create(const struct hs_board_cfg *cfg, void **ctx)
 	return E_OK;
 }
 
+/* Frees EHRPWM1. */
 static void ehrpwm_destroy(void *ctx)
 {
 	struct ehrpwm *e = ctx;
@@ -468,6 +477,7 @@ struct ecap {
 
 static struct ecap *ecaps[2];
 
+/* eCAP counter now. */
 static uint32_t ecap_counter(const struct ecap *c)
 {
 	uint64_t period = (uint64_t)hs_reg_get(c->r, CAP1) + 1U;
@@ -480,6 +490,7 @@ static uint32_t ecap_counter(const struct ecap *c)
 	return (uint32_t)(cnt % period);
 }
 
+/* Recomputes the APWM low fraction; tells the motors. */
 static void ecap_update(struct ecap *c)
 {
 	uint32_t ctl2 = hs_reg_get(c->r, ECCTL2);
@@ -519,6 +530,7 @@ static void ecap_load(void *arg)
 	ecap_update(c);
 }
 
+/* Schedules the shadow load at the next period if a shadow differs. */
 static void ecap_schedule_load(struct ecap *c)
 {
 	uint32_t prd = hs_reg_get(c->r, CAP1), cnt;
@@ -531,6 +543,7 @@ static void ecap_schedule_load(struct ecap *c)
 				    ecap_load, c);
 }
 
+/* Re-bases the counter at now and re-reads ECCTL2. */
 static void ecap_rebase(struct ecap *c)
 {
 	uint32_t ctl2 = hs_reg_get(c->r, ECCTL2);
@@ -542,11 +555,13 @@ static void ecap_rebase(struct ecap *c)
 	ecap_schedule_load(c);
 }
 
+/* TSCTR read: the counter now. */
 static void ecap_read_tsctr(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	*value = ecap_counter(ctx);
 }
 
+/* eCAP register writes. */
 static void ecap_write(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct ecap *c = ctx;
@@ -594,6 +609,7 @@ static const struct hs_reg ecap_regs[] = {
 	{ .name = "REVID", .offset = ECAP_REVID, .kind = HS_RO, .reset = 0x44D22100 },
 };
 
+/* Creates eCAP n. */
 static ER ecap_create_n(unsigned n, void **ctx)
 {
 	struct ecap *c = calloc(1, sizeof(*c));
@@ -614,16 +630,19 @@ static ER ecap_create_n(unsigned n, void **ctx)
 	return E_OK;
 }
 
+/* Board device: eCAP0. */
 static ER ecap0_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	return ecap_create_n(0, ctx);
 }
 
+/* Board device: eCAP1. */
 static ER ecap1_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	return ecap_create_n(1, ctx);
 }
 
+/* Frees an eCAP. */
 static void ecap_destroy(void *ctx)
 {
 	struct ecap *c = ctx;

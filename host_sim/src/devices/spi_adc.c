@@ -83,6 +83,7 @@ static uint16_t adc_frame(struct spi0 *s, uint16_t cmd)
 	return out;
 }
 
+/* Drives the SPI0 interrupt line from SPIFLG and SPIINT0. */
 static void spi_irq_update(struct spi0 *s)
 {
 	uint32_t flg = hs_reg_get(s->r, SPIFLG), ena = hs_reg_get(s->r, SPIINT0);
@@ -112,6 +113,7 @@ static uint64_t frame_ns(struct spi0 *s, unsigned fmt, unsigned *bits)
 
 static void frame_start(struct spi0 *s, uint16_t word, unsigned fmt);
 
+/* Event: a frame ends; SPIBUF gets the answer. */
 static void frame_done(void *arg)
 {
 	struct spi0 *s = arg;
@@ -134,6 +136,7 @@ static void frame_done(void *arg)
 	spi_irq_update(s);
 }
 
+/* Starts a frame now with the converter answering. */
 static void frame_start(struct spi0 *s, uint16_t word, unsigned fmt)
 {
 	uint64_t ns = frame_ns(s, fmt, &s->shift_len);
@@ -170,6 +173,7 @@ static void spi_send(struct spi0 *s, uint16_t word)
 	}
 }
 
+/* SPIDAT0/1 writes start a transfer. */
 static void write_dat(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct spi0 *s = ctx;
@@ -183,11 +187,13 @@ static void write_dat(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	spi_send(s, (uint16_t)(nv & 0xFFFFU));
 }
 
+/* SPIBUF contents with the TXFULL flag. */
 static uint32_t buf_value(const struct spi0 *s)
 {
 	return s->rx | (s->tx_full ? BUF_TXFULL : 0U);
 }
 
+/* SPIBUF read: stall while in flight, then consume. */
 static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct spi0 *s = ctx;
@@ -203,11 +209,13 @@ static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 	spi_irq_update(s);
 }
 
+/* SPIEMU read: SPIBUF without side effects. */
 static void read_emu(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	*value = buf_value(ctx) & 0xFFFFU;
 }
 
+/* SPIFLG read: TXINTFLG from the TX buffer. */
 static void read_flg(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct spi0 *s = ctx;
@@ -215,11 +223,13 @@ static void read_flg(void *ctx, const struct hs_access *a, uint32_t *value)
 	*value = (*value & ~FLG_TXINT) | (s->tx_full ? 0U : FLG_TXINT);
 }
 
+/* SPIFLG write-1-to-clear: re-evaluates the interrupt. */
 static void write_flg(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	spi_irq_update(ctx);
 }
 
+/* SPIGCR0: RESET = 0 resets the module. */
 static void write_gcr0(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct spi0 *s = ctx;
@@ -233,6 +243,7 @@ static void write_gcr0(void *ctx, const struct hs_access *a, uint32_t old, uint3
 	}
 }
 
+/* SPIINT0 write: re-evaluates the interrupt. */
 static void write_int0(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	spi_irq_update(ctx);
@@ -260,6 +271,7 @@ static const struct hs_reg spi_regs[] = {
 	{ .name = "INTVEC1", .offset = INTVEC1, .kind = HS_RO },
 };
 
+/* Creates the SPI0 region and converter. */
 static ER spi_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	struct spi0 *s = calloc(1, sizeof(*s));
@@ -283,6 +295,7 @@ static ER spi_create(const struct hs_board_cfg *cfg, void **ctx)
 	return E_OK;
 }
 
+/* Frees SPI0. */
 static void spi_destroy(void *ctx)
 {
 	struct spi0 *s = ctx;
@@ -295,6 +308,7 @@ static void spi_destroy(void *ctx)
 
 const struct hs_device ev3_spi0_device = { "SPI0", spi_create, NULL, spi_destroy };
 
+/* SPI0 counters. */
 const struct ev3_spi_stats *ev3_spi_get_stats(void)
 {
 	static const struct ev3_spi_stats none;

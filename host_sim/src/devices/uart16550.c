@@ -72,11 +72,13 @@ static bool fifo_mode(const struct ev3_uart *u)
 	return u->fcr & 1U;
 }
 
+/* RX FIFO depth in the current mode. */
 static unsigned rx_capacity(const struct ev3_uart *u)
 {
 	return fifo_mode(u) ? FIFO_SIZE : 1U;
 }
 
+/* RX trigger level. */
 static unsigned rx_trigger(const struct ev3_uart *u)
 {
 	static const unsigned levels[4] = { 1, 4, 8, 14 };
@@ -84,11 +86,13 @@ static unsigned rx_trigger(const struct ev3_uart *u)
 	return fifo_mode(u) ? levels[(u->fcr >> 6) & 3U] : 1U;
 }
 
+/* Baud divisor (DLH:DLL). */
 static uint32_t divisor(const struct ev3_uart *u)
 {
 	return u->dll | (u->dlh << 8);
 }
 
+/* 16x or 13x per MDR. */
 static unsigned oversampling(const struct ev3_uart *u)
 {
 	return (u->mdr & 1U) ? 13U : 16U;
@@ -122,11 +126,13 @@ uint32_t ev3_uart_baud(const struct ev3_uart *u)
 			  ((uint64_t)oversampling(u) * div));
 }
 
+/* Receiver out of reset. */
 static bool rx_enabled(const struct ev3_uart *u)
 {
 	return u->pwremu & PWREMU_URRST;
 }
 
+/* Transmitter out of reset. */
 static bool tx_enabled(const struct ev3_uart *u)
 {
 	return u->pwremu & PWREMU_UTRST;
@@ -189,6 +195,7 @@ static void rx_activity(struct ev3_uart *u)
 		u->timeout_ev = hs_event_at(u->last_rx_activity + bits_ns(u, 4U * char_bits(u)), timeout_due, u);
 }
 
+/* A received character enters the FIFO, or overruns. */
 static void rx_push(struct ev3_uart *u, uint8_t byte, uint8_t err)
 {
 	if (!rx_enabled(u)) {
@@ -227,6 +234,7 @@ void ev3_uart_rx_byte(struct ev3_uart *u, uint8_t byte, uint32_t baud)
 	rx_push(u, byte, 0);
 }
 
+/* Event: the line has been low a character time. */
 static void break_due(void *arg)
 {
 	struct ev3_uart *u = arg;
@@ -251,6 +259,7 @@ void ev3_uart_rx_line(struct ev3_uart *u, bool high)
 
 static void tx_start(struct ev3_uart *u);
 
+/* Event: the shift register is empty; the byte reaches the far end. */
 static void tx_done(void *arg)
 {
 	struct ev3_uart *u = arg;
@@ -308,6 +317,7 @@ static void read_rbr(void *ctx, const struct hs_access *a, uint32_t *value)
 	irq_update(u);
 }
 
+/* THR write: queue a byte (DLL with DLAB). */
 static void write_thr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct ev3_uart *u = ctx;
@@ -334,6 +344,7 @@ static void write_thr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	irq_update(u);
 }
 
+/* IER read (DLH with DLAB). */
 static void read_ier(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct ev3_uart *u = ctx;
@@ -342,6 +353,7 @@ static void read_ier(void *ctx, const struct hs_access *a, uint32_t *value)
 		*value = u->dlh;
 }
 
+/* IER write (DLH with DLAB). */
 static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct ev3_uart *u = ctx;
@@ -361,6 +373,7 @@ static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	irq_update(u);
 }
 
+/* IIR read; clears a THRE interrupt it reports. */
 static void read_iir(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct ev3_uart *u = ctx;
@@ -373,6 +386,7 @@ static void read_iir(void *ctx, const struct hs_access *a, uint32_t *value)
 	}
 }
 
+/* FCR write: FIFO enable, clears, trigger. */
 static void write_fcr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct ev3_uart *u = ctx;
@@ -388,6 +402,7 @@ static void write_fcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	irq_update(u);
 }
 
+/* LCR write: break control to the far end. */
 static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct ev3_uart *u = ctx;
@@ -401,6 +416,7 @@ static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	}
 }
 
+/* LSR read: status now; error bits clear. */
 static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct ev3_uart *u = ctx;
@@ -426,6 +442,7 @@ static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
 	irq_update(u);
 }
 
+/* DLL/DLH write: new baud. */
 static void write_div(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct ev3_uart *u = ctx;
@@ -437,6 +454,7 @@ static void write_div(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	tx_start(u);
 }
 
+/* MCR/MDR writes (cached). */
 static void write_mcr_mdr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct ev3_uart *u = ctx;
@@ -447,6 +465,7 @@ static void write_mcr_mdr(void *ctx, const struct hs_access *a, uint32_t old, ui
 		u->mdr = nv;
 }
 
+/* PWREMU_MGMT: reset bits flush receiver/transmitter. */
 static void write_pwremu(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct ev3_uart *u = ctx;
@@ -526,6 +545,7 @@ static ER uart_create_port(unsigned port, unsigned power, void **ctx)
 	return E_OK;
 }
 
+/* Frees a UART. */
 static void uart_destroy(void *ctx)
 {
 	struct ev3_uart *u = ctx;
@@ -538,21 +558,25 @@ static void uart_destroy(void *ctx)
 	free(u);
 }
 
+/* Board device: UART1 (input port 1). */
 static ER uart1_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	return uart_create_port(0, HS_PSC1_MODULE(HS_LPSC1_UART1), ctx);
 }
 
+/* Board device: UART0 (input port 2). */
 static ER uart0_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	return uart_create_port(1, HS_PSC0_MODULE(HS_LPSC0_UART0), ctx);
 }
 
+/* Board device: stand-in UART of input port 3. */
 static ER suart3_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	return uart_create_port(2, HS_NO_PSC, ctx);
 }
 
+/* Board device: stand-in UART of input port 4. */
 static ER suart4_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	return uart_create_port(3, HS_NO_PSC, ctx);
@@ -578,6 +602,7 @@ void ev3_uart_set_peer(struct ev3_uart *u, const struct ev3_uart_peer *peer)
 		memset(&u->peer, 0, sizeof(u->peer));
 }
 
+/* UART counters. */
 const struct ev3_uart_stats *ev3_uart_get_stats(const struct ev3_uart *u)
 {
 	return &u->stats;

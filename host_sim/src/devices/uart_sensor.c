@@ -81,12 +81,14 @@ static uint64_t byte_ns(uint32_t baud)
 	return 10000000000ULL / baud;
 }
 
+/* Stores a little-endian 16-bit value. */
 static void put16(uint8_t *p, int32_t v)
 {
 	p[0] = (uint8_t)(v & 0xFF);
 	p[1] = (uint8_t)((v >> 8) & 0xFF);
 }
 
+/* Stores a little-endian IEEE float. */
 static void put_float(uint8_t *p, float f)
 {
 	uint32_t u;
@@ -96,6 +98,7 @@ static void put_float(uint8_t *p, float f)
 		p[i] = (uint8_t)(u >> (8 * i));
 }
 
+/* The current mode description. */
 static const struct uart_sensor_mode *cur_mode(const struct uart_sensor *s)
 {
 	return &s->def->mode[s->mode];
@@ -281,6 +284,7 @@ static void gyro_integrate(struct uart_sensor *s)
 	}
 }
 
+/* Rounds and clamps to [lo, hi]. */
 static int32_t clampi(double v, int32_t lo, int32_t hi)
 {
 	double r = floor(v + 0.5);
@@ -435,6 +439,7 @@ static void keepalive_expired(void *arg)
 	sensor_power_up(s);
 }
 
+/* Restarts the keep-alive watchdog. */
 static void keepalive_arm(struct uart_sensor *s)
 {
 	hs_event_cancel(&s->keepalive_ev);
@@ -639,31 +644,37 @@ void uart_sensor_set_scene(struct uart_sensor *s, const struct uart_sensor_scene
 	s->scene = *scene;
 }
 
+/* The scene the sensor observes. */
 const struct uart_sensor_scene *uart_sensor_scene(const struct uart_sensor *s)
 {
 	return &s->scene;
 }
 
+/* Protocol state. */
 enum uart_sensor_state uart_sensor_get_state(const struct uart_sensor *s)
 {
 	return s->state;
 }
 
+/* The sensor definition. */
 const struct uart_sensor_def *uart_sensor_get_def(const struct uart_sensor *s)
 {
 	return s->def;
 }
 
+/* Current mode. */
 unsigned uart_sensor_mode(const struct uart_sensor *s)
 {
 	return s->mode;
 }
 
+/* Current baud. */
 uint32_t uart_sensor_baud(const struct uart_sensor *s)
 {
 	return s->baud;
 }
 
+/* Counters. */
 const struct uart_sensor_stats *uart_sensor_get_stats(const struct uart_sensor *s)
 {
 	return &s->stats;
