@@ -94,9 +94,11 @@ static inline bool atomic_inc_not_zero(atomic_t *v)	{ return atomic_add_unless(v
 #define smp_mb()			barrier()
 #define smp_rmb()			barrier()
 #define smp_wmb()			barrier()
+#ifndef mb				/* asm/io.h may have defined them */
 #define mb()				barrier()
 #define rmb()				barrier()
 #define wmb()				barrier()
+#endif
 #define smp_mb__before_atomic()		barrier()
 #define smp_mb__after_atomic()		barrier()
 #define smp_store_release(p, v)		do { barrier(); WRITE_ONCE(*(p), (v)); } while (0)
