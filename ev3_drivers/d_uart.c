@@ -203,7 +203,7 @@ MODULE_PARM_DESC(select_discard, "drop the first frame after SELECT (may hold an
 struct sensor_port {
 	spinlock_t lock;		/* everything below, against the IRQ and the timer */
 	unsigned int index;
-	void __iomem *regs;		/* NULL: the port has no UART */
+	u8 __iomem *regs;		/* NULL: the port has no UART */
 	unsigned long phys;
 	int irq;
 	u32 clock;
@@ -451,6 +451,13 @@ static void uart_store_sample(struct sensor_port *p, u8 mode, const u8 *payload,
 	ext->seq++;
 	ext->flags &= ~LMS_UART_FLAG_STALE;
 	lms->status[i] |= LMS_UART_DATA_READY;
+}
+
+/* Records the mode user space wants (also in the shared memory, for readers). */
+static void uart_set_req_mode(struct sensor_port *p, s8 mode)
+{
+	p->req_mode = mode;
+	port_ext(p)->mode = mode;
 }
 
 static void uart_set_state(struct sensor_port *p, u8 state)
@@ -967,7 +974,7 @@ static void uart_enter_data(struct sensor_port *p)
 	uart_set_state(p, LMS_UART_STATE_DATA);
 	uart_queue_byte(p, SYS_NACK);
 	if (p->req_mode >= p->modes)
-		p->req_mode = 0;
+		uart_set_req_mode(p, 0);
 	if (p->req_mode != 0)
 		uart_send_select(p);
 }
@@ -978,7 +985,7 @@ static void uart_enter_terminal(struct sensor_port *p)
 	p->type = LMS_TYPE_TERMINAL;
 	p->modes = 1;
 	p->views = 1;
-	p->req_mode = 0;
+	uart_set_req_mode(p, 0);
 	uart_default_types(&p->info[0], LMS_TYPE_TERMINAL, 0);
 	memcpy(p->info[0].name, "TERMINAL", sizeof("TERMINAL"));
 	p->info[0].data_sets = LMS_UART_DATA_SIZE;
@@ -1085,7 +1092,7 @@ static int uart_port_start(struct sensor_port *p, s8 mode)
 	uart.shm->lms.status[p->index] = 0;
 	port_ext(p)->modes = 0;
 	p->info_changed = 0;
-	p->req_mode = mode;
+	uart_set_req_mode(p, mode);
 	uart_begin_sync(p, true);
 	ua_write(p, UA_IER, UA_IER_ERBI | UA_IER_ELSI);
 	spin_unlock_irqrestore(&p->lock, flags);
@@ -1115,7 +1122,7 @@ static void uart_port_select(struct sensor_port *p, s8 mode)
 
 	spin_lock_irqsave(&p->lock, flags);
 	if (mode != p->req_mode) {
-		p->req_mode = mode;
+		uart_set_req_mode(p, mode);
 		uart_invalidate(p);
 		if (p->state == LMS_UART_STATE_DATA) {
 			p->last_data_ms = uart.now_ms;

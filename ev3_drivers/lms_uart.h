@@ -139,6 +139,8 @@ struct lms_uart_port_ext {
 	uint8_t state;			/* LMS_UART_STATE_* */
 	uint8_t flags;			/* LMS_UART_FLAG_* */
 	uint8_t modes;			/* modes the sensor announced, 0 before the handshake */
+	int8_t mode;			/* the mode selected (SET_CONN), while state is not IDLE */
+	uint8_t reserved[3];
 	uint32_t speed;			/* baud rate in use */
 	uint32_t frames;		/* valid DATA frames received */
 	uint32_t check_errors;		/* DATA frames with a bad check byte */
