@@ -21,6 +21,7 @@
 #include <linux/kernel.h>
 #include <linux/init.h>
 #include <linux/types.h>
+#include <linux/bits.h>
 #include <linux/errno.h>
 #include <linux/fs.h>
 #include <linux/miscdevice.h>
@@ -185,7 +186,7 @@ struct pwm_profile {          /* a limited command */
 
 struct pwm_port {
 	const struct pwm_port_pins *pins;
-	void __iomem *int_bank, *dir_bank;
+	u8 __iomem *int_bank, *dir_bank;
 	u32 int_mask, dir_mask;
 	int irq;
 
@@ -230,12 +231,13 @@ static DEFINE_SPINLOCK(pwm_lock);
 static struct pwm_port ports[LMS_PWM_PORTS];
 static u8 ready_status, test_status;   /* busy masks */
 
-static void __iomem *gpio_base;
-static void __iomem *syscfg0_base;
-static void __iomem *psc1_base;
-static void __iomem *ehrpwm1_base;
-static void __iomem *ecap_base[2];
-static void __iomem *timer64_base;
+/* Register blocks, as byte pointers so that offsets add without extensions. */
+static u8 __iomem *gpio_base;
+static u8 __iomem *syscfg0_base;
+static u8 __iomem *psc1_base;
+static u8 __iomem *ehrpwm1_base;
+static u8 __iomem *ecap_base[2];
+static u8 __iomem *timer64_base;
 
 static void *motor_alloc;               /* kmalloc'd, holds the page below */
 static struct lms_motor_data *motor_data; /* page-aligned, mapped by user space */
@@ -250,7 +252,7 @@ MODULE_PARM_DESC(HwId, "LEGO hardware id (accepted for lms2012 compatibility; EP
 /* Drives a GPIO pin to a level: output value first, then the direction. */
 static void gpio_drive(unsigned int pin, bool high)
 {
-	void __iomem *bank = gpio_base + GPIO_BANK_REGS(pin);
+	u8 __iomem *bank = gpio_base + GPIO_BANK_REGS(pin);
 	u32 mask = BIT(pin % 32);
 
 	writel(mask, bank + (high ? GPIO_SET_DATA : GPIO_CLR_DATA));
@@ -260,7 +262,7 @@ static void gpio_drive(unsigned int pin, bool high)
 /* Releases a GPIO pin (input, no drive). */
 static void gpio_float(unsigned int pin)
 {
-	void __iomem *bank = gpio_base + GPIO_BANK_REGS(pin);
+	u8 __iomem *bank = gpio_base + GPIO_BANK_REGS(pin);
 
 	writel(readl(bank + GPIO_DIR) | BIT(pin % 32), bank + GPIO_DIR);
 }
@@ -871,6 +873,14 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 	return 0;
 }
 
+/* True if the mask names exactly two ports. */
+static bool two_ports(u8 nos)
+{
+	u8 rest = nos & (nos - 1);      /* drops the lowest set bit */
+
+	return nos && rest && !(rest & (rest - 1));
+}
+
 /* STEP_SYNC / TIME_SYNC: two ports, the master at speed, the slave at the turn ratio. */
 static int cmd_sync(const u8 *b, bool by_time)
 {
@@ -884,12 +894,14 @@ static int cmd_sync(const u8 *b, bool by_time)
 	unsigned long flags;
 	ktime_t now;
 
-	if (hweight8(nos) != 2 || speed < -SPEED_MAX || speed > SPEED_MAX ||
+	if (!two_ports(nos) || speed < -SPEED_MAX || speed > SPEED_MAX ||
 	    turn < -200 || turn > 200 || brake > 1 || step == S32_MIN || (by_time && step < 0))
 		return -EINVAL;
 	step = abs(step);     /* a step count carries the direction of the speed */
-	first = __ffs(nos);
-	second = __ffs(nos & ~BIT(first));
+	for (first = 0; !(nos & BIT(first)); first++)
+		;
+	for (second = first + 1; !(nos & BIT(second)); second++)
+		;
 	mi = turn >= 0 ? first : second;
 	si = turn >= 0 ? second : first;
 	ratio = abs(turn) < 100 ? 100 - abs(turn) : -(abs(turn) - 100);
@@ -1195,7 +1207,7 @@ static void syscfg_setup(bool tbclk_on)
 	writel(SYSCFG0_KICK0_KEY, syscfg0_base + SYSCFG0_KICK0R);
 	writel(SYSCFG0_KICK1_KEY, syscfg0_base + SYSCFG0_KICK1R);
 	for (i = 0; tbclk_on && i < ARRAY_SIZE(pwm_pinmux); i++) {
-		void __iomem *reg = syscfg0_base + SYSCFG0_PINMUX(pwm_pinmux[i].reg);
+		u8 __iomem *reg = syscfg0_base + SYSCFG0_PINMUX(pwm_pinmux[i].reg);
 
 		v = readl(reg) & ~(0xFU << pwm_pinmux[i].shift);
 		writel(v | (u32)pwm_pinmux[i].function << pwm_pinmux[i].shift, reg);
@@ -1307,9 +1319,9 @@ static void regs_unmap(void)
 }
 
 /* Claims (exclusive ones only) and maps one register block. */
-static void __iomem *map_block(resource_size_t phys, resource_size_t size, bool exclusive)
+static u8 __iomem *map_block(resource_size_t phys, resource_size_t size, bool exclusive)
 {
-	void __iomem *base;
+	u8 __iomem *base;
 
 	if (exclusive && !request_mem_region(phys, size, LMS_PWM_DEVICE_NAME))
 		return NULL;
