@@ -1,0 +1,158 @@
+/*
+ * pwm_hack.c — d_pwm on the RTOS (the paper's Fig. 5 pattern): the Linux
+ * driver source included byte-for-byte, then its interface as extended
+ * service calls (pwm_hack.h).  The service calls reach the driver only
+ * through its file operations, so the driver's own checks (lengths, masks,
+ * copy_*_user against the caller's domain) guard every call.
+ */
+#define KBUILD_MODNAME "d_pwm"
+#include <linux/fcntl.h>
+#include <linux/module.h>
+#include <linux_compat/devfs.h>
+
+/* Rename: the driver's module_init becomes a plain pointer, called by ours below. */
+#undef module_init
+#define module_init(fn) static int (*const pwm_driver_init)(void) = fn
+
+#include "d_pwm.c"
+
+#undef module_init
+#define module_init(fn) device_initcall(fn)
+
+#include "pwm_hack.h"
+
+static struct file *pwm_file;       /* /dev/lms_pwm */
+static struct file *motor_file;     /* /dev/lms_motor */
+static const struct lms_motor_data *motor_map;
+
+/* Loads d_pwm, then opens its devices and maps MOTORDATA for the service calls. */
+static int __init pwm_hack_init(void)
+{
+	void *map;
+	int ret;
+
+	ret = pwm_driver_init();
+	if (ret)
+		return ret;
+	ret = lx_dev_open("/dev/" LMS_PWM_DEVICE_NAME, O_RDWR, &pwm_file);
+	if (!ret)
+		ret = lx_dev_open("/dev/" LMS_MOTOR_DEVICE_NAME, O_RDWR, &motor_file);
+	if (!ret)
+		ret = lx_dev_mmap(motor_file, LMS_MOTOR_DATA_SIZE, &map);
+	if (ret) {
+		pr_err("pwm_hack: cannot open d_pwm's devices (%d)\n", ret);
+		return ret;
+	}
+	motor_map = map;
+	return 0;
+}
+module_init(pwm_hack_init);
+
+/* A driver result as a TOPPERS error code (E_OK for non-negative results). */
+static ER pwm_er(long ret)
+{
+	switch (ret) {
+	case -EINVAL:
+		return E_PAR;
+	case -EFAULT:
+		return E_MACV;
+	case -EBADF:
+	case -ENODEV:
+		return E_OBJ;
+	default:
+		return ret < 0 ? E_SYS : E_OK;
+	}
+}
+
+/* Writes one command of len bytes from the caller's memory. */
+static ER pwm_write_command(intptr_t cmd, intptr_t len)
+{
+	if (len <= 0 || len > LMS_PWM_CMD_MAX)
+		return E_PAR;
+	return pwm_er(lx_dev_write(pwm_file, (const char __user *)cmd, (size_t)len, NULL));
+}
+
+/* PWM_FN_COMMAND: one command. */
+static ER_UINT svc_pwm_command(intptr_t cmd, intptr_t len, intptr_t p3, intptr_t p4,
+			       intptr_t p5, ID cdmid)
+{
+	return pwm_write_command(cmd, len);
+}
+
+/* PWM_FN_COMMAND2: two commands; the second runs only if the first succeeded. */
+static ER_UINT svc_pwm_command2(intptr_t cmd_a, intptr_t len_a, intptr_t cmd_b,
+				intptr_t len_b, intptr_t p5, ID cdmid)
+{
+	ER ercd = pwm_write_command(cmd_a, len_a);
+
+	return ercd == E_OK ? pwm_write_command(cmd_b, len_b) : ercd;
+}
+
+/* PWM_FN_READ: the "R T " status text into the caller's buffer; the byte count. */
+static ER_UINT svc_pwm_read(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4,
+			    intptr_t p5, ID cdmid)
+{
+	ssize_t ret;
+
+	if (len < 0)
+		return E_PAR;
+	ret = lx_dev_read(pwm_file, (char __user *)buf, (size_t)len, NULL);
+	return ret < 0 ? pwm_er(ret) : (ER_UINT)ret;
+}
+
+/* PWM_FN_BUSY: the ReadyStatus mask (a byte the driver updates atomically). */
+static ER_UINT svc_pwm_busy(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4,
+			    intptr_t p5, ID cdmid)
+{
+	return pwm_file ? (ER_UINT)READ_ONCE(ready_status) : E_OBJ;
+}
+
+/* PWM_FN_SET_BUSY: ORs mask into the busy masks through /dev/lms_motor. */
+static ER_UINT svc_pwm_set_busy(intptr_t mask, intptr_t p2, intptr_t p3, intptr_t p4,
+				intptr_t p5, ID cdmid)
+{
+	u8 byte = (u8)mask;
+
+	if (mask < 0 || mask > LMS_PWM_PORT_MASK)
+		return E_PAR;
+	return pwm_er(lx_dev_write(motor_file, (const char __user *)&byte, 1, NULL));
+}
+
+/* PWM_FN_MOTOR_DATA: copies one port's MOTORDATA to the caller. */
+static ER_UINT svc_pwm_motor_data(intptr_t port, intptr_t out, intptr_t p3, intptr_t p4,
+				  intptr_t p5, ID cdmid)
+{
+	if (port < 0 || port >= LMS_PWM_PORTS)
+		return E_ID;
+	if (!motor_map)
+		return E_OBJ;
+	if (copy_to_user((void __user *)out, &motor_map[port], sizeof(motor_map[port])))
+		return E_MACV;
+	return E_OK;
+}
+
+/* PWM_FN_MOTOR_MAP: the address of the shared MOTORDATA[4]. */
+static ER_UINT svc_pwm_motor_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
+				 intptr_t p5, ID cdmid)
+{
+	if (!motor_map)
+		return E_OBJ;
+	if (copy_to_user((void __user *)out, &motor_map, sizeof(motor_map)))
+		return E_MACV;
+	return E_OK;
+}
+
+static const struct rtos_svc_cfg pwm_svcs[] = {
+	{ PWM_FN_COMMAND,    svc_pwm_command,    256 },
+	{ PWM_FN_COMMAND2,   svc_pwm_command2,   256 },
+	{ PWM_FN_READ,       svc_pwm_read,       256 },
+	{ PWM_FN_BUSY,       svc_pwm_busy,       64 },
+	{ PWM_FN_SET_BUSY,   svc_pwm_set_busy,   256 },
+	{ PWM_FN_MOTOR_DATA, svc_pwm_motor_data, 256 },
+	{ PWM_FN_MOTOR_MAP,  svc_pwm_motor_map,  256 },
+};
+
+const struct rtos_cfg pwm_hack_cfg = {
+	.name = "pwm_hack",
+	.svcs = RTOS_TABLE(pwm_svcs),
+};
