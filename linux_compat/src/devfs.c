@@ -14,6 +14,7 @@
 #include <linux/kernel.h>
 #include <linux/string.h>
 #include <linux/uaccess.h>
+#include <linux/semaphore.h>
 #include <linux_compat/devfs.h>
 #include <linux_compat/irq.h>
 #include <sil.h>
@@ -36,6 +37,11 @@ struct open_file {
 };
 
 static struct dev_node nodes[LX_NR_DEV_NODES];
+
+/* 2.6.33 ran the legacy .ioctl under the big kernel lock, so such drivers
+ * never see two of their ioctls interleave; nor do they here.  Unlike the
+ * BKL it stays held if the ioctl sleeps. */
+static struct semaphore big_kernel_lock = __SEMAPHORE_INITIALIZER(big_kernel_lock, 1);
 
 /* name without a leading "/dev/". */
 static const char *node_name(const char *path)
@@ -307,7 +313,12 @@ int lx_dev_close(struct file *file)
 
 long lx_dev_legacy_ioctl(struct file *file, unsigned int cmd, unsigned long arg)
 {
-	return file->f_op->ioctl(file->f_inode, file, cmd, arg);
+	long ret;
+
+	down(&big_kernel_lock);
+	ret = file->f_op->ioctl(file->f_inode, file, cmd, arg);
+	up(&big_kernel_lock);
+	return ret;
 }
 
 int lx_dev_mmap(struct file *file, size_t length, void **addr)
@@ -440,4 +451,5 @@ ssize_t simple_write_to_buffer(void *to, size_t available, loff_t *ppos,
 void lx_devfs_boot(void)
 {
 	memset(nodes, 0, sizeof(nodes));
+	sema_init(&big_kernel_lock, 1);
 }

@@ -2,8 +2,9 @@
  * lx_test.h — running a linux_compat test body in an RTOS task.
  *
  * lx_test_run boots a configuration with one kernel-domain task that runs
- * body (process context, as module init and file operations are), the
- * Linux interrupt lines (linux_irq_cfg) and whatever the test adds in
+ * body (process context, as module init and file operations are),
+ * linux_compat_cfg (worker task running module inits first, tick, Linux
+ * interrupt lines) and whatever the test adds in
  * extra, runs the system until it is idle, and shuts it down.
  */
 #ifndef EV3LX_TESTS_LX_TEST_H
@@ -11,7 +12,7 @@
 
 #include "tap.h"
 #include "rtos_host.h"
-#include <linux_compat/irq.h>
+#include <linux_compat/config.h>
 
 #define LX_TEST_TASK_ID		1
 #define LX_TEST_STACK		(64 * 1024)
@@ -33,7 +34,7 @@ static inline bool lx_test_run_in(void (*body)(void), ID domid, const struct rto
 	const struct rtos_task_cfg task = {
 		LX_TEST_TASK_ID, TA_ACT, 0, lx_test_task, 8, LX_TEST_STACK, domid, "lx_test",
 	};
-	const struct rtos_cfg *includes[3] = { &linux_irq_cfg, extra, NULL };
+	const struct rtos_cfg *includes[3] = { &linux_compat_cfg, extra, NULL };
 	const struct rtos_cfg cfg = {
 		.name = "lx_test", .tasks = &task, .ntasks = 1, .includes = includes,
 	};

@@ -6,7 +6,8 @@
  * driver's operations receive and calls them with Linux's conventions.
  * file_operations has both ioctl entry points: .unlocked_ioctl (modern) and
  * the legacy .ioctl(inode, file, cmd, arg) of 2.6.33, which the registry
- * calls (with the file's inode) when there is no .unlocked_ioctl.
+ * calls (with the file's inode, under a big kernel lock as 2.6.33 did) when
+ * there is no .unlocked_ioctl.
  *
  * register_chrdev (linux_compat/src/devfs.c) registers the device in the
  * registry as /dev/<name> with minor 0; major 0 asks for a free major
@@ -78,7 +79,7 @@ struct file_operations {
 	ssize_t (*read)(struct file *file, char __user *buf, size_t count, loff_t *ppos);
 	ssize_t (*write)(struct file *file, const char __user *buf, size_t count, loff_t *ppos);
 	__poll_t (*poll)(struct file *file, struct poll_table_struct *wait);
-	/* 2.6.33's ioctl (removed in 2.6.36). */
+	/* 2.6.33's ioctl, run under the big kernel lock (removed in 2.6.36). */
 	int (*ioctl)(struct inode *inode, struct file *file, unsigned int cmd, unsigned long arg);
 	long (*unlocked_ioctl)(struct file *file, unsigned int cmd, unsigned long arg);
 	long (*compat_ioctl)(struct file *file, unsigned int cmd, unsigned long arg);

@@ -11,6 +11,7 @@
 
 #include <linux/types.h>
 #include <linux/fs.h>
+#include <linux/wait.h>
 
 /* Event bits (Linux's values, glibc's spellings so <poll.h> may come first). */
 #ifndef POLLIN
@@ -46,10 +47,9 @@
 /* What a device without .poll reports: always readable and writable. */
 #define DEFAULT_POLLMASK (EPOLLIN | EPOLLOUT | EPOLLRDNORM | EPOLLWRNORM)
 
-struct wait_queue_head;
 struct poll_table_struct;
 
-typedef void (*poll_queue_proc)(struct file *file, struct wait_queue_head *whead,
+typedef void (*poll_queue_proc)(struct file *file, wait_queue_head_t *whead,
 				struct poll_table_struct *pt);
 
 typedef struct poll_table_struct {
@@ -58,7 +58,7 @@ typedef struct poll_table_struct {
 } poll_table;
 
 /* Registers wait_address with the poller (nothing for a NULL table). */
-static inline void poll_wait(struct file *filp, struct wait_queue_head *wait_address,
+static inline void poll_wait(struct file *filp, wait_queue_head_t *wait_address,
 			     poll_table *p)
 {
 	if (p && p->_qproc && wait_address)

@@ -49,7 +49,7 @@ int lx_dev_close(struct file *file);
 /* True if a device of that name is registered. */
 bool lx_dev_exists(const char *path);
 
-/* Calls the legacy .ioctl with the file's inode (out of line). */
+/* Calls the legacy .ioctl with the file's inode under the big kernel lock (out of line). */
 long lx_dev_legacy_ioctl(struct file *file, unsigned int cmd, unsigned long arg);
 
 /* The driver's read(): bytes read, 0 at end of file, or -errno.  pos NULL: the file's f_pos. */
@@ -86,7 +86,7 @@ static inline ssize_t lx_dev_write(struct file *file, const char __user *buf, si
 }
 
 /* The driver's .unlocked_ioctl, else its legacy .ioctl (with the file's
- * inode); -ENOTTY if it has neither or answers
+ * inode, under the big kernel lock); -ENOTTY if it has neither or answers
  * -ENOIOCTLCMD. */
 static inline long lx_dev_ioctl(struct file *file, unsigned int cmd, unsigned long arg)
 {

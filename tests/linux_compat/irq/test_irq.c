@@ -9,6 +9,7 @@
 #include <linux/interrupt.h>
 #include <linux/irq.h>
 #include <linux_compat/context.h>
+#include <linux_compat/irq.h>
 
 static char log_buf[256];
 static int dev_a, dev_b, dev_c;
