@@ -1101,6 +1101,8 @@ static int __init analog_init(void)
 		pr_err("d_analog: dcm_start_ms %d out of range 0..60000\n", dcm_start_ms);
 		return -EINVAL;
 	}
+	/* Start from a clean slate even where the image is not reloaded between inits. */
+	memset(&analog, 0, sizeof(analog));
 	spin_lock_init(&analog.lock);
 
 	ret = analog_alloc_shm();
