@@ -35,18 +35,19 @@ static void analog_test_task(intptr_t exinf)
 	analog_test_done = true;
 }
 
-/* Boots the brick (seed), runs body in a task until it returns (at most limit_ms of
- * virtual time) and shuts down; true if the body finished. */
-static inline bool analog_test_run(void (*body)(void), uint64_t seed, uint64_t limit_ms)
+/* Boots the brick (seed), runs body in a task of domain domid until it returns (at most
+ * limit_ms of virtual time) and shuts down; true if the body finished. */
+static inline bool analog_test_run_in(void (*body)(void), uint64_t seed, uint64_t limit_ms,
+				      ID domid)
 {
-	static const struct rtos_task_cfg task = {
+	const struct rtos_task_cfg task = {
 		ANALOG_TEST_TASK_ID, TA_ACT, 0, analog_test_task, 8, ANALOG_TEST_STACK,
-		TDOM_KERNEL, "analog_test",
+		domid, "analog_test",
 	};
 	static const struct rtos_cfg *const includes[] = {
 		&linux_compat_cfg, &analog_hack_cfg, NULL,
 	};
-	static const struct rtos_cfg cfg = {
+	const struct rtos_cfg cfg = {
 		.name = "analog_test", .tasks = &task, .ntasks = 1, .includes = includes,
 	};
 	static struct hs_board_cfg board;
@@ -68,6 +69,12 @@ static inline bool analog_test_run(void (*body)(void), uint64_t seed, uint64_t l
 		hs_sim_run_for(10 * MS);
 	hs_sim_shutdown();
 	return analog_test_done;
+}
+
+/* analog_test_run_in for a kernel-domain task. */
+static inline bool analog_test_run(void (*body)(void), uint64_t seed, uint64_t limit_ms)
+{
+	return analog_test_run_in(body, seed, limit_ms, TDOM_KERNEL);
 }
 
 /* Logs register accesses of the peripherals in filter (e.g. "SPI0") to out in the next run. */
