@@ -145,7 +145,7 @@ struct lms_uart_port_ext {
 	uint32_t frames;		/* valid DATA frames received */
 	uint32_t check_errors;		/* DATA frames with a bad check byte */
 	uint32_t keepalive_misses;	/* keep-alive periods without a valid frame */
-	uint32_t fifo_overruns;		/* bytes lost in the UART (LSR overrun) */
+	uint32_t fifo_overruns;		/* receive overruns in the UART (LSR.OE; bytes were lost) */
 	uint32_t ring_overflows;	/* bytes lost because the receive ring was full */
 	uint32_t line_errors;		/* framing and parity errors */
 	uint32_t breaks;		/* break conditions (line held low) */

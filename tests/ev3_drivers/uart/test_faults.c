@@ -1,0 +1,128 @@
+/*
+ * test_faults.c — d_uart under the failures EV3 users report: the NACK
+ * keep-alive every 100 ms (checked on the register trace), a sensor that is
+ * unplugged (reported stale, not frozen; the port goes back to SYNC) and
+ * plugged in again (DATA again), bit errors (counted, data keeps flowing, no
+ * reconnect), and a receive overrun while the CPU is blocked (counted and
+ * recovered).
+ */
+#include <stdlib.h>
+#include "uart_test.h"
+
+#define MAX_NACKS 64
+
+static uint64_t nack_ns[MAX_NACKS];
+static unsigned nacks;
+static bool tracing;
+
+/* Trace sink: records the times of NACK bytes d_uart writes to UART0 (port 2). */
+static void sink(const char *line, void *ctx)
+{
+	(void)ctx;
+	if (tracing && strstr(line, "W4 UART0.THR") && strstr(line, "= 0x00000002") &&
+	    nacks < MAX_NACKS)
+		nack_ns[nacks++] = strtoull(line, NULL, 10);
+}
+
+static void keepalive(void)
+{
+	unsigned i, good = 0;
+
+	ev3_attach_uart_sensor(1, UART_SENSOR_TYPE_GYRO, NULL);
+	ok(ut_start(1, 0, 3000), "gyro in DATA");
+	rtos_host_trace_set_sink(sink, NULL);
+	tracing = true;
+	dly_tsk(1000);
+	tracing = false;
+	ok(nacks >= 9 && nacks <= 11, "%u NACKs in 1 s", nacks);
+	for (i = 1; i < nacks; i++)
+		good += llabs((long long)(nack_ns[i] - nack_ns[i - 1]) - (long long)(100 * UT_MS)) < 100000;
+	is_int(good, nacks - 1, "every NACK 100 ms (+-0.1 ms) after the previous one");
+}
+
+static void unplug(void)
+{
+	struct uart_sensor_scene scene = { .reflect_pct = 33 };
+	uint32_t reconnects;
+	unsigned ms;
+	const int8_t *s;
+
+	ev3_attach_uart_sensor(0, UART_SENSOR_TYPE_COLOR, NULL);
+	ev3_set_scene(0, &scene);
+	ok(ut_start(0, 0, 3000) && ut_wait_sample(0, 0, 300), "colour streaming");
+	reconnects = ut_ext(0)->reconnects;
+
+	ev3_detach_input(0);
+	for (ms = 0; ms < 1000 && lms_uart_sample(ut_shm, 0, 0); ms++)
+		dly_tsk(1);
+	ok(ms <= 300, "data withdrawn %u ms after the unplug (not frozen)", ms);
+	ok(ut_ext(0)->flags & LMS_UART_FLAG_STALE, "flagged stale");
+	ok(!(ut_status(0) & LMS_UART_DATA_READY), "DATA_READY cleared");
+	ok(ut_wait_state(0, LMS_UART_STATE_SYNC, 1000), "back to SYNC for the next handshake");
+	is_int(ut_ext(0)->speed, 2400, "at 2400 baud");
+	is_int(ut_ext(0)->reconnects - reconnects, 1, "one reconnect counted");
+
+	dly_tsk(3000);
+	ok(ut_ext(0)->state == LMS_UART_STATE_SYNC, "an empty port waits in SYNC (no TERMINAL)");
+	scene.reflect_pct = 71;
+	ev3_attach_uart_sensor(0, UART_SENSOR_TYPE_COLOR, NULL);
+	ev3_set_scene(0, &scene);
+	ok(ut_wait_state(0, LMS_UART_STATE_DATA, 3000), "replugged: DATA again");
+	ok(ut_status(0) & LMS_UART_PORT_CHANGED, "new description flagged");
+	is_int(uart_svc_clear_changed(0), E_OK, "accepted");
+	s = ut_wait_sample(0, 0, 300);
+	ok(s && s[0] == 71, "fresh value %d", s ? s[0] : -1);
+}
+
+static void bit_errors(void)
+{
+	struct ev3_fault f = { EV3_FAULT_UART_BIT_ERRORS, 2, 0.003, 3000 * UT_MS };
+	uint32_t flipped, dropped, dup;
+	const int8_t *s;
+
+	ev3_attach_uart_sensor(2, UART_SENSOR_TYPE_GYRO, NULL);
+	ok(ut_start(2, 0, 3000) && ut_wait_sample(2, 0, 100), "gyro streaming");
+	is_int(ev3_fault_at(rtos_host_now(), &f), E_OK, "bit errors for 3 s");
+	dly_tsk(3500);
+	ev3_fault_uart_counts(2, &flipped, &dropped, &dup);
+	ok(flipped >= 5, "%u bytes flipped", flipped);
+	ok(ut_ext(2)->check_errors + ut_ext(2)->line_errors >= flipped / 2,
+	   "errors counted: %u check, %u line", ut_ext(2)->check_errors, ut_ext(2)->line_errors);
+	is_int(ut_ext(2)->reconnects, 0, "no reconnect");
+	s = lms_uart_sample(ut_shm, 2, 0);
+	ok(s && ut_s16(s, 0) == 0, "valid data afterwards (angle %d)", s ? ut_s16(s, 0) : -1);
+}
+
+static void overrun(void)
+{
+	uint32_t seq;
+
+	ev3_attach_uart_sensor(3, UART_SENSOR_TYPE_GYRO, NULL);
+	ok(ut_start(3, 0, 3000) && ut_wait_sample(3, 0, 100), "gyro streaming");
+	loc_cpu();
+	rtos_host_consume(20 * UT_MS);	/* interrupts and the driver's timer held off */
+	unl_cpu();
+	dly_tsk(2);
+	ok(ut_ext(3)->fifo_overruns > 0, "%u receive overruns (LSR.OE) counted", ut_ext(3)->fifo_overruns);
+	seq = ut_ext(3)->seq;
+	dly_tsk(50);
+	ok(ut_ext(3)->seq - seq >= 10 && lms_uart_sample(ut_shm, 3, 0), "recovered: %u samples in 50 ms",
+	   ut_ext(3)->seq - seq);
+	is_int(ut_ext(3)->reconnects, 0, "without a reconnect");
+}
+
+/* One boot: linux_compat initialises modules once per process. */
+static void body(void)
+{
+	keepalive();
+	unplug();
+	bit_errors();
+	overrun();
+}
+
+int main(void)
+{
+	tap_plan(26);
+	ok(ut_run(body, 3, "UART0"), "scenario ran to its end");
+	return tap_done();
+}
