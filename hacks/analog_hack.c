@@ -31,6 +31,7 @@ static int __init analog_hack_init(void)
 	void *map;
 	int ret;
 
+	analog_file = dcm_file = NULL;		/* nothing left from an earlier boot */
 	analog_map_addr = NULL;
 	ret = analog_driver_init();
 	if (!ret)
