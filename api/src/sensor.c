@@ -1,0 +1,326 @@
+/*
+ * sensor.c — the EV3 sensor API: UART sensors over d_uart, the touch sensor
+ * over d_analog.
+ *
+ * A value is read from the drivers' shared memory with no service call when
+ * the newest sample is valid data of the wanted mode (lms_uart_sample).  Only
+ * when it is not — the sensor is still shaking hands, the mode must change,
+ * or d_uart waits for its new description to be accepted — does the call
+ * take the slow path: service calls and 1 ms sleeps, bounded by a timeout
+ * (E_TMOUT), so an unplugged sensor never blocks a task for good.
+ */
+#include <string.h>
+#include "ev3api.h"
+#include "api_internal.h"
+#include "analog_hack.h"
+#include "uart_hack.h"
+
+/* How long a read may wait for a sensor that is still starting (handshake at
+ * 2400 baud takes up to ~1.6 s after the 0.5 s power-up) and for the first
+ * sample after a mode change (the IR sensor needs 1.1 s). */
+#define START_TIMEOUT_MS   4000U
+#define MODE_TIMEOUT_MS    1500U
+#define POLL_MS            1U
+
+/* The touch sensor's pin 6 is high while pressed: half the ADC scale decides. */
+#define TOUCH_PRESSED_RAW  (LMS_ADC_MAX / 2U)
+
+/* LEGO device types of the UART sensors. */
+#define LMS_TYPE_COLOR       29
+#define LMS_TYPE_ULTRASONIC  30
+#define LMS_TYPE_GYRO        32
+#define LMS_TYPE_INFRARED    33
+
+/* Sensor modes used by the API. */
+enum {
+	COLOR_MODE_REFLECT = 0, COLOR_MODE_AMBIENT = 1, COLOR_MODE_COLOR = 2, COLOR_MODE_RGB_RAW = 4,
+	US_MODE_DIST_CM = 0,
+	GYRO_MODE_ANGLE = 0, GYRO_MODE_RATE = 1,
+	IR_MODE_PROX = 0,
+};
+
+static sensor_type_t sensor_type[TNUM_SENSOR_PORT];
+static const struct lms_uart_shm *uart_shm;
+static const struct lms_analog *analog_shm;
+
+/* The LEGO type a UART sensor type must report, 0 for analog sensors. */
+static int lms_type_of(sensor_type_t type)
+{
+	switch (type) {
+	case ULTRASONIC_SENSOR: return LMS_TYPE_ULTRASONIC;
+	case GYRO_SENSOR:       return LMS_TYPE_GYRO;
+	case COLOR_SENSOR:      return LMS_TYPE_COLOR;
+	case INFRARED_SENSOR:   return LMS_TYPE_INFRARED;
+	default:                return 0;
+	}
+}
+
+/* Maps the drivers' shared memory once. */
+static ER map_shared_memory(void)
+{
+	ER ercd = E_OK;
+
+	if (uart_shm == NULL) {
+		const struct lms_uart_shm *map = NULL;
+
+		ercd = uart_svc_map(&map);
+		if (ercd == E_OK)
+			uart_shm = map;
+	}
+	if (ercd == E_OK && analog_shm == NULL) {
+		const struct lms_analog *map = NULL;
+
+		ercd = analog_map(&map);
+		if (ercd == E_OK)
+			analog_shm = map;
+	}
+	return ercd;
+}
+
+ER ev3_sensor_config(sensor_port_t port, sensor_type_t type)
+{
+	sensor_type_t old;
+	ER ercd;
+
+	if (sns_ctx())
+		return E_CTX;
+	if ((unsigned)port >= TNUM_SENSOR_PORT)
+		return E_ID;
+	if ((unsigned)type >= TNUM_SENSOR_TYPE)
+		return E_PAR;
+	ercd = map_shared_memory();
+	if (ercd != E_OK)
+		return ercd;
+	old = sensor_type[port];
+	if (lms_type_of(old) != 0 && lms_type_of(type) == 0) {
+		ercd = uart_svc_stop((uint_t)port);
+		if (ercd != E_OK)
+			return ercd;
+	}
+	if (lms_type_of(type) != 0) {
+		/* Mode 0 first; the readers select what they need. */
+		ercd = uart_svc_set_mode((uint_t)port, 0);
+		if (ercd != E_OK)
+			return ercd;
+	}
+	sensor_type[port] = type;
+	return E_OK;
+}
+
+ER ev3_sensor_get_type(sensor_port_t port, sensor_type_t *p_type)
+{
+	if ((unsigned)port >= TNUM_SENSOR_PORT)
+		return E_ID;
+	if (!api_can_write(p_type, sizeof(*p_type)))
+		return E_MACV;
+	*p_type = sensor_type[port];
+	return E_OK;
+}
+
+/* E_OK if port is valid, configured as type, and out may take size bytes. */
+static ER check_sensor(sensor_port_t port, sensor_type_t type, const void *out, SIZE size)
+{
+	if ((unsigned)port >= TNUM_SENSOR_PORT)
+		return E_ID;
+	if (sensor_type[port] != type)
+		return E_OBJ;
+	if (!api_can_write(out, size))
+		return E_MACV;
+	return E_OK;
+}
+
+/*
+ * The slow path of a UART read: brings the port to valid data of mode and
+ * returns the sample, selecting the mode and accepting a new description as
+ * needed; E_OBJ if another kind of sensor answered, E_TMOUT on timeout.
+ */
+static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
+{
+	const struct lms_uart_port_ext *ext = &uart_shm->ext.port[port];
+	int expected = lms_type_of(sensor_type[port]);
+	RELTIM waited = 0;
+
+	if (sns_ctx())
+		return E_CTX;
+	for (;;) {
+		uint8_t state = *(const volatile uint8_t *)&ext->state;
+		int8_t status = *(const volatile int8_t *)&uart_shm->lms.status[port];
+		const int8_t *sample;
+
+		if (state >= LMS_UART_STATE_ACK && state != LMS_UART_STATE_TERMINAL &&
+		    uart_shm->lms.types[port][0].type != expected)
+			return E_OBJ;
+		if (status & LMS_UART_PORT_CHANGED)
+			(void)uart_svc_clear_changed((uint_t)port);
+		if (state == LMS_UART_STATE_DATA &&
+		    *(const volatile int8_t *)&ext->mode != mode) {
+			ER ercd = uart_svc_set_mode((uint_t)port, (uint_t)mode);
+
+			if (ercd != E_OK)
+				return ercd;
+		}
+		sample = lms_uart_sample(uart_shm, (unsigned)port, mode);
+		if (sample != NULL) {
+			*p_sample = sample;
+			return E_OK;
+		}
+		if (waited >= (state == LMS_UART_STATE_DATA ? MODE_TIMEOUT_MS : START_TIMEOUT_MS))
+			return E_TMOUT;
+		dly_tsk(POLL_MS);
+		waited += POLL_MS;
+	}
+}
+
+/* Copies size bytes of the newest sample of mode into out (fast path first). */
+static ER read_uart(sensor_port_t port, sensor_type_t type, int mode, void *out, SIZE size)
+{
+	const int8_t *sample;
+	ER ercd = check_sensor(port, type, out, size);
+
+	if (ercd != E_OK)
+		return ercd;
+	sample = lms_uart_sample(uart_shm, (unsigned)port, mode);
+	if (sample == NULL) {
+		ercd = wait_sample(port, mode, &sample);
+		if (ercd != E_OK)
+			return ercd;
+	}
+	memcpy(out, sample, size);
+	return E_OK;
+}
+
+/* A little-endian 16-bit value from a sample. */
+static int16_t le16(const uint8_t *p)
+{
+	return (int16_t)(uint16_t)(p[0] | (uint16_t)p[1] << 8);
+}
+
+ER ev3_gyro_sensor_get_angle(sensor_port_t port, int16_t *p_angle)
+{
+	uint8_t raw[2];
+	ER ercd;
+
+	if (!api_can_write(p_angle, sizeof(*p_angle)))
+		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
+	ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_ANGLE, raw, sizeof(raw));
+	if (ercd == E_OK)
+		*p_angle = le16(raw);
+	return ercd;
+}
+
+ER ev3_gyro_sensor_get_rate(sensor_port_t port, int16_t *p_rate)
+{
+	uint8_t raw[2];
+	ER ercd;
+
+	if (!api_can_write(p_rate, sizeof(*p_rate)))
+		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
+	ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_RATE, raw, sizeof(raw));
+	if (ercd == E_OK)
+		*p_rate = le16(raw);
+	return ercd;
+}
+
+ER ev3_gyro_sensor_reset(sensor_port_t port)
+{
+	uint8_t raw[2];
+	ER ercd;
+
+	/* The gyro restarts its angle at 0 on a mode change: pass through RATE. */
+	ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_RATE, raw, sizeof(raw));
+	if (ercd == E_OK)
+		ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_ANGLE, raw, sizeof(raw));
+	return ercd;
+}
+
+ER ev3_ultrasonic_sensor_get_distance(sensor_port_t port, int16_t *p_cm)
+{
+	uint8_t raw[2];
+	ER ercd;
+
+	if (!api_can_write(p_cm, sizeof(*p_cm)))
+		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
+	ercd = read_uart(port, ULTRASONIC_SENSOR, US_MODE_DIST_CM, raw, sizeof(raw));
+	if (ercd == E_OK)
+		*p_cm = (int16_t)(le16(raw) / 10);   /* the sensor reports tenths of a cm */
+	return ercd;
+}
+
+ER ev3_touch_sensor_is_pressed(sensor_port_t port, bool *p_pressed)
+{
+	ER ercd = check_sensor(port, TOUCH_SENSOR, p_pressed, sizeof(*p_pressed));
+
+	if (ercd != E_OK)
+		return ercd;
+	*p_pressed = *(const volatile uint16_t *)&analog_shm->in_pin6[port] > TOUCH_PRESSED_RAW;
+	return E_OK;
+}
+
+ER ev3_color_sensor_get_color(sensor_port_t port, colorid_t *p_color)
+{
+	uint8_t raw;
+	ER ercd;
+
+	if (!api_can_write(p_color, sizeof(*p_color)))
+		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
+	ercd = read_uart(port, COLOR_SENSOR, COLOR_MODE_COLOR, &raw, 1);
+	if (ercd == E_OK)
+		*p_color = raw < TNUM_COLOR ? (colorid_t)raw : COLOR_NONE;
+	return ercd;
+}
+
+ER ev3_color_sensor_get_reflect(sensor_port_t port, uint8_t *p_pct)
+{
+	return read_uart(port, COLOR_SENSOR, COLOR_MODE_REFLECT, p_pct, 1);
+}
+
+ER ev3_color_sensor_get_ambient(sensor_port_t port, uint8_t *p_pct)
+{
+	return read_uart(port, COLOR_SENSOR, COLOR_MODE_AMBIENT, p_pct, 1);
+}
+
+ER ev3_color_sensor_get_rgb_raw(sensor_port_t port, rgb_raw_t *p_rgb)
+{
+	uint8_t raw[6];
+	ER ercd;
+
+	if (!api_can_write(p_rgb, sizeof(*p_rgb)))
+		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
+	ercd = read_uart(port, COLOR_SENSOR, COLOR_MODE_RGB_RAW, raw, sizeof(raw));
+	if (ercd == E_OK) {
+		p_rgb->r = (uint16_t)le16(&raw[0]);
+		p_rgb->g = (uint16_t)le16(&raw[2]);
+		p_rgb->b = (uint16_t)le16(&raw[4]);
+	}
+	return ercd;
+}
+
+ER ev3_infrared_sensor_get_distance(sensor_port_t port, int8_t *p_pct)
+{
+	return read_uart(port, INFRARED_SENSOR, IR_MODE_PROX, p_pct, 1);
+}
+
+ER ev3_uart_sensor_get_raw(sensor_port_t port, void *buf, uint_t size)
+{
+	const int8_t *sample;
+	int mode;
+
+	if ((unsigned)port >= TNUM_SENSOR_PORT)
+		return E_ID;
+	if (lms_type_of(sensor_type[port]) == 0)
+		return E_OBJ;
+	if (size == 0 || size > LMS_UART_DATA_SIZE)
+		return E_PAR;
+	if (!api_can_write(buf, size))
+		return E_MACV;
+	mode = *(const volatile int8_t *)&uart_shm->ext.port[port].mode;
+	sample = lms_uart_sample(uart_shm, (unsigned)port, mode);
+	if (sample == NULL) {
+		ER ercd = wait_sample(port, mode < 0 ? 0 : mode, &sample);
+
+		if (ercd != E_OK)
+			return ercd;
+	}
+	memcpy(buf, sample, size);
+	return E_OK;
+}
