@@ -34,18 +34,27 @@ static int __init analog_hack_init(void)
 	analog_file = dcm_file = NULL;		/* nothing left from an earlier boot */
 	analog_map_addr = NULL;
 	ret = analog_driver_init();
-	if (!ret)
-		ret = lx_dev_open("/dev/" LMS_ANALOG_DEVICE_NAME, O_RDWR, &analog_file);
+	if (ret)
+		goto fail;
+	ret = lx_dev_open("/dev/" LMS_ANALOG_DEVICE_NAME, O_RDWR, &analog_file);
 	if (!ret)
 		ret = lx_dev_open("/dev/" LMS_DCM_DEVICE_NAME, O_RDWR, &dcm_file);
 	if (!ret)
 		ret = lx_dev_mmap(analog_file, sizeof(struct lms_analog), &map);
 	if (ret) {
-		pr_err("analog_hack: cannot load d_analog (%d)\n", ret);
-		return ret;
+		/* Unload again: a module whose init fails must leave nothing behind. */
+		lx_dev_close(dcm_file);
+		lx_dev_close(analog_file);
+		analog_file = dcm_file = NULL;
+		analog_exit();
+		goto fail;
 	}
 	analog_map_addr = map;
 	return 0;
+
+fail:
+	pr_err("analog_hack: cannot load d_analog (%d)\n", ret);
+	return ret;
 }
 module_init(analog_hack_init);
 
