@@ -22,11 +22,12 @@
  * port pins, so the split is:
  *   d_analog requests  input ports: pin 1's 9 V switch, pin 2, pin 5 and pin 6;
  *                      output ports: pin 5w (the DETx0 pull).
- *   d_pwm requests     output ports: pins 1 and 2 (H-bridge), pin 5 (tacho INT) and
- *                      pin 6 (tacho DIR).  d_analog borrows pin 6 only while it identifies
- *                      a newly attached device (pulled low for 20 ms, then floated again);
- *                      d_pwm only reads it.  Detection needs pins 1 and 2 low, which is
- *                      d_pwm's coast state for a port without a motor type.
+ *   d_pwm owns         output ports: pins 1 and 2 (H-bridge), pin 5 (tacho INT) and
+ *                      pin 6 (tacho DIR), which it drives and reads through the GPIO bank
+ *                      registers without requests.  d_analog borrows pin 6 only while it
+ *                      identifies a newly attached device (pulled low for 20 ms, then floated
+ *                      again); d_pwm only reads it.  Detection needs pins 1 and 2 low, which
+ *                      is d_pwm's coast state for a port without a motor type.
  *   d_uart requests    the TX-buffer disable pins and the UART pins.  While an input port
  *                      is in UART mode d_uart may float and read its pins 5 and 6; d_analog
  *                      then only reads them and drives them solely on a /dev/lms_dcm write.
