@@ -25,7 +25,7 @@
 struct dev_node {
 	bool in_use;
 	char name[LX_DEV_NAME_MAX + 1];
-	dev_t devt;
+	__kernel_dev_t devt;
 	const struct file_operations *fops;
 	struct miscdevice *misc;        /* NULL for register_chrdev devices */
 };
@@ -62,7 +62,7 @@ static struct dev_node *find_locked(const char *name)
 }
 
 /* Adds a node; 0, -EBUSY (name or devt taken) or -ENOMEM.  Interrupts locked. */
-static int add_locked(const char *name, dev_t devt, const struct file_operations *fops,
+static int add_locked(const char *name, __kernel_dev_t devt, const struct file_operations *fops,
 		      struct miscdevice *misc)
 {
 	struct dev_node *free_node = NULL;
@@ -87,7 +87,7 @@ static int add_locked(const char *name, dev_t devt, const struct file_operations
 }
 
 /* True if a node with that devt exists.  Interrupts locked. */
-static bool devt_taken_locked(dev_t devt)
+static bool devt_taken_locked(__kernel_dev_t devt)
 {
 	unsigned int i;
 

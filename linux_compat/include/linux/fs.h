@@ -58,7 +58,7 @@ typedef void *fl_owner_t;
 
 struct inode {
 	umode_t i_mode;
-	dev_t i_rdev;
+	__kernel_dev_t i_rdev;
 	loff_t i_size;
 	unsigned long i_ino;
 	void *i_private;
