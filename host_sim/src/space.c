@@ -50,6 +50,7 @@ static struct {
 	struct hs_region *page_owner[HS_SPACE_PAGES];
 	struct hs_region *regions[HS_MAX_REGIONS];
 	unsigned nregions;
+	struct hs_region *last;                     /* last region hit: drivers mostly stay in one */
 	unsigned next_page;
 	uint32_t access_ns;
 	char *log_filter;
@@ -120,6 +121,7 @@ void hs_space_fini(void)
 	for (unsigned i = 0; i < space.nregions; i++)
 		region_free(space.regions[i]);
 	space.nregions = 0;
+	space.last = NULL;
 	if (space.base)
 		munmap(space.base, (size_t)HS_SPACE_PAGES * HS_PAGE);
 	space.base = NULL;
@@ -157,11 +159,17 @@ uintptr_t hs_space_to_phys(uintptr_t addr)
 /* Region containing physical address phys, or NULL. */
 static struct hs_region *region_at(uintptr_t phys)
 {
+	struct hs_region *last = space.last;
+
+	if (last && phys >= last->cfg.phys && phys - last->cfg.phys < last->cfg.size)
+		return last;
 	for (unsigned i = 0; i < space.nregions; i++) {
 		struct hs_region *r = space.regions[i];
 
-		if (phys >= r->cfg.phys && phys - r->cfg.phys < r->cfg.size)
+		if (phys >= r->cfg.phys && phys - r->cfg.phys < r->cfg.size) {
+			space.last = r;
 			return r;
+		}
 	}
 	return NULL;
 }
@@ -449,6 +457,8 @@ static struct hs_region *access_region(uintptr_t phys, unsigned width, bool writ
 	struct hs_region *r = region_at(phys);
 	char val[32] = "";
 
+	if (r && (r->cfg.power == HS_NO_PSC || hs_psc_enabled(r->cfg.power)))
+		return r;           /* the common case */
 	if (write)
 		snprintf(val, sizeof(val), " of 0x%0*" PRIx32, (int)(2U * width), value);
 	if (!r) {
@@ -478,6 +488,8 @@ static struct hs_elem *access_elem(struct hs_region *r, uintptr_t phys, unsigned
 	struct hs_elem *other;
 	char val[32] = "";
 
+	if (e && (e->widths & width_bit(width)) && e->reg->kind != HS_RSVD)
+		return e;           /* the common case: no report to format */
 	if (write)
 		snprintf(val, sizeof(val), " of 0x%0*" PRIx32, (int)(2U * width), value);
 	if (!e) {
