@@ -119,6 +119,10 @@
 #define POWER_MAX          10000   /* internal power: user power x 100 */
 #define FAST_SPEED         35      /* above this the tacho DIR pin is not trusted */
 #define BRAKE_HOLD_GAIN    400     /* hold power per count of displacement */
+#define HOLD_DEADBAND      1       /* counts around the held position left to the short brake */
+#define HOLD_I_GAIN        10      /* hold power per accumulated count-tick */
+#define HOLD_I_MAX         (POWER_MAX / HOLD_I_GAIN)
+#define HOLD_I_SPEED       3       /* the integral only grows while the shaft is (nearly) still */
 #define PROGRAM_STOP_BRAKE_MS 100
 #define RAMP_FLOOR_SPEED   5       /* a ramp never asks for less, or a step ramp would stall */
 #define RAMP_FLOOR_POWER   10
@@ -203,6 +207,7 @@ struct pwm_port {
 	s32 sync_factor;      /* slave: its counts per 100 master counts, signed */
 
 	s32 hold_pos;         /* BRAKED: position to hold */
+	s32 hold_i;           /* BRAKED: integral of the displacement beyond the dead band */
 	ktime_t brake_until;  /* BRAKE_TIMED */
 
 	s32 power;            /* applied power, -POWER_MAX..POWER_MAX */
@@ -329,6 +334,12 @@ static u32 stamp_now(void)
 
 /* ---- Tacho ---- */
 
+/* Stamp ticks x speed units per count (LEGO's CountsPerPulse) of a port's motor. */
+static u32 counts_per_pulse(const struct pwm_port *p)
+{
+	return p->medium ? 8100 : 12800;
+}
+
 /* Counts one tacho edge: +-1 by the INT/DIR rule, and stamps it for the speed. */
 static irqreturn_t tacho_isr(int irq, void *dev_id)
 {
@@ -339,8 +350,14 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 	s8 dir;
 
 	spin_lock(&pwm_lock);
-	/* At speed the DIR pin settles too late to be read; keep the direction. */
-	if (abs(p->speed) > FAST_SPEED && p->last_dir)
+	/*
+	 * Above speed 35 the DIR pin may have moved on by the time it is read, so
+	 * the last direction is kept - but only while this edge came quickly too:
+	 * the averaged speed lags a fast reversal, the edge interval does not.
+	 */
+	if (p->last_dir && abs(p->speed) > FAST_SPEED && p->stamp_valid &&
+	    ((stamp - p->stamps[(p->stamp_head + STAMP_RING - 1) % STAMP_RING]) & STAMP_MASK) *
+	    FAST_SPEED < counts_per_pulse(p))
 		dir = p->last_dir;
 	else
 		dir = (int_high != dir_high) ? 1 : -1;
@@ -359,7 +376,7 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 /* Measures a port's speed (-100..100) from its edge stamps; 0 after a silence. */
 static s8 tacho_speed(struct pwm_port *p, u32 now)
 {
-	u32 counts_per_pulse = p->medium ? 8100 : 12800;
+	u32 cpp = counts_per_pulse(p);
 	static const u8 samples_large[] = { 4, 16, 32, 64 };
 	static const u8 samples_medium[] = { 2, 4, 8, 16 };
 	const u8 *table = p->medium ? samples_medium : samples_large;
@@ -369,7 +386,7 @@ static s8 tacho_speed(struct pwm_port *p, u32 now)
 	if (p->stamp_valid < 2)
 		return 0;
 	newest = p->stamps[(p->stamp_head + STAMP_RING - 1) % STAMP_RING];
-	if (((now - newest) & STAMP_MASK) > counts_per_pulse) {
+	if (((now - newest) & STAMP_MASK) > cpp) {
 		p->stamp_valid = 0;
 		return 0;
 	}
@@ -380,7 +397,7 @@ static s8 tacho_speed(struct pwm_port *p, u32 now)
 	ticks = (newest - oldest) & STAMP_MASK;
 	if (ticks == 0)
 		return p->last_dir * SPEED_MAX;
-	speed = n * counts_per_pulse / ticks;
+	speed = n * cpp / ticks;
 	if (speed > SPEED_MAX)
 		speed = SPEED_MAX;
 	return p->last_dir * (s8)speed;
@@ -449,14 +466,26 @@ static s32 pid_step(struct pwm_port *p, s32 target)
 	return p->pid_power / PID_SCALE;
 }
 
-/* Holds hold_pos: short brake on target, proportional drive back when displaced. */
+/*
+ * Holds hold_pos.  Within one count of it the windings are shorted (a dead
+ * band, so that a shaft at rest never hunts across an edge); beyond, it is
+ * driven back by LEGO's proportional term plus an integral that builds up
+ * while a load keeps it displaced (standing still) and stays applied once it
+ * is back.
+ */
 static void brake_hold(struct pwm_port *p)
 {
 	s32 err = p->position - p->hold_pos;
-	s32 power = clamp(-BRAKE_HOLD_GAIN * err, -POWER_MAX, POWER_MAX);
+	s32 outside = err > HOLD_DEADBAND ? err - HOLD_DEADBAND :
+		      err < -HOLD_DEADBAND ? err + HOLD_DEADBAND : 0;
+	s32 power;
 
+	/* Only a standing displacement is a load: integrating the overshoot would swing back. */
+	if (abs(p->speed) <= HOLD_I_SPEED)
+		p->hold_i = clamp(p->hold_i + outside, -HOLD_I_MAX, HOLD_I_MAX);
+	power = clamp(-BRAKE_HOLD_GAIN * outside - HOLD_I_GAIN * p->hold_i, -POWER_MAX, POWER_MAX);
 	p->power = 0;
-	if (err == 0)
+	if (power == 0)
 		port_output(p, DRIVE_BRAKE, PWM_PERIOD);
 	else
 		port_drive_power(p, power, true);
@@ -516,6 +545,7 @@ static void port_finish(struct pwm_port *p, int port, bool brake, s32 hold_pos)
 	if (brake) {
 		p->state = STATE_BRAKED;
 		p->hold_pos = hold_pos;
+		p->hold_i = 0;
 		brake_hold(p);
 	} else {
 		p->state = STATE_IDLE;
@@ -747,6 +777,7 @@ static void cmd_reset(u8 nos)
 		p->profile.origin = p->position;
 		p->profile.start = ktime_get();
 		p->hold_pos = p->position;
+		p->hold_i = 0;
 	}
 }
 
@@ -778,6 +809,7 @@ static void cmd_set_type(const u8 *types)
 		p->command_origin = p->position;
 		p->sensor_origin = p->position;
 		p->hold_pos = p->position;
+		p->hold_i = 0;
 		p->stamp_valid = 0;
 	}
 }
@@ -926,6 +958,7 @@ static int cmd_sync(const u8 *b, bool by_time)
 	s->command_origin = s->position;
 	pid_reset(m);
 	pid_reset(s);
+	s->hold_i = 0;
 	m->state = STATE_SYNC_MASTER;
 	s->state = STATE_SYNC_SLAVE;
 	ready_status |= nos;
