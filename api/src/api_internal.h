@@ -16,4 +16,8 @@ static inline bool api_can_write(const void *p, SIZE size)
 	return sns_ctx() || prb_mem(p, size, TSK_SELF, TPM_WRITE) == E_OK;
 }
 
+/* Forget everything of a previous boot (ATT_INI of ev3api_cfg, in config.c). */
+void api_motor_boot(void);
+void api_sensor_boot(void);
+
 #endif /* EV3API_INTERNAL_H */

@@ -52,6 +52,12 @@ static uint8_t lms_type_of(motor_type_t type)
 	}
 }
 
+void api_motor_boot(void)
+{
+	memset(motor_type, 0, sizeof(motor_type));
+	motor_data = NULL;
+}
+
 ER ev3_motor_config(motor_port_t port, motor_type_t type)
 {
 	uint8_t cmd[5];

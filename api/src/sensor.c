@@ -77,6 +77,13 @@ static ER map_shared_memory(void)
 	return ercd;
 }
 
+void api_sensor_boot(void)
+{
+	memset(sensor_type, 0, sizeof(sensor_type));
+	uart_shm = NULL;
+	analog_shm = NULL;
+}
+
 ER ev3_sensor_config(sensor_port_t port, sensor_type_t type)
 {
 	sensor_type_t old;
@@ -138,7 +145,8 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 {
 	const struct lms_uart_port_ext *ext = &uart_shm->ext.port[port];
 	int expected = lms_type_of(sensor_type[port]);
-	RELTIM waited = 0;
+	RELTIM waited = 0, limit = START_TIMEOUT_MS;
+	bool in_data = false;
 
 	if (sns_ctx())
 		return E_CTX;
@@ -147,11 +155,18 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 		int8_t status = *(const volatile int8_t *)&uart_shm->lms.status[port];
 		const int8_t *sample;
 
-		if (state >= LMS_UART_STATE_ACK && state != LMS_UART_STATE_TERMINAL &&
+		/* the description is published when the host's ACK goes out (state SPEED) */
+		if (state >= LMS_UART_STATE_SPEED && state != LMS_UART_STATE_TERMINAL &&
 		    uart_shm->lms.types[port][0].type != expected)
 			return E_OBJ;
 		if (status & LMS_UART_PORT_CHANGED)
 			(void)uart_svc_clear_changed((uint_t)port);
+		if (state == LMS_UART_STATE_DATA && !in_data) {
+			/* the handshake is done: from now on, the wait for a mode's data */
+			in_data = true;
+			waited = 0;
+			limit = MODE_TIMEOUT_MS;
+		}
 		if (state == LMS_UART_STATE_DATA &&
 		    *(const volatile int8_t *)&ext->mode != mode) {
 			ER ercd = uart_svc_set_mode((uint_t)port, (uint_t)mode);
@@ -164,7 +179,7 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 			*p_sample = sample;
 			return E_OK;
 		}
-		if (waited >= (state == LMS_UART_STATE_DATA ? MODE_TIMEOUT_MS : START_TIMEOUT_MS))
+		if (waited >= limit)
 			return E_TMOUT;
 		dly_tsk(POLL_MS);
 		waited += POLL_MS;
