@@ -37,6 +37,7 @@
 #include <linux/ktime.h>
 #include <linux/spinlock.h>
 #include <linux/delay.h>
+#include <linux/string.h>
 
 #include "lms_pwm.h"
 
@@ -1284,15 +1285,18 @@ static void timer64_setup(void)
 	writel(TIMER64_TCR_TIM34_CONTINUOUS, timer64_base + TIMER64_TCR);
 }
 
-/* Puts every port in its power-up state: coasting, tacho pins as inputs. */
+/* Puts every port in its power-up state: coasting, tacho pins as inputs, nothing busy. */
 static void ports_init(void)
 {
 	int i;
 
+	ready_status = 0;
+	test_status = 0;
 	for (i = 0; i < LMS_PWM_PORTS; i++) {
 		struct pwm_port *p = &ports[i];
 		const struct pwm_port_pins *pins = &port_pins[i];
 
+		memset(p, 0, sizeof(*p));
 		p->pins = pins;
 		p->int_bank = gpio_base + GPIO_BANK_REGS(pins->tacho_int);
 		p->dir_bank = gpio_base + GPIO_BANK_REGS(pins->tacho_dir);

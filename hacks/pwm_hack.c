@@ -94,7 +94,7 @@ static ER_UINT svc_pwm_read(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4
 {
 	ssize_t ret;
 
-	if (len < 0)
+	if (len < 0 || len > INT_MAX)
 		return E_PAR;
 	ret = lx_dev_read(pwm_file, (char __user *)buf, (size_t)len, NULL);
 	return ret < 0 ? pwm_er(ret) : (ER_UINT)ret;
