@@ -18,38 +18,58 @@ component_of() {
 	*hacks/uart_hack.c*)       echo "hack uart" ;;
 	*hacks/*)                  echo "hacks (shared)" ;;
 	*api/*)                    echo "api" ;;
+	*newlib*|*libgcc*)         echo "libc + libgcc" ;;
 	*)                         echo "other" ;;
 	esac
 }
-declare -A text data bss
+declare -A text data bss itext
 order=("rtos glue" "linux_compat" "driver d_pwm" "driver d_analog" "driver d_uart" \
-	"hack pwm" "hack analog" "hack uart" "hacks (shared)" "api" "other")
-for c in "${order[@]}"; do text[$c]=0; data[$c]=0; bss[$c]=0; done
-while read -r obj; do
-	src=${obj#"$out"/obj/}; src=${src%.o}.c
-	while read -r _addr size type _name file; do
+	"hack pwm" "hack analog" "hack uart" "hacks (shared)" "api" "libc + libgcc" "other")
+for c in "${order[@]}"; do text[$c]=0; data[$c]=0; bss[$c]=0; itext[$c]=0; done
+
+# attribute FILE FALLBACK_SOURCE ARRAY-PREFIX: adds each defined symbol's size to its component.
+attribute() {
+	local file=$1 src=$2 image=$3
+	while read -r _addr size type _name where; do
 		[ -n "${size:-}" ] || continue
-		where=${file:-$src}
-		c=$(component_of "$where")
-		[ "$c" = other ] && c=$(component_of "$src")
+		c=$(component_of "${where:-$src}")
+		[ "$c" = other ] && [ -n "$src" ] && c=$(component_of "$src")
+		[ "$c" = other ] && [ "$image" = 1 ] && [ -z "$where" ] && c="libc + libgcc"
 		n=$((16#$size))
+		if [ "$image" = 1 ]; then
+			case $type in [TtRr]) itext[$c]=$(( ${itext[$c]} + n )) ;; esac
+			continue
+		fi
 		case $type in
 		[TtRr]) text[$c]=$(( ${text[$c]} + n )) ;;
 		[Dd])   data[$c]=$(( ${data[$c]} + n )) ;;
 		[BbCc]) bss[$c]=$(( ${bss[$c]} + n )) ;;
 		esac
-	done < <($nm -S -l --defined-only "$obj" 2>/dev/null | awk 'NF>=4 {f=$5; sub(/:[0-9]+$/,"",f); print $1, $2, $3, $4, f}')
+	done < <($nm -S -l --defined-only "$file" 2>/dev/null \
+		| awk -v image="$image" 'NF>=4 && $3 ~ /^[A-Za-z]$/ && !(image && seen[$1]++) \
+			{f=$5; sub(/:[0-9]+$/,"",f); print $1, $2, $3, $4, f}')
+}
+
+while read -r obj; do
+	src=${obj#"$out"/obj/}; src=${src%.o}.c
+	attribute "$obj" "$src" 0
 done < <(find "$out/obj" -name '*.o' | sort)
 
-printf '| %-16s | %8s | %8s | %8s |\n' component text data bss
-printf '|%s|%s|%s|%s|\n' ------------------ ---------- ---------- ----------
-tt=0; td=0; tb=0
+# The firmware image after --gc-sections: what a real HRP2 firmware keeps.
+[ -f "$out/ev3lx.elf" ] && attribute "$out/ev3lx.elf" "" 1
+
+printf '| %-16s | %9s | %8s | %8s | %11s |\n' component "lib text" data bss "image text"
+printf '|%s|%s|%s|%s|%s|\n' ------------------ ----------: ---------: ---------: ------------:
+tt=0; td=0; tb=0; ti=0
 for c in "${order[@]}"; do
-	[ $(( ${text[$c]} + ${data[$c]} + ${bss[$c]} )) -gt 0 ] || continue
-	printf '| %-16s | %8d | %8d | %8d |\n' "$c" "${text[$c]}" "${data[$c]}" "${bss[$c]}"
-	tt=$((tt + ${text[$c]})); td=$((td + ${data[$c]})); tb=$((tb + ${bss[$c]}))
+	[ $(( ${text[$c]} + ${data[$c]} + ${bss[$c]} + ${itext[$c]} )) -gt 0 ] || continue
+	printf '| %-16s | %9d | %8d | %8d | %11d |\n' "$c" "${text[$c]}" "${data[$c]}" "${bss[$c]}" "${itext[$c]}"
+	tt=$((tt + ${text[$c]})); td=$((td + ${data[$c]})); tb=$((tb + ${bss[$c]})); ti=$((ti + ${itext[$c]}))
 done
-printf '| %-16s | %8d | %8d | %8d |\n' total "$tt" "$td" "$tb"
+printf '| %-16s | %9d | %8d | %8d | %11d |\n' total "$tt" "$td" "$tb" "$ti"
 shim=$(( ${text["rtos glue"]} + ${text[linux_compat]} ))
+ishim=$(( ${itext["rtos glue"]} + ${itext[linux_compat]} ))
 echo
-echo "linux_compat + rtos glue .text: $shim bytes (target <= 8192 at -Os)"
+echo "lib text = every function in libev3lx.a; image text = what the firmware keeps after --gc-sections"
+echo "(rooted at ev3api_cfg: the three drivers, their service calls and the API); .rodata counts as text."
+echo "linux_compat + rtos glue .text: $shim bytes in the library, $ishim bytes in the image (target <= 8192 at -Os)"

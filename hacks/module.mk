@@ -2,3 +2,4 @@
 # verbatim, then its interface as extended service calls (and a header of
 # call wrappers for applications, on the include path via -Ihacks).
 HOST_SRCS   += $(sort $(wildcard hacks/*.c))
+AM1808_SRCS += $(sort $(wildcard hacks/*.c))

@@ -12,7 +12,8 @@ AM1808_OBJS   := $(patsubst %.c,$(AM1808)/obj/%.o,$(AM1808_SRCS))
 AM1808_LIB    := $(AM1808)/libev3lx.a
 # Every rtos_stub target header must compile alone.
 AM1808_HDR_CHECKS := $(patsubst %.h,$(AM1808)/hdrcheck/%.o,$(filter-out %/rtos_host.h,$(wildcard rtos_stub/include/*.h)))
-FW_OBJS := $(AM1808)/startup.o $(AM1808)/fw_main.o $(AM1808)/hrp2_link_provider.o
+FW_OBJS := $(AM1808)/startup.o $(AM1808)/fw_main.o $(AM1808)/hrp2_link_provider.o \
+	$(AM1808)/newlib_glue.o
 # Reproducible image: the time stamp is the last commit's (or 0 outside git).
 SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null || echo 0)
 
@@ -65,7 +66,7 @@ am1808-uimage-check: $(AM1808)/uImage
 	{ cat $(AM1808)/uImage.txt; echo "uimage-check: FAILED"; exit 1; }; \
 	echo "uimage-check: $< is an ARM image loading and starting at 0xC0008000"
 
-size: $(AM1808_LIB)
+size: $(AM1808_LIB) $(AM1808)/ev3lx.elf
 	@bash am1808/size_report.sh $(AM1808) | tee $(AM1808)/size.md
 
 TEST_SUITE_EXTRA += am1808-link-check am1808-uimage-check
