@@ -38,6 +38,22 @@ static ER check_motor(motor_port_t port, unsigned type_mask)
 #define ANY_MOTOR       ((1U << MEDIUM_MOTOR) | (1U << LARGE_MOTOR) | (1U << UNREGULATED_MOTOR))
 #define REGULATED_MOTOR ((1U << MEDIUM_MOTOR) | (1U << LARGE_MOTOR))
 
+/* A command may only come from a task (it may wait in the driver). */
+static ER check_command(motor_port_t port, unsigned type_mask)
+{
+	return sns_ctx() ? E_CTX : check_motor(port, type_mask);
+}
+
+/* A reading of size bytes into p. */
+static ER check_reading(motor_port_t port, unsigned type_mask, const void *p, SIZE size)
+{
+	ER ercd = check_motor(port, type_mask);
+
+	if (ercd == E_OK && !api_can_write(p, size))
+		ercd = E_MACV;
+	return ercd;
+}
+
 /* d_pwm's device type for an API motor type. */
 static uint8_t lms_type_of(motor_type_t type)
 {
@@ -110,9 +126,7 @@ static ER run_motor(motor_port_t port, uint8_t opcode, int value, unsigned type_
 	uint8_t set[3], start[2];
 	ER ercd;
 
-	if (sns_ctx())
-		return E_CTX;
-	ercd = check_motor(port, type_mask);
+	ercd = check_command(port, type_mask);
 	if (ercd != E_OK)
 		return ercd;
 	if (value < -100 || value > 100)
@@ -137,12 +151,10 @@ ER ev3_motor_set_power(motor_port_t port, int power)
 
 ER ev3_motor_get_speed(motor_port_t port, int *p_speed)
 {
-	ER ercd = check_motor(port, ANY_MOTOR);
+	ER ercd = check_reading(port, ANY_MOTOR, p_speed, sizeof(*p_speed));
 
 	if (ercd != E_OK)
 		return ercd;
-	if (!api_can_write(p_speed, sizeof(*p_speed)))
-		return E_MACV;
 	*p_speed = motor_data[port].speed;
 	return E_OK;
 }
@@ -152,9 +164,7 @@ ER ev3_motor_stop(motor_port_t port, bool brake)
 	uint8_t cmd[3];
 	ER ercd;
 
-	if (sns_ctx())
-		return E_CTX;
-	ercd = check_motor(port, ANY_MOTOR);
+	ercd = check_command(port, ANY_MOTOR);
 	if (ercd != E_OK)
 		return ercd;
 	cmd[0] = LMS_PWM_OUTPUT_STOP;
@@ -165,12 +175,10 @@ ER ev3_motor_stop(motor_port_t port, bool brake)
 
 ER ev3_motor_get_counts(motor_port_t port, int32_t *p_counts)
 {
-	ER ercd = check_motor(port, ANY_MOTOR);
+	ER ercd = check_reading(port, ANY_MOTOR, p_counts, sizeof(*p_counts));
 
 	if (ercd != E_OK)
 		return ercd;
-	if (!api_can_write(p_counts, sizeof(*p_counts)))
-		return E_MACV;
 	*p_counts = motor_data[port].tacho_sensor;
 	return E_OK;
 }
@@ -180,9 +188,7 @@ ER ev3_motor_reset_counts(motor_port_t port)
 	uint8_t cmd[2];
 	ER ercd;
 
-	if (sns_ctx())
-		return E_CTX;
-	ercd = check_motor(port, ANY_MOTOR);
+	ercd = check_command(port, ANY_MOTOR);
 	if (ercd != E_OK)
 		return ercd;
 	cmd[0] = LMS_PWM_OUTPUT_CLR_COUNT;
@@ -203,12 +209,10 @@ static void put_s32(uint8_t *p, int32_t v)
 ER ev3_motor_is_busy(motor_port_t port, bool *p_busy)
 {
 	ER_UINT busy;
-	ER ercd = check_motor(port, ANY_MOTOR);
+	ER ercd = check_reading(port, ANY_MOTOR, p_busy, sizeof(*p_busy));
 
 	if (ercd != E_OK)
 		return ercd;
-	if (!api_can_write(p_busy, sizeof(*p_busy)))
-		return E_MACV;
 	busy = pwm_busy();
 	if (busy < 0)
 		return (ER)busy;
@@ -247,9 +251,7 @@ ER ev3_motor_rotate(motor_port_t port, int degrees, int speed, bool blocking)
 	uint8_t cmd[LMS_PWM_STEP_LEN];
 	ER ercd;
 
-	if (sns_ctx())
-		return E_CTX;
-	ercd = check_motor(port, REGULATED_MOTOR);
+	ercd = check_command(port, REGULATED_MOTOR);
 	if (ercd != E_OK)
 		return ercd;
 	if (speed < -100 || speed > 100 || speed == 0 || degrees == 0 ||
@@ -278,11 +280,9 @@ static ER sync_pair(motor_port_t left, motor_port_t right, int speed, int turn, 
 	uint8_t cmd[LMS_PWM_SYNC_LEN];
 	ER ercd;
 
-	if (sns_ctx())
-		return E_CTX;
-	ercd = check_motor(left, REGULATED_MOTOR);
+	ercd = check_command(left, REGULATED_MOTOR);
 	if (ercd == E_OK)
-		ercd = check_motor(right, REGULATED_MOTOR);
+		ercd = check_command(right, REGULATED_MOTOR);
 	if (ercd != E_OK)
 		return ercd;
 	if (left == right || speed < -100 || speed > 100 || turn < -200 || turn > 200)

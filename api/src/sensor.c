@@ -210,30 +210,28 @@ static int16_t le16(const uint8_t *p)
 	return (int16_t)(uint16_t)(p[0] | (uint16_t)p[1] << 8);
 }
 
-ER ev3_gyro_sensor_get_angle(sensor_port_t port, int16_t *p_angle)
+/* A 16-bit reading of mode, divided by divisor, into out. */
+static ER read_s16(sensor_port_t port, sensor_type_t type, int mode, int16_t divisor, int16_t *out)
 {
 	uint8_t raw[2];
 	ER ercd;
 
-	if (!api_can_write(p_angle, sizeof(*p_angle)))
+	if (!api_can_write(out, sizeof(*out)))
 		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
-	ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_ANGLE, raw, sizeof(raw));
+	ercd = read_uart(port, type, mode, raw, sizeof(raw));
 	if (ercd == E_OK)
-		*p_angle = le16(raw);
+		*out = (int16_t)(le16(raw) / divisor);
 	return ercd;
+}
+
+ER ev3_gyro_sensor_get_angle(sensor_port_t port, int16_t *p_angle)
+{
+	return read_s16(port, GYRO_SENSOR, GYRO_MODE_ANGLE, 1, p_angle);
 }
 
 ER ev3_gyro_sensor_get_rate(sensor_port_t port, int16_t *p_rate)
 {
-	uint8_t raw[2];
-	ER ercd;
-
-	if (!api_can_write(p_rate, sizeof(*p_rate)))
-		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
-	ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_RATE, raw, sizeof(raw));
-	if (ercd == E_OK)
-		*p_rate = le16(raw);
-	return ercd;
+	return read_s16(port, GYRO_SENSOR, GYRO_MODE_RATE, 1, p_rate);
 }
 
 ER ev3_gyro_sensor_reset(sensor_port_t port)
@@ -250,15 +248,8 @@ ER ev3_gyro_sensor_reset(sensor_port_t port)
 
 ER ev3_ultrasonic_sensor_get_distance(sensor_port_t port, int16_t *p_cm)
 {
-	uint8_t raw[2];
-	ER ercd;
-
-	if (!api_can_write(p_cm, sizeof(*p_cm)))
-		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
-	ercd = read_uart(port, ULTRASONIC_SENSOR, US_MODE_DIST_CM, raw, sizeof(raw));
-	if (ercd == E_OK)
-		*p_cm = (int16_t)(le16(raw) / 10);   /* the sensor reports tenths of a cm */
-	return ercd;
+	/* the sensor reports tenths of a cm */
+	return read_s16(port, ULTRASONIC_SENSOR, US_MODE_DIST_CM, 10, p_cm);
 }
 
 ER ev3_touch_sensor_is_pressed(sensor_port_t port, bool *p_pressed)
