@@ -19,16 +19,18 @@ SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null || echo 0)
 
 $(AM1808)/obj/%.o: %.c
 	@mkdir -p $(@D)
-	$(CC_am1808) $(call src_flags,$<) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
+	$(quiet) CC am1808 $<
+	$(Q)$(CC_am1808) $(call src_flags,$<) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
 
 $(AM1808)/hdrcheck/%.o: %.h
 	@mkdir -p $(@D)
-	$(CC_am1808) -std=c11 $(COMMON_INC) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -x c -c $< -o $@
+	$(Q)$(CC_am1808) -std=c11 $(COMMON_INC) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -x c -c $< -o $@
 
 $(AM1808_LIB): $(AM1808_OBJS)
 	@mkdir -p $(@D)
-	rm -f $@
-	$(AR_am1808) rcs $@ $^
+	$(quiet) AR am1808 $@
+	$(Q)rm -f $@
+	$(Q)$(AR_am1808) rcs $@ $^
 
 $(AM1808)/startup.o: am1808/startup.S
 	@mkdir -p $(@D)

@@ -42,3 +42,12 @@ RUN_arm926-test    := qemu-arm -cpu arm926 -L /usr/arm-linux-gnueabi
 # std and include path for one source file
 is_linux_src = $(filter $(addsuffix /%,$(LINUX_DIRS)),$(1))
 src_flags = $(if $(call is_linux_src,$(1)),-std=gnu11 $(LINUX_INC),-std=c11) $(COMMON_INC)
+
+# Quiet build lines ("CC host path"); make V=1 shows the full commands.
+ifeq ($(V),1)
+Q :=
+quiet = @true
+else
+Q := @
+quiet = @printf '  %-6s %-12s %s\n'
+endif

@@ -18,16 +18,19 @@ TESTS_$(1)     := $$(patsubst %.c,$(BUILD)/$(1)/%.t,$$(TEST_SRCS))
 
 $(BUILD)/$(1)/obj/%.o: %.c
 	@mkdir -p $$(@D)
-	$$(CC_$(1)) $$(call src_flags,$$<) $(WARN) $$(CFLAGS_$(1)) $(KERNEL_DEFS) -MMD -MP -c $$< -o $$@
+	$$(quiet) CC $(1) $$<
+	$(Q)$$(CC_$(1)) $$(call src_flags,$$<) $(WARN) $$(CFLAGS_$(1)) $(KERNEL_DEFS) -MMD -MP -c $$< -o $$@
 
 $$(LIB_$(1)): $$(OBJS_$(1))
 	@mkdir -p $$(@D)
-	rm -f $$@
-	$$(if $$(filter arm926-test,$(1)),arm-linux-gnueabi-ar,ar) rcs $$@ $$^
+	$$(quiet) AR $(1) $$@
+	$(Q)rm -f $$@
+	$(Q)$$(if $$(filter arm926-test,$(1)),arm-linux-gnueabi-ar,ar) rcs $$@ $$^
 
 $(BUILD)/$(1)/tests/%.t: $(BUILD)/$(1)/obj/tests/%.o $$(SUPPORT_OBJS_$(1)) $$(LIB_$(1))
 	@mkdir -p $$(@D)
-	$$(CC_$(1)) $$(CFLAGS_$(1)) $$(LDFLAGS_$(1)) -o $$@ $$< $$(SUPPORT_OBJS_$(1)) \
+	$$(quiet) LD $(1) $$@
+	$(Q)$$(CC_$(1)) $$(CFLAGS_$(1)) $$(LDFLAGS_$(1)) -o $$@ $$< $$(SUPPORT_OBJS_$(1)) \
 		-Wl,--start-group $$(LIB_$(1)) -Wl,--end-group -lm
 
 .PHONY: tests-$(1) prove-$(1)
@@ -45,7 +48,8 @@ $(foreach c,$(HOST_CONFIGS),$(eval $(call host_config_rules,$(c))))
 define host_program_rules
 $(BUILD)/host/$(1): $$(patsubst %.c,$(BUILD)/host/obj/%.o,$$($(1)_SRCS)) $$(LIB_host)
 	@mkdir -p $$(@D)
-	$$(CC_host) $$(CFLAGS_host) -o $$@ $$(patsubst %.c,$(BUILD)/host/obj/%.o,$$($(1)_SRCS)) \
+	$$(quiet) LD host $$@
+	$(Q)$$(CC_host) $$(CFLAGS_host) -o $$@ $$(patsubst %.c,$(BUILD)/host/obj/%.o,$$($(1)_SRCS)) \
 		-Wl,--start-group $$(LIB_host) -Wl,--end-group -lm
 -include $$(patsubst %.c,$(BUILD)/host/obj/%.d,$$($(1)_SRCS))
 endef
