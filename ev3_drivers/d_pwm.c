@@ -669,7 +669,19 @@ static enum hrtimer_restart control_tick(struct hrtimer *timer)
 	return HRTIMER_RESTART;
 }
 
-/* ---- Commands (called with pwm_lock held) ---- */
+/* ---- Commands ---- */
+
+/*
+ * Each opcode has a handler that checks its fields, takes pwm_lock for the
+ * few stores it makes and returns 0 or -EINVAL.  Port loops visit only the
+ * ports in the mask.  The helpers below run with pwm_lock held.
+ */
+
+/* True if nos names at least one port and nothing else. */
+static bool valid_nos(u8 nos)
+{
+	return nos != 0 && !(nos & ~LMS_PWM_PORT_MASK);
+}
 
 /* Coasts a port and drops whatever it was doing, including its busy bits. */
 static void port_float(struct pwm_port *p, int port)
@@ -691,16 +703,21 @@ static void sync_dissolve(struct pwm_port *p)
 }
 
 /* OUTPUT_POWER / OUTPUT_SPEED: new target; applies at once to a running unlimited port. */
-static void cmd_target(u8 nos, s8 value, bool regulated)
+static int cmd_target(const u8 *b, bool regulated)
 {
-	int i;
+	u8 nos = b[1];
+	s8 value = (s8)b[2];
+	unsigned long flags;
+	struct pwm_port *p;
 
-	for (i = 0; i < LMS_PWM_PORTS; i++) {
-		struct pwm_port *p = &ports[i];
-
-		if (!(nos & BIT(i)))
+	if (!valid_nos(nos) || value < -SPEED_MAX || value > SPEED_MAX)
+		return -EINVAL;
+	spin_lock_irqsave(&pwm_lock, flags);
+	for (p = ports; nos; nos >>= 1, p++) {
+		if (!(nos & 1))
 			continue;
-		sync_dissolve(p);
+		if (unlikely(p->partner >= 0))
+			sync_dissolve(p);
 		p->target = value * p->polarity;
 		p->start_regulated = regulated;
 		if (p->state == STATE_UNREG || p->state == STATE_REG) {
@@ -709,31 +726,54 @@ static void cmd_target(u8 nos, s8 value, bool regulated)
 			p->state = regulated ? STATE_REG : STATE_UNREG;
 		}
 	}
+	spin_unlock_irqrestore(&pwm_lock, flags);
+	return 0;
+}
+
+/* OUTPUT_SPEED. */
+static int cmd_speed(const u8 *b)
+{
+	return cmd_target(b, true);
+}
+
+/* OUTPUT_POWER. */
+static int cmd_power(const u8 *b)
+{
+	return cmd_target(b, false);
 }
 
 /* OUTPUT_START: an idle or braked port enters its unlimited target state. */
-static void cmd_start(u8 nos)
+static int cmd_start(const u8 *b)
 {
-	int i;
+	u8 nos = b[1];
+	unsigned long flags;
+	struct pwm_port *p;
 
-	for (i = 0; i < LMS_PWM_PORTS; i++) {
-		struct pwm_port *p = &ports[i];
-
-		if (!(nos & BIT(i)) ||
-		    (p->state != STATE_IDLE && p->state != STATE_BRAKED &&
-		     p->state != STATE_BRAKE_TIMED))
+	if (!valid_nos(nos))
+		return -EINVAL;
+	spin_lock_irqsave(&pwm_lock, flags);
+	for (p = ports; nos; nos >>= 1, p++) {
+		if (!(nos & 1) || (p->state != STATE_IDLE && p->state != STATE_BRAKED &&
+				   p->state != STATE_BRAKE_TIMED))
 			continue;
 		p->power = 0;
 		pid_reset(p);
 		p->state = p->start_regulated ? STATE_REG : STATE_UNREG;
 	}
+	spin_unlock_irqrestore(&pwm_lock, flags);
+	return 0;
 }
 
 /* OUTPUT_STOP: hold position (brake) or coast; ends limited commands and pairs. */
-static void cmd_stop(u8 nos, bool brake)
+static int cmd_stop(const u8 *b)
 {
+	u8 nos = b[1], brake = b[2];
+	unsigned long flags;
 	int i;
 
+	if (!valid_nos(nos) || brake > 1)
+		return -EINVAL;
+	spin_lock_irqsave(&pwm_lock, flags);
 	for (i = 0; i < LMS_PWM_PORTS; i++) {
 		struct pwm_port *p = &ports[i];
 
@@ -742,13 +782,21 @@ static void cmd_stop(u8 nos, bool brake)
 		sync_dissolve(p);
 		port_finish(p, i, brake, p->position);
 	}
+	spin_unlock_irqrestore(&pwm_lock, flags);
+	return 0;
 }
 
-/* OUTPUT_POLARITY: set or toggle; running targets flip at once. */
-static void cmd_polarity(u8 nos, s8 polarity)
+/* OUTPUT_POLARITY: set (-1, 1) or toggle (0); running targets flip at once. */
+static int cmd_polarity(const u8 *b)
 {
+	u8 nos = b[1];
+	s8 polarity = (s8)b[2];
+	unsigned long flags;
 	int i;
 
+	if (!valid_nos(nos) || polarity < -1 || polarity > 1)
+		return -EINVAL;
+	spin_lock_irqsave(&pwm_lock, flags);
 	for (i = 0; i < LMS_PWM_PORTS; i++) {
 		struct pwm_port *p = &ports[i];
 		s8 want = polarity ? polarity : -p->polarity;
@@ -761,13 +809,21 @@ static void cmd_polarity(u8 nos, s8 polarity)
 		if (p->state == STATE_REG)
 			pid_reset(p);
 	}
+	spin_unlock_irqrestore(&pwm_lock, flags);
+	return 0;
 }
 
 /* OUTPUT_RESET: ends sync; zeroes the command counters (not the sensor count). */
-static void cmd_reset(u8 nos)
+static int cmd_reset(const u8 *b)
 {
+	u8 nos = b[1];
+	ktime_t now = ktime_get();
+	unsigned long flags;
 	int i;
 
+	if (!valid_nos(nos))
+		return -EINVAL;
+	spin_lock_irqsave(&pwm_lock, flags);
 	for (i = 0; i < LMS_PWM_PORTS; i++) {
 		struct pwm_port *p = &ports[i];
 
@@ -776,27 +832,39 @@ static void cmd_reset(u8 nos)
 		sync_dissolve(p);
 		p->command_origin = p->position;
 		p->profile.origin = p->position;
-		p->profile.start = ktime_get();
+		p->profile.start = now;
 		p->hold_pos = p->position;
 		p->hold_i = 0;
 	}
+	spin_unlock_irqrestore(&pwm_lock, flags);
+	return 0;
 }
 
 /* OUTPUT_CLR_COUNT: zeroes the cumulative sensor count. */
-static void cmd_clr_count(u8 nos)
+static int cmd_clr_count(const u8 *b)
 {
+	u8 nos = b[1];
+	unsigned long flags;
 	int i;
 
+	if (!valid_nos(nos))
+		return -EINVAL;
+	spin_lock_irqsave(&pwm_lock, flags);
 	for (i = 0; i < LMS_PWM_PORTS; i++)
 		if (nos & BIT(i))
 			ports[i].sensor_origin = ports[i].position;
+	spin_unlock_irqrestore(&pwm_lock, flags);
+	return 0;
 }
 
 /* OUTPUT_SET_TYPE: a port whose type changed becomes idle with zeroed counters. */
-static void cmd_set_type(const u8 *types)
+static int cmd_set_type(const u8 *b)
 {
+	const u8 *types = b + 1;
+	unsigned long flags;
 	int i;
 
+	spin_lock_irqsave(&pwm_lock, flags);
 	for (i = 0; i < LMS_PWM_PORTS; i++) {
 		struct pwm_port *p = &ports[i];
 
@@ -813,33 +881,73 @@ static void cmd_set_type(const u8 *types)
 		p->hold_i = 0;
 		p->stamp_valid = 0;
 	}
+	spin_unlock_irqrestore(&pwm_lock, flags);
+	return 0;
 }
 
-/* PROGRAM_STOP then PROGRAM_START: everything stops, braked ports brake 100 ms; polarity +1. */
-static void cmd_program(bool stop)
+/* PROGRAM_STOP's first half: everything stops; braked ports brake 100 ms, then coast. */
+static void program_stop(void)
 {
 	ktime_t until = ktime_add(ktime_get(), ms_to_ktime(PROGRAM_STOP_BRAKE_MS));
 	int i;
 
 	for (i = 0; i < LMS_PWM_PORTS; i++) {
 		struct pwm_port *p = &ports[i];
+		bool braked = p->state == STATE_BRAKED;
 
 		p->partner = -1;
-		if (stop) {
-			bool braked = p->state == STATE_BRAKED;
-
-			p->target = 0;
-			port_float(p, i);
-			if (braked) {
-				p->state = STATE_BRAKE_TIMED;
-				p->brake_until = until;
-				port_output(p, DRIVE_BRAKE, PWM_PERIOD);
-			}
-		} else if (p->state == STATE_SYNC_MASTER || p->state == STATE_SYNC_SLAVE) {
-			port_float(p, i);
+		p->target = 0;
+		port_float(p, i);
+		if (braked) {
+			p->state = STATE_BRAKE_TIMED;
+			p->brake_until = until;
+			port_output(p, DRIVE_BRAKE, PWM_PERIOD);
 		}
+	}
+}
+
+/* PROGRAM_START (and PROGRAM_STOP's second half): polarity +1, sync pairs dissolved. */
+static void program_start(void)
+{
+	int i;
+
+	for (i = 0; i < LMS_PWM_PORTS; i++) {
+		struct pwm_port *p = &ports[i];
+
+		p->partner = -1;
+		if (p->state == STATE_SYNC_MASTER || p->state == STATE_SYNC_SLAVE)
+			port_float(p, i);
 		p->polarity = 1;
 	}
+}
+
+/* PROGRAM_STOP, which falls through into PROGRAM_START as LEGO's does. */
+static int cmd_program_stop(const u8 *b)
+{
+	unsigned long flags;
+
+	spin_lock_irqsave(&pwm_lock, flags);
+	program_stop();
+	program_start();
+	spin_unlock_irqrestore(&pwm_lock, flags);
+	return 0;
+}
+
+/* PROGRAM_START. */
+static int cmd_program_start(const u8 *b)
+{
+	unsigned long flags;
+
+	spin_lock_irqsave(&pwm_lock, flags);
+	program_start();
+	spin_unlock_irqrestore(&pwm_lock, flags);
+	return 0;
+}
+
+/* Opcodes the protocol defines but this driver has nothing to do for. */
+static int cmd_ignored(const u8 *b)
+{
+	return 0;
 }
 
 /* Reads a little-endian s32 from a command buffer. */
@@ -860,7 +968,7 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 	ktime_t now;
 	int i;
 
-	if (value < -SPEED_MAX || value > SPEED_MAX || brake > 1)
+	if (!valid_nos(nos) || value < -SPEED_MAX || value > SPEED_MAX || brake > 1)
 		return -EINVAL;
 	for (i = 0; i < 3; i++) {
 		/* Steps carry the direction of the power: their sign is redundant.  Times may not be negative. */
@@ -927,7 +1035,7 @@ static int cmd_sync(const u8 *b, bool by_time)
 	unsigned long flags;
 	ktime_t now;
 
-	if (!two_ports(nos) || speed < -SPEED_MAX || speed > SPEED_MAX ||
+	if (!valid_nos(nos) || !two_ports(nos) || speed < -SPEED_MAX || speed > SPEED_MAX ||
 	    turn < -200 || turn > 200 || brake > 1 || step == S32_MIN || (by_time && step < 0))
 		return -EINVAL;
 	step = abs(step);     /* a step count carries the direction of the speed */
@@ -968,145 +1076,85 @@ static int cmd_sync(const u8 *b, bool by_time)
 	return 0;
 }
 
-/* Minimum and maximum length of each command, or 0 for an unknown opcode. */
-static void command_length(u8 op, size_t *min, size_t *max)
+/* The four STEP_/TIME_ commands and the two SYNC commands. */
+static int cmd_step_power(const u8 *b)
 {
-	switch (op) {
-	case LMS_PWM_PROGRAM_STOP:
-	case LMS_PWM_PROGRAM_START:
-		*min = *max = 1;
-		break;
-	case LMS_PWM_OUTPUT_SET_TYPE:
-		*min = *max = 1 + LMS_PWM_PORTS;
-		break;
-	case LMS_PWM_OUTPUT_RESET:
-	case LMS_PWM_OUTPUT_START:
-	case LMS_PWM_OUTPUT_CLR_COUNT:
-		*min = *max = 2;
-		break;
-	case LMS_PWM_OUTPUT_STOP:
-	case LMS_PWM_OUTPUT_POWER:
-	case LMS_PWM_OUTPUT_SPEED:
-	case LMS_PWM_OUTPUT_POLARITY:
-		*min = *max = 3;
-		break;
-	case LMS_PWM_OUTPUT_STEP_POWER:
-	case LMS_PWM_OUTPUT_TIME_POWER:
-	case LMS_PWM_OUTPUT_STEP_SPEED:
-	case LMS_PWM_OUTPUT_TIME_SPEED:
-		*min = LMS_PWM_STEP_LEN_MIN;
-		*max = LMS_PWM_STEP_LEN;
-		break;
-	case LMS_PWM_OUTPUT_STEP_SYNC:
-	case LMS_PWM_OUTPUT_TIME_SYNC:
-		*min = LMS_PWM_SYNC_LEN_MIN;
-		*max = LMS_PWM_SYNC_LEN;
-		break;
-	case LMS_PWM_OUTPUT_GET_TYPE:
-	case LMS_PWM_OUTPUT_READ:
-	case LMS_PWM_OUTPUT_TEST:
-	case LMS_PWM_OUTPUT_READY:
-	case LMS_PWM_OUTPUT_POSITION:
-	case LMS_PWM_OUTPUT_PRG_STOP:
-	case LMS_PWM_OUTPUT_GET_COUNT:
-		*min = 1;
-		*max = LMS_PWM_CMD_MAX;
-		break;
-	default:
-		*min = *max = 0;
-		break;
-	}
+	return cmd_profile(b, false, false);
 }
 
-/* Executes one validated-length command; returns 0 or -EINVAL for bad fields. */
-static int pwm_execute(const u8 *b)
+static int cmd_time_power(const u8 *b)
 {
-	u8 nos = b[1];
-	s8 value = (s8)b[2];
-	unsigned long flags;
+	return cmd_profile(b, true, false);
+}
 
-	switch (b[0]) {
-	case LMS_PWM_OUTPUT_STEP_POWER:
-	case LMS_PWM_OUTPUT_TIME_POWER:
-	case LMS_PWM_OUTPUT_STEP_SPEED:
-	case LMS_PWM_OUTPUT_TIME_SPEED:
-		if (nos == 0 || nos & ~LMS_PWM_PORT_MASK)
-			return -EINVAL;
-		return cmd_profile(b, b[0] & 1, b[0] >= LMS_PWM_OUTPUT_STEP_SPEED);
-	case LMS_PWM_OUTPUT_STEP_SYNC:
-	case LMS_PWM_OUTPUT_TIME_SYNC:
-		if (nos & ~LMS_PWM_PORT_MASK)
-			return -EINVAL;
-		return cmd_sync(b, b[0] == LMS_PWM_OUTPUT_TIME_SYNC);
-	case LMS_PWM_PROGRAM_STOP:
-	case LMS_PWM_PROGRAM_START:
-		spin_lock_irqsave(&pwm_lock, flags);
-		if (b[0] == LMS_PWM_PROGRAM_STOP)
-			cmd_program(true);
-		cmd_program(false);
-		spin_unlock_irqrestore(&pwm_lock, flags);
-		return 0;
-	case LMS_PWM_OUTPUT_SET_TYPE:
-		spin_lock_irqsave(&pwm_lock, flags);
-		cmd_set_type(b + 1);
-		spin_unlock_irqrestore(&pwm_lock, flags);
-		return 0;
-	case LMS_PWM_OUTPUT_RESET:
-	case LMS_PWM_OUTPUT_START:
-	case LMS_PWM_OUTPUT_CLR_COUNT:
-	case LMS_PWM_OUTPUT_STOP:
-	case LMS_PWM_OUTPUT_POWER:
-	case LMS_PWM_OUTPUT_SPEED:
-	case LMS_PWM_OUTPUT_POLARITY:
-		break;
-	default:
-		return 0;           /* accepted and ignored opcodes */
-	}
+static int cmd_step_speed(const u8 *b)
+{
+	return cmd_profile(b, false, true);
+}
 
-	/* The port commands: the hot path of ev3_motor_set_speed. */
-	if (nos == 0 || nos & ~LMS_PWM_PORT_MASK)
-		return -EINVAL;
-	switch (b[0]) {
-	case LMS_PWM_OUTPUT_POWER:
-	case LMS_PWM_OUTPUT_SPEED:
-		if (value < -SPEED_MAX || value > SPEED_MAX)
-			return -EINVAL;
-		break;
-	case LMS_PWM_OUTPUT_STOP:
-		if (b[2] > 1)
-			return -EINVAL;
-		break;
-	case LMS_PWM_OUTPUT_POLARITY:
-		if (value < -1 || value > 1)
-			return -EINVAL;
-		break;
-	}
-	spin_lock_irqsave(&pwm_lock, flags);
-	switch (b[0]) {
-	case LMS_PWM_OUTPUT_SPEED:
-		cmd_target(nos, value, true);
-		break;
-	case LMS_PWM_OUTPUT_POWER:
-		cmd_target(nos, value, false);
-		break;
-	case LMS_PWM_OUTPUT_START:
-		cmd_start(nos);
-		break;
-	case LMS_PWM_OUTPUT_STOP:
-		cmd_stop(nos, b[2]);
-		break;
-	case LMS_PWM_OUTPUT_POLARITY:
-		cmd_polarity(nos, value);
-		break;
-	case LMS_PWM_OUTPUT_RESET:
-		cmd_reset(nos);
-		break;
-	case LMS_PWM_OUTPUT_CLR_COUNT:
-		cmd_clr_count(nos);
-		break;
-	}
-	spin_unlock_irqrestore(&pwm_lock, flags);
-	return 0;
+static int cmd_time_speed(const u8 *b)
+{
+	return cmd_profile(b, true, true);
+}
+
+static int cmd_step_sync(const u8 *b)
+{
+	return cmd_sync(b, false);
+}
+
+static int cmd_time_sync(const u8 *b)
+{
+	return cmd_sync(b, true);
+}
+
+struct pwm_opcode {
+	u8 min, max;                    /* accepted command lengths */
+	int (*run)(const u8 *b);
+};
+
+#define OPCODE_FIRST LMS_PWM_OUTPUT_GET_TYPE
+#define OPCODE(op, lo, hi, fn) [(op) - OPCODE_FIRST] = { (lo), (hi), (fn) }
+
+/* The output opcodes 0xA0..0xB4, indexed from OPCODE_FIRST. */
+static const struct pwm_opcode output_opcodes[] = {
+	OPCODE(LMS_PWM_OUTPUT_GET_TYPE, 1, LMS_PWM_CMD_MAX, cmd_ignored),
+	OPCODE(LMS_PWM_OUTPUT_SET_TYPE, 1 + LMS_PWM_PORTS, 1 + LMS_PWM_PORTS, cmd_set_type),
+	OPCODE(LMS_PWM_OUTPUT_RESET, 2, 2, cmd_reset),
+	OPCODE(LMS_PWM_OUTPUT_STOP, 3, 3, cmd_stop),
+	OPCODE(LMS_PWM_OUTPUT_POWER, 3, 3, cmd_power),
+	OPCODE(LMS_PWM_OUTPUT_SPEED, 3, 3, cmd_speed),
+	OPCODE(LMS_PWM_OUTPUT_START, 2, 2, cmd_start),
+	OPCODE(LMS_PWM_OUTPUT_POLARITY, 3, 3, cmd_polarity),
+	OPCODE(LMS_PWM_OUTPUT_READ, 1, LMS_PWM_CMD_MAX, cmd_ignored),
+	OPCODE(LMS_PWM_OUTPUT_TEST, 1, LMS_PWM_CMD_MAX, cmd_ignored),
+	OPCODE(LMS_PWM_OUTPUT_READY, 1, LMS_PWM_CMD_MAX, cmd_ignored),
+	OPCODE(LMS_PWM_OUTPUT_POSITION, 1, LMS_PWM_CMD_MAX, cmd_ignored),
+	OPCODE(LMS_PWM_OUTPUT_STEP_POWER, LMS_PWM_STEP_LEN_MIN, LMS_PWM_STEP_LEN, cmd_step_power),
+	OPCODE(LMS_PWM_OUTPUT_TIME_POWER, LMS_PWM_STEP_LEN_MIN, LMS_PWM_STEP_LEN, cmd_time_power),
+	OPCODE(LMS_PWM_OUTPUT_STEP_SPEED, LMS_PWM_STEP_LEN_MIN, LMS_PWM_STEP_LEN, cmd_step_speed),
+	OPCODE(LMS_PWM_OUTPUT_TIME_SPEED, LMS_PWM_STEP_LEN_MIN, LMS_PWM_STEP_LEN, cmd_time_speed),
+	OPCODE(LMS_PWM_OUTPUT_STEP_SYNC, LMS_PWM_SYNC_LEN_MIN, LMS_PWM_SYNC_LEN, cmd_step_sync),
+	OPCODE(LMS_PWM_OUTPUT_TIME_SYNC, LMS_PWM_SYNC_LEN_MIN, LMS_PWM_SYNC_LEN, cmd_time_sync),
+	OPCODE(LMS_PWM_OUTPUT_CLR_COUNT, 2, 2, cmd_clr_count),
+	OPCODE(LMS_PWM_OUTPUT_PRG_STOP, 1, LMS_PWM_CMD_MAX, cmd_ignored),
+	OPCODE(LMS_PWM_OUTPUT_GET_COUNT, 1, LMS_PWM_CMD_MAX, cmd_ignored),
+};
+
+static const struct pwm_opcode program_stop_opcode = { 1, 1, cmd_program_stop };
+static const struct pwm_opcode program_start_opcode = { 1, 1, cmd_program_start };
+
+/* The table entry of an opcode, or NULL if the protocol has no such opcode. */
+static const struct pwm_opcode *opcode_of(u8 op)
+{
+	unsigned int index = op - OPCODE_FIRST;
+
+	if (likely(index < ARRAY_SIZE(output_opcodes)))
+		return &output_opcodes[index];
+	if (op == LMS_PWM_PROGRAM_STOP)
+		return &program_stop_opcode;
+	if (op == LMS_PWM_PROGRAM_START)
+		return &program_start_opcode;
+	return NULL;
 }
 
 /* ---- File operations ---- */
@@ -1115,19 +1163,17 @@ static int pwm_execute(const u8 *b)
 static ssize_t pwm_write(struct file *file, const char __user *buf, size_t count, loff_t *ppos)
 {
 	u8 cmd[LMS_PWM_CMD_MAX];
-	size_t min, max;
-	u8 op;
+	const struct pwm_opcode *oc;
 	int ret;
 
-	if (count == 0 || count > LMS_PWM_CMD_MAX)
+	if (count - 1 >= LMS_PWM_CMD_MAX)        /* 0 or more than the longest command */
 		return -EINVAL;
 	if (copy_from_user(cmd, buf, count))
 		return -EFAULT;
-	op = cmd[0];
-	command_length(op, &min, &max);
-	if (min == 0 || count < min || count > max)
+	oc = opcode_of(cmd[0]);
+	if (!oc || count < oc->min || count > oc->max)
 		return -EINVAL;
-	ret = pwm_execute(cmd);
+	ret = oc->run(cmd);
 	return ret ? ret : (ssize_t)count;
 }
 
