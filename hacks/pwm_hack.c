@@ -10,14 +10,20 @@
 #include <linux/module.h>
 #include <linux_compat/devfs.h>
 
-/* Rename: the driver's module_init becomes a plain pointer, called by ours below. */
+/* Renames: the driver's module_init/exit become plain pointers, called by ours below. */
+#pragma push_macro("module_init")
+#pragma push_macro("module_exit")
 #undef module_init
+#undef module_exit
 #define module_init(fn) static int (*const pwm_driver_init)(void) = fn
+#define module_exit(fn) static void (*const pwm_driver_exit)(void) = fn
 
 #include "d_pwm.c"
 
 #undef module_init
-#define module_init(fn) device_initcall(fn)
+#undef module_exit
+#pragma pop_macro("module_init")
+#pragma pop_macro("module_exit")
 
 #include "pwm_hack.h"
 
@@ -41,12 +47,30 @@ static int __init pwm_hack_init(void)
 		ret = lx_dev_mmap(motor_file, LMS_MOTOR_DATA_SIZE, &map);
 	if (ret) {
 		pr_err("pwm_hack: cannot open d_pwm's devices (%d)\n", ret);
+		lx_dev_close(pwm_file);
+		lx_dev_close(motor_file);
+		pwm_file = motor_file = NULL;
+		pwm_driver_exit();
 		return ret;
 	}
 	motor_map = map;
 	return 0;
 }
 module_init(pwm_hack_init);
+
+/* Closes the devices (the service calls then answer E_OBJ), then unloads d_pwm. */
+static void __exit pwm_hack_exit(void)
+{
+	struct file *pwm = pwm_file, *motor = motor_file;
+
+	pwm_file = NULL;
+	motor_file = NULL;
+	motor_map = NULL;
+	lx_dev_close(pwm);
+	lx_dev_close(motor);
+	pwm_driver_exit();
+}
+module_exit(pwm_hack_exit);
 
 /* A driver result as a TOPPERS error code (E_OK for non-negative results). */
 static ER pwm_er(long ret)

@@ -13,6 +13,9 @@
 
 #include "pwm_test.h"
 
+#define USER_TASK_ID 2
+#define USER_DOMAIN  1
+
 /* Opcode, minimum and maximum length, and a valid command of maximum length. */
 struct opcode_case {
 	uint8_t op;
@@ -287,6 +290,8 @@ static void test_semantics(void)
 	stop_all();
 }
 
+static bool user_done;
+
 static void body(void)
 {
 	test_lengths();
@@ -298,11 +303,14 @@ static void body(void)
 	test_status_and_map();
 	test_file_operations();
 	test_semantics();
+	/* Then the same calls from a task of a user domain. */
+	act_tsk(USER_TASK_ID);
+	while (!user_done)
+		dly_tsk(10);
 }
 
 /* ---- a user-domain task: pointers outside its memory ---- */
 
-#define USER_DOMAIN 1
 static uint8_t user_area[64] __attribute__((aligned(16)));
 static uint8_t kernel_area[64];
 
@@ -334,16 +342,27 @@ static void user_body(void)
 	pwm_cmd_value(LMS_PWM_OUTPUT_STOP, 0x0F, 0);
 }
 
+static void user_task(intptr_t exinf)
+{
+	(void)exinf;
+	user_body();
+	user_done = true;
+}
+
 int main(void)
 {
 	const int motors[4] = { EV3_MOTOR_LARGE, EV3_MOTOR_MEDIUM, EV3_MOTOR_LARGE, EV3_MOTOR_LARGE };
+	const struct rtos_task_cfg tasks[] = {
+		{ USER_TASK_ID, TA_NULL, 0, user_task, 8, PWM_TEST_STACK, USER_DOMAIN, "pwm_user" },
+	};
 	const struct rtos_mem_cfg mems[] = {
 		{ USER_DOMAIN, user_area, sizeof(user_area), TPM_READ | TPM_WRITE, "user_area" },
 	};
-	const struct rtos_cfg user_cfg = { .name = "pwm_user", .mems = RTOS_TABLE(mems) };
+	const struct rtos_cfg user_cfg = {
+		.name = "pwm_user", .tasks = RTOS_TABLE(tasks), .mems = RTOS_TABLE(mems),
+	};
 
-	tap_plan(106);
-	ok(pwm_test_run(body, motors), "kernel-domain body ran to its end");
-	ok(pwm_test_run_in(user_body, motors, USER_DOMAIN, &user_cfg), "user-domain body ran to its end");
+	tap_plan(105);
+	ok(pwm_test_run_in(body, motors, TDOM_KERNEL, &user_cfg), "test bodies ran to their end");
 	return tap_done();
 }
