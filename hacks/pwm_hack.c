@@ -6,9 +6,7 @@
  * copy_*_user against the caller's domain) guard every call.
  */
 #define KBUILD_MODNAME "d_pwm"
-#include <linux/fcntl.h>
-#include <linux/module.h>
-#include <linux_compat/devfs.h>
+#include "driver_common.h"
 
 /* Renames: the driver's module_init/exit become plain pointers, called by ours below. */
 #pragma push_macro("module_init")

@@ -32,6 +32,19 @@ static void test_step_speed(unsigned port, int speed, int32_t s1, int32_t s2, in
 	ok(fabs(moved - want) <= 2.0, "stopped at %.2f deg for a target of %.0f (+-2)", moved, want);
 }
 
+static void test_step_power(unsigned port, int power, int32_t s1, int32_t s2, int32_t s3)
+{
+	double a0 = motor_angle(port), moved, want = (power < 0 ? -1 : 1) * (double)(s1 + s2 + s3);
+
+	ok(pwm_cmd_step(LMS_PWM_OUTPUT_STEP_POWER, 1U << port, power, s1, s2, s3, 1) == E_OK,
+	   "STEP_POWER %d: %d/%d/%d counts, brake", power, s1, s2, s3);
+	wait_idle(1U << port, 10000);
+	ok(!(pwm_busy() & (1U << port)), "busy bit cleared at the end");
+	dly_tsk(800);
+	moved = motor_angle(port) - a0;
+	ok(fabs(moved - want) <= 2.0, "unregulated step stopped at %.2f deg for %.0f (+-2)", moved, want);
+}
+
 static void test_time_speed(unsigned port, int speed, int32_t ms)
 {
 	double t0, took, dps_mid;
@@ -50,17 +63,25 @@ static void test_time_speed(unsigned port, int speed, int32_t ms)
 	ok(fabs(motor_dps(port)) < 1.0, "coasted to a stop afterwards");
 }
 
+/* Counts between the port's count now and held (the driver holds its count to +-1). */
+static int32_t count_off(unsigned port, int32_t held)
+{
+	return motor_data_of(port).tacho_sensor - held;
+}
+
 static void test_brake_under_load(unsigned port)
 {
 	struct ev3_motor *m = ev3_output_motor(port);
 	double held, worst = 0;
+	int32_t held_count;
 
 	ok(pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 1U << port, 40) == E_OK &&
 	   pwm_cmd(LMS_PWM_OUTPUT_START, 1U << port) == E_OK, "runs at 40");
 	dly_tsk(300);
 	ok(pwm_cmd_value(LMS_PWM_OUTPUT_STOP, 1U << port, 1) == E_OK, "STOP with brake");
-	dly_tsk(300);
+	dly_tsk(800);       /* pulled back from the overshoot and settled */
 	held = motor_angle(port);
+	held_count = motor_data_of(port).tacho_sensor;
 	ev3_motor_set_load(m, 0.10, 0);       /* a quarter of the stall torque pushing back */
 	for (int i = 0; i < 500; i++) {
 		dly_tsk(1);
@@ -68,15 +89,18 @@ static void test_brake_under_load(unsigned port)
 			worst = fabs(motor_angle(port) - held);
 	}
 	ok(worst <= 8.0, "gives at most %.2f deg to a 0.1 N m load (<= 8)", worst);
-	ok(fabs(motor_angle(port) - held) <= 2.5, "and is back within 2.5 deg while loaded (%.2f)",
+	ok(abs(count_off(port, held_count)) <= 2 && fabs(motor_angle(port) - held) <= 3.0,
+	   "and is back at its count while loaded (%d counts, %.2f deg)", count_off(port, held_count),
 	   motor_angle(port) - held);
 	ev3_motor_set_load(m, -0.10, 0);
 	dly_tsk(800);
-	ok(fabs(motor_angle(port) - held) <= 2.5, "holds against the reverse load (%.2f deg)",
+	ok(abs(count_off(port, held_count)) <= 2 && fabs(motor_angle(port) - held) <= 3.0,
+	   "holds against the reverse load (%d counts, %.2f deg)", count_off(port, held_count),
 	   motor_angle(port) - held);
 	ev3_motor_set_load(m, 0, 0);
 	dly_tsk(800);
-	ok(fabs(motor_angle(port) - held) <= 2.5, "at the braked position without load (%.2f deg)",
+	ok(abs(count_off(port, held_count)) <= 2 && fabs(motor_angle(port) - held) <= 3.0,
+	   "at the braked position without load (%d counts, %.2f deg)", count_off(port, held_count),
 	   motor_angle(port) - held);
 	ok(pwm_cmd_value(LMS_PWM_OUTPUT_STOP, 1U << port, 0) == E_OK, "STOP coast releases it");
 }
@@ -185,6 +209,8 @@ static void body(void)
 	test_step_speed(0, -50, 0, 360, 0);
 	test_step_speed(1, 75, 90, 540, 90);
 	test_step_speed(2, 20, 30, 60, 30);
+	test_step_power(3, 60, 45, 180, 45);
+	test_step_power(1, -40, 0, 270, 0);
 	test_time_speed(3, 40, 500);
 	test_time_speed(3, -60, 1001);
 	test_brake_under_load(0);
@@ -200,7 +226,7 @@ int main(void)
 {
 	const int motors[4] = { EV3_MOTOR_LARGE, EV3_MOTOR_MEDIUM, EV3_MOTOR_LARGE, EV3_MOTOR_LARGE };
 
-	tap_plan(73);
+	tap_plan(79);
 	ok(pwm_test_run(body, motors), "test body ran to its end");
 	return tap_done();
 }
