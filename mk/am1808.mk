@@ -20,7 +20,7 @@ SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null || echo 0)
 $(AM1808)/obj/%.o: %.c
 	@mkdir -p $(@D)
 	$(quiet) CC am1808 $<
-	$(Q)$(CC_am1808) $(call src_flags,$<) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
+	$(Q)$(CC_am1808) $(call src_flags,$<) $(call warn_flags,$<) $(CFLAGS_am1808) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
 
 $(AM1808)/hdrcheck/%.o: %.h
 	@mkdir -p $(@D)

@@ -42,6 +42,8 @@ RUN_arm926-test    := qemu-arm -cpu arm926 -L /usr/arm-linux-gnueabi
 # std and include path for one source file
 is_linux_src = $(filter $(addsuffix /%,$(LINUX_DIRS)),$(1))
 src_flags = $(if $(call is_linux_src,$(1)),-std=gnu11 $(LINUX_INC),-std=c11) $(COMMON_INC)
+# warnings for one source file: kernel code keeps GNU void-pointer arithmetic, as kbuild's W=1 does
+warn_flags = $(if $(call is_linux_src,$(1)),$(filter-out -Wpointer-arith,$(WARN)),$(WARN))
 
 # Quiet build lines ("CC host path"); make V=1 shows the full commands.
 ifeq ($(V),1)

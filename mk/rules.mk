@@ -19,7 +19,7 @@ TESTS_$(1)     := $$(patsubst %.c,$(BUILD)/$(1)/%.t,$$(TEST_SRCS))
 $(BUILD)/$(1)/obj/%.o: %.c
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(1) $$<
-	$(Q)$$(CC_$(1)) $$(call src_flags,$$<) $(WARN) $$(CFLAGS_$(1)) $(KERNEL_DEFS) -MMD -MP -c $$< -o $$@
+	$(Q)$$(CC_$(1)) $$(call src_flags,$$<) $$(call warn_flags,$$<) $$(CFLAGS_$(1)) $(KERNEL_DEFS) -MMD -MP -c $$< -o $$@
 
 $$(LIB_$(1)): $$(OBJS_$(1))
 	@mkdir -p $$(@D)
