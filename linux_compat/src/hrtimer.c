@@ -327,6 +327,12 @@ void lx_hrtimer_run_due(uint64_t now)
 		ret = t->function(t);
 		lx_timer_callback_exit();
 		lx_set_running_hrtimer(NULL);
+		if (ret == HRTIMER_RESTART && t->function == NULL) {
+			/* Re-initialised in its own callback and never given a function. */
+			lx_report("hrtimer callback returned HRTIMER_RESTART", NULL, 0,
+				  "the timer has no callback any more; it is not restarted");
+			ret = HRTIMER_NORESTART;
+		}
 		SIL_LOC_INT();
 		queue.running = NULL;
 		/* A timer the callback started again stays where it was put. */
