@@ -388,4 +388,5 @@ void lx_io_boot(intptr_t exinf)
 	lx_gpio_boot();
 	lx_resource_boot();
 	lx_devfs_boot();
+	lx_uaccess_boot();
 }

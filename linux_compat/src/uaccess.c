@@ -7,6 +7,39 @@
 #include <linux/string.h>
 #include <linux_compat/context.h>
 #include <kernel.h>
+#include <rtos_cfg.h>
+#include <linux_compat/irq.h>
+
+/* Tasks running with the address limit KERNEL_DS (set_fs), by task ID. */
+static bool task_kernel_ds[TNUM_TSKID + 1];
+
+/* The calling task's ID, or 0 outside task context. */
+static ID calling_task(void)
+{
+	ID tid;
+
+	return (get_tid(&tid) == E_OK && tid > 0 && tid <= TNUM_TSKID) ? tid : 0;
+}
+
+mm_segment_t get_fs(void)
+{
+	ID tid = calling_task();
+
+	return (tid && task_kernel_ds[tid]) ? KERNEL_DS : USER_DS;
+}
+
+void set_fs(mm_segment_t fs)
+{
+	ID tid = calling_task();
+
+	if (tid)
+		task_kernel_ds[tid] = segment_eq(fs, KERNEL_DS);
+}
+
+void lx_uaccess_boot(void)
+{
+	memset(task_kernel_ds, 0, sizeof(task_kernel_ds));
+}
 
 /*
  * How many bytes from p on the calling task may access with mode: n, or the
@@ -17,7 +50,7 @@ static size_t accessible_prefix(const void *p, size_t n, MODE mode)
 {
 	size_t ok = 0, bad = n;
 
-	if (n == 0 || prb_mem(p, (SIZE)n, TSK_SELF, mode) == E_OK)
+	if (n == 0 || prb_mem(p, (SIZE)n, TSK_SELF, mode) == E_OK || uaccess_kernel())
 		return n;
 	while (bad - ok > 1) {
 		size_t mid = ok + (bad - ok) / 2;
@@ -123,7 +156,7 @@ bool lx_access_ok(const void __user *addr, unsigned long size, int write)
 	if (sns_ctx())
 		return false;
 	return prb_mem((__force const void *)addr, (SIZE)size, TSK_SELF,
-		       write ? TPM_WRITE : TPM_READ) == E_OK;
+		       write ? TPM_WRITE : TPM_READ) == E_OK || uaccess_kernel();
 }
 
 int lx_get_user(void *val, const void __user *ptr, size_t size)

@@ -14,6 +14,11 @@
  * - strncpy_from_user: the string length, count if no NUL in count bytes, or -EFAULT.
  * - access_ok(addr, size) (also 2.6.33's access_ok(type, addr, size)):
  *   whether the calling task may access the range (VERIFY_WRITE: write).
+ * get_fs/set_fs (2.6.33's address limit, per task): after set_fs(KERNEL_DS)
+ * the copies also accept kernel memory the task's domain may not touch - how
+ * a hack hands the driver a buffer of its own (on HRP2 a service routine's
+ * stack is not in the caller's domain); restore the old limit afterwards.
+ * The domain check still comes first, so user copies cost nothing extra.
  * They may sleep in Linux (page faults): calling them outside task context
  * or in an atomic section is reported as a context bug, and outside task
  * context (there is no calling domain) nothing is copied.
@@ -28,6 +33,21 @@
 
 #define VERIFY_READ	0
 #define VERIFY_WRITE	1
+
+/* The address limit of the calling task (2.6.33's set_fs/get_fs). */
+typedef struct {
+	unsigned long seg;
+} mm_segment_t;
+
+#define KERNEL_DS		((mm_segment_t){ 0UL })
+#define USER_DS			((mm_segment_t){ 1UL })
+#define segment_eq(a, b)	((a).seg == (b).seg)
+#define uaccess_kernel()	segment_eq(get_fs(), KERNEL_DS)
+
+/* The calling task's address limit (USER_DS outside task context). */
+mm_segment_t get_fs(void);
+/* Sets the calling task's address limit (ignored outside task context). */
+void set_fs(mm_segment_t fs);
 
 /* Copies n bytes of user memory at from to to; returns the bytes not copied. */
 unsigned long copy_from_user(void *to, const void __user *from, unsigned long n);

@@ -99,5 +99,7 @@ void lx_iomap_boot(void);
 void lx_resource_boot(void);
 /* Resets the device registry (lx_io_boot). */
 void lx_devfs_boot(void);
+/* Puts every task back to USER_DS (lx_io_boot). */
+void lx_uaccess_boot(void);
 
 #endif /* _LINUX_COMPAT_IRQ_H */

@@ -156,6 +156,22 @@ static void test_interrupt_context(void)
 	(void)free_irq(IRQ_DA8XX_EVTOUT2, &dev);
 }
 
+/* set_fs(KERNEL_DS): how a hack hands the driver a buffer of its own. */
+static void test_address_limit(void)
+{
+	mm_segment_t old = get_fs();
+
+	ok(segment_eq(old, USER_DS), "a task starts with USER_DS");
+	is_int(copy_from_user(kbuf, GAP, 16), 16, "memory outside the domain is refused under USER_DS");
+	set_fs(KERNEL_DS);
+	ok(uaccess_kernel(), "set_fs(KERNEL_DS) takes effect");
+	is_int(copy_from_user(kbuf, GAP, 16), 0, "and the same copy is accepted");
+	is_int(copy_to_user(GAP, kbuf, 16), 0, "copy_to_user too");
+	ok(access_ok(GAP, 16), "access_ok too");
+	set_fs(old);
+	is_int(copy_from_user(kbuf, GAP, 16), 16, "refused again after set_fs(old)");
+}
+
 static void test_kernel_task(void)
 {
 	is_int(copy_from_user(kbuf, GAP, 16), 0, "a kernel-domain task may copy from anywhere");
@@ -163,13 +179,14 @@ static void test_kernel_task(void)
 
 int main(void)
 {
-	tap_plan(50);
+	tap_plan(58);
 	memset(arena, 0, sizeof(arena));
 	memset(RW, 0x11, 1024);
 	memset(RO, 0x33, 1024);
 	rtos_host_trace_set_sink(count_probes, NULL);
 	ok(lx_test_run_in(test_copies, 1, &extra), "user-domain task ran");
 	rtos_host_trace_set_sink(NULL, NULL);
+	ok(lx_test_run_in(test_address_limit, 1, &extra), "address-limit task ran");
 	ok(lx_test_run(test_interrupt_context), "interrupt test ran");
 	ok(lx_test_run(test_kernel_task), "kernel task ran");
 	return tap_done();
