@@ -624,11 +624,13 @@ static void publish(const struct pwm_port *p, struct lms_motor_data *md, bool co
 static enum hrtimer_restart control_tick(struct hrtimer *timer)
 {
 	ktime_t now = ktime_get();
-	u32 stamp = stamp_now();
+	u32 stamp;
 	int i;
 
 	hrtimer_forward_now(timer, ms_to_ktime(CONTROL_PERIOD_MS));
 	spin_lock(&pwm_lock);
+	/* Read under the lock: an edge stamped after it would look like a silence. */
+	stamp = stamp_now();
 	for (i = 0; i < LMS_PWM_PORTS; i++) {
 		struct pwm_port *p = &ports[i];
 
