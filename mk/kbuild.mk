@@ -20,3 +20,16 @@ kbuild-check: deps-check
 	if [ $$status != 0 ] || [ -n "$$warnings" ]; then \
 		cat $(KBUILD_OUT)/build.log; echo "kbuild-check: FAILED"; exit 1; fi; \
 	ls $(KBUILD_OUT)/*.ko | sed 's/^/kbuild-check: built /'; echo "kbuild-check: clean (no warnings)"
+
+# `make verbatim-check`: ev3_drivers/ holds genuine Linux only — no RTOS, simulator or
+# hack identifiers, and no #ifdef for them (the hack files adapt the drivers instead).
+VERBATIM_FORBIDDEN := TOPPERS|sil_[a-z]|host_sim|rtos|ER_UINT|cal_svc|prb_mem|EV3LX|__HOST__|\blx_[a-z]|_hack|kernel\.h"|t_stddef
+
+.PHONY: verbatim-check
+verbatim-check:
+	@hits=$$(grep -nE '$(VERBATIM_FORBIDDEN)' ev3_drivers/*.[ch] ev3_drivers/Kbuild || true); \
+	if [ -n "$$hits" ]; then echo "$$hits"; \
+		echo "verbatim-check: ev3_drivers/ mentions the RTOS, the simulator or the hacks"; exit 1; fi; \
+	echo "verbatim-check: $(words $(wildcard ev3_drivers/*.[ch])) files in ev3_drivers/ are RTOS- and simulator-free"
+
+TEST_SUITE_EXTRA += verbatim-check kbuild-check
