@@ -19,6 +19,7 @@
 #include "host_sim/devices/pwm.h"
 #include "host_sim/devices/spi_adc.h"
 #include "host_sim/devices/uart16550.h"
+#include "host_sim/devices/ev3_ui.h"
 
 #define PULLUP_OHMS       10000U
 #define EV3_TOUCH_ID_OHMS 2200U
@@ -685,5 +686,5 @@ static const struct hs_device ev3_ports_device = { "EV3_PORTS", ports_create, NU
 const struct hs_device *const ev3_board_devices[] = {
 	&ev3_ehrpwm1_device, &ev3_ecap0_device, &ev3_ecap1_device, &ev3_spi0_device,
 	&ev3_uart1_device, &ev3_uart0_device, &ev3_suart_in3_device, &ev3_suart_in4_device,
-	&ev3_ports_device, NULL,
+	&ev3_ports_device, &ev3_ui_device, NULL,
 };

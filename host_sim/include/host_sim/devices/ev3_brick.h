@@ -23,7 +23,8 @@
 #include "host_sim/devices/uart_sensor.h"
 
 /* Every EV3 peripheral model (eHRPWM1, eCAP0/1, SPI0 + ADC, the four port
- * UARTs, the ports), NULL-terminated, for hs_board_cfg.devices. */
+ * UARTs, the ports, the brick buttons and LEDs of ev3_ui.h), NULL-terminated,
+ * for hs_board_cfg.devices. */
 extern const struct hs_device *const ev3_board_devices[];
 
 /* Battery voltage in mV (default 9000); motors and the ADC follow it. */
