@@ -1,0 +1,56 @@
+/*
+ * ui_hack.h — d_ui's interface on the RTOS: extended service calls
+ * (function codes 48..63 are d_ui's) and the configuration fragment that
+ * defines them.  Plain TOPPERS C: applications and the api include it.
+ *
+ * Reading a button needs no service call: ui_svc_map() gives d_ui's shared
+ * page, whose pressed[] bytes (lms_ui.h, LEGO's button order) follow the
+ * debounced buttons.
+ *
+ * Every call checks its arguments and returns a TOPPERS code:
+ *   E_PAR   a pattern outside '0'..'9', or a timeout below TMO_FEVR
+ *   E_MACV  a buffer the calling task may not write
+ *   E_CTX   called from non-task context
+ *   E_OBJ   the driver is not loaded (its module_init failed)
+ *   E_TMOUT no click within the timeout (TMO_POL: none queued)
+ *   E_RLWAI the wait was ended by rel_wai (how a task waiting for clicks is stopped)
+ */
+#ifndef EV3LX_UI_HACK_H
+#define EV3LX_UI_HACK_H
+
+#include "kernel.h"
+#include "rtos_cfg.h"
+#include "lms_ui.h"
+
+#define UI_FN_LED         48  /* (uint_t pattern): write() of LMS_UI_LED_* ('0'..'9') */
+#define UI_FN_MAP         49  /* (const struct lms_ui **out): address of the shared page */
+#define UI_FN_WAIT_CLICK  50  /* (struct lms_ui_click *out, TMO tmout): the oldest click */
+#define UI_FN_FIRST       48
+#define UI_FN_LAST        63  /* the range reserved for d_ui */
+
+/* The DEF_SVC rows (INCLUDE it in the application's configuration). */
+extern const struct rtos_cfg ui_hack_cfg;
+
+/* Shows LED pattern LMS_UI_LED_OFF..LMS_UI_LED_ORANGE_PULSE on both LEDs. */
+static inline ER ui_svc_led(uint_t pattern)
+{
+	return (ER)cal_svc(UI_FN_LED, (intptr_t)pattern, 0, 0, 0, 0);
+}
+
+/* The driver's shared page (pressed[], counters), read-only for callers. */
+static inline ER ui_svc_map(const struct lms_ui **out)
+{
+	return (ER)cal_svc(UI_FN_MAP, (intptr_t)out, 0, 0, 0, 0);
+}
+
+/*
+ * Takes the oldest click off d_ui's queue into *out, waiting at most tmout ms
+ * for one (TMO_POL: no wait, TMO_FEVR: no limit).  Clicks go to one caller
+ * each: tasks waiting at the same time share the clicks.
+ */
+static inline ER ui_svc_wait_click(struct lms_ui_click *out, TMO tmout)
+{
+	return (ER)cal_svc(UI_FN_WAIT_CLICK, (intptr_t)out, (intptr_t)tmout, 0, 0, 0);
+}
+
+#endif /* EV3LX_UI_HACK_H */
