@@ -274,7 +274,9 @@ static bool ui_button_settle(struct ui_button *b)
 		WRITE_ONCE(ui.shm->presses[index], ui.shm->presses[index] + 1);
 		return false;
 	}
-	return ui_queue_click(index, ktime_ms_delta(b->edge, b->pressed_at));
+	/* Rounded: the two edges' interrupts may be served a few microseconds apart. */
+	return ui_queue_click(index, ktime_to_ms(ktime_add_ns(ktime_sub(b->edge, b->pressed_at),
+							      NSEC_PER_MSEC / 2)));
 }
 
 static enum hrtimer_restart ui_debounce_expired(struct hrtimer *timer)
