@@ -16,7 +16,7 @@ check() {  # check NAME REPORTED FILES...
 	else echo "not ok - $name: report says $reported, cloc SUM says $expected"; fail=1; fi
 }
 csvv() { awk -F, -v k="$1" -v c="$2" '$1 == k { print $c }' "$out/reuse.csv"; }
-reused=(); for m in pwm analog uart; do for f in ev3_drivers/d_$m.c ev3_drivers/lms_$m.h; do [ -f "$f" ] && reused+=("$f"); done; done
+reused=(); for d in ev3_drivers/d_*.c; do m=${d#ev3_drivers/d_}; m=${m%.c}; for f in "$d" "ev3_drivers/lms_$m.h"; do [ -f "$f" ] && reused+=("$f"); done; done
 glue=(); while IFS= read -r f; do glue+=("$f"); done < <(find hacks -type f \( -name '*.c' -o -name '*.h' \) 2>/dev/null | sort)
 shim=(); while IFS= read -r f; do shim+=("$f"); done < <(find linux_compat rtos_stub/include rtos_stub/src -type f \( -name '*.c' -o -name '*.h' -o -name '*.S' \) 2>/dev/null | sort)
 check "reused total" "$(csvv total 3)" "${reused[@]}"

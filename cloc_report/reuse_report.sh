@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # reuse_report.sh — reused versus written lines, counted by cloc (issue 9).
 #
-#   reuse_report.sh OUTDIR                      ev3lx's own modules (pwm, analog, uart)
+#   reuse_report.sh OUTDIR                      ev3lx's own modules (one per ev3_drivers/d_*.c)
 #   reuse_report.sh OUTDIR REUSED GLUE [SHIM]   any port: dirs or files, space-separated
 #
 # Every number is a sum of cloc's own per-file "code" counts (--by-file, with
@@ -50,7 +50,8 @@ if [ $# -ge 2 ]; then
 	mapfile -t shim < <(expand ${3:-})
 	modules=(custom)
 else
-	modules=(pwm analog uart)
+	# one module per driver: ev3_drivers/d_<m>.c with hacks/<m>_hack.[ch]
+	modules=(); for f in ev3_drivers/d_*.c; do m=${f#ev3_drivers/d_}; modules+=("${m%.c}"); done
 	mapfile -t shim < <(expand linux_compat rtos_stub/include rtos_stub/src)
 fi
 mapfile -t tests < <(expand tests)
@@ -63,7 +64,7 @@ for m in "${modules[@]}"; do
 	else
 		drv=ev3_drivers/d_$m.c
 		r_files=(); for f in "$drv" "ev3_drivers/lms_$m.h"; do [ -f "$f" ] && r_files+=("$f"); done
-		g_files=(); [ -f "hacks/${m}_hack.c" ] && g_files+=("hacks/${m}_hack.c")
+		g_files=(); for f in "hacks/${m}_hack.c" "hacks/${m}_hack.h"; do [ -f "$f" ] && g_files+=("$f"); done
 		src_h=$(hash_of "$drv")
 		kb_src=$(sed -n "s/^source_.*d_$m.o := //p" "build/kbuild/.d_$m.o.cmd" 2>/dev/null | head -n 1 || true)
 		kb_h=$(hash_of "$kb_src")
@@ -87,7 +88,8 @@ shim_code=$(cloc_code "${shim[@]}")
 test_code=$(cloc_code "${tests[@]}")
 shared_glue=0
 if [ "${modules[0]}" != custom ]; then
-	mapfile -t shared_hacks < <(expand hacks | grep -vE '/(pwm|analog|uart)_hack\.c$' || true)
+	per_module=$(IFS='|'; echo "${modules[*]}")
+	mapfile -t shared_hacks < <(expand hacks | grep -vE "/($per_module)_hack\.[ch]\$" || true)
 	shared_glue=$(cloc_code "${shared_hacks[@]}")
 fi
 written=$((total_glue + shared_glue))
