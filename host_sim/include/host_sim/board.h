@@ -60,7 +60,7 @@ struct hs_device {
 
 struct hs_board_cfg {
 	/* Peripheral models to create, NULL-terminated (e.g. the table the
-	 * devices headers provide); NULL: core peripherals only. */
+	 * devices headers provide: ev3_board_devices); NULL: core peripherals only. */
 	const struct hs_device *const *devices;
 	/* Virtual CPU time one register access costs; 0: HS_ACCESS_NS_DEFAULT. */
 	uint32_t access_ns;
