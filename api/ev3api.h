@@ -139,17 +139,42 @@ typedef enum {
 
 typedef void (*ev3_button_handler_t)(intptr_t exinf);
 
-/* Both brick LEDs.  E_PAR. */
+/* Both brick LEDs.  E_PAR, E_CTX. */
 ER ev3_led_set_color(ledcolor_t color);
-/* Whether the button is held down now.  E_ID, E_MACV. */
+/* Whether the button is held down now (debounced).  E_ID, E_MACV. */
 ER ev3_button_is_pressed(button_t button, bool *p_pressed);
-/* Calls handler(exinf) in a task (not in the GPIO interrupt) each time the
- * button is released after a press; NULL removes it.  E_ID. */
+/* Calls handler(exinf) in the button task (not in the GPIO interrupt) each
+ * time the button is released after a press; NULL removes it.  E_ID, E_CTX. */
 ER ev3_button_set_on_clicked(button_t button, ev3_button_handler_t handler, intptr_t exinf);
+
+/*
+ * The button task that runs click handlers, and the semaphore guarding the
+ * handler table: IDs reserved from the top of the application ranges
+ * (linux_compat holds task TNUM_TSKID).  The task runs in user domain
+ * EV3_BUTTON_TASK_DOMAIN (the application's by convention; TDOM_KERNEL for
+ * applications without user domains), so handlers have that domain's rights.
+ * rel_wai(EV3_BUTTON_TSKID) stops it cleanly; act_tsk starts it again.
+ * Each may be overridden at build time (-D).
+ */
+#ifndef EV3_BUTTON_TSKID
+#define EV3_BUTTON_TSKID          (TNUM_TSKID - 1)
+#endif
+#ifndef EV3_BUTTON_SEMID
+#define EV3_BUTTON_SEMID          TNUM_SEMID
+#endif
+#ifndef EV3_BUTTON_TASK_PRIORITY
+#define EV3_BUTTON_TASK_PRIORITY  5
+#endif
+#ifndef EV3_BUTTON_TASK_DOMAIN
+#define EV3_BUTTON_TASK_DOMAIN    1
+#endif
+#ifndef EV3_BUTTON_TASK_STACK
+#define EV3_BUTTON_TASK_STACK     (16 * 1024)
+#endif
 
 /* ---- Configuration ---- */
 
-/* What an application INCLUDEs: linux_compat, the three drivers' service calls,
+/* What an application INCLUDEs: linux_compat, the four drivers' service calls,
  * the API's button task, and the memory regions the API reads. */
 extern const struct rtos_cfg ev3api_cfg;
 

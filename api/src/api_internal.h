@@ -19,5 +19,9 @@ static inline bool api_can_write(const void *p, SIZE size)
 /* Forget everything of a previous boot (ATT_INI of ev3api_cfg, in config.c). */
 void api_motor_boot(void);
 void api_sensor_boot(void);
+void api_brick_boot(void);
+
+/* The button task's body (CRE_TSK EV3_BUTTON_TSKID in config.c): runs click handlers. */
+void api_button_task(intptr_t exinf);
 
 #endif /* EV3API_INTERNAL_H */

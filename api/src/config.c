@@ -11,14 +11,28 @@ static void api_boot(intptr_t exinf)
 	(void)exinf;
 	api_motor_boot();
 	api_sensor_boot();
+	api_brick_boot();
 }
 
 static const struct rtos_ini_cfg api_inis[] = { { api_boot, 0 } };
+
+/* The button task runs click handlers (ev3_button_set_on_clicked) in task context. */
+static const struct rtos_task_cfg api_tasks[] = {
+	{ EV3_BUTTON_TSKID, TA_ACT, 0, api_button_task, EV3_BUTTON_TASK_PRIORITY,
+	  EV3_BUTTON_TASK_STACK, EV3_BUTTON_TASK_DOMAIN, "ev3api buttons" },
+};
+
+/* Guards the click-handler table (handler and exinf change together). */
+static const struct rtos_sem_cfg api_sems[] = {
+	{ EV3_BUTTON_SEMID, TA_TPRI, 1, 1, "ev3api click handlers" },
+};
 
 static const struct rtos_cfg *const api_includes[] = { &ev3_drivers_cfg, NULL };
 
 const struct rtos_cfg ev3api_cfg = {
 	.name = "ev3api_cfg",
+	.tasks = RTOS_TABLE(api_tasks),
+	.sems = RTOS_TABLE(api_sems),
 	.inis = RTOS_TABLE(api_inis),
 	.includes = api_includes,
 };
