@@ -237,7 +237,9 @@ bool lx_might_sleep_check(const char *what, const char *file, int line)
 {
 	char why[128];
 
-	if (!lx_context_forbids_sleep(why, sizeof(why)))
+	/* The common case costs a few flag tests; the reason is only put into
+	 * words when there is something to report. */
+	if (!lx_in_atomic() || !lx_context_forbids_sleep(why, sizeof(why)))
 		return true;
 	lx_report("sleeping function called from invalid context", file, line,
 		  "%s; context: %s", what != NULL ? what : "?", why);
