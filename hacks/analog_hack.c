@@ -10,14 +10,20 @@
 #include <linux/module.h>
 #include <linux_compat/devfs.h>
 
-/* Rename: the driver's module_init becomes a plain pointer, called by ours below. */
+/* Renames: the driver's module_init/exit become plain pointers, called by ours below. */
+#pragma push_macro("module_init")
+#pragma push_macro("module_exit")
 #undef module_init
+#undef module_exit
 #define module_init(fn) static int (*const analog_driver_init)(void) = fn
+#define module_exit(fn) static void (*const analog_driver_exit)(void) = fn
 
 #include "d_analog.c"
 
 #undef module_init
-#define module_init(fn) device_initcall(fn)
+#undef module_exit
+#pragma pop_macro("module_init")
+#pragma pop_macro("module_exit")
 
 #include "analog_hack.h"
 
@@ -46,7 +52,7 @@ static int __init analog_hack_init(void)
 		lx_dev_close(dcm_file);
 		lx_dev_close(analog_file);
 		analog_file = dcm_file = NULL;
-		analog_exit();
+		analog_driver_exit();
 		goto fail;
 	}
 	analog_map_addr = map;
@@ -57,6 +63,19 @@ fail:
 	return ret;
 }
 module_init(analog_hack_init);
+
+/* Closes the devices (the service calls then answer E_OBJ), then unloads d_analog. */
+static void __exit analog_hack_exit(void)
+{
+	struct file *adc = analog_file, *dcm = dcm_file;
+
+	analog_file = dcm_file = NULL;
+	analog_map_addr = NULL;
+	lx_dev_close(dcm);
+	lx_dev_close(adc);
+	analog_driver_exit();
+}
+module_exit(analog_hack_exit);
 
 /* A driver result as a TOPPERS error code (E_OK for non-negative results). */
 static ER analog_er(long ret)

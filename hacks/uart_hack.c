@@ -10,7 +10,15 @@
 #include <linux/module.h>
 #include <linux_compat/devfs.h>
 
+/* Rename: the driver's module_exit becomes a plain pointer, called by ours below. */
+#pragma push_macro("module_exit")
+#undef module_exit
+#define module_exit(fn) static void (*const uart_driver_exit)(void) = fn
+
 #include "d_uart.c"
+
+#undef module_exit
+#pragma pop_macro("module_exit")
 
 #include "uart_hack.h"
 #ifdef EV3LX_HOST
@@ -41,6 +49,21 @@ static struct file *uart_hack_file(void)
 	mutex_unlock(&uart_hack_mutex);
 	return uart_file;
 }
+
+/* Closes the device the service calls opened, then unloads d_uart. */
+static void __exit uart_hack_exit(void)
+{
+	struct file *file;
+
+	mutex_lock(&uart_hack_mutex);
+	file = uart_file;
+	uart_file = NULL;
+	uart_map = NULL;
+	mutex_unlock(&uart_hack_mutex);
+	lx_dev_close(file);
+	uart_driver_exit();
+}
+module_exit(uart_hack_exit);
 
 /* A driver result as a TOPPERS error code (E_OK for non-negative results). */
 static ER uart_er(long ret)

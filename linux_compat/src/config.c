@@ -20,6 +20,10 @@ static const struct rtos_ini_cfg lx_inis[] = {
 	{ lx_compat_boot, 0 },
 };
 
+static const struct rtos_ter_cfg lx_ters[] = {
+	{ lx_compat_terminate, 0 },
+};
+
 static const struct rtos_cfg *const lx_includes[] = {
 	&linux_irq_cfg,
 	NULL,
@@ -30,5 +34,6 @@ const struct rtos_cfg linux_compat_cfg = {
 	.tasks = RTOS_TABLE(lx_tasks),
 	.isrs = RTOS_TABLE(lx_isrs),
 	.inis = RTOS_TABLE(lx_inis),
+	.ters = RTOS_TABLE(lx_ters),
 	.includes = lx_includes,
 };

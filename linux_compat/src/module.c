@@ -151,6 +151,24 @@ void lx_modules_exit(void)
 	}
 }
 
+/* Forgets every module's state (boot): each is uninitialised again, as after a power cycle. */
+void lx_modules_reset(void)
+{
+	struct module *mod;
+	size_t i, n = initcall_count();
+
+	live_modules = NULL;
+	for (i = 0; i < n; i++) {
+		mod = __start_lx_initcalls[i]->module;
+		if (mod != NULL) {
+			mod->state = MODULE_STATE_UNFORMED;
+			mod->init_result = 0;
+			mod->refcnt = 0;
+			mod->next_live = NULL;
+		}
+	}
+}
+
 /* The linked module called name, or NULL. */
 struct module *lx_module_find(const char *name)
 {

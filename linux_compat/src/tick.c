@@ -2,6 +2,7 @@
  * tick.c — linux_compat's ISR on the RTOS tick, and its boot-time reset.
  */
 #include <linux/kernel.h>
+#include <linux/module.h>
 #include <linux_compat/clock.h>
 #include <linux_compat/config.h>
 #include <linux_compat/context.h>
@@ -20,10 +21,11 @@ void lx_tick_isr(intptr_t exinf)
 	lx_timers_run_due();
 }
 
-/* ATT_INI: a fresh system has no timers, locks, waiters or work. */
+/* ATT_INI: a fresh system has no timers, locks, waiters or work, and no module is loaded. */
 void lx_compat_boot(intptr_t exinf)
 {
 	(void)exinf;
+	lx_modules_reset();
 	lx_clock_reset();
 	lx_context_reset();
 	lx_sched_reset();

@@ -36,17 +36,21 @@ static struct {
 	u64 running_seq;             /* the instance running now, or 0 */
 	const struct work_struct *running;
 	bool ready;                  /* module inits done */
+	bool unload_requested;       /* lx_worker_request_unload was called */
+	bool unloaded;               /* ...and the worker has run every module_exit */
 } wq;
 
 static DECLARE_WAIT_QUEUE_HEAD(flush_waiters);
+static DECLARE_WAIT_QUEUE_HEAD(unload_waiters);
 
-/* Forgets queued work and frees the pool. */
+/* Forgets queued work, the pool and any unload request. */
 void lx_workqueue_reset(void)
 {
 	memset(&wq, 0, sizeof(wq));
 	wq.next_seq = 1;
 	memset(wq_pool, 0, sizeof(wq_pool));
 	lx_init_waitqueue_head(&flush_waiters, "flush_waiters");
+	lx_init_waitqueue_head(&unload_waiters, "unload_waiters");
 }
 
 /* True in the worker task. */
@@ -435,14 +439,53 @@ void destroy_workqueue(struct workqueue_struct *q)
 		q->in_use = false;
 }
 
-/* The worker task: every module_init, then work forever. */
+/* Asks the worker to unload every module (any context; the worker does it when it next runs). */
+void lx_worker_request_unload(void)
+{
+	WRITE_ONCE(wq.unload_requested, true);
+	lx_wake_task(LX_WORKER_TSKID);
+}
+
+/* True once the worker has run every module_exit after a request. */
+bool lx_worker_unloaded(void)
+{
+	return READ_ONCE(wq.unloaded);
+}
+
+/* Sleeps the calling task until the worker has unloaded the modules. */
+void lx_worker_wait_unloaded(void)
+{
+	wait_event(unload_waiters, lx_worker_unloaded());
+}
+
+/*
+ * In the worker: every module_exit, newest first.  The worker runs at the
+ * highest task priority meanwhile, so application tasks still running
+ * cannot call into a driver half-way through its unload unless the exit
+ * sleeps.  Work queued by the exits is served afterwards, as before.
+ */
+static void unload_modules(void)
+{
+	PRI pri = LX_WORKER_PRIORITY;
+
+	(void)get_pri(TSK_SELF, &pri);
+	(void)chg_pri(TSK_SELF, TMIN_TPRI);
+	lx_modules_exit();
+	WRITE_ONCE(wq.unloaded, true);
+	wake_up_all(&unload_waiters);
+	(void)chg_pri(TSK_SELF, pri);
+}
+
+/* The worker task: every module_init, then work until the modules are unloaded, then work. */
 void lx_worker_task(intptr_t exinf)
 {
 	(void)exinf;
 	(void)lx_modules_init();
 	wq.ready = true;
 	for (;;) {
-		if (!run_one())
+		if (READ_ONCE(wq.unload_requested) && !wq.unloaded)
+			unload_modules();
+		else if (!run_one())
 			(void)slp_tsk();
 	}
 }

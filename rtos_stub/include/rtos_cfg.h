@@ -3,7 +3,7 @@
  *
  * Each table row is one static API of the TOPPERS configurator:
  * CRE_TSK, CRE_SEM, CRE_FLG, CRE_CYC, CRE_ALM, CFG_INT, ATT_ISR, ATT_INI,
- * DEF_SVC, and HRP2's memory regions per protection domain.  On the host the
+ * ATT_TER, DEF_SVC, and HRP2's memory regions per protection domain.  On the host the
  * tables are checked at rtos_boot (a bad row is a clear boot error naming the
  * row); on the AM1808 the same objects are written into the HRP2 .cfg
  * (docs/porting-to-hrp2.md).
@@ -94,6 +94,11 @@ struct rtos_ini_cfg {       /* ATT_INI: runs at boot in non-task context, in tab
 	intptr_t exinf;
 };
 
+struct rtos_ter_cfg {       /* ATT_TER: runs at kernel termination, in reverse order of registration */
+	TERRTN   terrtn;
+	intptr_t exinf;
+};
+
 struct rtos_svc_cfg {       /* DEF_SVC */
 	FN     fncd;             /* 1..TNUM_FNCD */
 	EXTSVC extsvc;
@@ -120,6 +125,7 @@ struct rtos_cfg {
 	const struct rtos_int_cfg  *ints;    uint_t nints;
 	const struct rtos_isr_cfg  *isrs;    uint_t nisrs;
 	const struct rtos_ini_cfg  *inis;    uint_t ninis;
+	const struct rtos_ter_cfg  *ters;    uint_t nters;
 	const struct rtos_svc_cfg  *svcs;    uint_t nsvcs;
 	const struct rtos_mem_cfg  *mems;    uint_t nmems;
 	/* INCLUDE(): other configurations merged in, e.g. linux_compat's. NULL-terminated. */

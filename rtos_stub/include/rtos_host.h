@@ -28,7 +28,10 @@ ER rtos_host_boot(const struct rtos_cfg *cfg);
  * empty after a successful boot. */
 const char *rtos_host_boot_error(void);
 
-/* Ends the current boot: frees task stacks, forgets objects and events. */
+/* Ends the current boot like ext_ker: runs the ATT_TER routines (reverse
+ * registration order, in the harness's non-task context "ter" with the
+ * system still running, so they may use i-calls and rtos_host_run_* to let
+ * tasks finish work), then frees task stacks, forgets objects and events. */
 void rtos_host_shutdown(void);
 
 /* Runs the system until virtual time now+ns (tasks, ticks, events, ISRs). */
@@ -120,7 +123,8 @@ const char *rtos_host_last_bug(void);
 
 /* ---- Context introspection for layers above ---- */
 
-/* A name for the current context: "task <name>", "isr <intno>", "cyclic <id>", "alarm <id>", "init", "idle". */
+/* A name for the current context: "task <name>", "isr <intno>", "cyclic <id>", "alarm <id>", "init",
+ * "event", "ter" (the harness during ATT_TER routines), "idle". */
 const char *rtos_host_context_name(void);
 /* The domain of the calling task (TDOM_KERNEL in non-task context). */
 ID rtos_host_current_domain(void);

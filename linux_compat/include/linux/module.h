@@ -17,6 +17,14 @@
  * is logged and its module_exit is never called.  lx_modules_exit() runs
  * the module_exit of every initialised module in reverse order.
  *
+ * At shutdown linux_compat's ATT_TER has the worker call lx_modules_exit()
+ * (task context: exits may sleep), as rmmod/power-off would; every boot
+ * starts with all modules uninitialised (lx_modules_reset in the ATT_INI),
+ * so each boot runs every module_init again.  Unlike insmod, a module's
+ * static data is not reloaded between an exit and the next init: a driver's
+ * init must set up all its state (as one written for built-in and
+ * modular use does), and module parameters keep their last value.
+ *
  * A module's object file must be part of the link: an archive member that
  * nothing references is not pulled in, and neither are its initcalls.
  */
@@ -138,6 +146,8 @@ int module_refcount(struct module *mod);
 int lx_modules_init(void);
 /* Runs module_exit of every live module in reverse init order; modules become uninitialised. */
 void lx_modules_exit(void);
+/* Marks every module uninitialised without running anything (linux_compat's boot reset). */
+void lx_modules_reset(void);
 /* The struct module linked under name, or NULL. */
 struct module *lx_module_find(const char *name);
 

@@ -8,7 +8,13 @@
  *     at boot (linux/module.h), then serves the workqueues;
  *   - the ISR lx_tick_isr on the tick line INTNO_TICK (hrtimers, jiffies,
  *     timer_list, deferred wakeups);
- *   - the ATT_INI lx_compat_boot, which resets linux_compat's state;
+ *   - the ATT_INI lx_compat_boot, which resets linux_compat's state: no
+ *     module is loaded, so every boot runs every module_init again;
+ *   - the ATT_TER lx_compat_terminate: at shutdown the worker runs every
+ *     module_exit, newest module first, in task context (they may sleep),
+ *     before the kernel stops (linux_compat/shutdown.h: on the host the
+ *     routine runs the system until the worker is done; on HRP2, where
+ *     ext_ker has stopped dispatching, a task calls lx_compat_unload first);
  *   - linux_irq_cfg: the Linux interrupt lines (CFG_INT + ATT_ISR rows, see
  *     linux_compat/irq.h) - do not include it a second time.
  * Reserved IDs: task TNUM_TSKID.  No semaphores, eventflags, cyclics or
@@ -39,7 +45,9 @@ extern const struct rtos_cfg linux_irq_cfg;
 
 /* ATT_INI of linux_compat_cfg: clears all linux_compat state (a fresh boot). */
 void lx_compat_boot(intptr_t exinf);
-/* The worker task's body: module inits, then the workqueues. */
+/* ATT_TER of linux_compat_cfg: the worker unloads every module before the kernel stops. */
+void lx_compat_terminate(intptr_t exinf);
+/* The worker task's body: module inits, then the workqueues (and the unload at shutdown). */
 void lx_worker_task(intptr_t exinf);
 
 #endif /* _LINUX_COMPAT_CONFIG_H */

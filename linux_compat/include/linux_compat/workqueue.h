@@ -10,5 +10,12 @@ void lx_workqueue_reset(void);
 bool lx_in_worker(void);
 /* True once the worker has run the module inits and serves work. */
 bool lx_worker_ready(void);
+/* Asks the worker to run every module_exit (lx_modules_exit) when it next
+ * runs; any context.  The request lasts until the next boot. */
+void lx_worker_request_unload(void);
+/* True once the worker has done so. */
+bool lx_worker_unloaded(void);
+/* Sleeps the calling task (not the worker) until lx_worker_unloaded(). */
+void lx_worker_wait_unloaded(void);
 
 #endif /* _LINUX_COMPAT_WORKQUEUE_H */

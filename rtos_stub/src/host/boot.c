@@ -2,7 +2,9 @@
  * boot.c — boot and shutdown: checks the static configuration (with its
  * INCLUDEs) row by row, creates the objects, runs the ATT_INI routines and
  * activates TA_ACT tasks.  A bad row is a boot error naming the
- * configuration, the table and the row, and an E_* return.
+ * configuration, the table and the row, and an E_* return.  Shutdown runs
+ * the ATT_TER routines (reverse order) while the system still exists, then
+ * frees everything.
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -15,6 +17,7 @@
 #define MAX_INCLUDE_DEPTH  8
 
 bool kernel_booted;
+bool terminating;
 
 static const struct rtos_cfg *configs[MAX_CONFIGS];
 static uint_t nconfigs;
@@ -291,6 +294,9 @@ static ER check_isrs_svcs_mems_inis(const struct rtos_cfg *cfg)
 	for (uint_t i = 0; i < cfg->ninis; i++)
 		if (cfg->inis[i].inirtn == NULL)
 			return boot_fail(cfg, "ATT_INI", i, NULL, E_PAR, "NULL initialisation routine");
+	for (uint_t i = 0; i < cfg->nters; i++)
+		if (cfg->ters[i].terrtn == NULL)
+			return boot_fail(cfg, "ATT_TER", i, NULL, E_PAR, "NULL termination routine");
 	return E_OK;
 }
 
@@ -316,14 +322,36 @@ static void free_objects(void)
 	run_active = false;
 }
 
-/* Ends the current boot: frees task stacks, forgets objects and events. */
+/*
+ * Runs the ATT_TER routines as ext_ker does: the reverse of the order in
+ * which they were registered (configurations and rows backwards, so a
+ * library initialised after the application is terminated before it).
+ * Unlike HRP2, where dispatching has stopped, they run in the harness's
+ * non-task context with the CPU unlocked and the system intact, so that a
+ * routine can hand work to a task with an i-call and run the system
+ * (rtos_host_run_*) until that work is done.
+ */
+static void run_termination_routines(void)
+{
+	terminating = true;
+	if (trace_on())
+		rtos_host_trace("kernel", "shutdown");
+	for (uint_t c = nconfigs; c-- > 0;)
+		for (uint_t i = configs[c]->nters; i-- > 0;)
+			configs[c]->ters[i].terrtn(configs[c]->ters[i].exinf);
+	terminating = false;
+}
+
+/* Runs the ATT_TER routines, then frees task stacks and forgets objects and events. */
 void rtos_host_shutdown(void)
 {
-	if (cpu.kind != EXEC_IDLE || cpu.isr_depth != 0 || run_active) {
+	if (cpu.kind != EXEC_IDLE || cpu.isr_depth != 0 || run_active || terminating) {
 		rtos_host_bug("harness", "rtos_host_shutdown from inside the kernel (%s)",
 			      rtos_host_context_name());
 		return;
 	}
+	if (kernel_booted)
+		run_termination_routines();
 	free_objects();
 	kernel_booted = false;
 }
@@ -333,7 +361,7 @@ ER rtos_host_boot(const struct rtos_cfg *cfg)
 {
 	ER ercd = E_OK;
 
-	if (cpu.kind != EXEC_IDLE || cpu.isr_depth != 0 || run_active) {
+	if (cpu.kind != EXEC_IDLE || cpu.isr_depth != 0 || run_active || terminating) {
 		rtos_host_bug("harness", "rtos_host_boot from inside the kernel (%s)", rtos_host_context_name());
 		return E_CTX;
 	}

@@ -110,7 +110,7 @@ const char *rtos_host_context_name(void)
 		snprintf(name, sizeof(name), "event");
 		break;
 	default:
-		snprintf(name, sizeof(name), "idle");
+		snprintf(name, sizeof(name), terminating ? "ter" : "idle");
 		break;
 	}
 	return name;

@@ -232,6 +232,7 @@ void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exin
 extern bool run_active;        /* inside rtos_host_run_* */
 extern uint64_t run_deadline;
 extern bool kernel_booted;
+extern bool terminating;       /* rtos_host_shutdown is running the ATT_TER routines */
 extern struct tcb *paused_task;   /* a task stopped at the run deadline inside rtos_host_consume */
 /* Enters the harness from a task paused at the run deadline mid-consume. */
 void pause_to_harness(void);
