@@ -215,6 +215,10 @@ static void motor_schedule_edge(struct ev3_motor *m)
 	dt = (boundary_deg * RAD_PER_DEG - m->seg_theta0) / m->seg_rate;
 	if (dt < 0)
 		dt = 0;
+	/* Compare in double first: at a near-zero rate dt is astronomically large,
+	 * and converting it to uint64_t ns would overflow into an edge "now". */
+	if (dt * 1e9 > (double)(m->seg_t1 - m->seg_t0))
+		return;
 	t = m->seg_t0 + (uint64_t)ceil(dt * 1e9);
 	if (t > m->seg_t1)
 		return;
