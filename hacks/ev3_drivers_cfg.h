@@ -1,7 +1,7 @@
 /*
- * ev3_drivers_cfg.h — the EV3's three drivers on the RTOS as one configuration
+ * ev3_drivers_cfg.h — the EV3's drivers on the RTOS as one configuration
  * fragment: linux_compat (worker task, tick ISR, Linux interrupt lines) plus
- * the service calls of pwm_hack, analog_hack and uart_hack, and read access
+ * the service calls of pwm_hack, analog_hack, uart_hack and ui_hack, and read access
  * for every user domain to the drivers' shared memory (their mmap areas live
  * in linux_compat's kmalloc pool).  Plain TOPPERS C: applications INCLUDE it.
  */
