@@ -58,13 +58,18 @@ static int __init ui_hack_init(void)
 }
 module_init(ui_hack_init);
 
-/* Closes the device (the service calls then answer E_OBJ), then unloads d_ui. */
+/*
+ * Withdraws the device (the service calls then answer E_OBJ), wakes the
+ * tasks waiting for a click so that they see it gone, then closes the file
+ * and unloads d_ui.  (In Linux an open file would keep the module loaded.)
+ */
 static void __exit ui_hack_exit(void)
 {
 	struct file *file = ui_file;
 
-	ui_file = NULL;
+	WRITE_ONCE(ui_file, NULL);
 	ui_map = NULL;
+	wake_up_all(&ui.readers);
 	lx_dev_close(file);
 	ui_driver_exit();
 }
@@ -163,12 +168,14 @@ static ER_UINT svc_ui_wait_click(intptr_t out, intptr_t tmout, intptr_t p3, intp
 		deadline = lx_clock_now_ns() + (uint64_t)tmout * NSEC_PER_MSEC;
 	init_poll_funcptr(&p.table, ui_poll_queue);
 	for (;;) {
-		ret = lx_dev_read(ui_file, (char __user *)out, sizeof(struct lms_ui_click), NULL);
+		struct file *file = READ_ONCE(ui_file);	/* NULL once d_ui is unloading */
+
+		ret = lx_dev_read(file, (char __user *)out, sizeof(struct lms_ui_click), NULL);
 		if (ret != -EAGAIN || tmout == TMO_POL)
 			break;
 		if (!p.queue) {
 			/* On the queue first, then look again: no wake_up falls in between. */
-			if (ui_file->f_op->poll(ui_file, &p.table) & EPOLLIN)
+			if (file->f_op->poll(file, &p.table) & EPOLLIN)
 				continue;
 			if (WARN_ON(!p.queue))
 				break;

@@ -4,7 +4,8 @@
  * foreign pointers, timeouts, non-task context), /dev/lms_ui's read, write,
  * poll and mmap as Linux user space calls them (short buffers, faults that
  * must lose no click, O_NONBLOCK, a blocking read woken by a click and
- * ended by rel_wai), and the module's life cycle: unload frees every pin,
+ * ended by rel_wai), and the module's life cycle: unload ends the waits in
+ * progress and frees every pin,
  * interrupt and byte, a reload works, a load that finds a pin taken fails
  * cleanly.
  */
@@ -202,9 +203,11 @@ static void life_cycle(void)
 	struct lx_heap_stats before, after;
 	int *r = life_cycle_results;
 
+	dly_tsk(20);		/* the test task is waiting for a click by now */
 	lx_heap_get_stats(&before);
 	lx_modules_exit();
 	lx_heap_get_stats(&after);
+	dly_tsk(30);		/* the woken test task runs and returns */
 	r[0] = !lx_dev_exists("/dev/" LMS_UI_DEVICE_NAME);
 	r[1] = after.in_use < before.in_use;
 	r[2] = all_obj();
@@ -247,8 +250,14 @@ static void module_life_cycle(void)
 		"every service call answers E_OBJ after the failed load",
 	};
 
+	struct lms_ui_click c;
+	uint64_t t0;
+
 	ui_svc_led(LMS_UI_LED_RED);
 	uit_start_helper(life_cycle);
+	t0 = uit_now_ms();
+	is_int(ui_svc_wait_click(&c, 1000), E_OBJ, "a wait in progress when d_ui unloads ends: E_OBJ");
+	ok(uit_now_ms() - t0 < 25, "at the unload, not at its timeout (%u ms)", (unsigned)(uit_now_ms() - t0));
 	dly_tsk(500);
 	for (unsigned i = 0; i < 12; i++)
 		ok(life_cycle_results[i], "%s", what[i]);
@@ -266,7 +275,7 @@ static void body(void)
 int main(void)
 {
 	uit_domain = 1;		/* a user domain: only its stack is its memory */
-	tap_plan(1 + 13 + 20 + 3 + 13);
+	tap_plan(1 + 13 + 20 + 3 + 15);
 	ok(uit_run(body, 9), "scenario ran to its end");
 	return tap_done();
 }
