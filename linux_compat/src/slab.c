@@ -477,6 +477,16 @@ void lx_heap_get_stats(struct lx_heap_stats *out)
 	SIL_UNL_INT();
 }
 
+/* Empties the pool (boot): it is rebuilt, poisoned, at the next use. */
+void lx_heap_reset(void)
+{
+	SIL_PRE_LOC;
+
+	SIL_LOC_INT();
+	heap_ready = false;
+	SIL_UNL_INT();
+}
+
 void lx_heap_reset_high_water(void)
 {
 	SIL_PRE_LOC;

@@ -6,6 +6,7 @@
 #include <linux_compat/clock.h>
 #include <linux_compat/config.h>
 #include <linux_compat/context.h>
+#include <linux_compat/heap.h>
 #include <linux_compat/sched.h>
 #include <linux_compat/workqueue.h>
 
@@ -26,6 +27,7 @@ void lx_compat_boot(intptr_t exinf)
 {
 	(void)exinf;
 	lx_modules_reset();
+	lx_heap_reset();
 	lx_clock_reset();
 	lx_context_reset();
 	lx_sched_reset();

@@ -41,6 +41,10 @@ struct lx_heap_stats {
 /* Fills *stats with a consistent snapshot of the pool.  Any context. */
 void lx_heap_get_stats(struct lx_heap_stats *stats);
 
+/* Empties the pool: every block is free and the statistics restart (linux_compat's
+ * boot reset - a fresh system; memory from an earlier boot must not be used any more). */
+void lx_heap_reset(void);
+
 /* Restarts the high-water mark at the current use.  Any context. */
 void lx_heap_reset_high_water(void);
 

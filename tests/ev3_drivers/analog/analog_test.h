@@ -1,9 +1,10 @@
 /*
  * analog_test.h — running a d_analog test on the simulated EV3: boots the
  * board with every device model, linux_compat (whose worker task runs
- * d_analog's module_init) and analog_hack's service calls, then runs the
- * test body in a kernel-domain task that attaches devices, lets virtual time
- * pass with dly_tsk and checks what the driver publishes.
+ * d_analog's module_init, and its module_exit at shutdown) and analog_hack's
+ * service calls, then runs the test body in a kernel-domain task that
+ * attaches devices, lets virtual time pass with dly_tsk and checks what the
+ * driver publishes.
  */
 #ifndef EV3LX_TESTS_ANALOG_TEST_H
 #define EV3LX_TESTS_ANALOG_TEST_H
@@ -30,8 +31,6 @@ static void analog_test_task(intptr_t exinf)
 {
 	(void)exinf;
 	analog_test_body();
-	/* Unload, as at the end of a Linux session: the next boot loads d_analog afresh. */
-	lx_modules_exit();
 	analog_test_done = true;
 }
 
