@@ -10,7 +10,8 @@
  * Buttons: six GPIO inputs, each with a both-edge interrupt.  An edge only (re)starts its
  * button's debounce window; one hrtimer, armed for the earliest open window, settles a button
  * whose level has not changed for debounce_ms: then pressed[] changes, and a release after a
- * press queues a click (LMS_UI_CLICK_QUEUE deep; when full, new clicks are counted as dropped)
+ * press queues a click (a button already held when the driver loads reads pressed, but its
+ * release is no click) (LMS_UI_CLICK_QUEUE deep; when full, new clicks are counted as dropped)
  * and wakes the readers.  Nothing runs while no button moves.
  *
  * LEDs: two bicolour LEDs, each a red and a green GPIO output; orange is both.  Steady patterns
@@ -94,6 +95,7 @@ struct ui_button {
 	unsigned int gpio;
 	int irq;			/* 0 until requested */
 	bool down;			/* the debounced state */
+	bool press_seen;		/* down since a press we saw (not held at load) */
 	bool unsettled;			/* an edge's debounce window is open */
 	ktime_t edge;			/* time of the newest edge */
 	ktime_t pressed_at;		/* edge that started the current press */
@@ -270,10 +272,14 @@ static bool ui_button_settle(struct ui_button *b)
 	b->down = down;
 	WRITE_ONCE(ui.shm->pressed[index], down);
 	if (down) {
+		b->press_seen = true;
 		b->pressed_at = b->edge;
 		WRITE_ONCE(ui.shm->presses[index], ui.shm->presses[index] + 1);
 		return false;
 	}
+	if (!b->press_seen)
+		return false;		/* held since before we loaded: not a click we saw */
+	b->press_seen = false;
 	/* Rounded: the two edges' interrupts may be served a few microseconds apart. */
 	return ui_queue_click(index, ktime_to_ms(ktime_add_ns(ktime_sub(b->edge, b->pressed_at),
 							      NSEC_PER_MSEC / 2)));

@@ -17,13 +17,25 @@ static ER poll_click(struct lms_ui_click *c)
 	return ui_svc_wait_click(c, TMO_POL);
 }
 
+/* BACK is held down when the brick powers on. */
+static void hold_back(void)
+{
+	ev3_ui_button_set(EV3_UI_BUTTON_BACK, true);
+}
+
 static void boot_state(void)
 {
+	struct lms_ui_click c;
 	bool none = true;
 
 	for (unsigned b = 0; b < LMS_UI_BUTTONS; b++)
-		none &= uit_pressed(b) == 0;
-	ok(none, "nothing pressed at boot");
+		none &= uit_pressed(b) == (b == LMS_UI_BUTTON_BACK);
+	ok(none, "only BACK, held since power-on, reads pressed");
+	is_int(uit_u32(&uit_shm->presses[LMS_UI_BUTTON_BACK]), 0, "without a press counted");
+	ev3_ui_button_set(EV3_UI_BUTTON_BACK, false);
+	dly_tsk(UIT_DEBOUNCE_MS + 5);
+	ok(uit_pressed(LMS_UI_BUTTON_BACK) == 0 && poll_click(&c) == E_TMOUT,
+	   "its release: not pressed, and no click (its press was not seen)");
 	is_int(uit_shm->led, LMS_UI_LED_OFF, "LEDs off at boot");
 	is_int(uit_u32(&uit_shm->clicks), 0, "no clicks yet");
 }
@@ -210,7 +222,8 @@ static void body(void)
 int main(void)
 {
 	uit_domain = 1;		/* the service calls from a user domain, as an application */
-	tap_plan(1 + 3 + 10 + 3 + 8 + 5 + 4 + 7 + 7);
+	uit_at_power_on = hold_back;
+	tap_plan(1 + 5 + 10 + 3 + 8 + 5 + 4 + 7 + 7);
 	ok(uit_run(body, 3), "scenario ran to its end");
 	return tap_done();
 }

@@ -24,6 +24,7 @@
 #define UIT_DEBOUNCE_MS	20	/* d_ui's default */
 
 static void (*uit_body)(void);
+static void (*uit_at_power_on)(void);	/* optional: runs after boot, before any task */
 static void (*uit_helper_fn)(void);
 static bool uit_done;
 static ID uit_domain = TDOM_KERNEL;	/* the test task's protection domain */
@@ -71,6 +72,8 @@ static inline bool uit_run(void (*body)(void), uint64_t seed)
 		tap_diag("boot failed: %s", rtos_host_boot_error());
 		return false;
 	}
+	if (uit_at_power_on)
+		uit_at_power_on();
 	for (limit = 0; !uit_done && limit < 600; limit++)
 		hs_sim_run_for(100 * UIT_MS);
 	hs_sim_shutdown();
