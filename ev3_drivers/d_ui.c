@@ -61,29 +61,22 @@ static bool leds_active_low;
 module_param(leds_active_low, bool, 0444);
 MODULE_PARM_DESC(leds_active_low, "an LED is lit by driving its pin low (default: high)");
 
-static int up_gpio = GP(7, 15);
-module_param(up_gpio, int, 0444);
-static int enter_gpio = GP(1, 13);
-module_param(enter_gpio, int, 0444);
-static int down_gpio = GP(7, 14);
-module_param(down_gpio, int, 0444);
-static int right_gpio = GP(7, 12);
-module_param(right_gpio, int, 0444);
-static int left_gpio = GP(6, 6);
-module_param(left_gpio, int, 0444);
-static int back_gpio = GP(6, 10);
-module_param(back_gpio, int, 0444);
-MODULE_PARM_DESC(up_gpio, "GPIO of a button (16 * bank + bit), likewise enter/down/right/left/back_gpio");
+/* One pin parameter: DaVinci GPIO number 16 * bank + bit, GP<bank>_<bit> by default. */
+#define UI_GPIO_PARAM(name, bank, bit, what)					\
+	static int name = GP(bank, bit);					\
+	module_param(name, int, 0444);						\
+	MODULE_PARM_DESC(name, "GPIO of " what " (default GP" #bank "_" #bit ")")
 
-static int left_red_gpio = GP(6, 7);
-module_param(left_red_gpio, int, 0444);
-static int left_green_gpio = GP(6, 13);
-module_param(left_green_gpio, int, 0444);
-static int right_red_gpio = GP(6, 12);
-module_param(right_red_gpio, int, 0444);
-static int right_green_gpio = GP(6, 14);
-module_param(right_green_gpio, int, 0444);
-MODULE_PARM_DESC(left_red_gpio, "GPIO of an LED colour, likewise left_green/right_red/right_green_gpio");
+UI_GPIO_PARAM(up_gpio, 7, 15, "the UP button");
+UI_GPIO_PARAM(enter_gpio, 1, 13, "the ENTER button");
+UI_GPIO_PARAM(down_gpio, 7, 14, "the DOWN button");
+UI_GPIO_PARAM(right_gpio, 7, 12, "the RIGHT button");
+UI_GPIO_PARAM(left_gpio, 6, 6, "the LEFT button");
+UI_GPIO_PARAM(back_gpio, 6, 10, "the BACK button");
+UI_GPIO_PARAM(left_red_gpio, 6, 7, "the left LED's red half");
+UI_GPIO_PARAM(left_green_gpio, 6, 13, "the left LED's green half");
+UI_GPIO_PARAM(right_red_gpio, 6, 12, "the right LED's red half");
+UI_GPIO_PARAM(right_green_gpio, 6, 14, "the right LED's green half");
 
 #define LED_PINS		4
 #define LED_RED			BIT(0)		/* colour bits */

@@ -56,7 +56,7 @@ struct lms_ui_click {
 	uint8_t button;			/* LMS_UI_BUTTON_* */
 	uint8_t reserved;		/* 0 */
 	uint16_t held_ms;		/* press to release, saturated at 65535 */
-	uint32_t seq;			/* 1 for the first click since load, then +1 (gaps: dropped) */
+	uint32_t seq;			/* 1 for the first click after load, +1 each (gap: dropped) */
 };
 
 /* The shared page (mmap, offset 0, at most LMS_UI_MAP_SIZE bytes). */

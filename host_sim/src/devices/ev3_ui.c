@@ -226,8 +226,9 @@ static void led_pin_changed(void *ctx, unsigned pin, const struct hs_pin_state *
 	(void)ctx; (void)pin; (void)st;
 	for (unsigned i = 0; i < EV3_UI_LEDS; i++) {
 		struct led *l = &ui.leds[i];
-		enum ev3_ui_color c = (enum ev3_ui_color)((lit(ev3_ui_pins.red[i]) ? EV3_UI_LED_RED : 0) |
-							  (lit(ev3_ui_pins.green[i]) ? EV3_UI_LED_GREEN : 0));
+		unsigned red = lit(ev3_ui_pins.red[i]) ? EV3_UI_LED_RED : 0U;
+		unsigned green = lit(ev3_ui_pins.green[i]) ? EV3_UI_LED_GREEN : 0U;
+		enum ev3_ui_color c = (enum ev3_ui_color)(red | green);
 
 		if (c != l->color) {
 			l->color = c;
