@@ -1,0 +1,81 @@
+/*
+ * balance_run.h — one run of the balancing experiment: boots the simulated
+ * brick with the balance application, plugs in the robot (large motors on A
+ * and D, gyro on port 2), holds it upright while the application calibrates,
+ * lets go at EV3SIM_RELEASE_NS and runs for the requested virtual time or
+ * until the robot falls.  Host only.
+ *
+ * Times in options (pushes, faults) and in results count from the release.
+ */
+#ifndef EV3SIM_BALANCE_RUN_H
+#define EV3SIM_BALANCE_RUN_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include "ev3sim/balance_app.h"
+#include "ev3sim/fault_spec.h"
+#include "ev3sim/robot.h"
+
+#define EV3SIM_RELEASE_NS     3000000000ULL   /* the hand lets go 3 s after boot */
+#define EV3SIM_MAX_FAULTS     16U
+#define EV3SIM_MAX_SECONDS    3600.0
+
+struct ev3sim_balance_opts {
+	double seconds;             /* virtual seconds after the release, > 0 */
+	uint64_t seed;
+	struct ev3sim_balance_cfg app;
+	uint32_t log_baud;          /* 0: SERIAL_LOG_DEFAULT_BAUD */
+	double start_tilt_deg;
+	struct ev3sim_push pushes[EV3SIM_MAX_PUSHES];   /* t_ns from the release */
+	unsigned npushes;
+	struct ev3sim_fault_spec faults[EV3SIM_MAX_FAULTS];
+	unsigned nfaults;
+	const char *trace_path;     /* VCD, NULL: none */
+	FILE *log_out;              /* the serial log's far end, NULL: dropped */
+	bool record;                /* keep the series (CSV, plot) */
+	bool progress;              /* progress bar on stderr (if it is a terminal) */
+};
+
+/* One row of the recorded series (every physics step after the release). */
+struct ev3sim_series_row {
+	double t_s;                 /* from the release */
+	double tilt_deg, tilt_rate_dps, wheel_deg;
+	double tilt_est_deg;        /* the application's estimate */
+	int power;                  /* the application's last command */
+	double duty_a, duty_d;      /* what the H-bridges drive, % */
+};
+
+struct ev3sim_balance_result {
+	bool fell;
+	double fell_at_s;           /* from the release */
+	double seconds;             /* the requested duration */
+	double max_tilt_deg, rms_tilt_deg;
+	double max_travel_cm;       /* farthest the axle got from where it was let go */
+	struct ev3sim_balance_stats app;
+	uint64_t log_bytes;
+	uint64_t log_spin_ms;       /* CPU time the logger spent waiting for the port */
+	unsigned bugs;              /* rtos_host bug reports */
+	double wall_s;
+	double sim_virtual_s;      /* virtual time simulated, boot to end */
+	struct ev3sim_series_row *rows;   /* malloc'ed when recording, else NULL */
+	size_t nrows;
+};
+
+/* Runs the experiment.  E_OK, or E_PAR for bad options (message in err),
+ * E_SYS if the simulation could not boot (message in err). */
+ER ev3sim_balance_run(const struct ev3sim_balance_opts *opts, struct ev3sim_balance_result *res,
+		      char *err, size_t errlen);
+/* Frees the recorded series. */
+void ev3sim_balance_result_free(struct ev3sim_balance_result *res);
+
+/* The one-line key=value summary; sim_speed (the only field that depends
+ * on the host) comes last. */
+void ev3sim_balance_summary(const struct ev3sim_balance_opts *opts,
+			    const struct ev3sim_balance_result *res, char *buf, size_t len);
+
+/* Writes the series as CSV (header line, one row per physics step); 0 or -1. */
+int ev3sim_write_csv(const struct ev3sim_balance_result *res, FILE *out);
+
+#endif /* EV3SIM_BALANCE_RUN_H */

@@ -1,0 +1,19 @@
+/*
+ * plot.h — the balance run's PNG: tilt, wheel angle and motor power against
+ * time, drawn by gnuplot (package gnuplot-nox, installed by `make deps`).
+ */
+#ifndef EV3SIM_PLOT_H
+#define EV3SIM_PLOT_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "ev3sim/balance_run.h"
+
+/* Whether a gnuplot executable is on the PATH. */
+bool ev3sim_have_gnuplot(void);
+
+/* Writes the PNG; 0, or -1 with a message in err (gnuplot missing or failing). */
+int ev3sim_plot(const struct ev3sim_balance_result *res, const char *title, const char *png_path,
+		char *err, size_t errlen);
+
+#endif /* EV3SIM_PLOT_H */

@@ -1,0 +1,251 @@
+/*
+ * balance_run.c — one run of the balancing experiment (balance_run.h).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "rtos_host.h"
+#include "host_sim/scenario.h"
+#include "host_sim/devices/ev3_brick.h"
+#include "ev3sim/apps.h"
+#include "ev3sim/balance_run.h"
+#include "ev3sim/serial_log.h"
+
+#define LEFT_PORT   0U      /* A */
+#define RIGHT_PORT  3U      /* D */
+#define GYRO_PORT   1U      /* input port 2 */
+#define CHUNK_NS    50000000ULL             /* run in 50 ms slices (progress, fall check) */
+#define PI 3.14159265358979323846
+
+static struct recorder {
+	struct ev3sim_balance_result *res;
+	bool record;
+	size_t cap;
+	double sum_sq;
+	uint64_t samples;
+	double wheel0;
+	bool released;
+} rec;
+
+/* Observer of every physics step: statistics and the series after the release. */
+static void observe(const struct ev3sim_robot_sample *s, void *ctx)
+{
+	struct ev3sim_balance_result *res = rec.res;
+	const struct ev3sim_balance_stats *app = ev3sim_balance_stats();
+	double travel;
+
+	(void)ctx;
+	if (s->held)
+		return;
+	if (!rec.released) {
+		rec.released = true;
+		rec.wheel0 = s->wheel_deg;
+	}
+	if (fabs(s->tilt_deg) > res->max_tilt_deg)
+		res->max_tilt_deg = fabs(s->tilt_deg);
+	rec.sum_sq += s->tilt_deg * s->tilt_deg;
+	rec.samples++;
+	travel = fabs(s->wheel_deg - rec.wheel0) * PI / 180.0 * ev3sim_gyro_boy.wheel_radius_m * 100.0;
+	if (travel > res->max_travel_cm)
+		res->max_travel_cm = travel;
+	if (!rec.record)
+		return;
+	if (res->nrows == rec.cap) {
+		size_t cap = rec.cap ? rec.cap * 2 : 4096;
+		struct ev3sim_series_row *rows = realloc(res->rows, cap * sizeof(*rows));
+
+		if (rows == NULL) {
+			rec.record = false;     /* out of memory: keep the statistics only */
+			return;
+		}
+		res->rows = rows;
+		rec.cap = cap;
+	}
+	res->rows[res->nrows++] = (struct ev3sim_series_row){
+		.t_s = ((double)s->t_ns - (double)EV3SIM_RELEASE_NS) * 1e-9,
+		.tilt_deg = s->tilt_deg,
+		.tilt_rate_dps = s->tilt_rate_dps,
+		.wheel_deg = s->wheel_deg - rec.wheel0,
+		.tilt_est_deg = app->tilt_est_deg,
+		.power = app->power,
+		.duty_a = s->duty_a * 100.0,
+		.duty_d = s->duty_d * 100.0,
+	};
+}
+
+/* Draws the progress bar on stderr. */
+static void draw_progress(double done_s, double total_s, double speed)
+{
+	int width = 30, filled = total_s > 0 ? (int)(width * done_s / total_s) : width;
+
+	if (filled > width)
+		filled = width;
+	fprintf(stderr, "\r[%.*s%*s] %6.1f/%.1f s virtual, %.0fx ", filled,
+		"##############################", width - filled, "", done_s, total_s, speed);
+	fflush(stderr);
+}
+
+/* Plugs in the robot's devices and schedules the faults. */
+static ER plug_in(const struct ev3sim_balance_opts *o, char *err, size_t errlen)
+{
+	struct uart_sensor_options gyro = { .name = "in2.gyro" };
+	ER ercd;
+
+	for (unsigned i = 0; i < o->nfaults; i++) {
+		if (o->faults[i].target == EV3SIM_FAULT_GYRO_NOISE)
+			gyro.gyro_noise_dps = o->faults[i].value;
+		else if (o->faults[i].target == EV3SIM_FAULT_GYRO_DRIFT)
+			gyro.gyro_drift_dps = o->faults[i].value;
+	}
+	ercd = ev3_attach_motor(LEFT_PORT, EV3_MOTOR_LARGE, NULL);
+	if (ercd == E_OK)
+		ercd = ev3_attach_motor(RIGHT_PORT, EV3_MOTOR_LARGE, NULL);
+	if (ercd == E_OK)
+		ercd = ev3_attach_uart_sensor(GYRO_PORT, UART_SENSOR_TYPE_GYRO, &gyro);
+	if (ercd != E_OK) {
+		snprintf(err, errlen, "cannot attach the robot's devices (%d)", (int)ercd);
+		return E_SYS;
+	}
+	for (unsigned i = 0; i < o->nfaults; i++) {
+		if (o->faults[i].target != EV3SIM_FAULT_BRICK)
+			continue;
+		ercd = ev3_fault_at(EV3SIM_RELEASE_NS + o->faults[i].at_ns, &o->faults[i].fault);
+		if (ercd != E_OK) {
+			snprintf(err, errlen, "fault %u rejected by host_sim (%d)", i + 1, (int)ercd);
+			return E_PAR;
+		}
+	}
+	return E_OK;
+}
+
+ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance_result *res,
+		      char *err, size_t errlen)
+{
+	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
+	struct ev3sim_push pushes[EV3SIM_MAX_PUSHES];
+	struct hs_scenario scn = { .rtos = &ev3sim_balance_app_cfg, .board = &board };
+	struct ev3sim_robot_cfg robot = {
+		.left_port = LEFT_PORT, .right_port = RIGHT_PORT, .gyro_port = GYRO_PORT,
+		.release_ns = EV3SIM_RELEASE_NS, .pushes = pushes, .observer = observe,
+	};
+	const struct serial_log_stats *log;
+	uint64_t end, fell_ns;
+	double wall0, speed = 0.0;
+	bool progress_shown = false, tty;
+	ER ercd;
+
+	memset(res, 0, sizeof(*res));
+	if (!(o->seconds > 0 && o->seconds <= EV3SIM_MAX_SECONDS) || o->npushes > EV3SIM_MAX_PUSHES ||
+	    o->nfaults > EV3SIM_MAX_FAULTS || fabs(o->start_tilt_deg) >= 45.0) {
+		snprintf(err, errlen, "bad run options");
+		return E_PAR;
+	}
+	if (ev3sim_balance_setup(&o->app) != E_OK) {
+		snprintf(err, errlen, "logger rate must be 0..%u Hz", EV3SIM_LOGGER_MAX_HZ);
+		return E_PAR;
+	}
+	if (serial_log_setup(o->log_baud ? o->log_baud : SERIAL_LOG_DEFAULT_BAUD, o->log_out) != E_OK) {
+		snprintf(err, errlen, "bad serial log baud");
+		return E_PAR;
+	}
+	for (unsigned i = 0; i < o->npushes; i++) {
+		pushes[i] = o->pushes[i];
+		pushes[i].t_ns += EV3SIM_RELEASE_NS;
+	}
+	robot.npushes = o->npushes;
+	robot.start_tilt_deg = o->start_tilt_deg;
+	rec = (struct recorder){ .res = res, .record = o->record };
+	res->seconds = o->seconds;
+	scn.seed = o->seed;
+	scn.vcd_path = o->trace_path;
+
+	wall0 = ev3sim_wall_seconds();
+	if (hs_sim_boot(&scn) != E_OK) {
+		snprintf(err, errlen, "boot failed: %s", rtos_host_boot_error());
+		return E_SYS;
+	}
+	ercd = plug_in(o, err, errlen);
+	if (ercd == E_OK && ev3sim_robot_start(&robot) != E_OK) {
+		snprintf(err, errlen, "the robot's physics could not start");
+		ercd = E_SYS;
+	}
+	if (ercd != E_OK) {
+		hs_sim_shutdown();
+		return ercd;
+	}
+	end = EV3SIM_RELEASE_NS + (uint64_t)llround(o->seconds * 1e9);
+	tty = o->progress && isatty(STDERR_FILENO);
+	while (rtos_host_now() < end && !ev3sim_robot_fallen(NULL)) {
+		uint64_t next = rtos_host_now() + CHUNK_NS;
+
+		hs_sim_run_until(next < end ? next : end);
+		if (tty) {
+			double wall = ev3sim_wall_seconds() - wall0;
+
+			speed = wall > 0 ? rtos_host_now() * 1e-9 / wall : 0.0;
+			if (wall > 1.0 || progress_shown) {
+				draw_progress(rtos_host_now() * 1e-9, end * 1e-9, speed);
+				progress_shown = true;
+			}
+		}
+	}
+	if (progress_shown)
+		fprintf(stderr, "\r%60s\r", "");
+	ev3sim_robot_stop();
+	res->fell = ev3sim_robot_fallen(&fell_ns);
+	res->fell_at_s = res->fell ? ((double)fell_ns - (double)EV3SIM_RELEASE_NS) * 1e-9 : 0.0;
+	res->rms_tilt_deg = rec.samples ? sqrt(rec.sum_sq / (double)rec.samples) : 0.0;
+	res->app = *ev3sim_balance_stats();
+	log = serial_log_get_stats();
+	res->log_bytes = log->bytes;
+	res->log_spin_ms = log->spin_ns / 1000000U;
+	res->bugs = rtos_host_bug_count();
+	res->wall_s = ev3sim_wall_seconds() - wall0;
+	res->sim_virtual_s = rtos_host_now() * 1e-9;
+	hs_sim_shutdown();
+	return E_OK;
+}
+
+void ev3sim_balance_result_free(struct ev3sim_balance_result *res)
+{
+	free(res->rows);
+	res->rows = NULL;
+	res->nrows = 0;
+}
+
+void ev3sim_balance_summary(const struct ev3sim_balance_opts *o,
+			    const struct ev3sim_balance_result *r, char *buf, size_t len)
+{
+	char fell_at[32] = "none";
+
+	if (r->fell)
+		snprintf(fell_at, sizeof(fell_at), "%.3f", r->fell_at_s);
+	snprintf(buf, len,
+		 "result=%s seconds=%g seed=%llu balancer=%s logger_hz=%u logger_prio=%s "
+		 "fell_at_s=%s max_tilt_deg=%.2f rms_tilt_deg=%.3f max_travel_cm=%.1f "
+		 "deadline_misses=%u balance_runs=%u max_start_delay_us=%llu "
+		 "logger_lines=%u logger_skipped=%u log_bytes=%llu logger_spin_ms=%llu "
+		 "api_errors=%u bugs=%u sim_speed=%.0fx",
+		 r->fell ? "fell" : "upright", r->seconds, (unsigned long long)o->seed,
+		 o->app.balancer ? "on" : "off", o->app.logger_hz,
+		 o->app.logger_above ? "above" : "below", fell_at, r->max_tilt_deg, r->rms_tilt_deg,
+		 r->max_travel_cm, r->app.deadline_misses, r->app.runs,
+		 (unsigned long long)(r->app.max_start_delay_ns / 1000U), r->app.logger_lines,
+		 r->app.logger_skipped, (unsigned long long)r->log_bytes,
+		 (unsigned long long)r->log_spin_ms, r->app.api_errors, r->bugs,
+		 r->wall_s > 0 ? r->sim_virtual_s / r->wall_s : 0.0);
+}
+
+int ev3sim_write_csv(const struct ev3sim_balance_result *r, FILE *out)
+{
+	fprintf(out, "t_s,tilt_deg,tilt_rate_dps,wheel_deg,tilt_est_deg,power_pct,duty_a_pct,duty_d_pct\n");
+	for (size_t i = 0; i < r->nrows; i++) {
+		const struct ev3sim_series_row *w = &r->rows[i];
+
+		fprintf(out, "%.3f,%.4f,%.3f,%.3f,%.4f,%d,%.2f,%.2f\n", w->t_s, w->tilt_deg,
+			w->tilt_rate_dps, w->wheel_deg, w->tilt_est_deg, w->power, w->duty_a, w->duty_d);
+	}
+	return ferror(out) ? -1 : 0;
+}
