@@ -23,6 +23,7 @@
 #include <linux/limits.h>
 #include <linux/kdev_t.h>
 #include <linux/fcntl.h>
+#include <linux/ioctl.h>     /* as in Linux: drivers reach _IOWR & co. through fs.h */
 #include <asm/page.h>
 
 struct module;

@@ -15,6 +15,7 @@
 #include <linux/types.h>
 #include <linux/gfp.h>
 #include <linux/slab.h>
+#include <linux/string.h>    /* as in Linux (through its bitmap headers): LEGO's drivers rely on it */
 #include <linux/mm_types.h>
 #include <linux/page-flags.h>
 #include <asm/page.h>
