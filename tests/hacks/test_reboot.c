@@ -4,7 +4,8 @@
  * on the simulated brick runs the same application (a regulated motor and a
  * UART colour sensor) in both boots with identical results and a
  * byte-identical trace; at each shutdown every module_exit runs (the
- * worker, task context), which leaves no device registered, no kmalloc
+ * worker, task context), which leaves no device registered, no interrupt
+ * line enabled, no memory region claimed, no GPIO requested, no kmalloc
  * memory in use, no module loaded and no bug report; each boot runs every
  * module_init again.
  */
@@ -14,6 +15,9 @@
 #include <linux/module.h>
 #include <linux_compat/devfs.h>
 #include <linux_compat/heap.h>
+#include <linux_compat/irq.h>
+#include <linux/ioport.h>
+#include <mach/gpio.h>
 #include "lms_pwm.h"
 #include "lms_analog.h"
 #include "lms_uart.h"
@@ -110,6 +114,52 @@ static void show_first_difference(void)
 	tap_diag("boot 2: %.120s", b + line_start);
 }
 
+/*
+ * The application's own termination routine: the application is registered
+ * first, so it is terminated last, after linux_compat's unload, with the
+ * kernel still up - the moment to look at the interrupt lines.
+ */
+static unsigned lines_left_enabled;
+
+#define COUNT_ENABLED_LINE(intno, isr, exinf) \
+	if (rtos_host_irq_enabled(intno)) { tap_diag("line %u still enabled", (unsigned)(intno)); lines_left_enabled++; }
+
+static void app_ter(intptr_t exinf)
+{
+	(void)exinf;
+	lines_left_enabled = 0;
+	LX_IRQ_LINES(COUNT_ENABLED_LINE)
+}
+
+/* at_run with the termination routine in the application's configuration. */
+static bool run_app(void (*attach_fn)(void), void (*body_fn)(void), uint64_t seed, unsigned max_s)
+{
+	static const struct rtos_task_cfg task = {
+		AT_TASK_ID, TA_ACT, 0, at_task, 8, AT_STACK, AT_DOMAIN, "app",
+	};
+	static const struct rtos_ter_cfg ters[] = { { app_ter, 0 } };
+	static const struct rtos_cfg *const includes[] = { &ev3api_cfg, NULL };
+	static const struct rtos_cfg cfg = {
+		.name = "reboot_test", .tasks = &task, .ntasks = 1, .ters = RTOS_TABLE(ters),
+		.includes = includes,
+	};
+	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
+	struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = seed };
+
+	at_body = body_fn;
+	at_done = false;
+	lines_left_enabled = ~0U;
+	if (hs_sim_boot(&scn) != E_OK) {
+		tap_diag("boot failed: %s", rtos_host_boot_error());
+		return false;
+	}
+	attach_fn();
+	for (unsigned i = 0; !at_done && i < max_s * 10U; i++)
+		hs_sim_run_for(100 * AT_MS);
+	hs_sim_shutdown();
+	return at_done;
+}
+
 /* After a shutdown: nothing of the drivers is left. */
 static void check_unloaded(unsigned n)
 {
@@ -119,7 +169,8 @@ static void check_unloaded(unsigned n)
 	};
 	static const char *const modules[] = { "d_pwm", "d_analog", "d_uart", "d_ui" };
 	struct lx_heap_stats stats;
-	unsigned i, registered = 0, loaded = 0;
+	const struct resource *claim;
+	unsigned i, registered = 0, loaded = 0, claims = 0, pins = 0;
 
 	lx_heap_get_stats(&stats);
 	is_int(stats.in_use, 0, "boot %u: the kmalloc pool is empty after the unload", n);
@@ -138,6 +189,18 @@ static void check_unloaded(unsigned n)
 		}
 	}
 	is_int(loaded, 0, "boot %u: every driver module is unloaded", n);
+	is_int(lines_left_enabled, 0, "boot %u: every Linux interrupt line is disabled (free_irq)", n);
+	for (claim = iomem_resource.child; claim; claim = claim->sibling) {
+		tap_diag("region %s still claimed", claim->name);
+		claims++;
+	}
+	is_int(claims, 0, "boot %u: every memory region is released", n);
+	for (i = 0; i < DAVINCI_N_GPIO; i++)
+		if (gpio_label(i)) {
+			tap_diag("GPIO %u still requested by %s", i, gpio_label(i));
+			pins++;
+		}
+	is_int(pins, 0, "boot %u: every GPIO is freed", n);
 	is_int(rtos_host_bug_count(), 0, "boot %u: no bug reported, unload included", n);
 }
 
@@ -145,12 +208,12 @@ int main(void)
 {
 	const char *shutdown;
 
-	tap_plan(BOOTS * 9 + 3);
+	tap_plan(BOOTS * 12 + 3);
 	rtos_host_trace_set_sink(trace_sink, NULL);
 	for (boot = 0; boot < BOOTS; boot++) {
 		struct run_result *r = &results[boot];
 
-		ok(at_run(attach, body, 7, 30), "boot %u: the application finished", boot + 1);
+		ok(run_app(attach, body, 7, 30), "boot %u: the application finished", boot + 1);
 		is_int(r->pwm_state, MODULE_STATE_LIVE, "boot %u: d_pwm was loaded again", boot + 1);
 		ok(r->config_ercd == E_OK && r->speed_ercd == E_OK && r->reflect_ercd == E_OK,
 		   "boot %u: config, set_speed and reflect succeed (%d %d %d)", boot + 1,
