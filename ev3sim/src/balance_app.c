@@ -63,6 +63,7 @@ static struct {
 	bool pending;               /* released, not started yet */
 	uint64_t release_ns;
 	unsigned logger_phase;      /* logger rate accumulator, in Hz-milliseconds */
+	bool stopping;              /* ev3sim_balance_stop: release nothing more */
 } bal;
 
 /* Charges the application's computation as CPU time of the calling task. */
@@ -82,6 +83,8 @@ static ER check(ER ercd)
 static void balance_cyclic(intptr_t exinf)
 {
 	(void)exinf;
+	if (bal.stopping)
+		return;
 	stats.releases++;
 	if (bal.running || bal.pending) {
 		stats.overlaps++;
@@ -96,6 +99,8 @@ static void balance_cyclic(intptr_t exinf)
 static void logger_cyclic(intptr_t exinf)
 {
 	(void)exinf;
+	if (bal.stopping)
+		return;
 	bal.logger_phase += app_cfg.logger_hz;
 	if (bal.logger_phase < 1000U)
 		return;
@@ -247,6 +252,11 @@ ER ev3sim_balance_setup(const struct ev3sim_balance_cfg *cfg)
 	app_cfg = *cfg;
 	app_tasks[2].itskpri = cfg->logger_above ? EV3SIM_LOGGER_ABOVE_PRIORITY : EV3SIM_LOGGER_PRIORITY;
 	return E_OK;
+}
+
+void ev3sim_balance_stop(void)
+{
+	bal.stopping = true;
 }
 
 const struct ev3sim_balance_stats *ev3sim_balance_stats(void)

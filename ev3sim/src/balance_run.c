@@ -17,6 +17,7 @@
 #define RIGHT_PORT  3U      /* D */
 #define GYRO_PORT   1U      /* input port 2 */
 #define CHUNK_NS    50000000ULL             /* run in 50 ms slices (progress, fall check) */
+#define DRAIN_NS    20000000ULL             /* after the run: the tasks finish their work */
 #define PI 3.14159265358979323846
 
 static struct recorder {
@@ -204,6 +205,9 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 	res->bugs = rtos_host_bug_count();
 	res->wall_s = ev3sim_wall_seconds() - wall0;
 	res->sim_virtual_s = rtos_host_now() * 1e-9;
+	/* let the application's tasks finish their work before the drivers unload */
+	ev3sim_balance_stop();
+	hs_sim_run_for(DRAIN_NS);
 	hs_sim_shutdown();
 	return E_OK;
 }

@@ -67,6 +67,12 @@ extern const struct rtos_cfg ev3sim_balance_app_cfg;
 
 /* Sets what the application does at the next boot; E_PAR for a bad logger rate. */
 ER ev3sim_balance_setup(const struct ev3sim_balance_cfg *cfg);
+/* Ends the application's activity: its cyclic handlers release nothing
+ * more, so its tasks go idle once their current work is done (the harness
+ * then runs the system a few ms and shuts down; the drivers unload in
+ * ATT_TER before the application's own termination, so nothing may still
+ * be reading their shared memory). */
+void ev3sim_balance_stop(void);
 /* The application's counters (reset at boot). */
 const struct ev3sim_balance_stats *ev3sim_balance_stats(void);
 

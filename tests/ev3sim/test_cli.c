@@ -1,0 +1,196 @@
+/*
+ * test_cli.c — ev3sim's command line: --help for each command, exit status 2
+ * with a message naming the problem for every kind of bad input, the motor
+ * and sensors applications' output, and the balance run's files (CSV, serial
+ * log, VCD, PNG when gnuplot is installed).
+ */
+#include "ev3sim_test.h"
+#include "ev3sim/plot.h"
+
+static struct et_run run;
+
+static void test_help(void)
+{
+	const char *top[] = { "--help", NULL };
+	const char *none[] = { NULL };
+	const char *bal[] = { "balance", "--help", NULL };
+	const char *mot[] = { "motor", "--help", NULL };
+	const char *sen[] = { "sensors", "-h", NULL };
+
+	et_run(&run, top);
+	ok(run.status == 0 && strstr(run.out, "balance") && strstr(run.out, "sensors"),
+	   "ev3sim --help lists the commands");
+	et_run(&run, none);
+	ok(run.status == 2 && strstr(run.err, "usage:"), "no command: usage on stderr, status 2");
+	et_run(&run, bal);
+	ok(run.status == 0 && strstr(run.out, "--logger-hz") && strstr(run.out, "--fault") &&
+	   strstr(run.out, "--plot"), "balance --help documents its options");
+	et_run(&run, mot);
+	ok(run.status == 0 && strstr(run.out, "--port") && strstr(run.out, "--speed"),
+	   "motor --help documents its options");
+	et_run(&run, sen);
+	ok(run.status == 0 && strstr(run.out, "--in1") && strstr(run.out, "--outA"),
+	   "sensors -h documents its options");
+}
+
+/* A bad command line: status 2 and a message containing what. */
+static void bad(const char *const *args, const char *what, const char *name)
+{
+	et_run(&run, args);
+	ok(run.status == 2 && strstr(run.err, what) != NULL, "%s: status 2, message names '%s'", name, what);
+	if (run.status != 2 || strstr(run.err, what) == NULL)
+		tap_diag("status %d, stderr: %s", run.status, run.err);
+	ok(run.out[0] == '\0', "%s: nothing on stdout", name);
+}
+
+static void test_bad_input(void)
+{
+	bad((const char *[]){ "dance", NULL }, "unknown command 'dance'", "unknown command");
+	bad((const char *[]){ "balance", "--frobnicate", NULL }, "unknown option --frobnicate", "unknown option");
+	bad((const char *[]){ "balance", "--seconds", NULL }, "--seconds needs a value", "missing value");
+	bad((const char *[]){ "balance", "--seconds", "0", NULL }, "--seconds: bad value '0'", "zero seconds");
+	bad((const char *[]){ "balance", "--seconds=abc", NULL }, "--seconds: bad value 'abc'", "--opt=value form");
+	bad((const char *[]){ "balance", "--seconds", "4000", NULL }, "bad value '4000'", "too long");
+	bad((const char *[]){ "balance", "--logger-hz", "1001", NULL }, "--logger-hz: bad value", "logger rate");
+	bad((const char *[]){ "balance", "--logger-hz", "-5", NULL }, "--logger-hz: bad value", "negative rate");
+	bad((const char *[]){ "balance", "--seed", "x1", NULL }, "--seed: bad value", "bad seed");
+	bad((const char *[]){ "balance", "--push", "5", NULL }, "--push: bad value '5'", "push without torque");
+	bad((const char *[]){ "balance", "--push", "5:9", NULL }, "--push: bad value '5:9'", "push too strong");
+	bad((const char *[]){ "balance", "--push", "5q:0.1", NULL }, "--push: bad value", "push bad time");
+	bad((const char *[]){ "balance", "--fault", "meteor:1", NULL }, "unknown fault kind 'meteor'", "unknown fault");
+	bad((const char *[]){ "balance", "--fault", "uart-bit-errors:2", NULL }, "missing or bad value",
+	    "probability above 1");
+	bad((const char *[]){ "balance", "--fault", "encoder-noise:E:5", NULL }, "bad port 'E'", "fault port");
+	bad((const char *[]){ "balance", "--fault", "unplug:2:5s:1s:9", NULL }, "too many fields",
+	    "fault with extra fields");
+	bad((const char *[]){ "balance", "--tilt", "50", NULL }, "--tilt: bad value", "tilt too big");
+	bad((const char *[]){ "balance", "--log-baud", "10", NULL }, "--log-baud: bad value", "baud too low");
+	bad((const char *[]){ "balance", "stray", NULL }, "unexpected argument 'stray'", "stray argument");
+	bad((const char *[]){ "motor", "--port", "E", NULL }, "--port: bad value 'E'", "motor port");
+	bad((const char *[]){ "motor", "--speed", "101", NULL }, "bad value '101'", "speed range");
+	bad((const char *[]){ "motor", "--speed", "2.5", NULL }, "bad value '2.5'", "fractional speed");
+	bad((const char *[]){ "motor", "--speed", "5", "--power", "5", NULL }, "exclude each other",
+	    "speed and power");
+	bad((const char *[]){ "motor", "--kind", "huge", NULL }, "--kind: bad value 'huge'", "motor kind");
+	bad((const char *[]){ "motor", "--every", "0", NULL }, "--every: bad value '0'", "zero period");
+	bad((const char *[]){ "sensors", "--in5", "gyro", NULL }, "unknown option --in5", "input port 5");
+	bad((const char *[]){ "sensors", "--in1", "lidar", NULL }, "bad input device 'lidar'", "input device");
+	bad((const char *[]){ "sensors", "--outE", "large", NULL }, "unknown option --outE", "output port E");
+	bad((const char *[]){ "sensors", "--outA", "gyro", NULL }, "bad output device 'gyro'", "output device");
+}
+
+static void test_motor(void)
+{
+	const char *args[] = { "motor", "--port", "B", "--speed", "50", "--seconds", "1", "--every", "250", NULL };
+	char line[512];
+
+	ok(et_run(&run, args) && run.status == 0, "motor --port B --speed 50 --seconds 1 runs");
+	et_last_line(&run, line, sizeof(line));
+	tap_diag("%s", line);
+	ok(strstr(run.out, "# t_s  speed_pct  counts_deg") != NULL, "rows have a header");
+	ok(strstr(run.out, "  1.000    ") != NULL, "a row at 1.000 s");
+	ok(strstr(line, "port=B kind=large mode=speed value=50 seconds=1 ") == line, "summary names the run");
+	ok(et_number(line, "final_speed_pct") >= 45 && et_number(line, "final_speed_pct") <= 55,
+	   "the regulated speed reaches 50 %% (%g)", et_number(line, "final_speed_pct"));
+	/* 50 % of the large motor's 1050 deg/s, after a short start-up */
+	ok(et_number(line, "counts") > 400 && et_number(line, "counts") < 560,
+	   "counts after 1 s match about 525 deg/s (%g)", et_number(line, "counts"));
+	is_int(et_number(line, "api_errors"), 0, "no API errors");
+
+	{
+		const char *rev[] = { "motor", "--port", "C", "--kind", "medium", "--power", "-60", "--seconds",
+				      "0.5", NULL };
+
+		ok(et_run(&run, rev) && run.status == 0, "a medium motor at power -60 runs");
+		et_last_line(&run, line, sizeof(line));
+		ok(et_number(line, "counts") < -100, "and turns backwards (%g)", et_number(line, "counts"));
+	}
+}
+
+static void test_sensors(void)
+{
+	const char *args[] = { "sensors", "--seconds", "1", "--in3", "ir", "--outC", "medium", NULL };
+	char line[1024];
+
+	ok(et_run(&run, args) && run.status == 0, "sensors with an IR sensor on 3 and a medium motor on C");
+	et_last_line(&run, line, sizeof(line));
+	tap_diag("%s", line);
+	ok(strstr(run.out, "in1  touch      InConn=121 INPUT_DUMB") != NULL, "d_analog: touch is an EV3 dumb input");
+	ok(strstr(run.out, "in2  gyro       InConn=122 INPUT_UART") != NULL, "d_analog: the gyro is a UART sensor");
+	ok(strstr(run.out, "OutDcm=  7 large motor") != NULL, "OutDcm 7 for the large motor");
+	ok(strstr(run.out, "outC medium     OutConn=125 OUTPUT_TACHO OutDcm=  8") != NULL,
+	   "OutDcm 8 for the medium motor on C");
+	ok(strstr(run.out, "/dev/lms_dcm: in 125 125 125 125, out 7 8 8 7") != NULL, "the DCM device agrees");
+	ok(strstr(run.out, "in2 angle=") && strstr(run.out, "in3 prox=") && strstr(run.out, "in4 cm=50"),
+	   "live values of the gyro, IR and ultrasonic sensors");
+	ok(strstr(run.out, "in1 pressed=1") && strstr(run.out, "in1 pressed=0"), "the touch sensor toggles");
+	ok(strstr(line, "in3=ir/INPUT_UART") && strstr(line, "outC=medium/OUTPUT_TACHO"), "summary per port");
+	is_int(et_number(line, "api_errors"), 0, "no API errors");
+}
+
+static void test_files(void)
+{
+	char csv[] = "/tmp/ev3sim-test-XXXXXX", log[] = "/tmp/ev3sim-test-XXXXXX",
+	     vcd[] = "/tmp/ev3sim-test-XXXXXX", png[] = "/tmp/ev3sim-test-XXXXXX";
+	const char *args[] = { "balance", "--seconds", "1", "--csv", csv, "--log", log, "--trace", vcd,
+			       "--no-progress", NULL };
+	char buf[256];
+	FILE *f;
+
+	close(mkstemp(csv));
+	close(mkstemp(log));
+	close(mkstemp(vcd));
+	close(mkstemp(png));
+	ok(et_run(&run, args) && run.status == 0, "balance with --csv, --log and --trace");
+	if (run.status != 0)
+		tap_diag("status %d, stderr: %s", run.status, run.err);
+	f = fopen(csv, "r");
+	ok(f && fgets(buf, sizeof(buf), f) && strncmp(buf, "t_s,tilt_deg,", 13) == 0, "CSV header");
+	ok(f && fgets(buf, sizeof(buf), f) && strncmp(buf, "0.000,0.5000,", 13) == 0,
+	   "first row at the release, 0.5 deg tilt");
+	if (f)
+		fclose(f);
+	f = fopen(log, "r");
+	ok(f && fgets(buf, sizeof(buf), f) && strchr(buf, ',') && strstr(buf, "\r\n"),
+	   "the serial log holds lines 'ms,rate,tilt'");
+	if (f)
+		fclose(f);
+	f = fopen(vcd, "r");
+	ok(f && fgets(buf, sizeof(buf), f) && buf[0] == '$', "the trace is a VCD");
+	if (f)
+		fclose(f);
+	if (ev3sim_have_gnuplot()) {
+		const char *plot[] = { "balance", "--seconds", "1", "--plot", png, NULL };
+		unsigned char sig[8] = { 0 };
+
+		ok(et_run(&run, plot) && run.status == 0, "balance --plot");
+		f = fopen(png, "rb");
+		ok(f && fread(sig, 1, 8, f) == 8 && memcmp(sig, "\x89PNG\r\n\x1a\n", 8) == 0, "the plot is a PNG");
+		if (f)
+			fclose(f);
+	} else {
+		tap_skip(2, "gnuplot is not installed");
+	}
+	{
+		const char *bad_dir[] = { "balance", "--seconds", "1", "--csv", "/nonexistent/dir/x.csv", NULL };
+
+		et_run(&run, bad_dir);
+		ok(run.status == 1 && strstr(run.err, "cannot write /nonexistent/dir/x.csv"),
+		   "an unwritable CSV path: status 1 and a message");
+	}
+	unlink(csv);
+	unlink(log);
+	unlink(vcd);
+	unlink(png);
+}
+
+int main(void)
+{
+	tap_plan(5 + 29 * 2 + 9 + 10 + 8);
+	test_help();
+	test_bad_input();
+	test_motor();
+	test_sensors();
+	test_files();
+	return tap_done();
+}
