@@ -193,7 +193,7 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 		}
 	}
 	if (progress_shown)
-		fprintf(stderr, "\r%60s\r", "");
+		fprintf(stderr, "\r%79s\r", "");
 	ev3sim_robot_stop();
 	res->fell = ev3sim_robot_fallen(&fell_ns);
 	res->fell_at_s = res->fell ? ((double)fell_ns - (double)EV3SIM_RELEASE_NS) * 1e-9 : 0.0;
