@@ -891,10 +891,17 @@ static void uart_rx_process(struct sensor_port *p, u32 now)
 static void uart_send_write(struct sensor_port *p)
 {
 	struct lms_uart *lms = &uart.shm->lms;
-	unsigned int len = lms->output_length[p->index];
+	/* the page is mapped writable: read the length once and trust only what write() sets */
+	unsigned int len = (u8)READ_ONCE(lms->output_length[p->index]);
 	u8 msg[MSG_MAX_LEN];
 	unsigned int lc = 0, size;
 
+	if (!len || len > LMS_UART_DATA_SIZE) {
+		pr_warn_ratelimited("d_uart: port %u: write request of %u bytes dropped\n",
+				    p->index + 1, len);
+		lms->status[p->index] &= ~LMS_UART_WRITE_REQUEST;
+		return;
+	}
 	if (p->state == LMS_UART_STATE_TERMINAL) {
 		if (!uart_queue(p, (const u8 *)lms->output[p->index], len))
 			return;

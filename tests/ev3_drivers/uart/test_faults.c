@@ -4,7 +4,7 @@
  * unplugged (reported stale, not frozen; the port goes back to SYNC) and
  * plugged in again (DATA again), bit errors (counted, data keeps flowing, no
  * reconnect), and a receive overrun while the CPU is blocked (counted and
- * recovered).
+ * recovered), and a write request forged in the shared page (dropped).
  */
 #include <stdlib.h>
 #include "uart_test.h"
@@ -111,6 +111,33 @@ static void overrun(void)
 	is_int(ut_ext(3)->reconnects, 0, "without a reconnect");
 }
 
+/* The shared page is mapped writable (lms2012 maps it read/write), so a process can
+ * raise WRITE_REQUEST with a length write() never set: d_uart drops that request
+ * instead of copying past its 35-byte message and the 32-byte output row. */
+static void forged_write(void)
+{
+	struct lms_uart *lms = (struct lms_uart *)&ut_shm->lms;	/* the process's writable view */
+	const struct ev3_uart_stats *st = ev3_uart_get_stats(ev3_uart_of_port(3));
+	static const int8_t forged[] = { -1, 33, 127 };
+	uint32_t sent;
+	unsigned i;
+
+	for (i = 0; i < sizeof(forged); i++) {
+		sent = st->tx_bytes;
+		lms->output_length[3] = forged[i];
+		lms->status[3] |= LMS_UART_WRITE_REQUEST;
+		dly_tsk(5);
+		ok(!(ut_status(3) & LMS_UART_WRITE_REQUEST) && st->tx_bytes - sent <= 1,
+		   "forged length %d: request dropped, %u bytes sent (a NACK at most)", forged[i],
+		   st->tx_bytes - sent);
+	}
+	is_int(uart_svc_write(3, "\x01\x02", 2), E_OK, "a real write afterwards is accepted");
+	for (i = 0; i < 10 && (ut_status(3) & LMS_UART_WRITE_REQUEST); i++)
+		dly_tsk(1);
+	ok(!(ut_status(3) & LMS_UART_WRITE_REQUEST), "and sent");
+	ok(lms_uart_sample(ut_shm, 3, 0) != NULL, "the gyro still streams");
+}
+
 /* One boot: linux_compat initialises modules once per process. */
 static void body(void)
 {
@@ -118,11 +145,12 @@ static void body(void)
 	unplug();
 	bit_errors();
 	overrun();
+	forged_write();
 }
 
 int main(void)
 {
-	tap_plan(26);
+	tap_plan(32);
 	ok(ut_run(body, 3, "UART0"), "scenario ran to its end");
 	return tap_done();
 }
