@@ -221,10 +221,11 @@ static void rx_push(struct ev3_uart *u, uint8_t byte, uint8_t err)
 /* A byte from the line at the sender's baud. */
 void ev3_uart_rx_byte(struct ev3_uart *u, uint8_t byte, uint32_t baud)
 {
-	uint32_t mine = ev3_uart_baud(u);
+	uint32_t mine;
 
 	if (!u || (u->mcr & MCR_LOOP))
 		return;
+	mine = ev3_uart_baud(u);
 	if (!mine || baud < mine - mine / 25U || baud > mine + mine / 25U) {
 		/* sampled at the wrong rate: the receiver assembles other bits and misses the stop bit */
 		u->stats.framing_errors++;

@@ -28,7 +28,7 @@ int main(void)
 	uint64_t t0;
 	uint32_t lsr, iir;
 
-	tap_plan(23);
+	tap_plan(24);
 	devtest_boot(2, NULL);
 	u = ev3_uart_of_port(1);
 	ok(u != NULL, "UART0 serves input port 2");
@@ -109,6 +109,11 @@ int main(void)
 	/* wrong speed: garbled with FE */
 	ev3_uart_rx_byte(u, 0x40, 2400);
 	ok((rd32(U0 + 0x14) & 0x09) == 0x09, "a 2400-baud byte at 115200: framing error");
+
+	/* a line with no UART on it (a peer not yet attached): ignored, not dereferenced */
+	ev3_uart_rx_byte(NULL, 0x40, 115200);
+	ev3_uart_rx_line(NULL, false);
+	ok(true, "bytes and line levels for no UART are ignored");
 	hs_sim_shutdown();
 	return tap_done();
 }
