@@ -319,7 +319,7 @@ ER ev3_uart_sensor_get_raw(sensor_port_t port, void *buf, uint_t size)
 		return E_PAR;
 	if (!api_can_write(buf, size))
 		return E_MACV;
-	mode = *(const volatile int8_t *)&uart_shm->ext.port[port].mode;
+	mode = (int)*(const volatile int8_t *)&uart_shm->ext.port[port].mode;	/* signed: -1 is none */
 	sample = lms_uart_sample(uart_shm, (unsigned)port, mode);
 	if (sample == NULL) {
 		ER ercd = wait_sample(port, mode < 0 ? 0 : mode, &sample);

@@ -10,6 +10,7 @@
 #include <rtos_cfg.h>
 #include <linux_compat/irq.h>
 
+/* NOLINTNEXTLINE(misc-redundant-expression): one value today, asserted so it stays one */
 _Static_assert(LX_IRQ_PRIORITY == INTPRI_TICK,
 	       "Linux lines share the tick's priority so handlers and hrtimer callbacks never nest");
 

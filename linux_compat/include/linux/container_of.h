@@ -5,10 +5,12 @@
 #include <stddef.h>
 #include <linux/compiler_types.h>
 
-/* The structure of type `type` whose `member` ptr points to; ptr's type is checked. */
+/* The structure of type `type` whose `member` ptr points to; ptr's type is checked.
+ * The check names the member through __lx_mptr rather than a null pointer: both are
+ * unevaluated, but static analysers read ((type *)0)->member as a dereference. */
 #define container_of(ptr, type, member) ({					\
 	void *__lx_mptr = (void *)(ptr);					\
-	_Static_assert(__same_type(*(ptr), ((type *)0)->member) ||		\
+	_Static_assert(__same_type(*(ptr), ((type *)__lx_mptr)->member) ||	\
 		       __same_type(*(ptr), void),				\
 		       "pointer type mismatch in container_of()");		\
 	((type *)((char *)__lx_mptr - offsetof(type, member))); })

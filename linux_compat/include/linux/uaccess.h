@@ -77,7 +77,7 @@ int lx_put_user(const void *val, void __user *ptr, size_t size);
 
 /* An unsigned integer type as wide as x (for get_user's value). */
 #define __lx_inttype(x) \
-	__typeof__(__builtin_choose_expr(sizeof(x) > sizeof(0UL), 0ULL, 0UL))
+	__typeof__(__builtin_choose_expr(sizeof(x) > sizeof(unsigned long), 0ULL, 0UL))
 
 #define get_user(x, ptr) ({						\
 	__lx_inttype(*(ptr)) __lx_gu_val = 0;				\

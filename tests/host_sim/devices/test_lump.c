@@ -10,7 +10,7 @@ int main(void)
 	uint8_t f[LUMP_MAX_FRAME], type = 29;
 	uint8_t speed[4] = { 0x00, 0xE1, 0x00, 0x00 };
 	struct lump_parser p;
-	struct lump_msg m;
+	struct lump_msg m = { 0 };
 	size_t n;
 	int got = 0;
 

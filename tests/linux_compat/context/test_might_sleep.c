@@ -51,6 +51,7 @@ static enum hrtimer_restart sleepy_cb(struct hrtimer *t)
 static void test_isr(intptr_t exinf)
 {
 	(void)exinf;
+	/* NOLINTNEXTLINE(misc-redundant-expression): the same test today, but both names are API */
 	isr_flags[0] = in_interrupt() && in_irq() && !in_task();
 	EXPECT_REPORT(might_sleep());
 	lx_irq_enter(47);

@@ -22,8 +22,15 @@ static void sink(const char *line, void *ctx)
 
 	(void)ctx;
 	if (trace_len + n + 2 > trace_cap) {
-		trace_cap = (trace_cap + n + 2) * 2;
-		trace_buf = realloc(trace_buf, trace_cap);
+		size_t cap = (trace_cap + n + 2) * 2;
+		char *grown = realloc(trace_buf, cap);
+
+		if (!grown) {
+			fprintf(stderr, "test_determinism: no memory for a %zu-byte trace\n", cap);
+			abort();
+		}
+		trace_buf = grown;
+		trace_cap = cap;
 	}
 	memcpy(trace_buf + trace_len, line, n);
 	trace_len += n;
