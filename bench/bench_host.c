@@ -1,0 +1,211 @@
+/*
+ * bench_host.c — the host part of `make bench` (docs/bench.md).
+ *
+ *   bench_host [calls [virtual_s]]     defaults: 10000 calls, 10 virtual seconds
+ *
+ * 1. From the application task on the simulated brick (bench_brick.h):
+ *    ev3_motor_set_speed and ev3_uart_sensor_get_raw (sensor streaming, so
+ *    the fast path), calls times each, clock_gettime(CLOCK_MONOTONIC) around
+ *    each call; then, in the same task, write() of the same command bytes to
+ *    /dev/null, calls times (a real system call each).  Virtual time does not
+ *    advance inside an API call: a call that took the slow path (slept) is
+ *    counted and reported.
+ * 2. host_sim's speed: ev3_bench_full_brick (the simulated devices with a
+ *    register-level polling host), and the full stack (linux_compat and the
+ *    three drivers over the same four motors and four sensors, application
+ *    idle), as virtual seconds per wall second.
+ * Output: CSV records for bench/run_bench.sh,
+ *   call,NAME,calls,avg_ns,min_ns,max_ns,slow_calls,errors
+ *   speed,NAME,virtual_s,wall_s,cpu_s,speedup,cpu_speedup
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include <unistd.h>
+#include "bench_brick.h"
+#include "rtos_host.h"
+#include "host_sim/devices/ev3_bench.h"
+
+#define DEFAULT_CALLS      10000U
+#define DEFAULT_VIRTUAL_S  10.0
+#define BENCH_SEED         1U
+
+struct call_stats {
+	const char *name;
+	unsigned calls, slow, errors;
+	uint64_t sum_ns, min_ns, max_ns;
+};
+
+static unsigned n_calls = DEFAULT_CALLS;
+static double virtual_s = DEFAULT_VIRTUAL_S;
+static struct call_stats st_speed = { .name = "ev3_motor_set_speed" };
+static struct call_stats st_raw = { .name = "ev3_uart_sensor_get_raw" };
+static struct call_stats st_write = { .name = "write_dev_null" };
+static struct call_stats st_clock = { .name = "clock_gettime_pair" };
+static ER prepare_result = E_SYS;
+static bool calls_done;
+static double stack_wall_s, stack_cpu_s, stack_virtual_s;
+
+static uint64_t now_ns(clockid_t clock)
+{
+	struct timespec ts;
+
+	clock_gettime(clock, &ts);
+	return (uint64_t)ts.tv_sec * 1000000000ULL + (uint64_t)ts.tv_nsec;
+}
+
+/* Adds one timed call. */
+static void account(struct call_stats *s, uint64_t ns, bool slow, bool error)
+{
+	if (s->calls == 0 || ns < s->min_ns)
+		s->min_ns = ns;
+	if (ns > s->max_ns)
+		s->max_ns = ns;
+	s->sum_ns += ns;
+	s->calls++;
+	s->slow += slow;
+	s->errors += error;
+}
+
+static void measure_set_speed(void)
+{
+	for (unsigned i = 0; i < n_calls; i++) {
+		int speed = bench_speed_for(i);
+		uint64_t v0 = rtos_host_now(), t0 = now_ns(CLOCK_MONOTONIC);
+		ER ercd = ev3_motor_set_speed(BENCH_MOTOR_PORT, speed);
+		uint64_t t1 = now_ns(CLOCK_MONOTONIC);
+
+		account(&st_speed, t1 - t0, rtos_host_now() != v0, ercd != E_OK);
+	}
+}
+
+static void measure_get_raw(void)
+{
+	uint8_t raw[BENCH_RAW_BYTES];
+
+	for (unsigned i = 0; i < n_calls; i++) {
+		uint64_t v0 = rtos_host_now(), t0 = now_ns(CLOCK_MONOTONIC);
+		ER ercd = ev3_uart_sensor_get_raw(BENCH_SENSOR_PORT, raw, sizeof(raw));
+		uint64_t t1 = now_ns(CLOCK_MONOTONIC);
+
+		account(&st_raw, t1 - t0, rtos_host_now() != v0, ercd != E_OK);
+	}
+}
+
+/* What Linux costs for the same command: one write() system call each. */
+static void measure_write(void)
+{
+	int fd = open("/dev/null", O_WRONLY);
+	uint8_t cmd[3];
+	unsigned len;
+
+	if (fd < 0) {
+		st_write.errors = n_calls;
+		return;
+	}
+	for (unsigned i = 0; i < n_calls; i++) {
+		bench_speed_command(bench_speed_for(i), cmd, &len);
+		uint64_t t0 = now_ns(CLOCK_MONOTONIC);
+		ssize_t n = write(fd, cmd, len);
+		uint64_t t1 = now_ns(CLOCK_MONOTONIC);
+
+		account(&st_write, t1 - t0, false, n != (ssize_t)len);
+	}
+	close(fd);
+}
+
+/* The cost of the measurement itself: two clock reads around nothing. */
+static void measure_clock(void)
+{
+	for (unsigned i = 0; i < n_calls; i++) {
+		uint64_t t0 = now_ns(CLOCK_MONOTONIC);
+		uint64_t t1 = now_ns(CLOCK_MONOTONIC);
+
+		account(&st_clock, t1 - t0, false, false);
+	}
+}
+
+static void calls_body(void)
+{
+	prepare_result = bench_brick_prepare();
+	if (prepare_result != E_OK)
+		return;
+	measure_clock();
+	measure_set_speed();
+	measure_get_raw();
+	measure_write();
+	calls_done = true;
+}
+
+/* The full stack running on its own: drivers, motors turning, sensors
+ * streaming, the application asleep; wall and CPU time of virtual_s. */
+static void stack_body(void)
+{
+	uint64_t w0, c0, v0;
+
+	prepare_result = bench_brick_prepare();
+	if (prepare_result != E_OK)
+		return;
+	w0 = now_ns(CLOCK_MONOTONIC);
+	c0 = now_ns(CLOCK_PROCESS_CPUTIME_ID);
+	v0 = rtos_host_now();
+	dly_tsk((RELTIM)(virtual_s * 1000.0));
+	stack_virtual_s = (double)(rtos_host_now() - v0) / 1e9;
+	stack_wall_s = (double)(now_ns(CLOCK_MONOTONIC) - w0) / 1e9;
+	stack_cpu_s = (double)(now_ns(CLOCK_PROCESS_CPUTIME_ID) - c0) / 1e9;
+}
+
+static void print_call(const struct call_stats *s)
+{
+	printf("call,%s,%u,%.1f,%llu,%llu,%u,%u\n", s->name, s->calls,
+	       s->calls ? (double)s->sum_ns / s->calls : 0.0, (unsigned long long)s->min_ns,
+	       (unsigned long long)s->max_ns, s->slow, s->errors);
+}
+
+static void print_speed(const char *name, double vs, double ws, double cs)
+{
+	printf("speed,%s,%.3f,%.3f,%.3f,%.1f,%.1f\n", name, vs, ws, cs,
+	       ws > 0 ? vs / ws : 0.0, cs > 0 ? vs / cs : 0.0);
+}
+
+int main(int argc, char **argv)
+{
+	struct ev3_bench_result r;
+	ER ercd;
+
+	if (argc > 1)
+		n_calls = (unsigned)strtoul(argv[1], NULL, 10);
+	if (argc > 2)
+		virtual_s = strtod(argv[2], NULL);
+	if (n_calls == 0 || !(virtual_s > 0.0 && virtual_s <= 3600.0)) {
+		fprintf(stderr, "usage: bench_host [calls [virtual_s]]\n");
+		return 2;
+	}
+
+	if (!bench_brick_run(BENCH_BRICK_FULL, calls_body, BENCH_SEED, 60) || !calls_done) {
+		fprintf(stderr, "bench_host: the measured calls did not run (prepare: %d)\n",
+			(int)prepare_result);
+		return 1;
+	}
+	print_call(&st_speed);
+	print_call(&st_raw);
+	print_call(&st_write);
+	print_call(&st_clock);
+
+	ercd = ev3_bench_full_brick(virtual_s, BENCH_SEED, &r);
+	if (ercd != E_OK) {
+		fprintf(stderr, "bench_host: ev3_bench_full_brick: %d\n", (int)ercd);
+		return 1;
+	}
+	print_speed("host_sim_devices", r.virtual_s, r.wall_s, r.cpu_s);
+
+	if (!bench_brick_run(BENCH_BRICK_FULL, stack_body, BENCH_SEED, 30U + (unsigned)virtual_s) || stack_wall_s <= 0.0) {
+		fprintf(stderr, "bench_host: the full stack did not run (prepare: %d)\n",
+			(int)prepare_result);
+		return 1;
+	}
+	print_speed("full_stack", stack_virtual_s, stack_wall_s, stack_cpu_s);
+	return st_speed.errors || st_raw.errors || st_write.errors ? 1 : 0;
+}

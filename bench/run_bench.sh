@@ -1,0 +1,167 @@
+#!/bin/bash
+# run_bench.sh MODE OUT BUILD — runs the benchmarks of `make bench` (MODE full)
+# or `make bench-quick` (MODE quick), prints the table, writes OUT/bench.csv.
+# docs/bench.md explains every figure.  Quick mode asserts only that every
+# figure was produced (never a speed); both modes fail if a measured call
+# returned an error or a measurement is missing.
+#   BENCH_SINGLESTEP=1   count with qemu -singlestep (one instruction per logged
+#                        block) instead of whole blocks: slower, same counts
+set -u -o pipefail
+mode=$1 out=$2 build=$3
+
+case $mode in
+full)  calls=10000 virtual_s=10  arm_calls=10000 tick_ms=200 brick=""      ;;
+quick) calls=200   virtual_s=0.5 arm_calls=200   tick_ms=20  brick="light" ;;
+*) echo "run_bench.sh: mode is full or quick" >&2; exit 2 ;;
+esac
+
+host_bench=$build/host/bench_host
+counter=$build/host/insn_count
+arm_bin=$build/arm926-test/bench/bench_arm
+shim=$build/host/bench/qemu_log_buffer.so
+mkdir -p "$out"
+rm -f "$out"/*.txt "$out"/*.csv "$out"/qemu.fifo
+
+fail() { echo "bench: FAILED: $*" >&2; exit 1; }
+
+# ---- 1 and 3: the host ----
+echo "bench ($mode): host: $calls calls each, host_sim for $virtual_s virtual s ..." >&2
+"$host_bench" $calls $virtual_s > "$out/host_raw.txt" || fail "bench_host (see $out/host_raw.txt)"
+grep -E '^(call|speed),' "$out/host_raw.txt" > "$out/host.txt"
+
+# ---- 2: ARMv5 instruction counts ----
+echo "bench ($mode): ARMv5: $arm_calls calls each, $tick_ms ms of ticks under qemu-arm -cpu arm926 ..." >&2
+fifo=$out/qemu.fifo
+mkfifo "$fifo"
+qemu_log="in_asm,exec,nochain"
+qemu_flags=()
+[ "${BENCH_SINGLESTEP:-0}" = 1 ] && qemu_flags+=(-singlestep)
+"$counter" "$arm_bin.syms" -m ev3_motor_set_speed -m ev3_uart_sensor_get_raw -m lx_tick_isr \
+	-w bench_window_open bench_window_close < "$fifo" > "$out/arm.txt" &
+counter_pid=$!
+preload=()
+[ -f "$shim" ] && preload=(env LD_PRELOAD="$shim")
+"${preload[@]}" qemu-arm -cpu arm926 "${qemu_flags[@]}" -d $qemu_log -D "$fifo" \
+	"$arm_bin.stripped" $arm_calls $tick_ms $brick > "$out/arm_run.txt"
+arm_status=$?
+wait $counter_pid || fail "insn_count"
+rm -f "$fifo"
+[ $arm_status = 0 ] || fail "bench_arm under qemu-arm exited with $arm_status (see $out/arm_run.txt)"
+grep -q "^phase ev3_motor_set_speed $arm_calls 0$" "$out/arm_run.txt" &&
+	grep -q "^phase ev3_uart_sensor_get_raw $arm_calls 0$" "$out/arm_run.txt" ||
+	fail "bench_arm: a measured call failed (see $out/arm_run.txt)"
+
+# ---- the CSV: section,measure,value,unit,paper,target,status ----
+awk -F, -v calls=$calls -v arm_calls=$arm_calls -v mode=$mode '
+function row(sec, name, v, unit, paper, target, status) {
+	printf "%s,%s,%s,%s,%s,%s,%s\n", sec, name, v, unit, paper, target, status
+}
+function verdict(ok) { return ok ? "met" : "missed" }
+FILENAME ~ /host.txt$/ && $1 == "call" { havg[$2] = $4; hmax[$2] = $6; hn[$2] = $3; hslow[$2] = $7; herr[$2] = $8 }
+FILENAME ~ /host.txt$/ && $1 == "speed" { spd[$2] = $6; cspd[$2] = $7; vs[$2] = $3; ws[$2] = $4 }
+FILENAME ~ /arm.txt$/ && $1 == "call" { an[$2] = $3; araw[$2] = $4; arawmax[$2] = $6; aeq[$2] = $7; aeqmax[$2] = $9 }
+FILENAME ~ /arm.txt$/ && $1 == "log" { windows = $5 }
+END {
+	print "section,measure,value,unit,paper,target,status"
+	s = "ev3_motor_set_speed"; r = "ev3_uart_sensor_get_raw"; w = "write_dev_null"
+	row("host", s " avg", havg[s], "ns", 4540, "", "")
+	row("host", s " max", hmax[s], "ns", 40000, "", "")
+	row("host", r " avg", havg[r], "ns", 5550, "", "")
+	row("host", r " max", hmax[r], "ns", 33000, "", "")
+	row("host", "write() avg", havg[w], "ns", 596000, "", "")
+	row("host", "write() max", hmax[w], "ns", 3424000, "", "")
+	rs = havg[s] > 0 ? havg[w] / havg[s] : 0
+	rr = havg[r] > 0 ? havg[w] / havg[r] : 0
+	row("host", "write()/" s, sprintf("%.1f", rs), "x", sprintf("%.0f", 596 / 4.54), ">=20", verdict(rs >= 20))
+	row("host", "write()/" r, sprintf("%.1f", rr), "x", sprintf("%.0f", 596 / 5.55), ">=20", verdict(rr >= 20))
+	row("host", "clock_gettime pair", havg["clock_gettime_pair"], "ns", "", "", "")
+	row("host", "calls", hn[s] + hn[r], "calls", "", "", "")
+	row("host", "slow-path calls", hslow[s] + hslow[r], "calls", "", "", "")
+	split("ev3_motor_set_speed:150 ev3_uart_sensor_get_raw:100 lx_tick_isr:300", t, " ")
+	paper_cycles["ev3_motor_set_speed"] = 1362; paper_cycles["ev3_uart_sensor_get_raw"] = 1665
+	for (i = 1; i <= 3; i++) {
+		split(t[i], kv, ":"); f = kv[1]; lim = kv[2]
+		name = f == "lx_tick_isr" ? "tick" : f
+		pc = f in paper_cycles ? paper_cycles[f] : ""
+		row("arm", name " calls", an[f], "calls", "", "", "")
+		row("arm", name " target-equivalent avg", aeq[f], "instructions", pc, "<=" lim, verdict(aeq[f] <= lim))
+		row("arm", name " target-equivalent max", aeqmax[f], "instructions", "", "<=2*avg",
+		    verdict(aeqmax[f] <= 2 * aeq[f]))
+		row("arm", name " raw avg", araw[f], "instructions", "", "", "")
+		row("arm", name " raw max", arawmax[f], "instructions", "", "", "")
+	}
+	row("arm", "windows", windows, "windows", "", "", "")
+	row("sim", "host_sim devices (ev3_bench_full_brick)", spd["host_sim_devices"], "x real time", "", ">=500",
+	    verdict(spd["host_sim_devices"] >= 500))
+	row("sim", "host_sim devices per CPU second", cspd["host_sim_devices"], "x real time", "", "", "")
+	row("sim", "full stack (drivers + 4 motors + 4 sensors)", spd["full_stack"], "x real time", "", ">=500",
+	    verdict(spd["full_stack"] >= 500))
+	row("sim", "full stack per CPU second", cspd["full_stack"], "x real time", "", "", "")
+}' "$out/host.txt" "$out/arm.txt" > "$out/bench.csv"
+grep -E '^(class|fn),' "$out/arm.txt" > "$out/breakdown.csv"
+
+# ---- every figure present (both modes); the counts of calls as asked ----
+awk -F, 'NR > 1 && $3 == "" { print "missing: " $1 " " $2; bad = 1 } END { exit bad }' "$out/bench.csv" ||
+	fail "a figure is missing (see $out/bench.csv)"
+check() { awk -F, -v m="$1" -v want="$2" '$2 == m { found = 1; if ($3 != want) { print m ": " $3 " (want " want ")"; exit 1 } } END { if (!found) exit 1 }' "$out/bench.csv" || fail "$1"; }
+check "calls" $((2 * calls))
+check "slow-path calls" 0
+check "ev3_motor_set_speed calls" $arm_calls
+check "ev3_uart_sensor_get_raw calls" $arm_calls
+check "windows" 3
+awk -F, '$2 == "tick calls" && $3 + 0 < 1 { exit 1 }' "$out/bench.csv" || fail "no tick was counted"
+
+# ---- the table ----
+awk -F, -v mode=$mode -v calls=$calls -v arm_calls=$arm_calls -v tick_ms=$tick_ms -v brick="${brick:-full}" '
+function v(name) { return val[name] }
+function st(name) { return status[name] == "" ? "" : status[name] }
+function arm_rows(key, label, paper, paper_ratio, limit,   a, mx) {
+	a = v(key " target-equivalent avg"); mx = v(key " target-equivalent max")
+	printf fmt, "  " label " avg / max", sprintf("%.0f / %.0f", a, mx), paper == "" ? "" : paper " avg", "<= " limit, st(key " target-equivalent avg")
+	printf fmt, "    max / avg", sprintf("%.2f", a > 0 ? mx / a : 0), paper_ratio == "" ? "" : paper_ratio " (us max/avg)", "<= 2", st(key " target-equivalent max")
+	printf fmt, "    raw (with the simulation) avg / max", sprintf("%.0f / %.0f", v(key " raw avg"), v(key " raw max")), "", "", ""
+}
+FILENAME ~ /bench.csv$/ && FNR > 1 { val[$2] = $3; status[$2] = $7 }
+FILENAME ~ /breakdown.csv$/ && $1 == "class" && $3 != "sim" { cls[$2] = cls[$2] sprintf(" %s %.0f", $3, $5) }
+FILENAME ~ /breakdown.csv$/ && $1 == "fn" { nfn[$2]++; fname[$2, nfn[$2]] = $3; fcls[$2, nfn[$2]] = $4; feq[$2, nfn[$2]] = $6 }
+END {
+	s = "ev3_motor_set_speed"; r = "ev3_uart_sensor_get_raw"
+	printf "\n== ev3lx bench (%s: %d host calls each, %d ARMv5 calls each, %d ms of ticks, %s brick) ==\n", mode, calls, arm_calls, tick_ms, brick
+	printf "Paper: EV3RT on the EV3 (AM1808, ARM926 at 300 MHz), and LEGO firmware Linux write().\n\n"
+	fmt = "%-44s %-24s %-26s %-10s %s\n"
+	printf fmt, "measure", "ev3lx", "paper", "target", "status"
+	printf "1. host: from an application task on the simulated brick (x86-64, wall clock)\n"
+	printf fmt, "  ev3_motor_set_speed avg / max", sprintf("%.0f / %.0f ns", v(s " avg"), v(s " max")), "4.54 / 40 us", "", ""
+	printf fmt, "  ev3_uart_sensor_get_raw avg / max", sprintf("%.0f / %.0f ns", v(r " avg"), v(r " max")), "5.55 / 33 us", "", ""
+	printf fmt, "  write() to /dev/null avg / max", sprintf("%.0f / %.0f ns", v("write() avg"), v("write() max")), "596 / 3424 us", "", ""
+	printf fmt, "  write() / ev3_motor_set_speed", v("write()/" s) "x", "131x", ">= 20x", st("write()/" s)
+	printf fmt, "  write() / ev3_uart_sensor_get_raw", v("write()/" r) "x", "107x", ">= 20x", st("write()/" r)
+	printf fmt, "  (clock_gettime pair, included above)", sprintf("%.0f ns", v("clock_gettime pair")), "", "", ""
+	printf fmt, "  calls that took a slow path", v("slow-path calls"), "", "", ""
+	printf "2. ARMv5 instructions per call under qemu-arm -cpu arm926 (target-equivalent; raw)\n"
+	arm_rows(s, s, "~1362 cycles", "8.8", 150)
+	arm_rows(r, r, "~1665 cycles", "5.9", 100)
+	arm_rows("tick", "200 us tick (lx_tick_isr)", "", "", 300)
+	printf fmt, "    ticks counted", v("tick calls"), "", "", ""
+	printf "3. host_sim speed (virtual seconds per wall second)\n"
+	printf fmt, "  devices only (ev3_bench_full_brick)", sprintf("%.0fx (%.0fx per CPU s)", v("host_sim devices (ev3_bench_full_brick)"), v("host_sim devices per CPU second")), "", ">= 500x", st("host_sim devices (ev3_bench_full_brick)")
+	printf fmt, "  full stack: drivers, 4 motors, 4 sensors", sprintf("%.0fx (%.0fx per CPU s)", v("full stack (drivers + 4 motors + 4 sensors)"), v("full stack per CPU second")), "", ">= 500x", st("full stack (drivers + 4 motors + 4 sensors)")
+	printf "\nWhere the ARMv5 instructions go (target-equivalent per call, by layer; top functions):\n"
+	split("ev3_motor_set_speed ev3_uart_sensor_get_raw lx_tick_isr", m, " ")
+	for (i = 1; i <= 3; i++) {
+		f = m[i]
+		printf "  %s:%s\n   ", f, cls[f]
+		# the eight functions with the most counted instructions
+		for (k = 1; k <= 8; k++) {
+			best = 0; bi = 0
+			for (j = 1; j <= nfn[f]; j++)
+				if (!((f, j) in used) && feq[f, j] + 0 > best) { best = feq[f, j] + 0; bi = j }
+			if (!bi) break
+			used[f, bi] = 1
+			printf " %s(%s) %.0f", fname[f, bi], fcls[f, bi], best
+		}
+		printf "\n"
+	}
+	printf "\nWhy targets are missed, and what is counted: docs/bench.md.\n"
+}' "$out/bench.csv" "$out/breakdown.csv" | tee "$out/table.txt"
+echo "bench ($mode): $out/bench.csv, $out/breakdown.csv, $out/table.txt"

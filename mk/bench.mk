@@ -1,0 +1,42 @@
+# `make bench`: the EV3 API against the paper's Table 2 (docs/bench.md).
+#   make bench         10 000 calls each on the full brick: table + build/bench/bench.csv
+#   make bench-quick   200 calls, a short light-brick QEMU run: proves that every
+#                      figure is produced (part of `make test`); asserts no speed
+# The host programs (bench_host, insn_count) are HOST_PROGRAMS of bench/module.mk;
+# the ARMv5 program is linked here against the arm926-test library, like a test.
+BENCH_OUT       := $(BUILD)/bench
+BENCH_ARM       := $(BUILD)/arm926-test/bench/bench_arm
+BENCH_ARM_OBJS  := $(patsubst %.c,$(BUILD)/arm926-test/obj/%.o,$(BENCH_ARM_SRCS))
+BENCH_LOG_SHIM  := $(BUILD)/host/bench/qemu_log_buffer.so
+
+$(BENCH_ARM): $(BENCH_ARM_OBJS) $(LIB_arm926-test)
+	@mkdir -p $(@D)
+	$(CC_arm926-test) $(CFLAGS_arm926-test) $(LDFLAGS_arm926-test) -o $@ $(BENCH_ARM_OBJS) \
+		-Wl,--start-group $(LIB_arm926-test) -Wl,--end-group -lm
+
+# Functions with their source files, for the counter's attribution; QEMU runs a
+# stripped copy (it would look every executed block's symbol up for the log).
+$(BENCH_ARM).syms: $(BENCH_ARM)
+	arm-linux-gnueabi-nm -n -S -l --defined-only $< > $@
+
+$(BENCH_ARM).stripped: $(BENCH_ARM)
+	arm-linux-gnueabi-strip -o $@ $<
+
+$(BENCH_LOG_SHIM): bench/qemu_log_buffer.c
+	@mkdir -p $(@D)
+	$(CC_host) -std=gnu11 -O2 $(WARN) -shared -fPIC -o $@ $< -ldl
+
+BENCH_DEPS := $(BUILD)/host/bench_host $(BUILD)/host/insn_count $(BENCH_ARM).syms \
+	$(BENCH_ARM).stripped $(BENCH_LOG_SHIM)
+
+.PHONY: bench bench-quick
+bench: deps-check $(BENCH_DEPS)
+	@bash bench/run_bench.sh full $(BENCH_OUT) $(BUILD)
+
+bench-quick: deps-check $(BENCH_DEPS)
+	@bash bench/run_bench.sh quick $(BENCH_OUT)/quick $(BUILD)
+
+TEST_SUITE_EXTRA += bench-quick
+TEST_SUITE_EXTRA_DEPS += $(BENCH_DEPS)
+
+-include $(BENCH_ARM_OBJS:.o=.d)
