@@ -31,9 +31,10 @@
  *            coroutines, run loop, trace, bug reports, boot, syslog), the
  *            rest of sil_host.c, and anything they call       excluded
  * Output, one CSV record per line:
- *   call,FUNC,calls,raw_avg,raw_min,raw_max,eq_avg,eq_min,eq_max
+ *   call,FUNC,calls,raw_avg,raw_min,raw_max,eq_avg,eq_min,eq_max,eq_p50,eq_p90,eq_p99
  *   class,FUNC,CLASS,raw_per_call,eq_per_call
  *   fn,FUNC,FUNCTION,CLASS,raw_per_call,eq_per_call      (every function reached)
+ *   libc,FUNC,CALLER,eq_per_call     counted C library code by the function it works for
  *   all,FUNCTION,CLASS,instructions                    (-p: the whole log, per function)
  *   log,blocks,instructions,instructions_in_calls,windows_closed
  */
@@ -87,6 +88,9 @@ struct measured {
 	uint64_t raw_sum, raw_min, raw_max;
 	uint64_t eq_sum, eq_min, eq_max;
 	uint64_t *fn_raw, *fn_eq;           /* per symbol, summed over calls */
+	uint64_t *libc_eq;                  /* counted C library instructions per calling function */
+	uint64_t *eq_each;                  /* every call's count, for the percentiles */
+	size_t eq_each_cap;
 	uint64_t cls_raw[NCLASS], cls_eq[NCLASS];
 };
 
@@ -97,6 +101,7 @@ static unsigned nmeas;
 struct frame {
 	uint32_t ret;
 	bool excluded;
+	int32_t owner;          /* the function the frame's C library code works for */
 };
 
 /* The state of the stream. */
@@ -383,6 +388,13 @@ static void call_end(void)
 		m->eq_min = st.eq;
 	if (st.eq > m->eq_max)
 		m->eq_max = st.eq;
+	if (m->calls > m->eq_each_cap) {
+		m->eq_each_cap = m->eq_each_cap ? m->eq_each_cap * 2 : 1024;
+		m->eq_each = realloc(m->eq_each, m->eq_each_cap * sizeof(uint64_t));
+		if (!m->eq_each)
+			exit(2);
+	}
+	m->eq_each[m->calls - 1] = st.eq;
 	st.call = NULL;
 }
 
@@ -415,6 +427,7 @@ static void exec_block(const struct tb_info *t)
 				st.depth = 1;
 				st.stack[0].ret = prev->end;
 				st.stack[0].excluded = false;
+				st.stack[0].owner = t->sym;
 				st.raw = st.eq = 0;
 				break;
 			}
@@ -440,8 +453,13 @@ static void exec_block(const struct tb_info *t)
 			if (s && s->equiv_cost && !top->excluded)
 				st.eq += s->equiv_cost, st.call->cls_eq[s->cls] += s->equiv_cost;
 			if (st.depth < MAX_DEPTH) {
+				bool callee_libc = !s || s->cls == CL_LIBC;
+				bool caller_libc = prev->sym < 0 || syms[prev->sym].cls == CL_LIBC;
+
 				st.stack[st.depth].ret = prev->end;
 				st.stack[st.depth].excluded = excl;
+				st.stack[st.depth].owner = !callee_libc ? t->sym :
+							   caller_libc ? top->owner : prev->sym;
 				st.depth++;
 			}
 		} else if (at_entry && prev && prev->sym != t->sym &&
@@ -467,6 +485,8 @@ static void exec_block(const struct tb_info *t)
 			st.call->cls_eq[c] += t->ninsns;
 			if (t->sym >= 0)
 				st.call->fn_eq[t->sym] += t->ninsns;
+			if (c == CL_LIBC && st.stack[st.depth - 1].owner >= 0)
+				st.call->libc_eq[st.stack[st.depth - 1].owner] += t->ninsns;
 		}
 	}
 }
@@ -523,14 +543,34 @@ static double per_call(uint64_t v, uint64_t calls)
 	return calls ? (double)v / (double)calls : 0.0;
 }
 
+static int u64_cmp(const void *a, const void *b)
+{
+	uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+
+	return x < y ? -1 : x > y;
+}
+
+/* The p-th percentile of the sorted counts (nearest rank). */
+static uint64_t percentile(const uint64_t *sorted, uint64_t n, unsigned p)
+{
+	uint64_t rank = (n * p + 99U) / 100U;
+
+	return n ? sorted[rank ? rank - 1 : 0] : 0;
+}
+
 static void report(void)
 {
 	for (unsigned i = 0; i < nmeas; i++) {
-		const struct measured *m = &meas[i];
+		struct measured *m = &meas[i];
 
-		printf("call,%s,%" PRIu64 ",%.1f,%" PRIu64 ",%" PRIu64 ",%.1f,%" PRIu64 ",%" PRIu64 "\n",
+		if (m->calls)
+			qsort(m->eq_each, m->calls, sizeof(uint64_t), u64_cmp);
+		printf("call,%s,%" PRIu64 ",%.1f,%" PRIu64 ",%" PRIu64 ",%.1f,%" PRIu64 ",%" PRIu64
+		       ",%" PRIu64 ",%" PRIu64 ",%" PRIu64 "\n",
 		       m->name, m->calls, per_call(m->raw_sum, m->calls), m->raw_min, m->raw_max,
-		       per_call(m->eq_sum, m->calls), m->eq_min, m->eq_max);
+		       per_call(m->eq_sum, m->calls), m->eq_min, m->eq_max,
+		       percentile(m->eq_each, m->calls, 50), percentile(m->eq_each, m->calls, 90),
+		       percentile(m->eq_each, m->calls, 99));
 		for (unsigned c = 0; c < NCLASS; c++)
 			if (m->cls_raw[c] || m->cls_eq[c])
 				printf("class,%s,%s,%.1f,%.1f\n", m->name, class_name[c],
@@ -540,6 +580,10 @@ static void report(void)
 				printf("fn,%s,%s,%s,%.1f,%.1f\n", m->name, syms[s].name,
 				       class_name[syms[s].cls], per_call(m->fn_raw[s], m->calls),
 				       per_call(m->fn_eq[s], m->calls));
+		for (size_t s = 0; s < nsyms; s++)
+			if (m->libc_eq[s])
+				printf("libc,%s,%s,%.1f\n", m->name, syms[s].name,
+				       per_call(m->libc_eq[s], m->calls));
 	}
 	for (size_t i = 0; all_insns && i < nsyms; i++)
 		if (all_insns[i])
@@ -568,7 +612,8 @@ int main(int argc, char **argv)
 			meas[nmeas].sym = sym_named(meas[nmeas].name);
 			meas[nmeas].fn_raw = calloc(nsyms, sizeof(uint64_t));
 			meas[nmeas].fn_eq = calloc(nsyms, sizeof(uint64_t));
-			if (!meas[nmeas].fn_raw || !meas[nmeas].fn_eq)
+			meas[nmeas].libc_eq = calloc(nsyms, sizeof(uint64_t));
+			if (!meas[nmeas].fn_raw || !meas[nmeas].fn_eq || !meas[nmeas].libc_eq)
 				return 2;
 			nmeas++;
 		} else if (strcmp(argv[i], "-p") == 0) {

@@ -57,23 +57,31 @@ function row(sec, name, v, unit, paper, target, status) {
 	printf "%s,%s,%s,%s,%s,%s,%s\n", sec, name, v, unit, paper, target, status
 }
 function verdict(ok) { return ok ? "met" : "missed" }
-FILENAME ~ /host.txt$/ && $1 == "call" { havg[$2] = $4; hmax[$2] = $6; hn[$2] = $3; hslow[$2] = $7; herr[$2] = $8 }
+FILENAME ~ /host.txt$/ && $1 == "call" { havg[$2] = $4; hmax[$2] = $6; hn[$2] = $3; hslow[$2] = $7; herr[$2] = $8; hmed[$2] = $9; hp99[$2] = $10 }
 FILENAME ~ /host.txt$/ && $1 == "speed" { spd[$2] = $6; cspd[$2] = $7; vs[$2] = $3; ws[$2] = $4 }
-FILENAME ~ /arm.txt$/ && $1 == "call" { an[$2] = $3; araw[$2] = $4; arawmax[$2] = $6; aeq[$2] = $7; aeqmax[$2] = $9 }
+FILENAME ~ /arm.txt$/ && $1 == "call" { an[$2] = $3; araw[$2] = $4; arawmax[$2] = $6; aeq[$2] = $7; aeqmax[$2] = $9; p50[$2] = $10; p90[$2] = $11; p99[$2] = $12 }
 FILENAME ~ /arm.txt$/ && $1 == "log" { windows = $5 }
 END {
 	print "section,measure,value,unit,paper,target,status"
 	s = "ev3_motor_set_speed"; r = "ev3_uart_sensor_get_raw"; w = "write_dev_null"
 	row("host", s " avg", havg[s], "ns", 4540, "", "")
 	row("host", s " max", hmax[s], "ns", 40000, "", "")
+	row("host", s " median", hmed[s], "ns", "", "", "")
+	row("host", s " p99", hp99[s], "ns", "", "", "")
 	row("host", r " avg", havg[r], "ns", 5550, "", "")
 	row("host", r " max", hmax[r], "ns", 33000, "", "")
+	row("host", r " median", hmed[r], "ns", "", "", "")
+	row("host", r " p99", hp99[r], "ns", "", "", "")
 	row("host", "write() avg", havg[w], "ns", 596000, "", "")
 	row("host", "write() max", hmax[w], "ns", 3424000, "", "")
+	row("host", "write() median", hmed[w], "ns", "", "", "")
+	row("host", "write() p99", hp99[w], "ns", "", "", "")
 	rs = havg[s] > 0 ? havg[w] / havg[s] : 0
 	rr = havg[r] > 0 ? havg[w] / havg[r] : 0
 	row("host", "write()/" s, sprintf("%.1f", rs), "x", sprintf("%.0f", 596 / 4.54), ">=20", verdict(rs >= 20))
 	row("host", "write()/" r, sprintf("%.1f", rr), "x", sprintf("%.0f", 596 / 5.55), ">=20", verdict(rr >= 20))
+	row("host", "write()/" s " medians", sprintf("%.1f", hmed[s] > 0 ? hmed[w] / hmed[s] : 0), "x", "", "", "")
+	row("host", "write()/" r " medians", sprintf("%.1f", hmed[r] > 0 ? hmed[w] / hmed[r] : 0), "x", "", "", "")
 	row("host", "clock_gettime pair", havg["clock_gettime_pair"], "ns", "", "", "")
 	row("host", "calls", hn[s] + hn[r], "calls", "", "", "")
 	row("host", "slow-path calls", hslow[s] + hslow[r], "calls", "", "", "")
@@ -87,6 +95,9 @@ END {
 		row("arm", name " target-equivalent avg", aeq[f], "instructions", pc, "<=" lim, verdict(aeq[f] <= lim))
 		row("arm", name " target-equivalent max", aeqmax[f], "instructions", "", "<=2*avg",
 		    verdict(aeqmax[f] <= 2 * aeq[f]))
+		row("arm", name " target-equivalent median", p50[f], "instructions", "", "", "")
+		row("arm", name " target-equivalent p90", p90[f], "instructions", "", "", "")
+		row("arm", name " target-equivalent p99", p99[f], "instructions", "", "", "")
 		row("arm", name " raw avg", araw[f], "instructions", "", "", "")
 		row("arm", name " raw max", arawmax[f], "instructions", "", "", "")
 	}
@@ -98,7 +109,7 @@ END {
 	    verdict(spd["full_stack"] >= 500))
 	row("sim", "full stack per CPU second", cspd["full_stack"], "x real time", "", "", "")
 }' "$out/host.txt" "$out/arm.txt" > "$out/bench.csv"
-grep -E '^(class|fn),' "$out/arm.txt" > "$out/breakdown.csv"
+grep -E '^(class|fn|libc),' "$out/arm.txt" > "$out/breakdown.csv"
 
 # ---- every figure present (both modes); the counts of calls as asked ----
 awk -F, 'NR > 1 && $3 == "" { print "missing: " $1 " " $2; bad = 1 } END { exit bad }' "$out/bench.csv" ||
@@ -119,23 +130,28 @@ function arm_rows(key, label, paper, paper_ratio, limit,   a, mx) {
 	a = v(key " target-equivalent avg"); mx = v(key " target-equivalent max")
 	printf fmt, "  " label " avg / max", sprintf("%.0f / %.0f", a, mx), paper == "" ? "" : paper " avg", "<= " limit, st(key " target-equivalent avg")
 	printf fmt, "    max / avg", sprintf("%.2f", a > 0 ? mx / a : 0), paper_ratio == "" ? "" : paper_ratio " (us max/avg)", "<= 2", st(key " target-equivalent max")
+	printf fmt, "    median / p90 / p99", sprintf("%.0f / %.0f / %.0f", v(key " target-equivalent median"), v(key " target-equivalent p90"), v(key " target-equivalent p99")), "", "", ""
 	printf fmt, "    raw (with the simulation) avg / max", sprintf("%.0f / %.0f", v(key " raw avg"), v(key " raw max")), "", "", ""
 }
 FILENAME ~ /bench.csv$/ && FNR > 1 { val[$2] = $3; status[$2] = $7 }
 FILENAME ~ /breakdown.csv$/ && $1 == "class" && $3 != "sim" { cls[$2] = cls[$2] sprintf(" %s %.0f", $3, $5) }
+FILENAME ~ /breakdown.csv$/ && $1 == "libc" && $4 >= 1 { lib[$2] = lib[$2] sprintf(" %s %.0f", $3, $4) }
 FILENAME ~ /breakdown.csv$/ && $1 == "fn" { nfn[$2]++; fname[$2, nfn[$2]] = $3; fcls[$2, nfn[$2]] = $4; feq[$2, nfn[$2]] = $6 }
 END {
 	s = "ev3_motor_set_speed"; r = "ev3_uart_sensor_get_raw"
 	printf "\n== ev3lx bench (%s: %d host calls each, %d ARMv5 calls each, %d ms of ticks, %s brick) ==\n", mode, calls, arm_calls, tick_ms, brick
 	printf "Paper: EV3RT on the EV3 (AM1808, ARM926 at 300 MHz), and LEGO firmware Linux write().\n\n"
-	fmt = "%-44s %-24s %-26s %-10s %s\n"
+	fmt = "%-48s %-24s %-24s %-10s %s\n"
 	printf fmt, "measure", "ev3lx", "paper", "target", "status"
-	printf "1. host: from an application task on the simulated brick (x86-64, wall clock)\n"
+	printf "1. host: from an application task on the simulated brick (x86-64, CLOCK_MONOTONIC, best of 3 rounds)\n"
 	printf fmt, "  ev3_motor_set_speed avg / max", sprintf("%.0f / %.0f ns", v(s " avg"), v(s " max")), "4.54 / 40 us", "", ""
+	printf fmt, "    median / p99", sprintf("%.0f / %.0f ns", v(s " median"), v(s " p99")), "", "", ""
 	printf fmt, "  ev3_uart_sensor_get_raw avg / max", sprintf("%.0f / %.0f ns", v(r " avg"), v(r " max")), "5.55 / 33 us", "", ""
-	printf fmt, "  write() to /dev/null avg / max", sprintf("%.0f / %.0f ns", v("write() avg"), v("write() max")), "596 / 3424 us", "", ""
-	printf fmt, "  write() / ev3_motor_set_speed", v("write()/" s) "x", "131x", ">= 20x", st("write()/" s)
-	printf fmt, "  write() / ev3_uart_sensor_get_raw", v("write()/" r) "x", "107x", ">= 20x", st("write()/" r)
+	printf fmt, "    median / p99", sprintf("%.0f / %.0f ns", v(r " median"), v(r " p99")), "", "", ""
+	printf fmt, "  write() to /dev/null avg / max", sprintf("%.0f / %.0f ns", v("write() avg"), v("write() max")), "596 / 3424 us (brick)", "", ""
+	printf fmt, "    median / p99", sprintf("%.0f / %.0f ns", v("write() median"), v("write() p99")), "", "", ""
+	printf fmt, "  write() / ev3_motor_set_speed (avg; median)", sprintf("%sx; %sx", v("write()/" s), v("write()/" s " medians")), "131x", ">= 20x", st("write()/" s)
+	printf fmt, "  write() / ev3_uart_sensor_get_raw", sprintf("%sx; %sx", v("write()/" r), v("write()/" r " medians")), "107x", ">= 20x", st("write()/" r)
 	printf fmt, "  (clock_gettime pair, included above)", sprintf("%.0f ns", v("clock_gettime pair")), "", "", ""
 	printf fmt, "  calls that took a slow path", v("slow-path calls"), "", "", ""
 	printf "2. ARMv5 instructions per call under qemu-arm -cpu arm926 (target-equivalent; raw)\n"
@@ -161,6 +177,8 @@ END {
 			printf " %s(%s) %.0f", fname[f, bi], fcls[f, bi], best
 		}
 		printf "\n"
+		if (lib[f] != "")
+			printf "    C library code on behalf of:%s\n", lib[f]
 	}
 	printf "\nWhy targets are missed, and what is counted: docs/bench.md.\n"
 }' "$out/bench.csv" "$out/breakdown.csv" | tee "$out/table.txt"
