@@ -24,6 +24,9 @@ rm -f "$out"/*.txt "$out"/*.csv "$out"/qemu.fifo
 
 fail() { echo "bench: FAILED: $*" >&2; exit 1; }
 
+# ---- the counter on a hand-made log first ----
+bash "$(dirname "$0")/insn_count_selftest.sh" "$counter" >&2 || fail "insn_count self-test"
+
 # ---- 1 and 3: the host ----
 echo "bench ($mode): host: $calls calls each, host_sim for $virtual_s virtual s ..." >&2
 "$host_bench" $calls $virtual_s > "$out/host_raw.txt" || fail "bench_host (see $out/host_raw.txt)"
