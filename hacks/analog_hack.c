@@ -6,9 +6,7 @@
  * pin commands, copy_*_user against the caller's domain) guard them.
  */
 #define KBUILD_MODNAME "d_analog"
-#include <linux/fcntl.h>
-#include <linux/module.h>
-#include <linux_compat/devfs.h>
+#include "driver_common.h"
 
 /* Renames: the driver's module_init/exit become plain pointers, called by ours below. */
 #pragma push_macro("module_init")
@@ -77,24 +75,6 @@ static void __exit analog_hack_exit(void)
 }
 module_exit(analog_hack_exit);
 
-/* A driver result as a TOPPERS error code (E_OK for non-negative results). */
-static ER analog_er(long ret)
-{
-	switch (ret) {
-	case -EINVAL:
-		return E_PAR;
-	case -EFAULT:
-		return E_MACV;
-	case -EOPNOTSUPP:
-		return E_NOSPT;
-	case -EBADF:
-	case -ENODEV:
-		return E_OBJ;
-	default:
-		return ret < 0 ? E_SYS : E_OK;
-	}
-}
-
 /* ANALOG_FN_MAP: the address of the shared ANALOG area. */
 static ER_UINT svc_analog_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5,
 			      ID cdmid)
@@ -155,7 +135,7 @@ static ER_UINT svc_analog_dcm_write(intptr_t cmd, intptr_t len, intptr_t p3, int
 		return E_CTX;
 	if (len != LMS_DCM_WRITE_SIZE)
 		return E_PAR;
-	return analog_er(lx_dev_write(dcm_file, (const char __user *)cmd, (size_t)len, NULL));
+	return lx_errno_to_er(lx_dev_write(dcm_file, (const char __user *)cmd, (size_t)len, NULL));
 }
 
 /* Reads a device from its start into the caller's buffer; the byte count. */
@@ -169,7 +149,7 @@ static ER_UINT analog_read_from_start(struct file *file, intptr_t buf, intptr_t 
 	if (len < 0 || len > INT32_MAX)		/* the count must fit the ER_UINT result */
 		return E_PAR;
 	ret = lx_dev_read(file, (char __user *)buf, (size_t)len, &pos);
-	return ret < 0 ? analog_er(ret) : (ER_UINT)ret;
+	return ret < 0 ? lx_errno_to_er(ret) : (ER_UINT)ret;
 }
 
 /* ANALOG_FN_DCM_READ: in_dcm[4], out_dcm[4], '\r', 0. */

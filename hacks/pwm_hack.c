@@ -70,28 +70,12 @@ static void __exit pwm_hack_exit(void)
 }
 module_exit(pwm_hack_exit);
 
-/* A driver result as a TOPPERS error code (E_OK for non-negative results). */
-static ER pwm_er(long ret)
-{
-	switch (ret) {
-	case -EINVAL:
-		return E_PAR;
-	case -EFAULT:
-		return E_MACV;
-	case -EBADF:
-	case -ENODEV:
-		return E_OBJ;
-	default:
-		return ret < 0 ? E_SYS : E_OK;
-	}
-}
-
 /* Writes one command of len bytes from the caller's memory. */
 static ER pwm_write_command(intptr_t cmd, intptr_t len)
 {
 	if (len <= 0 || len > LMS_PWM_CMD_MAX)
 		return E_PAR;
-	return pwm_er(lx_dev_write(pwm_file, (const char __user *)cmd, (size_t)len, NULL));
+	return lx_errno_to_er(lx_dev_write(pwm_file, (const char __user *)cmd, (size_t)len, NULL));
 }
 
 /* PWM_FN_COMMAND: one command. */
@@ -119,7 +103,7 @@ static ER_UINT svc_pwm_read(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4
 	if (len < 0 || len > INT_MAX)
 		return E_PAR;
 	ret = lx_dev_read(pwm_file, (char __user *)buf, (size_t)len, NULL);
-	return ret < 0 ? pwm_er(ret) : (ER_UINT)ret;
+	return ret < 0 ? lx_errno_to_er(ret) : (ER_UINT)ret;
 }
 
 /* PWM_FN_BUSY: the ReadyStatus mask (a byte the driver updates atomically). */
@@ -143,7 +127,7 @@ static ER_UINT svc_pwm_set_busy(intptr_t mask, intptr_t p2, intptr_t p3, intptr_
 	set_fs(KERNEL_DS);	/* the byte is the hack's own (see docs/porting.md) */
 	ret = lx_dev_write(motor_file, (const char __user *)&byte, 1, NULL);
 	set_fs(old_fs);
-	return pwm_er(ret);
+	return lx_errno_to_er(ret);
 }
 
 /* PWM_FN_MOTOR_DATA: copies one port's MOTORDATA to the caller. */

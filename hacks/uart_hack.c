@@ -6,9 +6,7 @@
  * against the caller's domain) guard every call, after the ones here.
  */
 #define KBUILD_MODNAME "d_uart"
-#include <linux/fcntl.h>
-#include <linux/module.h>
-#include <linux_compat/devfs.h>
+#include "driver_common.h"
 
 /* Rename: the driver's module_exit becomes a plain pointer, called by ours below. */
 #pragma push_macro("module_exit")
@@ -65,24 +63,6 @@ static void __exit uart_hack_exit(void)
 }
 module_exit(uart_hack_exit);
 
-/* A driver result as a TOPPERS error code (E_OK for non-negative results). */
-static ER uart_er(long ret)
-{
-	switch (ret) {
-	case -EINVAL:
-		return E_PAR;
-	case -EFAULT:
-		return E_MACV;
-	case -ENODEV:
-	case -ENXIO:
-		return E_OBJ;
-	case -EBUSY:
-		return E_QOVR;
-	default:
-		return ret < 0 ? E_SYS : E_OK;
-	}
-}
-
 /* An ioctl whose argument is the hack's own buffer (KERNEL_DS: on HRP2 the
  * service routine's stack is not in the caller's domain). */
 static ER uart_kernel_ioctl(unsigned int cmd, void *arg)
@@ -93,7 +73,7 @@ static ER uart_kernel_ioctl(unsigned int cmd, void *arg)
 	set_fs(KERNEL_DS);
 	ret = lx_dev_ioctl(uart_file, cmd, (unsigned long)arg);
 	set_fs(old_fs);
-	return uart_er(ret);
+	return lx_errno_to_er(ret);
 }
 
 /* Common checks: task context, port 0..3, the driver up.  E_OK or the error. */
@@ -202,7 +182,7 @@ static ER_UINT svc_uart_write(intptr_t port, intptr_t data, intptr_t len, intptr
 	set_fs(KERNEL_DS);
 	ret = lx_dev_write(uart_file, (const char __user *)cmd, (size_t)len + 1, NULL);
 	set_fs(old_fs);
-	return uart_er(ret);
+	return lx_errno_to_er(ret);
 }
 
 /* UART_FN_MAP: the address of the shared memory. */

@@ -75,27 +75,6 @@ static void __exit ui_hack_exit(void)
 }
 module_exit(ui_hack_exit);
 
-/* A driver result as a TOPPERS error code (E_OK for non-negative results). */
-static ER ui_er(long ret)
-{
-	switch (ret) {
-	case -EINVAL:
-		return E_PAR;
-	case -EFAULT:
-		return E_MACV;
-	case -EAGAIN:
-	case -ETIME:
-		return E_TMOUT;
-	case -ERESTARTSYS:
-		return E_RLWAI;
-	case -EBADF:
-	case -ENODEV:
-		return E_OBJ;
-	default:
-		return ret < 0 ? E_SYS : E_OK;
-	}
-}
-
 /* Common checks: task context, the driver up. */
 static ER ui_hack_check(void)
 {
@@ -115,7 +94,7 @@ static ER_UINT svc_ui_led(intptr_t pattern, intptr_t p2, intptr_t p3, intptr_t p
 		return ercd;
 	if (pattern < LMS_UI_LED_OFF || pattern > LMS_UI_LED_ORANGE_PULSE)
 		return E_PAR;
-	return ui_er(lx_dev_write(ui_file, (const char __user *)&byte, 1, NULL));
+	return lx_errno_to_er(lx_dev_write(ui_file, (const char __user *)&byte, 1, NULL));
 }
 
 /* UI_FN_MAP: the address of the shared page. */
@@ -186,7 +165,7 @@ static ER_UINT svc_ui_wait_click(intptr_t out, intptr_t tmout, intptr_t p3, intp
 	}
 	if (p.queue)
 		lx_wait_finish(p.queue, &p.waiter);
-	return ret == sizeof(struct lms_ui_click) ? E_OK : ui_er(ret < 0 ? ret : -EIO);
+	return ret == sizeof(struct lms_ui_click) ? E_OK : lx_errno_to_er(ret < 0 ? ret : -EIO);
 }
 
 static const struct rtos_svc_cfg ui_svcs[] = {

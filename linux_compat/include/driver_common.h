@@ -2,6 +2,7 @@
  * driver_common.h — the one header a hack file includes (hacks/<drv>_hack.c):
  * the Linux kernel API the reference drivers and drivers like them use, plus
  * linux_compat's own interfaces a hack needs around the driver:
+ *   - Linux results as TOPPERS codes (linux_compat/er.h): lx_errno_to_er;
  *   - the device registry (linux_compat/devfs.h): lx_dev_open, lx_dev_read,
  *     lx_dev_write, lx_dev_ioctl, lx_dev_mmap, lx_dev_poll, lx_dev_close;
  *   - the RTOS configuration fragments (linux_compat/config.h):
@@ -53,6 +54,7 @@
 #include <mach/da8xx.h>
 
 #include <linux_compat/devfs.h>
+#include <linux_compat/er.h>
 #include <linux_compat/config.h>
 #include <linux_compat/irq.h>
 #include <linux_compat/heap.h>
