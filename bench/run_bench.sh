@@ -47,9 +47,15 @@ preload=()
 "${preload[@]}" qemu-arm -cpu arm926 "${qemu_flags[@]}" -d $qemu_log -D "$fifo" \
 	"$arm_bin.stripped" $arm_calls $tick_ms $brick > "$out/arm_run.txt"
 arm_status=$?
+if [ $arm_status != 0 ]; then
+	# the counter may still wait for a writer on the FIFO if QEMU never opened it
+	kill $counter_pid 2>/dev/null
+	wait $counter_pid 2>/dev/null
+	rm -f "$fifo"
+	fail "bench_arm under qemu-arm exited with $arm_status (see $out/arm_run.txt)"
+fi
 wait $counter_pid || fail "insn_count"
 rm -f "$fifo"
-[ $arm_status = 0 ] || fail "bench_arm under qemu-arm exited with $arm_status (see $out/arm_run.txt)"
 grep -q "^phase ev3_motor_set_speed $arm_calls 0$" "$out/arm_run.txt" &&
 	grep -q "^phase ev3_uart_sensor_get_raw $arm_calls 0$" "$out/arm_run.txt" ||
 	fail "bench_arm: a measured call failed (see $out/arm_run.txt)"
