@@ -2,10 +2,12 @@
  * insn_count.c — counts the ARM instructions of measured calls in a QEMU
  * execution log (`qemu-arm -d in_asm,exec,nochain`, optionally -singlestep).
  *
- *   insn_count SYMS [-m FUNC]... [-w OPEN CLOSE] [-p] < log
+ *   insn_count [-r ROOT] SYMS [-m FUNC]... [-w OPEN CLOSE] [-p] < log
  *
  * SYMS is `arm-linux-gnueabi-nm -n -S -l --defined-only` of the binary: it
- * gives every function's address range and source file.  The log is read as
+ * gives every function's address range and source file (ROOT, the
+ * repository's absolute path, is cut off the file names before they are
+ * classified; -r comes before SYMS).  The log is read as
  * a stream (a FIFO in practice: it is gigabytes for 10 000 calls):
  *   - "IN:" blocks (in_asm) give each translation block's instructions: their
  *     number, and whether the block ends in a call (bl, blx, mov lr,pc + jump);
@@ -119,7 +121,14 @@ static struct {
 
 /* ---- symbols ---- */
 
-/* The class of a function from its source file and name. */
+static const char *repo_root;   /* -r: source paths are taken relative to it */
+
+static bool has_prefix(const char *s, const char *prefix)
+{
+	return strncmp(s, prefix, strlen(prefix)) == 0;
+}
+
+/* The class of a function from its source file (relative to the repository) and name. */
 static enum fn_class classify(const char *name, const char *path, unsigned *cost)
 {
 	static const struct { const char *dir; enum fn_class cls; } target_dirs[] = {
@@ -150,18 +159,18 @@ static enum fn_class classify(const char *name, const char *path, unsigned *cost
 	if (path == NULL)
 		return CL_LIBC;
 	for (size_t i = 0; i < sizeof(target_dirs) / sizeof(target_dirs[0]); i++)
-		if (strstr(path, target_dirs[i].dir))
+		if (has_prefix(path, target_dirs[i].dir))
 			return target_dirs[i].cls;
 	if (strncmp(name, "rtos_host_", 10) == 0 || strncmp(name, "hs_", 3) == 0)
 		return CL_SIM;
 	/* service-call files, minus the coroutine switch of the host kernel */
 	for (size_t i = 0; i < sizeof(svc_files) / sizeof(svc_files[0]); i++)
-		if (strstr(path, svc_files[i]))
+		if (strcmp(path, svc_files[i]) == 0)
 			return strcmp(name, "task_switch") == 0 || strcmp(name, "switch_from_task") == 0 ?
 			       CL_SIM : CL_KERNEL;
-	if (strstr(path, "bench/"))
+	if (has_prefix(path, "bench/"))
 		return CL_BENCH;
-	if (strstr(path, "rtos_stub/") || strstr(path, "host_sim/"))
+	if (has_prefix(path, "rtos_stub/") || has_prefix(path, "host_sim/"))
 		return CL_SIM;
 	return CL_LIBC;
 }
@@ -197,6 +206,8 @@ static void load_syms(const char *path)
 			*tab = '\0';
 			file = tab + 1;
 			*strrchr(file, ':') = '\0';
+			if (repo_root && has_prefix(file, repo_root) && file[strlen(repo_root)] == '/')
+				file += strlen(repo_root) + 1;
 		}
 		while (n < 4 && (tok[n] = strtok(n ? NULL : p, " ")) != NULL)
 			n++;
@@ -595,18 +606,23 @@ static void report(void)
 int main(int argc, char **argv)
 {
 	const char *open_name = NULL, *close_name = NULL;
+	int first = 1;
 
-	if (argc < 2) {
-		fprintf(stderr, "usage: insn_count SYMS [-m FUNC]... [-w OPEN CLOSE] < log\n");
+	if (argc > 2 && strcmp(argv[1], "-r") == 0) {
+		repo_root = argv[2];
+		first = 3;
+	}
+	if (argc <= first) {
+		fprintf(stderr, "usage: insn_count [-r ROOT] SYMS [-m FUNC]... [-w OPEN CLOSE] [-p] < log\n");
 		return 2;
 	}
-	load_syms(argv[1]);
+	load_syms(argv[first]);
 	tbs = calloc(TB_HASH_SIZE, sizeof(*tbs));
 	if (!tbs)
 		return 2;
 	st.open_sym = st.close_sym = -1;
 	st.window = true;
-	for (int i = 2; i < argc; i++) {
+	for (int i = first + 1; i < argc; i++) {
 		if (strcmp(argv[i], "-m") == 0 && i + 1 < argc && nmeas < MAX_MEASURED) {
 			meas[nmeas].name = argv[++i];
 			meas[nmeas].sym = sym_named(meas[nmeas].name);

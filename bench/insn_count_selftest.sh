@@ -52,7 +52,7 @@ trace() { printf 'Trace 0: 0x7f0000000000 [00000480/%08x/00000000/00000200] \n' 
 	block 0x1018 "mov r0, r0";                trace 0x1018
 } > "$dir/log"
 
-"$counter" "$dir/syms" -m ev3_motor_set_speed -w bench_window_open bench_window_close \
+"$counter" -r /src "$dir/syms" -m ev3_motor_set_speed -w bench_window_open bench_window_close \
 	< "$dir/log" > "$dir/out" || { echo "insn_count self-test: the counter failed"; exit 1; }
 # 17 raw (3+2+1+4+1+2+3+1), 12 counted (3+2, the access as 1, 2+3+1); hs_model not counted
 expect() {

@@ -39,7 +39,7 @@ mkfifo "$fifo"
 qemu_log="in_asm,exec,nochain"
 qemu_flags=()
 [ "${BENCH_SINGLESTEP:-0}" = 1 ] && qemu_flags+=(-singlestep)
-"$counter" "$arm_bin.syms" -m ev3_motor_set_speed -m ev3_uart_sensor_get_raw -m lx_tick_isr \
+"$counter" -r "$(pwd)" "$arm_bin.syms" -m ev3_motor_set_speed -m ev3_uart_sensor_get_raw -m lx_tick_isr \
 	-w bench_window_open bench_window_close < "$fifo" > "$out/arm.txt" &
 counter_pid=$!
 preload=()
