@@ -247,6 +247,12 @@ u64 hrtimer_forward(struct hrtimer *timer, ktime_t now, ktime_t interval)
 			  (long long)interval);
 		interval = 1;
 	}
+	/* One period is the usual case: no 64-bit division (a library call on the
+	 * ARM926); only an overrun of several periods needs it, as in Linux. */
+	if (now - timer->lx_expires < interval) {
+		timer->lx_expires = ktime_add_safe(timer->lx_expires, interval);
+		return 1;
+	}
 	overruns = (u64)(now - timer->lx_expires) / (u64)interval + 1U;
 	timer->lx_expires = ktime_add_safe(timer->lx_expires, (ktime_t)(overruns * (u64)interval));
 	return overruns;

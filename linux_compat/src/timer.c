@@ -16,6 +16,11 @@
 volatile unsigned long jiffies = INITIAL_JIFFIES;
 u64 jiffies_64 = INITIAL_JIFFIES;
 
+/* Clock time at which jiffies next advance: jiffies follow the clock by
+ * counting, because a 64-bit division per tick costs ~170 instructions on
+ * the ARM926, which has no divide instruction. */
+static u64 next_jiffy_ns = TICK_NSEC;
+
 static struct {
 	struct timer_list *head;
 	u64 next_seq;
@@ -32,14 +37,21 @@ void lx_timers_reset(void)
 	tq.running = NULL;
 	jiffies_64 = INITIAL_JIFFIES;
 	jiffies = (unsigned long)jiffies_64;
+	next_jiffy_ns = TICK_NSEC;
 }
 
 /* Sets jiffies from the clock (tick ISR). */
 void lx_jiffies_update(uint64_t now)
 {
-	u64 j = (u64)INITIAL_JIFFIES + now / TICK_NSEC;
+	u64 j = jiffies_64;
 	SIL_PRE_LOC;
 
+	if (now < next_jiffy_ns)
+		return;
+	do {			/* = INITIAL_JIFFIES + now / TICK_NSEC */
+		j++;
+		next_jiffy_ns += TICK_NSEC;
+	} while (now >= next_jiffy_ns);
 	SIL_LOC_INT();
 	jiffies_64 = j;
 	jiffies = (unsigned long)j;
