@@ -61,10 +61,13 @@ ER prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode)
 	uintptr_t lo = (uintptr_t)base, hi;
 	struct mem_region stack;
 
-	if (tskid == TSK_SELF && cpu.kind != EXEC_TASK)
-		return svc_result("prb_mem", E_ID);
-	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+	if (tskid == TSK_SELF) {		/* the common case: no lookup */
+		if (cpu.kind != EXEC_TASK)
+			return svc_result("prb_mem", E_ID);
+		t = runtsk;
+	} else if ((t = task_lookup(tskid, true, &ercd)) == NULL) {
 		return svc_result("prb_mem", ercd);
+	}
 	if (pmmode == 0 || (pmmode & ~(MODE)(TPM_READ | TPM_WRITE | TPM_EXEC)) != 0 || size == 0)
 		return svc_result("prb_mem", E_PAR);
 	if (base == NULL || size > UINTPTR_MAX - lo)
