@@ -14,7 +14,7 @@
 ER act_tsk(ID tskid) { (void)tskid; return E_NOSPT; }
 ER iact_tsk(ID tskid) { (void)tskid; return E_NOSPT; }
 ER_UINT can_act(ID tskid) { (void)tskid; return E_NOSPT; }
-void ext_tsk(void) { for (;;) ; }
+void ext_tsk(void) { for (;;) { } }
 ER chg_pri(ID tskid, PRI tskpri) { (void)tskid; (void)tskpri; return E_NOSPT; }
 ER get_pri(ID tskid, PRI *p_tskpri) { (void)tskid; (void)p_tskpri; return E_NOSPT; }
 ER get_tid(ID *p_tskid) { (void)p_tskid; return E_NOSPT; }

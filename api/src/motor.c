@@ -155,7 +155,7 @@ ER ev3_motor_get_speed(motor_port_t port, int *p_speed)
 
 	if (ercd != E_OK)
 		return ercd;
-	*p_speed = motor_data[port].speed;
+	*p_speed = (int)motor_data[port].speed;	/* signed: -100..100 */
 	return E_OK;
 }
 

@@ -150,6 +150,7 @@ static struct hs_signal *declare(const char *scope, const char *name, unsigned w
 	}
 	if (tr.nsigs == tr.cap) {
 		unsigned cap = tr.cap ? 2U * tr.cap : 64U;
+		/* NOLINTNEXTLINE(bugprone-sizeof-expression): an array of pointers */
 		struct hs_signal **p = realloc(tr.sigs, cap * sizeof(*p));
 
 		if (!p)
@@ -269,6 +270,7 @@ void hs_trace_pulse(struct hs_signal *s)
 	hs_trace_set(s, 1);
 	if (tr.nfalls == tr.falls_cap) {
 		unsigned cap = tr.falls_cap ? 2U * tr.falls_cap : 16U;
+		/* NOLINTNEXTLINE(bugprone-sizeof-expression): an array of pointers */
 		struct hs_signal **p = realloc(tr.falls, cap * sizeof(*p));
 
 		if (!p)

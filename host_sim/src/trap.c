@@ -60,12 +60,10 @@ static unsigned modrm_len(const uint8_t *p)
 		if (mod == 0U && (p[1] & 7U) == 5U)
 			len += 4;                   /* disp32, no base */
 	}
-	if (mod == 0U && rm == 5U)
-		len += 4;                           /* RIP-relative disp32 */
+	if ((mod == 0U && rm == 5U) || mod == 2U)
+		len += 4;                           /* RIP-relative disp32, or base + disp32 */
 	else if (mod == 1U)
 		len += 1;
-	else if (mod == 2U)
-		len += 4;
 	return len;
 }
 

@@ -405,7 +405,7 @@ static void data_tick(void *arg)
 		period_us = md->data_period_us;
 	} else {
 		len = uart_sensor_payload(s, now_payload);
-		if (!s->have_last || len != s->last_len || memcmp(now_payload, s->last_payload, len))
+		if (!s->have_last || len != s->last_len || memcmp(now_payload, s->last_payload, len) != 0)
 			sensor_send_data(s);
 		period_us = s->def->sample_us;
 	}

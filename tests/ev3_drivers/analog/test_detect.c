@@ -22,6 +22,8 @@ static void detect_boot1(void)
 	unsigned p;
 
 	ok(shm != NULL, "ANALOG is mapped");
+	if (!shm)
+		tap_bail_out("ANALOG is not mapped");
 	ev3_attach_analog(0, EV3_INPUT_EV3_TOUCH, NULL);
 	ev3_attach_analog(1, EV3_INPUT_NXT_TOUCH, NULL);
 	ev3_attach_analog(2, EV3_INPUT_NXT_LIGHT, NULL);

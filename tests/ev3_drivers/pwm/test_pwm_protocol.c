@@ -190,7 +190,7 @@ static void test_status_and_map(void)
 	ok(strcmp(st, "0 0 ") == 0, "status \"%s\" after the time", st);
 
 	ok(pwm_motor_map(&map) == E_OK && map != NULL, "MOTORDATA mapped");
-	ok(pwm_motor_data(3, &md) == E_OK && memcmp(&md, &map[3], sizeof(md)) == 0,
+	ok(pwm_motor_data(3, &md) == E_OK && map && memcmp(&md, &map[3], sizeof(md)) == 0,
 	   "copy and map agree");
 	ok(sizeof(struct lms_motor_data) == 12 && LMS_MOTOR_DATA_SIZE == 48, "MOTORDATA is 4 x 12 bytes");
 }

@@ -53,6 +53,7 @@ static bool take_msg(unsigned *i, uint8_t *hdr, uint8_t *info, uint8_t *payload,
 	f[n++] = h.rx[pos++].b;
 	*hdr = f[0];
 	if ((f[0] & 0xC0) == 0x00) {
+		*info = 0;	/* SYS: no INFO byte, no payload */
 		*len = 0;
 		*i = pos;
 		return true;
@@ -82,7 +83,7 @@ static float get_f32(const uint8_t *p)
 static void check_handshake(const struct expect *e)
 {
 	unsigned i = 0, len, bad = 0, msgs = 0;
-	uint8_t hdr, info, p[32];
+	uint8_t hdr, info, p[32] = { 0 };
 	uint64_t t_type, t_ack;
 	bool pin6_low;
 	uint64_t t0 = hs_now();
@@ -113,7 +114,7 @@ static void check_handshake(const struct expect *e)
 		size_t nl = strlen(e->name[m]);
 
 		if (!take_msg(&i, &hdr, &info, p, &len) || hdr != (0x80 | (nl <= 8 ? 3 : 4) << 3 | m) ||
-		    info != 0x00 || memcmp(p, e->name[m], nl) || (nl < len && p[nl] != 0))
+		    info != 0x00 || memcmp(p, e->name[m], nl) != 0 || (nl < len && p[nl] != 0))
 			bad++, tap_diag("mode %d NAME wrong (hdr 0x%02x)", m, hdr);
 		if (!take_msg(&i, &hdr, &info, p, &len) || hdr != (0x98 | m) || info != 0x01)
 			bad++, tap_diag("mode %d RAW wrong", m);
@@ -122,7 +123,7 @@ static void check_handshake(const struct expect *e)
 			bad++, tap_diag("mode %d SI wrong", m);
 		if (e->symbol[m]) {
 			if (!take_msg(&i, &hdr, &info, p, &len) || hdr != (0x90 | m) || info != 0x04 ||
-			    strncmp((char *)p, e->symbol[m], 4))
+			    strncmp((char *)p, e->symbol[m], 4) != 0)
 				bad++, tap_diag("mode %d SYMBOL wrong", m);
 		} else if (e->type == 33) {
 			/* the IR sensor's 00 FF where the symbol is missing */
@@ -131,7 +132,7 @@ static void check_handshake(const struct expect *e)
 			i += 2;
 		}
 		if (!take_msg(&i, &hdr, &info, p, &len) || hdr != (0x90 | m) || info != 0x80 ||
-		    memcmp(p, e->fmt[m], 4))
+		    memcmp(p, e->fmt[m], 4) != 0)
 			bad++, tap_diag("mode %d FORMAT wrong", m);
 		msgs++;
 	}

@@ -6,7 +6,7 @@
  * virtual time, and read/write/ioctl/mmap round-trip.
  */
 #define KBUILD_MODNAME "scratch"
-#include "scratch_drv.c"
+#include "scratch_drv.c"	/* NOLINT(bugprone-suspicious-include): a driver verbatim, as the hacks do */
 
 #include "../lx_test.h"
 #include "../fake_mmio.h"
