@@ -10,11 +10,13 @@
 #
 # Both tools read build/lint/compile_commands.json, generated from the build's own
 # per-file flags (src_flags, warn_flags, KERNEL_DEFS): each file is analysed as it is
-# compiled for the host, the AM1808-only files with EV3LX_AM1808.  ev3_drivers/*.c are
-# analysed where they are compiled: inside their hack file.
+# compiled for the host, the AM1808-only files with EV3LX_AM1808.  cppcheck also reads
+# build/lint/am1808/compile_commands.json: the files both targets share, as compiled for
+# the AM1808.  ev3_drivers/*.c are analysed where they are compiled: in their hack file.
 
 LINT_OUT         := $(BUILD)/lint
 LINT_DB          := $(LINT_OUT)/compile_commands.json
+LINT_AM1808_DB   := $(LINT_OUT)/am1808/compile_commands.json
 LINT_CPPCHECK_SUPP := mk/lint/cppcheck.supp
 LINT_TIDY_CONFIG := mk/lint/clang-tidy.yaml
 LINT_TIDY_SUPP   := mk/lint/clang-tidy.supp
@@ -26,6 +28,7 @@ LINT_HOST_SRCS := $(sort $(wildcard $(HOST_SRCS) $(TEST_SUPPORT_SRCS) $(TEST_SRC
 	$(BENCH_ARM_SRCS)))
 LINT_AM1808_SRCS := $(sort $(filter-out $(LINT_HOST_SRCS),$(AM1808_SRCS)) $(wildcard am1808/*.c))
 LINT_SRCS := $(LINT_HOST_SRCS) $(LINT_AM1808_SRCS)
+LINT_SHARED_SRCS := $(sort $(filter $(LINT_HOST_SRCS),$(AM1808_SRCS)))
 
 # Compile flags per configuration: the build's, without -Werror (clang-tidy reports a
 # compiler warning as a finding of its own, by name).
@@ -36,18 +39,26 @@ lint_flags_am1808 = $(call src_flags,$(1)) $(filter-out -Werror,$(call warn_flag
 lint_cfg = $(if $(filter $(1),$(LINT_AM1808_SRCS)),am1808,host)
 lint_flags = $(call lint_flags_$(call lint_cfg,$(1)),$(1))
 
-lint_entry = {"directory": "$(CURDIR)", "file": "$(1)", "command": "gcc $(strip $(call lint_flags,$(1))) -c $(1) -o /dev/null"}
+# $(1) = file, $(2) = its flags
+lint_entry = {"directory": "$(CURDIR)", "file": "$(1)", "command": "gcc $(strip $(2)) -c $(1) -o /dev/null"}
 define lint_newline
 
 
 endef
 lint_comma := ,
-LINT_DB_TEXT = [$(lint_newline)$(subst } {,}$(lint_comma)$(lint_newline){,$(foreach f,$(LINT_SRCS),$(call lint_entry,$(f))))$(lint_newline)]
+lint_db_text = [$(lint_newline)$(subst } {,}$(lint_comma)$(lint_newline){,$(1))$(lint_newline)]
+LINT_DB_TEXT = $(call lint_db_text,$(foreach f,$(LINT_SRCS),$(call lint_entry,$(f),$(call lint_flags,$(f)))))
+LINT_AM1808_DB_TEXT = $(call lint_db_text,$(foreach f,$(LINT_SHARED_SRCS),$(call lint_entry,$(f),$(call lint_flags_am1808,$(f)))))
 
-# Rewritten only when its text changes, so that clang-tidy's per-file results stay valid.
+# Rewritten only when the text changes, so that clang-tidy's per-file results stay valid.
 $(LINT_DB): FORCE_LINT_DB
-	$(if $(shell mkdir -p $(LINT_OUT) && echo ok),,$(error lint: cannot create $(LINT_OUT)))
+	$(if $(shell mkdir -p $(@D) && echo ok),,$(error lint: cannot create $(@D)))
 	$(file >$@.tmp,$(LINT_DB_TEXT))
+	@cmp -s $@.tmp $@ && rm $@.tmp || mv $@.tmp $@
+
+$(LINT_AM1808_DB): FORCE_LINT_DB
+	$(if $(shell mkdir -p $(@D) && echo ok),,$(error lint: cannot create $(@D)))
+	$(file >$@.tmp,$(LINT_AM1808_DB_TEXT))
 	@cmp -s $@.tmp $@ && rm $@.tmp || mv $@.tmp $@
 
 .PHONY: FORCE_LINT_DB lint lint-tidy lint-full
@@ -62,25 +73,30 @@ CPPCHECK_FLAGS := --enable=warning,performance,portability --std=c11 --inline-su
 	--template='{file}:{line}:{column}: {severity}: {message} [{id}]' \
 	--template-location='{file}:{line}:{column}: note: {info}'
 
-lint: deps-check $(LINT_DB)
-	@key=$$( { cppcheck --version; echo '$(CPPCHECK_FLAGS)'; cat $(LINT_CPPCHECK_SUPP); } | md5sum | cut -c1-12); \
-	cache=$(LINT_OUT)/cppcheck-$$key; \
-	find $(LINT_OUT) -maxdepth 1 -name 'cppcheck-*' ! -name "cppcheck-$$key" -exec rm -rf {} +; \
-	mkdir -p $$cache; \
-	echo "lint: cppcheck, $(words $(LINT_SRCS)) files"; \
-	cppcheck $(CPPCHECK_FLAGS) --cppcheck-build-dir=$$cache --project=$(LINT_DB) \
-		2> $(LINT_OUT)/cppcheck.log; status=$$?; \
+lint: deps-check $(LINT_DB) $(LINT_AM1808_DB)
+	@key=$$( { cppcheck --version; echo "$(CPPCHECK_FLAGS)"; cat $(LINT_CPPCHECK_SUPP); } | md5sum | cut -c1-12); \
+	find $(LINT_OUT) $(dir $(LINT_AM1808_DB)) -maxdepth 1 -name 'cppcheck-*' ! -name "cppcheck-$$key" \
+		-exec rm -rf {} +; \
+	echo "lint: cppcheck, $(words $(LINT_SRCS)) files for their own target," \
+		"$(words $(LINT_SHARED_SRCS)) shared ones for the AM1808 too"; \
+	: > $(LINT_OUT)/cppcheck.log; status=0; \
+	for db in $(LINT_DB) $(LINT_AM1808_DB); do \
+		cache=$$(dirname $$db)/cppcheck-$$key; mkdir -p $$cache; \
+		cppcheck $(CPPCHECK_FLAGS) --cppcheck-build-dir=$$cache --project=$$db \
+			2>> $(LINT_OUT)/cppcheck.log || status=1; \
+	done; \
 	if [ $$status != 0 ] || [ -s $(LINT_OUT)/cppcheck.log ]; then cat $(LINT_OUT)/cppcheck.log; \
 		echo "lint: cppcheck FAILED: fix each finding, or suppress it with its reason (docs/lint.md)"; \
 		exit 1; fi; \
 	echo "lint: cppcheck clean"
 
-# clang-tidy: one raw log per file, redone when the file, a header it includes, its flags
-# or the check set change; then the suppressions are applied to all logs together (so an
-# entry that matches nothing is reported as stale).
+# clang-tidy: one raw log per file, redone when the file, a header it includes, the build
+# flags (mk/config.mk) or the check set change, but not when another file comes or goes;
+# then the suppressions are applied to all logs together (so an entry that matches
+# nothing is reported as stale).
 LINT_TIDY_LOGS := $(patsubst %.c,$(LINT_OUT)/tidy/%.log,$(LINT_SRCS))
 
-$(LINT_OUT)/tidy/%.log: %.c $(LINT_DB) $(LINT_TIDY_CONFIG)
+$(LINT_OUT)/tidy/%.log: %.c $(LINT_TIDY_CONFIG) mk/config.mk | $(LINT_DB)
 	@mkdir -p $(@D)
 	$(quiet) TIDY lint $<
 	$(Q)gcc -MM -MP -MT $@ $(call lint_flags,$<) $< > $(@:.log=.d)
