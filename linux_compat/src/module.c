@@ -256,11 +256,27 @@ static const struct lx_module_param *find_param(const char *module, const char *
 	return NULL;
 }
 
+/* A signed value within [min, max]: 0, -EINVAL or -ERANGE. */
+static int parse_signed(const char *value, long long min, long long max, long long *out)
+{
+	int ret = kstrtoll(value, 0, out);
+
+	return (ret == 0 && (*out < min || *out > max)) ? -ERANGE : ret;
+}
+
+/* An unsigned value up to max: 0, -EINVAL or -ERANGE. */
+static int parse_unsigned(const char *value, unsigned long long max, unsigned long long *out)
+{
+	int ret = kstrtoull(value, 0, out);
+
+	return (ret == 0 && *out > max) ? -ERANGE : ret;
+}
+
 /* Parses value for p and stores it: 0 or -EINVAL / -ERANGE. */
 static int store_param(const struct lx_module_param *p, const char *value)
 {
-	long long sv;
-	unsigned long long uv;
+	long long sv = 0;
+	unsigned long long uv = 0;
 	bool bv;
 	int ret = 0;
 
@@ -279,51 +295,37 @@ static int store_param(const struct lx_module_param *p, const char *value)
 			*(bool *)p->arg = p->type == LX_PARAM_bool ? bv : !bv;
 		return ret;
 	case LX_PARAM_int:
-		ret = kstrtoll(value, 0, &sv);
-		if (ret == 0 && (sv < INT_MIN || sv > INT_MAX))
-			ret = -ERANGE;
+		ret = parse_signed(value, INT_MIN, INT_MAX, &sv);
 		if (ret == 0)
 			*(int *)p->arg = (int)sv;
 		return ret;
 	case LX_PARAM_short:
-		ret = kstrtoll(value, 0, &sv);
-		if (ret == 0 && (sv < SHRT_MIN || sv > SHRT_MAX))
-			ret = -ERANGE;
+		ret = parse_signed(value, SHRT_MIN, SHRT_MAX, &sv);
 		if (ret == 0)
 			*(short *)p->arg = (short)sv;
 		return ret;
 	case LX_PARAM_long:
-		ret = kstrtoll(value, 0, &sv);
-		if (ret == 0 && (sv < LONG_MIN || sv > LONG_MAX))
-			ret = -ERANGE;
+		ret = parse_signed(value, LONG_MIN, LONG_MAX, &sv);
 		if (ret == 0)
 			*(long *)p->arg = (long)sv;
 		return ret;
 	case LX_PARAM_uint:
-		ret = kstrtoull(value, 0, &uv);
-		if (ret == 0 && uv > UINT_MAX)
-			ret = -ERANGE;
+		ret = parse_unsigned(value, UINT_MAX, &uv);
 		if (ret == 0)
 			*(unsigned int *)p->arg = (unsigned int)uv;
 		return ret;
 	case LX_PARAM_ushort:
-		ret = kstrtoull(value, 0, &uv);
-		if (ret == 0 && uv > USHRT_MAX)
-			ret = -ERANGE;
+		ret = parse_unsigned(value, USHRT_MAX, &uv);
 		if (ret == 0)
 			*(unsigned short *)p->arg = (unsigned short)uv;
 		return ret;
 	case LX_PARAM_ulong:
-		ret = kstrtoull(value, 0, &uv);
-		if (ret == 0 && uv > ULONG_MAX)
-			ret = -ERANGE;
+		ret = parse_unsigned(value, ULONG_MAX, &uv);
 		if (ret == 0)
 			*(unsigned long *)p->arg = (unsigned long)uv;
 		return ret;
 	case LX_PARAM_byte:
-		ret = kstrtoull(value, 0, &uv);
-		if (ret == 0 && uv > UCHAR_MAX)
-			ret = -ERANGE;
+		ret = parse_unsigned(value, UCHAR_MAX, &uv);
 		if (ret == 0)
 			*(unsigned char *)p->arg = (unsigned char)uv;
 		return ret;
