@@ -18,6 +18,7 @@ esac
 host_bench=$build/host/bench_host
 counter=$build/host/insn_count
 arm_bin=$build/arm926-test/bench/bench_arm
+arm_prod_bin=$build/arm926-bench-prod/bench/bench_arm
 shim=$build/host/bench/qemu_log_buffer.so
 mkdir -p "$out"
 rm -f "$out"/*.txt "$out"/*.csv "$out"/qemu.fifo
@@ -32,33 +33,43 @@ echo "bench ($mode): host: $calls calls each, host_sim for $virtual_s virtual s 
 "$host_bench" $calls $virtual_s > "$out/host_raw.txt" || fail "bench_host (see $out/host_raw.txt)"
 grep -E '^(call|speed),' "$out/host_raw.txt" > "$out/host.txt"
 
-# ---- 2: ARMv5 instruction counts ----
-echo "bench ($mode): ARMv5: $arm_calls calls each, $tick_ms ms of ticks under qemu-arm -cpu arm926 ..." >&2
-fifo=$out/qemu.fifo
-mkfifo "$fifo"
+# ---- 2: ARMv5 instruction counts, for two builds of the same library ----
+#   arm.txt       the host-checked build (arm926-test: linux_compat's debugging
+#                 checks on, the library the tests run)
+#   arm_prod.txt  the production build (arm926-bench-prod: the checks off, as
+#                 the AM1808 library is built)
+# count_arm BINARY OUTPUT: runs BINARY under QEMU and counts its log into OUTPUT.
+count_arm() {
+	local arm_bin=$1 result=$2 run_log=${2%.txt}_run.txt
+	local fifo=$out/qemu.fifo counter_pid arm_status
+	echo "bench ($mode): ARMv5 ($(basename "$(dirname "$(dirname "$arm_bin")")")): $arm_calls calls each, $tick_ms ms of ticks under qemu-arm -cpu arm926 ..." >&2
+	mkfifo "$fifo"
+	"$counter" -r "$(pwd)" "$arm_bin.syms" -m ev3_motor_set_speed -m ev3_uart_sensor_get_raw -m lx_tick_isr \
+		-w bench_window_open bench_window_close < "$fifo" > "$result" &
+	counter_pid=$!
+	"${preload[@]}" qemu-arm -cpu arm926 "${qemu_flags[@]}" -d $qemu_log -D "$fifo" \
+		"$arm_bin.stripped" $arm_calls $tick_ms $brick > "$run_log"
+	arm_status=$?
+	if [ $arm_status != 0 ]; then
+		# the counter may still wait for a writer on the FIFO if QEMU never opened it
+		kill $counter_pid 2>/dev/null
+		wait $counter_pid 2>/dev/null
+		rm -f "$fifo"
+		fail "$arm_bin under qemu-arm exited with $arm_status (see $run_log)"
+	fi
+	wait $counter_pid || fail "insn_count"
+	rm -f "$fifo"
+	grep -q "^phase ev3_motor_set_speed $arm_calls 0$" "$run_log" &&
+		grep -q "^phase ev3_uart_sensor_get_raw $arm_calls 0$" "$run_log" ||
+		fail "$arm_bin: a measured call failed (see $run_log)"
+}
 qemu_log="in_asm,exec,nochain"
 qemu_flags=()
 [ "${BENCH_SINGLESTEP:-0}" = 1 ] && qemu_flags+=(-singlestep)
-"$counter" -r "$(pwd)" "$arm_bin.syms" -m ev3_motor_set_speed -m ev3_uart_sensor_get_raw -m lx_tick_isr \
-	-w bench_window_open bench_window_close < "$fifo" > "$out/arm.txt" &
-counter_pid=$!
 preload=()
 [ -f "$shim" ] && preload=(env LD_PRELOAD="$shim")
-"${preload[@]}" qemu-arm -cpu arm926 "${qemu_flags[@]}" -d $qemu_log -D "$fifo" \
-	"$arm_bin.stripped" $arm_calls $tick_ms $brick > "$out/arm_run.txt"
-arm_status=$?
-if [ $arm_status != 0 ]; then
-	# the counter may still wait for a writer on the FIFO if QEMU never opened it
-	kill $counter_pid 2>/dev/null
-	wait $counter_pid 2>/dev/null
-	rm -f "$fifo"
-	fail "bench_arm under qemu-arm exited with $arm_status (see $out/arm_run.txt)"
-fi
-wait $counter_pid || fail "insn_count"
-rm -f "$fifo"
-grep -q "^phase ev3_motor_set_speed $arm_calls 0$" "$out/arm_run.txt" &&
-	grep -q "^phase ev3_uart_sensor_get_raw $arm_calls 0$" "$out/arm_run.txt" ||
-	fail "bench_arm: a measured call failed (see $out/arm_run.txt)"
+count_arm "$arm_bin" "$out/arm.txt"
+count_arm "$arm_prod_bin" "$out/arm_prod.txt"
 
 # ---- the CSV: section,measure,value,unit,paper,target,status ----
 awk -F, -v calls=$calls -v arm_calls=$arm_calls -v mode=$mode '
@@ -68,8 +79,10 @@ function row(sec, name, v, unit, paper, target, status) {
 function verdict(ok) { return ok ? "met" : "missed" }
 FILENAME ~ /host.txt$/ && $1 == "call" { havg[$2] = $4; hmax[$2] = $6; hn[$2] = $3; hslow[$2] = $7; herr[$2] = $8; hmed[$2] = $9; hp99[$2] = $10 }
 FILENAME ~ /host.txt$/ && $1 == "speed" { spd[$2] = $6; cspd[$2] = $7; vs[$2] = $3; ws[$2] = $4 }
-FILENAME ~ /arm.txt$/ && $1 == "call" { an[$2] = $3; araw[$2] = $4; arawmax[$2] = $6; aeq[$2] = $7; aeqmax[$2] = $9; p50[$2] = $10; p90[$2] = $11; p99[$2] = $12 }
-FILENAME ~ /arm.txt$/ && $1 == "log" { windows = $5 }
+# arm.txt: the host-checked build (rows "<f> ..."); arm_prod.txt: the production build ("<f> production ...")
+FILENAME ~ /\/arm(_prod)?\.txt$/ { b = FILENAME ~ /_prod\.txt$/ ? " production" : "" }
+FILENAME ~ /\/arm(_prod)?\.txt$/ && $1 == "call" { k = $2 b; an[k] = $3; araw[k] = $4; arawmax[k] = $6; aeq[k] = $7; aeqmax[k] = $9; p50[k] = $10; p90[k] = $11; p99[k] = $12 }
+FILENAME ~ /\/arm(_prod)?\.txt$/ && $1 == "log" { windows[b] = $5 }
 END {
 	print "section,measure,value,unit,paper,target,status"
 	s = "ev3_motor_set_speed"; r = "ev3_uart_sensor_get_raw"; w = "write_dev_null"
@@ -96,29 +109,33 @@ END {
 	row("host", "slow-path calls", hslow[s] + hslow[r], "calls", "", "", "")
 	split("ev3_motor_set_speed:150 ev3_uart_sensor_get_raw:100 lx_tick_isr:300", t, " ")
 	paper_cycles["ev3_motor_set_speed"] = 1362; paper_cycles["ev3_uart_sensor_get_raw"] = 1665
-	for (i = 1; i <= 3; i++) {
-		split(t[i], kv, ":"); f = kv[1]; lim = kv[2]
-		name = f == "lx_tick_isr" ? "tick" : f
-		pc = f in paper_cycles ? paper_cycles[f] : ""
-		row("arm", name " calls", an[f], "calls", "", "", "")
-		row("arm", name " target-equivalent avg", aeq[f], "instructions", pc, "<=" lim, verdict(aeq[f] <= lim))
-		row("arm", name " target-equivalent max", aeqmax[f], "instructions", "", "<=2*avg",
-		    verdict(aeqmax[f] <= 2 * aeq[f]))
-		row("arm", name " target-equivalent median", p50[f], "instructions", "", "", "")
-		row("arm", name " target-equivalent p90", p90[f], "instructions", "", "", "")
-		row("arm", name " target-equivalent p99", p99[f], "instructions", "", "", "")
-		row("arm", name " raw avg", araw[f], "instructions", "", "", "")
-		row("arm", name " raw max", arawmax[f], "instructions", "", "", "")
+	for (pass = 1; pass <= 2; pass++) {
+		b = pass == 1 ? "" : " production"; sec = pass == 1 ? "arm" : "arm-prod"
+		for (i = 1; i <= 3; i++) {
+			split(t[i], kv, ":"); f = kv[1] b; lim = kv[2]
+			name = (kv[1] == "lx_tick_isr" ? "tick" : kv[1]) b
+			pc = kv[1] in paper_cycles ? paper_cycles[kv[1]] : ""
+			row(sec, name " calls", an[f], "calls", "", "", "")
+			row(sec, name " target-equivalent avg", aeq[f], "instructions", pc, "<=" lim, verdict(aeq[f] <= lim))
+			row(sec, name " target-equivalent max", aeqmax[f], "instructions", "", "<=2*avg",
+			    verdict(aeqmax[f] <= 2 * aeq[f]))
+			row(sec, name " target-equivalent median", p50[f], "instructions", "", "", "")
+			row(sec, name " target-equivalent p90", p90[f], "instructions", "", "", "")
+			row(sec, name " target-equivalent p99", p99[f], "instructions", "", "", "")
+			row(sec, name " raw avg", araw[f], "instructions", "", "", "")
+			row(sec, name " raw max", arawmax[f], "instructions", "", "", "")
+		}
+		row(sec, "windows" b, windows[b], "windows", "", "", "")
 	}
-	row("arm", "windows", windows, "windows", "", "", "")
 	row("sim", "host_sim devices (ev3_bench_full_brick)", spd["host_sim_devices"], "x real time", "", ">=500",
 	    verdict(spd["host_sim_devices"] >= 500))
 	row("sim", "host_sim devices per CPU second", cspd["host_sim_devices"], "x real time", "", "", "")
 	row("sim", "full stack (drivers + 4 motors + 4 sensors)", spd["full_stack"], "x real time", "", ">=500",
 	    verdict(spd["full_stack"] >= 500))
 	row("sim", "full stack per CPU second", cspd["full_stack"], "x real time", "", "", "")
-}' "$out/host.txt" "$out/arm.txt" > "$out/bench.csv"
+}' "$out/host.txt" "$out/arm.txt" "$out/arm_prod.txt" > "$out/bench.csv"
 grep -E '^(class|fn|libc),' "$out/arm.txt" > "$out/breakdown.csv"
+grep -E '^(class|fn|libc),' "$out/arm_prod.txt" > "$out/breakdown_prod.csv"
 
 # ---- every figure present (both modes); the counts of calls as asked ----
 awk -F, 'NR > 1 && $3 == "" { print "missing: " $1 " " $2; bad = 1 } END { exit bad }' "$out/bench.csv" ||
@@ -126,10 +143,12 @@ awk -F, 'NR > 1 && $3 == "" { print "missing: " $1 " " $2; bad = 1 } END { exit 
 check() { awk -F, -v m="$1" -v want="$2" '$2 == m { found = 1; if ($3 != want) { print m ": " $3 " (want " want ")"; exit 1 } } END { if (!found) exit 1 }' "$out/bench.csv" || fail "$1"; }
 check "calls" $((2 * calls))
 check "slow-path calls" 0
-check "ev3_motor_set_speed calls" $arm_calls
-check "ev3_uart_sensor_get_raw calls" $arm_calls
-check "windows" 3
-awk -F, '$2 == "tick calls" && $3 + 0 < 1 { exit 1 }' "$out/bench.csv" || fail "no tick was counted"
+for b in "" " production"; do
+	check "ev3_motor_set_speed$b calls" $arm_calls
+	check "ev3_uart_sensor_get_raw$b calls" $arm_calls
+	check "windows$b" 3
+	awk -F, -v m="tick$b calls" '$2 == m && $3 + 0 < 1 { exit 1 }' "$out/bench.csv" || fail "no tick was counted$b"
+done
 
 # ---- the table ----
 awk -F, -v mode=$mode -v calls=$calls -v arm_calls=$arm_calls -v tick_ms=$tick_ms -v brick="${brick:-full}" '
@@ -143,9 +162,10 @@ function arm_rows(key, label, paper, paper_ratio, limit,   a, mx) {
 	printf fmt, "    raw (with the simulation) avg / max", sprintf("%.0f / %.0f", v(key " raw avg"), v(key " raw max")), "", "", ""
 }
 FILENAME ~ /bench.csv$/ && FNR > 1 { val[$2] = $3; status[$2] = $7 }
-FILENAME ~ /breakdown.csv$/ && $1 == "class" && $3 != "sim" { cls[$2] = cls[$2] sprintf(" %s %.0f", $3, $5) }
-FILENAME ~ /breakdown.csv$/ && $1 == "libc" && $4 >= 1 { lib[$2] = lib[$2] sprintf(" %s %.0f", $3, $4) }
-FILENAME ~ /breakdown.csv$/ && $1 == "fn" { nfn[$2]++; fname[$2, nfn[$2]] = $3; fcls[$2, nfn[$2]] = $4; feq[$2, nfn[$2]] = $6 }
+FILENAME ~ /breakdown(_prod)?\.csv$/ { k = $2 (FILENAME ~ /_prod\.csv$/ ? " production" : "") }
+FILENAME ~ /breakdown(_prod)?\.csv$/ && $1 == "class" && $3 != "sim" { cls[k] = cls[k] sprintf(" %s %.0f", $3, $5) }
+FILENAME ~ /breakdown(_prod)?\.csv$/ && $1 == "libc" && $4 >= 1 { lib[k] = lib[k] sprintf(" %s %.0f", $3, $4) }
+FILENAME ~ /breakdown(_prod)?\.csv$/ && $1 == "fn" { nfn[k]++; fname[k, nfn[k]] = $3; fcls[k, nfn[k]] = $4; feq[k, nfn[k]] = $6 }
 END {
 	s = "ev3_motor_set_speed"; r = "ev3_uart_sensor_get_raw"
 	printf "\n== ev3lx bench (%s: %d host calls each, %d ARMv5 calls each, %d ms of ticks, %s brick) ==\n", mode, calls, arm_calls, tick_ms, brick
@@ -164,17 +184,25 @@ END {
 	printf fmt, "  (clock_gettime pair, included above)", sprintf("%.0f ns", v("clock_gettime pair")), "", "", ""
 	printf fmt, "  calls that took a slow path", v("slow-path calls"), "", "", ""
 	printf "2. ARMv5 instructions per call under qemu-arm -cpu arm926 (target-equivalent; raw)\n"
+	printf " host-checked build (LX_DEBUG_ATOMIC_SLEEP and LX_DEBUG_SPINLOCK on: the library the tests run)\n"
 	arm_rows(s, s, "~1362 cycles", "8.8", 150)
 	arm_rows(r, r, "~1665 cycles", "5.9", 100)
 	arm_rows("tick", "200 us tick (lx_tick_isr)", "", "", 300)
 	printf fmt, "    ticks counted", v("tick calls"), "", "", ""
+	printf " production build (the checks off, as the AM1808 library is built)\n"
+	arm_rows(s " production", s, "~1362 cycles", "8.8", 150)
+	arm_rows(r " production", r, "~1665 cycles", "5.9", 100)
+	arm_rows("tick production", "200 us tick (lx_tick_isr)", "", "", 300)
+	printf fmt, "    ticks counted", v("tick production calls"), "", "", ""
 	printf "3. host_sim speed (virtual seconds per wall second)\n"
 	printf fmt, "  devices only (ev3_bench_full_brick)", sprintf("%.0fx (%.0fx per CPU s)", v("host_sim devices (ev3_bench_full_brick)"), v("host_sim devices per CPU second")), "", ">= 500x", st("host_sim devices (ev3_bench_full_brick)")
 	printf fmt, "  full stack: drivers, 4 motors, 4 sensors", sprintf("%.0fx (%.0fx per CPU s)", v("full stack (drivers + 4 motors + 4 sensors)"), v("full stack per CPU second")), "", ">= 500x", st("full stack (drivers + 4 motors + 4 sensors)")
 	printf "\nWhere the ARMv5 instructions go (target-equivalent per call, by layer; top functions):\n"
 	split("ev3_motor_set_speed ev3_uart_sensor_get_raw lx_tick_isr", m, " ")
-	for (i = 1; i <= 3; i++) {
-		f = m[i]
+	for (i = 1; i <= 6; i++) {
+		f = m[i > 3 ? i - 3 : i] (i > 3 ? " production" : "")
+		if (i == 1 || i == 4)
+			printf " %s build\n", i == 1 ? "host-checked" : "production"
 		printf "  %s:%s\n   ", f, cls[f]
 		# the eight functions with the most counted instructions
 		for (k = 1; k <= 8; k++) {
@@ -190,5 +218,5 @@ END {
 			printf "    C library code on behalf of:%s\n", lib[f]
 	}
 	printf "\nWhy targets are missed, and what is counted: docs/bench.md.\n"
-}' "$out/bench.csv" "$out/breakdown.csv" | tee "$out/table.txt"
-echo "bench ($mode): $out/bench.csv, $out/breakdown.csv, $out/table.txt"
+}' "$out/bench.csv" "$out/breakdown.csv" "$out/breakdown_prod.csv" | tee "$out/table.txt"
+echo "bench ($mode): $out/bench.csv, $out/breakdown.csv, $out/breakdown_prod.csv, $out/table.txt"

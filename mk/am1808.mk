@@ -5,8 +5,12 @@
 
 CC_am1808     := arm-none-eabi-gcc
 AR_am1808     := arm-none-eabi-ar
+# The production library: linux_compat's debugging checks off, as a Linux
+# kernel without CONFIG_DEBUG_ATOMIC_SLEEP / CONFIG_DEBUG_SPINLOCK
+# (linux_compat/include/linux_compat/debug.h; the host configurations keep them).
+LX_DEBUG_OFF  := -DLX_DEBUG_ATOMIC_SLEEP=0 -DLX_DEBUG_SPINLOCK=0
 CFLAGS_am1808 := -mcpu=arm926ej-s -marm -Os -g -ffreestanding -ffunction-sections \
-	-fdata-sections -DEV3LX_AM1808=1
+	-fdata-sections -DEV3LX_AM1808=1 $(LX_DEBUG_OFF)
 AM1808        := $(BUILD)/am1808
 AM1808_OBJS   := $(patsubst %.c,$(AM1808)/obj/%.o,$(AM1808_SRCS))
 AM1808_LIB    := $(AM1808)/libev3lx.a

@@ -3,23 +3,51 @@
 #   make bench-quick   200 calls, a short light-brick QEMU run: proves that every
 #                      figure is produced (part of `make test`); asserts no speed
 # The host programs (bench_host, insn_count) are HOST_PROGRAMS of bench/module.mk;
-# the ARMv5 program is linked here against the arm926-test library, like a test.
+# the ARMv5 program is linked here against the arm926-test library, like a test
+# (the host-checked build), and again against a production variant of it
+# (build/arm926-bench-prod): the code of LINUX_DIRS compiled with linux_compat's
+# debugging checks off ($(LX_DEBUG_OFF), as the AM1808 library), the rest
+# (rtos_stub, host_sim, api: no Linux headers) shared with arm926-test.
 BENCH_OUT       := $(BUILD)/bench
 BENCH_ARM       := $(BUILD)/arm926-test/bench/bench_arm
 BENCH_ARM_OBJS  := $(patsubst %.c,$(BUILD)/arm926-test/obj/%.o,$(BENCH_ARM_SRCS))
 BENCH_LOG_SHIM  := $(BUILD)/host/bench/qemu_log_buffer.so
+
+BENCH_PROD          := $(BUILD)/arm926-bench-prod
+BENCH_PROD_ARM      := $(BENCH_PROD)/bench/bench_arm
+BENCH_PROD_LIB      := $(BENCH_PROD)/libev3lx.a
+BENCH_PROD_LX_SRCS  := $(foreach s,$(HOST_SRCS),$(if $(call is_linux_src,$(s)),$(s)))
+BENCH_PROD_LIB_OBJS := $(patsubst %.c,$(BENCH_PROD)/obj/%.o,$(BENCH_PROD_LX_SRCS)) \
+	$(patsubst %.c,$(BUILD)/arm926-test/obj/%.o,$(filter-out $(BENCH_PROD_LX_SRCS),$(HOST_SRCS)))
+
+$(BENCH_PROD)/obj/%.o: %.c
+	@mkdir -p $(@D)
+	$(quiet) CC bench-prod $<
+	$(Q)$(CC_arm926-test) $(call src_flags,$<) $(call warn_flags,$<) $(CFLAGS_arm926-test) \
+		$(LX_DEBUG_OFF) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
+
+$(BENCH_PROD_LIB): $(BENCH_PROD_LIB_OBJS)
+	@mkdir -p $(@D)
+	$(quiet) AR bench-prod $@
+	$(Q)rm -f $@
+	$(Q)arm-linux-gnueabi-ar rcs $@ $^
 
 $(BENCH_ARM): $(BENCH_ARM_OBJS) $(LIB_arm926-test)
 	@mkdir -p $(@D)
 	$(CC_arm926-test) $(CFLAGS_arm926-test) $(LDFLAGS_arm926-test) -o $@ $(BENCH_ARM_OBJS) \
 		-Wl,--start-group $(LIB_arm926-test) -Wl,--end-group -lm
 
+$(BENCH_PROD_ARM): $(BENCH_ARM_OBJS) $(BENCH_PROD_LIB)
+	@mkdir -p $(@D)
+	$(CC_arm926-test) $(CFLAGS_arm926-test) $(LDFLAGS_arm926-test) -o $@ $(BENCH_ARM_OBJS) \
+		-Wl,--start-group $(BENCH_PROD_LIB) -Wl,--end-group -lm
+
 # Functions with their source files, for the counter's attribution; QEMU runs a
 # stripped copy (it would look every executed block's symbol up for the log).
-$(BENCH_ARM).syms: $(BENCH_ARM)
+%/bench/bench_arm.syms: %/bench/bench_arm
 	arm-linux-gnueabi-nm -n -S -l --defined-only $< > $@
 
-$(BENCH_ARM).stripped: $(BENCH_ARM)
+%/bench/bench_arm.stripped: %/bench/bench_arm
 	arm-linux-gnueabi-strip -o $@ $<
 
 $(BENCH_LOG_SHIM): bench/qemu_log_buffer.c
@@ -27,7 +55,7 @@ $(BENCH_LOG_SHIM): bench/qemu_log_buffer.c
 	$(CC_host) -std=gnu11 -O2 $(WARN) -shared -fPIC -o $@ $< -ldl
 
 BENCH_DEPS := $(BUILD)/host/bench_host $(BUILD)/host/insn_count $(BENCH_ARM).syms \
-	$(BENCH_ARM).stripped $(BENCH_LOG_SHIM)
+	$(BENCH_ARM).stripped $(BENCH_PROD_ARM).syms $(BENCH_PROD_ARM).stripped $(BENCH_LOG_SHIM)
 
 .PHONY: bench bench-quick
 bench: deps-check $(BENCH_DEPS)
@@ -39,4 +67,4 @@ bench-quick: deps-check $(BENCH_DEPS)
 TEST_SUITE_EXTRA += bench-quick
 TEST_SUITE_EXTRA_DEPS += $(BENCH_DEPS)
 
--include $(BENCH_ARM_OBJS:.o=.d)
+-include $(BENCH_ARM_OBJS:.o=.d) $(patsubst %.c,$(BENCH_PROD)/obj/%.d,$(BENCH_PROD_LX_SRCS))

@@ -3,9 +3,15 @@
  *
  * Uniprocessor: a task in an atomic section cannot be preempted by another
  * task (dispatching is disabled) and interrupts return balanced, so one set
- * of counters describes the CPU.  Depths opened in task context and in
- * interrupt context are kept apart so that only task-level sections touch
- * the dispatcher.
+ * of counters describes the CPU.  Only the outermost atomic section opened
+ * by a task touches the dispatcher.
+ *
+ * With LX_DEBUG_ATOMIC_SLEEP the depths opened in task and in interrupt
+ * context, and of spin locks among them, are kept apart, so that a report
+ * can say what forbids sleeping; every section asks the RTOS which context
+ * it is in.  Without it there is one preempt count, as in Linux: a section
+ * costs a counter update, and the context is asked only by the outermost
+ * section opened with interrupts enabled (whether it may call dis_dsp).
  */
 #include <linux/kernel.h>
 #include <linux/string.h>
@@ -20,11 +26,15 @@
 #define LX_IRQ_NEST_MAX	16
 
 static struct {
+#if LX_DEBUG_ATOMIC_SLEEP
 	unsigned int task_atomic;      /* atomic sections opened by the running task */
 	unsigned int task_spin;        /* ... of which spin locks */
-	bool dispatch_disabled_by_us;  /* task_atomic's first level called dis_dsp */
 	unsigned int isr_atomic;       /* atomic sections opened in interrupt context */
 	unsigned int isr_spin;
+#else
+	unsigned int preempt;          /* atomic sections open, in all contexts */
+#endif
+	bool dispatch_disabled_by_us;  /* the outermost section called dis_dsp */
 	unsigned int irqs_off;         /* local_irq_save/disable nesting */
 	int irq_stack[LX_IRQ_NEST_MAX];
 	unsigned int irq_depth;
@@ -65,23 +75,26 @@ int lx_current_irq(void)
 	return ctx.irq_depth <= LX_IRQ_NEST_MAX ? ctx.irq_stack[ctx.irq_depth - 1] : -1;
 }
 
-/* Records that a timer callback starts. */
-void lx_timer_callback_enter(bool hrtimer, const void *cb)
+/* Records that a timer callback starts (an hrtimer's: timer is the running hrtimer). */
+void lx_timer_callback_enter(bool hrtimer, const void *timer)
 {
-	(void)cb;
-	if (hrtimer)
+	if (hrtimer) {
 		ctx.hrtimer_cb++;
-	else
+		ctx.running_hrtimer = timer;
+	} else {
 		ctx.timer_cb++;
+	}
 }
 
 /* Records that the running timer callback returned (hrtimer first, as nesting allows). */
 void lx_timer_callback_exit(void)
 {
-	if (ctx.hrtimer_cb > 0)
+	if (ctx.hrtimer_cb > 0) {
 		ctx.hrtimer_cb--;
-	else if (ctx.timer_cb > 0)
+		ctx.running_hrtimer = NULL;
+	} else if (ctx.timer_cb > 0) {
 		ctx.timer_cb--;
+	}
 }
 
 /* The hrtimer whose callback runs now, or NULL. */
@@ -90,12 +103,7 @@ const void *lx_running_hrtimer(void)
 	return ctx.running_hrtimer;
 }
 
-/* Sets the hrtimer whose callback runs now (NULL when it returned). */
-void lx_set_running_hrtimer(const void *timer)
-{
-	ctx.running_hrtimer = timer;
-}
-
+#if LX_DEBUG_ATOMIC_SLEEP
 /* Opens an atomic section; in a task the outermost one disables dispatching. */
 void lx_atomic_enter(bool spinlock)
 {
@@ -160,6 +168,86 @@ void lx_irqs_off_exit(void)
 		ctx.irqs_off--;
 }
 
+/* Interrupts just masked: one local_irq_save level, then a spin lock's atomic section. */
+void lx_irqs_off_atomic_enter(void)
+{
+	lx_irqs_off_enter();
+	lx_atomic_enter(true);
+}
+
+/* The spin lock's atomic section ends, then the local_irq_save level. */
+void lx_irqs_off_atomic_exit(void)
+{
+	lx_atomic_exit(true);
+	lx_irqs_off_exit();
+}
+
+#else /* !LX_DEBUG_ATOMIC_SLEEP */
+
+/* Opens an atomic section; the outermost one, in a task with interrupts enabled, disables dispatching. */
+void lx_atomic_enter(bool spinlock)
+{
+	(void)spinlock;
+	if (ctx.preempt++ != 0)
+		return;
+	/* With interrupts or the CPU locked no dispatch can happen (and HRP2
+	 * forbids service calls under SIL_LOC_INT); an interrupt cannot dispatch. */
+	ctx.dispatch_disabled_by_us = ctx.irqs_off == 0 && !sns_ctx() && !sns_loc() && !sns_dsp();
+	if (ctx.dispatch_disabled_by_us)
+		(void)dis_dsp();
+}
+
+/* Closes an atomic section; the outermost one re-enables dispatching if it disabled it. */
+void lx_atomic_exit(bool spinlock)
+{
+	(void)spinlock;
+	if (ctx.preempt == 0) {
+		lx_report("unbalanced unlock", NULL, 0, "no atomic section is open");
+		return;
+	}
+	if (--ctx.preempt == 0 && ctx.dispatch_disabled_by_us) {
+		ctx.dispatch_disabled_by_us = false;
+		(void)ena_dsp();
+	}
+}
+
+/* Atomic sections open (in an interrupt: with those of what it interrupted, as Linux counts). */
+unsigned int lx_preempt_count(void)
+{
+	return ctx.preempt;
+}
+
+/* Counts one local_irq_save/disable level. */
+void lx_irqs_off_enter(void)
+{
+	ctx.irqs_off++;
+}
+
+/* Uncounts one local_irq_restore/enable level. */
+void lx_irqs_off_exit(void)
+{
+	if (ctx.irqs_off > 0)
+		ctx.irqs_off--;
+}
+
+/* Interrupts just masked: one local_irq_save level and an atomic section (which
+ * needs no dispatcher call, interrupts being masked). */
+void lx_irqs_off_atomic_enter(void)
+{
+	ctx.irqs_off++;
+	if (ctx.preempt++ == 0)
+		ctx.dispatch_disabled_by_us = false;
+}
+
+/* The atomic section ends, then the local_irq_save level (interrupts still masked). */
+void lx_irqs_off_atomic_exit(void)
+{
+	lx_atomic_exit(true);
+	if (ctx.irqs_off > 0)
+		ctx.irqs_off--;
+}
+#endif /* LX_DEBUG_ATOMIC_SLEEP */
+
 /* True in interrupt context (ISRs, handlers, timer callbacks). */
 bool lx_in_interrupt(void)
 {
@@ -169,7 +257,11 @@ bool lx_in_interrupt(void)
 /* True if the calling code must not sleep. */
 bool lx_in_atomic(void)
 {
+#if LX_DEBUG_ATOMIC_SLEEP
 	return lx_in_interrupt() || lx_preempt_count() > 0 || lx_irqs_disabled() || sns_dsp();
+#else
+	return ctx.preempt > 0 || ctx.irqs_off > 0 || lx_in_interrupt() || sns_loc() || sns_dsp();
+#endif
 }
 
 /* True with interrupts disabled by linux_compat or by the CPU lock. */
@@ -192,7 +284,9 @@ static void append_reason(char *buf, unsigned int len, const char *text)
 bool lx_context_forbids_sleep(char *buf, unsigned int len)
 {
 	char item[48];
+#if LX_DEBUG_ATOMIC_SLEEP
 	unsigned int spin, atomic;
+#endif
 
 	if (buf == NULL || len == 0)
 		return lx_in_atomic();
@@ -213,12 +307,17 @@ bool lx_context_forbids_sleep(char *buf, unsigned int len)
 		append_reason(buf, len, "interrupt context");
 #endif
 	}
+#if LX_DEBUG_ATOMIC_SLEEP
 	spin = sns_ctx() ? ctx.isr_spin : ctx.task_spin;
 	atomic = lx_preempt_count();
 	if (spin > 0)
 		append_reason(buf, len, "spinlock held");
 	if (atomic > spin)
 		append_reason(buf, len, "preemption disabled");
+#else
+	if (ctx.preempt > 0)
+		append_reason(buf, len, "spinlock held or preemption disabled");
+#endif
 	if (ctx.irqs_off > 0)
 		append_reason(buf, len, "interrupts disabled");
 	else if (sns_loc())

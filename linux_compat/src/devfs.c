@@ -124,7 +124,7 @@ int misc_register(struct miscdevice *misc)
 	int minor, err;
 	SIL_PRE_LOC;
 
-	(void)lx_might_sleep_check("misc_register()", __FILE__, __LINE__);
+	lx_might_sleep("misc_register()", __FILE__, __LINE__);
 	if (!misc || !misc->fops || !name_ok(misc->name))
 		return -EINVAL;
 	dynamic = misc->minor == MISC_DYNAMIC_MINOR;
@@ -158,7 +158,7 @@ void misc_deregister(struct miscdevice *misc)
 	unsigned int i;
 	SIL_PRE_LOC;
 
-	(void)lx_might_sleep_check("misc_deregister()", __FILE__, __LINE__);
+	lx_might_sleep("misc_deregister()", __FILE__, __LINE__);
 	if (!misc)
 		return;
 	SIL_LOC_INT();
@@ -182,7 +182,7 @@ int register_chrdev(unsigned int major, const char *name, const struct file_oper
 	int err = 0;
 	SIL_PRE_LOC;
 
-	(void)lx_might_sleep_check("register_chrdev()", __FILE__, __LINE__);
+	lx_might_sleep("register_chrdev()", __FILE__, __LINE__);
 	if (!fops || !name_ok(name) || major > 511 || major == MISC_MAJOR)
 		return -EINVAL;
 	SIL_LOC_INT();
@@ -209,7 +209,7 @@ void unregister_chrdev(unsigned int major, const char *name)
 	unsigned int i;
 	SIL_PRE_LOC;
 
-	(void)lx_might_sleep_check("unregister_chrdev()", __FILE__, __LINE__);
+	lx_might_sleep("unregister_chrdev()", __FILE__, __LINE__);
 	SIL_LOC_INT();
 	for (i = 0; i < LX_NR_DEV_NODES; i++) {
 		if (nodes[i].in_use && !nodes[i].misc && MAJOR(nodes[i].devt) == major &&
@@ -245,7 +245,7 @@ int lx_dev_open(const char *path, int flags, struct file **filep)
 	int err;
 	SIL_PRE_LOC;
 
-	(void)lx_might_sleep_check("lx_dev_open()", __FILE__, __LINE__);
+	lx_might_sleep("lx_dev_open()", __FILE__, __LINE__);
 	if (!filep)
 		return -EINVAL;
 	*filep = NULL;
@@ -299,7 +299,7 @@ int lx_dev_close(struct file *file)
 {
 	struct open_file *of;
 
-	(void)lx_might_sleep_check("lx_dev_close()", __FILE__, __LINE__);
+	lx_might_sleep("lx_dev_close()", __FILE__, __LINE__);
 	if (!file)
 		return -EBADF;
 	of = container_of(file, struct open_file, file);
@@ -326,7 +326,7 @@ int lx_dev_mmap(struct file *file, size_t length, void **addr)
 	struct vm_area_struct vma;
 	int err;
 
-	(void)lx_might_sleep_check("lx_dev_mmap()", __FILE__, __LINE__);
+	lx_might_sleep("lx_dev_mmap()", __FILE__, __LINE__);
 	if (!file)
 		return -EBADF;
 	if (!addr)

@@ -1,10 +1,11 @@
 /*
  * hrtimer.c — hrtimers on the RTOS tick.
  *
- * One doubly linked queue sorted by (expiry, queueing sequence).  The tick
+ * One list (linux/list.h) sorted by (expiry, queueing sequence).  The tick
  * ISR compares the head's expiry with the tick's time - the whole cost of a
  * tick with nothing due - and runs due callbacks one after another in its
- * own interrupt context.  Queue updates are made under SIL_LOC_INT, so
+ * own interrupt context.  Insertion scans from the tail: a periodic timer
+ * re-queued by its callback usually expires after the others.  Queue updates are made under SIL_LOC_INT, so
  * timers may be started and cancelled from any context.
  */
 #include <linux/hrtimer.h>
@@ -20,60 +21,45 @@
 const unsigned int hrtimer_resolution = (unsigned int)TIC_NS;
 
 static struct {
-	struct hrtimer *head;
+	struct list_head head;
 	u64 next_seq;
 	/* The timer whose callback runs; the timer itself is not touched after a
 	 * callback returning HRTIMER_NORESTART (it may have freed it). */
 	struct hrtimer *running;
-} queue;
+} queue = { .head = LIST_HEAD_INIT(queue.head) };
 
 /* Empties the queue (boot). */
 void lx_hrtimer_reset(void)
 {
-	queue.head = NULL;
+	INIT_LIST_HEAD(&queue.head);
 	queue.next_seq = 0;
 	queue.running = NULL;
-	lx_set_running_hrtimer(NULL);
 }
 
-/* True if a sorts before b: earlier expiry, or equal expiry queued earlier. */
-static bool sorts_before(const struct hrtimer *a, const struct hrtimer *b)
+/* The first queued timer, or NULL. */
+static inline struct hrtimer *queue_first(void)
 {
-	return a->lx_expires < b->lx_expires ||
-	       (a->lx_expires == b->lx_expires && a->lx_seq < b->lx_seq);
+	return list_first_entry_or_null(&queue.head, struct hrtimer, lx_node);
 }
 
-/* Inserts timer in order; interrupts locked by the caller. */
+/* Inserts timer in (expiry, sequence) order: after every timer expiring no
+ * later (its sequence is the largest); interrupts locked by the caller. */
 static void enqueue_locked(struct hrtimer *timer)
 {
-	struct hrtimer *prev = NULL, *cur = queue.head;
+	struct list_head *pos;
 
 	timer->lx_seq = queue.next_seq++;
-	while (cur != NULL && !sorts_before(timer, cur)) {
-		prev = cur;
-		cur = cur->lx_next;
-	}
-	timer->lx_prev = prev;
-	timer->lx_next = cur;
-	if (cur != NULL)
-		cur->lx_prev = timer;
-	if (prev != NULL)
-		prev->lx_next = timer;
-	else
-		queue.head = timer;
+	for (pos = queue.head.prev; pos != &queue.head; pos = pos->prev)
+		if (list_entry(pos, struct hrtimer, lx_node)->lx_expires <= timer->lx_expires)
+			break;
+	list_add(&timer->lx_node, pos);
 	timer->lx_queued = 1;
 }
 
 /* Unlinks a queued timer; interrupts locked by the caller. */
 static void dequeue_locked(struct hrtimer *timer)
 {
-	if (timer->lx_prev != NULL)
-		timer->lx_prev->lx_next = timer->lx_next;
-	else
-		queue.head = timer->lx_next;
-	if (timer->lx_next != NULL)
-		timer->lx_next->lx_prev = timer->lx_prev;
-	timer->lx_next = timer->lx_prev = NULL;
+	list_del(&timer->lx_node);
 	timer->lx_queued = 0;
 }
 
@@ -96,7 +82,7 @@ void hrtimer_init(struct hrtimer *timer, clockid_t clock_id, enum hrtimer_mode m
 		SIL_LOC_INT();
 	}
 	timer->function = NULL;
-	timer->lx_next = timer->lx_prev = NULL;
+	INIT_LIST_HEAD(&timer->lx_node);
 	timer->lx_expires = 0;
 	timer->lx_seq = 0;
 	timer->lx_clockid = clock_id;
@@ -296,22 +282,23 @@ ktime_t hrtimer_get_remaining(const struct hrtimer *timer)
  */
 static struct hrtimer *take_due(u64 now, u64 limit)
 {
-	struct hrtimer *t;
+	struct hrtimer *t, *due = NULL;
 	SIL_PRE_LOC;
 
 	SIL_LOC_INT();
-	for (t = queue.head; t != NULL && t->lx_expires <= (ktime_t)now; t = t->lx_next)
-		if (t->lx_seq < limit)
+	list_for_each_entry(t, &queue.head, lx_node) {
+		if (t->lx_expires > (ktime_t)now)
 			break;
-	if (t != NULL && t->lx_expires <= (ktime_t)now) {
-		dequeue_locked(t);
-		t->lx_cancelled = 0;
-		queue.running = t;
-	} else {
-		t = NULL;
+		if (t->lx_seq < limit) {
+			due = t;
+			dequeue_locked(due);
+			due->lx_cancelled = 0;
+			queue.running = due;
+			break;
+		}
 	}
 	SIL_UNL_INT();
-	return t;
+	return due;
 }
 
 /* Runs every timer due at now, in expiry order, in the calling (tick ISR) context. */
@@ -323,16 +310,14 @@ void lx_hrtimer_run_due(uint64_t now)
 	SIL_PRE_LOC;
 
 	/* The per-tick fast path: nothing due. */
-	t = queue.head;
+	t = queue_first();
 	if (t == NULL || t->lx_expires > (ktime_t)now)
 		return;
 	limit = queue.next_seq;
 	while ((t = take_due(now, limit)) != NULL) {
-		lx_set_running_hrtimer(t);
 		lx_timer_callback_enter(true, t);
 		ret = t->function(t);
 		lx_timer_callback_exit();
-		lx_set_running_hrtimer(NULL);
 		if (ret == HRTIMER_RESTART && t->function == NULL) {
 			/* Re-initialised in its own callback and never given a function. */
 			lx_report("hrtimer callback returned HRTIMER_RESTART", NULL, 0,

@@ -34,7 +34,7 @@ void __iomem *ioremap(phys_addr_t phys, size_t size)
 {
 	void __iomem *addr;
 
-	(void)lx_might_sleep_check("ioremap()", __FILE__, __LINE__);
+	lx_might_sleep("ioremap()", __FILE__, __LINE__);
 	addr = lx_io_map(phys, size);
 	if (!addr)
 		pr_err("ioremap(%#llx, %#lx): no device registers there\n",
@@ -45,7 +45,7 @@ void __iomem *ioremap(phys_addr_t phys, size_t size)
 void iounmap(volatile void __iomem *addr)
 {
 	(void)addr;
-	(void)lx_might_sleep_check("iounmap()", __FILE__, __LINE__);
+	lx_might_sleep("iounmap()", __FILE__, __LINE__);
 }
 
 unsigned long lx_io_address(phys_addr_t phys)

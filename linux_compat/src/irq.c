@@ -166,7 +166,7 @@ int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
 	int err = 0;
 	SIL_PRE_LOC;
 
-	(void)lx_might_sleep_check("request_irq()", __FILE__, __LINE__);
+	lx_might_sleep("request_irq()", __FILE__, __LINE__);
 	if (!handler || !lx_irq_valid(irq))
 		return -EINVAL;
 	if ((flags & IRQF_SHARED) && !dev)
@@ -242,7 +242,7 @@ const void *free_irq(unsigned int irq, void *dev_id)
 	bool last = false;
 	SIL_PRE_LOC;
 
-	(void)lx_might_sleep_check("free_irq()", __FILE__, __LINE__);
+	lx_might_sleep("free_irq()", __FILE__, __LINE__);
 	if (irq >= NR_IRQS) {
 		WARN(1, "free_irq: invalid irq %u", irq);
 		return NULL;

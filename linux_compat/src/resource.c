@@ -47,7 +47,7 @@ struct resource *__request_region(struct resource *parent, resource_size_t start
 	bool conflict = false;
 	SIL_PRE_LOC;
 
-	(void)lx_might_sleep_check("__request_region()", __FILE__, __LINE__);
+	lx_might_sleep("__request_region()", __FILE__, __LINE__);
 	if (!parent || n == 0 || end < start || start < parent->start || end > parent->end)
 		return NULL;
 
@@ -87,7 +87,7 @@ void __release_region(struct resource *parent, resource_size_t start, resource_s
 	struct resource *res = NULL, **link;
 	SIL_PRE_LOC;
 
-	(void)lx_might_sleep_check("__release_region()", __FILE__, __LINE__);
+	lx_might_sleep("__release_region()", __FILE__, __LINE__);
 	if (parent) {
 		SIL_LOC_INT();
 		for (link = &parent->child; *link; link = &(*link)->sibling) {

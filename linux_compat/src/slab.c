@@ -245,7 +245,7 @@ void *kmalloc(size_t size, gfp_t flags)
 	SIL_PRE_LOC;
 
 	if (gfpflags_allow_blocking(flags))
-		(void)lx_might_sleep_check("kmalloc(GFP_KERNEL)", __FILE__, __LINE__);
+		lx_might_sleep("kmalloc(GFP_KERNEL)", __FILE__, __LINE__);
 	if (size == 0)
 		return ZERO_SIZE_PTR;
 
@@ -412,7 +412,7 @@ struct kmem_cache *kmem_cache_create(const char *name, unsigned int size, unsign
 {
 	struct kmem_cache *cache;
 
-	(void)lx_might_sleep_check("kmem_cache_create()", __FILE__, __LINE__);
+	lx_might_sleep("kmem_cache_create()", __FILE__, __LINE__);
 	if (align == 0)
 		align = ARCH_KMALLOC_MINALIGN;
 	if ((__force unsigned int)flags & (__force unsigned int)SLAB_HWCACHE_ALIGN && align < 32)

@@ -21,18 +21,19 @@ u64 jiffies_64 = INITIAL_JIFFIES;
  * the ARM926, which has no divide instruction. */
 static u64 next_jiffy_ns = TICK_NSEC;
 
+/* Pending timers in expiry order, FIFO among equal expiries (linux/list.h). */
 static struct {
-	struct timer_list *head;
+	struct list_head head;
 	u64 next_seq;
 	/* The timer whose callback runs (the timer is not touched after its
 	 * callback: the callback may free it). */
 	const struct timer_list *running;
-} tq;
+} tq = { .head = LIST_HEAD_INIT(tq.head) };
 
 /* Empties the queue and restarts jiffies (boot). */
 void lx_timers_reset(void)
 {
-	tq.head = NULL;
+	INIT_LIST_HEAD(&tq.head);
 	tq.next_seq = 0;
 	tq.running = NULL;
 	jiffies_64 = INITIAL_JIFFIES;
@@ -70,37 +71,24 @@ u64 get_jiffies_64(void)
 	return j;
 }
 
-/* Inserts timer sorted by expiry (wrap-safe), FIFO among equals; locked by the caller. */
+/* Inserts timer sorted by expiry (wrap-safe), after every timer expiring no
+ * later (FIFO among equals), scanning from the tail; locked by the caller. */
 static void enqueue_locked(struct timer_list *timer)
 {
-	struct timer_list *prev = NULL, *cur = tq.head;
+	struct list_head *pos;
 
 	timer->lx_seq = tq.next_seq++;
-	while (cur != NULL && !time_before(timer->expires, cur->expires)) {
-		prev = cur;
-		cur = cur->lx_next;
-	}
-	timer->lx_prev = prev;
-	timer->lx_next = cur;
-	if (cur != NULL)
-		cur->lx_prev = timer;
-	if (prev != NULL)
-		prev->lx_next = timer;
-	else
-		tq.head = timer;
+	for (pos = tq.head.prev; pos != &tq.head; pos = pos->prev)
+		if (!time_before(timer->expires, list_entry(pos, struct timer_list, lx_node)->expires))
+			break;
+	list_add(&timer->lx_node, pos);
 	timer->lx_pending = 1;
 }
 
 /* Unlinks a pending timer; locked by the caller. */
 static void dequeue_locked(struct timer_list *timer)
 {
-	if (timer->lx_prev != NULL)
-		timer->lx_prev->lx_next = timer->lx_next;
-	else
-		tq.head = timer->lx_next;
-	if (timer->lx_next != NULL)
-		timer->lx_next->lx_prev = timer->lx_prev;
-	timer->lx_next = timer->lx_prev = NULL;
+	list_del(&timer->lx_node);
 	timer->lx_pending = 0;
 }
 
@@ -118,7 +106,7 @@ void timer_setup(struct timer_list *timer, void (*fn)(struct timer_list *), unsi
 	timer->expires = 0;
 	timer->function = fn;
 	timer->flags = flags;
-	timer->lx_next = timer->lx_prev = NULL;
+	INIT_LIST_HEAD(&timer->lx_node);
 	timer->lx_seq = 0;
 	timer->lx_pending = 0;
 	timer->lx_magic = TIMER_MAGIC;
@@ -216,31 +204,33 @@ int (del_timer_sync)(struct timer_list *timer)
 /* Takes the first due timer off the queue (marked running), or NULL. */
 static struct timer_list *take_due(unsigned long now, u64 limit)
 {
-	struct timer_list *t;
+	struct timer_list *t, *due = NULL;
 	SIL_PRE_LOC;
 
 	SIL_LOC_INT();
-	for (t = tq.head; t != NULL && time_after_eq(now, t->expires); t = t->lx_next)
-		if (t->lx_seq < limit)
+	list_for_each_entry(t, &tq.head, lx_node) {
+		if (!time_after_eq(now, t->expires))
 			break;
-	if (t != NULL && time_after_eq(now, t->expires)) {
-		dequeue_locked(t);
-		tq.running = t;
-	} else {
-		t = NULL;
+		if (t->lx_seq < limit) {
+			due = t;
+			dequeue_locked(due);
+			tq.running = due;
+			break;
+		}
 	}
 	SIL_UNL_INT();
-	return t;
+	return due;
 }
 
 /* Runs the due timer_list callbacks (tick ISR), unless bottom halves are disabled. */
 void lx_timers_run_due(void)
 {
 	struct timer_list *t;
+	const struct timer_list *first = list_first_entry_or_null(&tq.head, struct timer_list, lx_node);
 	unsigned long now = jiffies;
 	u64 limit;
 
-	if (tq.head == NULL || time_before(now, tq.head->expires) || lx_bh_disabled())
+	if (first == NULL || time_before(now, first->expires) || lx_bh_disabled())
 		return;
 	limit = tq.next_seq;
 	while ((t = take_due(now, limit)) != NULL) {

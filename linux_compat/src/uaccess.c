@@ -42,15 +42,15 @@ void lx_uaccess_boot(void)
 }
 
 /*
- * How many bytes from p on the calling task may access with mode: n, or the
- * length of the accessible prefix.  One probe when all is accessible; else
- * bisection on the prefix length (accessibility of prefixes is monotonic).
+ * How many bytes from p on the calling task may access with mode, after the
+ * one probe of the whole range failed: n under KERNEL_DS, else the length of
+ * the accessible prefix by bisection (accessibility of prefixes is monotonic).
  */
-static size_t accessible_prefix(const void *p, size_t n, MODE mode)
+static size_t accessible_prefix_slow(const void *p, size_t n, MODE mode)
 {
 	size_t ok = 0, bad = n;
 
-	if (n == 0 || prb_mem(p, (SIZE)n, TSK_SELF, mode) == E_OK || uaccess_kernel())
+	if (uaccess_kernel())
 		return n;
 	while (bad - ok > 1) {
 		size_t mid = ok + (bad - ok) / 2;
@@ -63,26 +63,47 @@ static size_t accessible_prefix(const void *p, size_t n, MODE mode)
 	return ok;
 }
 
+/* How many bytes from p on the calling task may access with mode (one probe when all). */
+static size_t accessible_prefix(const void *p, size_t n, MODE mode)
+{
+	if (n == 0 || prb_mem(p, (SIZE)n, TSK_SELF, mode) == E_OK)
+		return n;
+	return accessible_prefix_slow(p, n, mode);
+}
+
 /*
  * The checks every user copy starts with: reports a call from a context that
- * may not sleep, and returns false if there is no calling task to check
- * against (interrupt context), in which case nothing is copied.
+ * may not sleep (LX_DEBUG_ATOMIC_SLEEP), and returns false if there is no
+ * calling task to check against (interrupt context), in which case nothing
+ * is copied.
  */
 static bool user_copy_allowed(const char *what)
 {
-	(void)lx_might_sleep_check(what, NULL, 0);
+	lx_might_sleep(what, NULL, 0);
 	return !sns_ctx();
 }
 
+/*
+ * The common case costs one probe and the copy: prb_mem(TSK_SELF) accepts the
+ * whole range only for a calling task (outside task context it fails), so the
+ * context is asked only when the probe fails.
+ */
 unsigned long copy_from_user(void *to, const void __user *from, unsigned long n)
 {
 	size_t ok;
 
-	if (!user_copy_allowed("copy_from_user()")) {
+	lx_might_sleep("copy_from_user()", NULL, 0);
+	if (likely(n != 0 && prb_mem((__force const void *)from, (SIZE)n, TSK_SELF, TPM_READ) == E_OK)) {
+		memcpy(to, (__force const void *)from, n);
+		return 0;
+	}
+	if (n == 0)
+		return 0;
+	if (sns_ctx()) {
 		memset(to, 0, n);
 		return n;
 	}
-	ok = accessible_prefix((__force const void *)from, n, TPM_READ);
+	ok = accessible_prefix_slow((__force const void *)from, n, TPM_READ);
 	if (ok)
 		memcpy(to, (__force const void *)from, ok);
 	if (ok < n)
@@ -90,13 +111,21 @@ unsigned long copy_from_user(void *to, const void __user *from, unsigned long n)
 	return n - ok;
 }
 
+/* As copy_from_user: one probe and the copy in the common case. */
 unsigned long copy_to_user(void __user *to, const void *from, unsigned long n)
 {
 	size_t ok;
 
-	if (!user_copy_allowed("copy_to_user()"))
+	lx_might_sleep("copy_to_user()", NULL, 0);
+	if (likely(n != 0 && prb_mem((__force const void *)to, (SIZE)n, TSK_SELF, TPM_WRITE) == E_OK)) {
+		memcpy((__force void *)to, from, n);
+		return 0;
+	}
+	if (n == 0)
+		return 0;
+	if (sns_ctx())
 		return n;
-	ok = accessible_prefix((__force const void *)to, n, TPM_WRITE);
+	ok = accessible_prefix_slow((__force const void *)to, n, TPM_WRITE);
 	if (ok)
 		memcpy((__force void *)to, from, ok);
 	return n - ok;

@@ -18,6 +18,7 @@
 #define _LINUX_HRTIMER_H
 
 #include <linux/types.h>
+#include <linux/list.h>
 #include <linux/ktime.h>
 #include <linux/time.h>
 #include <linux/init.h>
@@ -51,7 +52,7 @@ struct hrtimer {
 	/* Public, as in Linux: the callback. */
 	enum hrtimer_restart (*function)(struct hrtimer *);
 	/* Private to the engine. */
-	struct hrtimer *lx_next, *lx_prev;   /* queue links */
+	struct list_head lx_node;            /* in the queue (while lx_queued) */
 	ktime_t lx_expires;                  /* expiry, absolute ns */
 	u64 lx_seq;                          /* queueing order, FIFO among equal expiries */
 	clockid_t lx_clockid;

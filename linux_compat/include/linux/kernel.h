@@ -55,8 +55,9 @@
 #define _RET_IP_		((unsigned long)__builtin_return_address(0))
 #define _THIS_IP_		({ __label__ __lx_here; __lx_here: (unsigned long)&&__lx_here; })
 
-/* Reports (and fails the test run) if the caller may not sleep here. */
-#define might_sleep()		((void)lx_might_sleep_check("might_sleep()", __FILE__, __LINE__))
+/* Reports (and fails the test run) if the caller may not sleep here;
+ * nothing without LX_DEBUG_ATOMIC_SLEEP (linux_compat/debug.h). */
+#define might_sleep()		lx_might_sleep("might_sleep()", __FILE__, __LINE__)
 #define might_sleep_if(cond)	do { if (cond) might_sleep(); } while (0)
 #define might_resched()		do { } while (0)
 #define cant_sleep()		WARN_ON_ONCE(!lx_in_atomic())

@@ -11,6 +11,7 @@
 #define _LINUX_TIMER_H
 
 #include <linux/types.h>
+#include <linux/list.h>
 #include <linux/jiffies.h>
 #include <linux/ktime.h>
 #include <linux/kernel.h>
@@ -20,7 +21,7 @@ struct timer_list {
 	void (*function)(struct timer_list *);
 	u32 flags;
 	/* Private to the engine. */
-	struct timer_list *lx_next, *lx_prev;
+	struct list_head lx_node;               /* in the queue (while lx_pending) */
 	u64 lx_seq;
 	u32 lx_magic;
 	u8 lx_pending;

@@ -10,11 +10,14 @@
  *   - atomic sections:  spin locks and preempt_disable (atomic depth);
  *   - irqs disabled:    local_irq_save/disable and spin_lock_irq*.
  * Sleeping is legal only in task context outside all of these.
+ * How much is tracked, and whether might_sleep reports, is set by
+ * LX_DEBUG_ATOMIC_SLEEP (linux_compat/debug.h).
  */
 #ifndef _LINUX_COMPAT_CONTEXT_H
 #define _LINUX_COMPAT_CONTEXT_H
 
 #include <stdbool.h>
+#include <linux_compat/debug.h>
 
 /* A Linux interrupt handler for irq is about to run (interrupt context). */
 void lx_irq_enter(int irq);
@@ -23,12 +26,12 @@ void lx_irq_exit(void);
 /* The Linux IRQ number whose handler is running, or -1. */
 int lx_current_irq(void);
 
-/* The hrtimer/timer_list engines: a callback (cb) starts / ends. */
-void lx_timer_callback_enter(bool hrtimer, const void *cb);
+/* The hrtimer/timer_list engines: the callback of timer starts / ends
+ * (for an hrtimer, timer is its struct hrtimer *: lx_running_hrtimer()). */
+void lx_timer_callback_enter(bool hrtimer, const void *timer);
 void lx_timer_callback_exit(void);
 /* The hrtimer callback running now (its struct hrtimer *), or NULL. */
 const void *lx_running_hrtimer(void);
-void lx_set_running_hrtimer(const void *timer);
 
 /*
  * Atomic sections (spin locks when spinlock is true, else preempt_disable):
@@ -45,6 +48,11 @@ unsigned int lx_preempt_count(void);
 /* Interrupt-disabled sections opened by linux_compat (local_irq_save...). */
 void lx_irqs_off_enter(void);
 void lx_irqs_off_exit(void);
+/* spin_lock_irqsave's bookkeeping in one call, interrupts just masked by the
+ * caller: lx_irqs_off_enter then lx_atomic_enter(true); and its undoing,
+ * lx_atomic_exit(true) then lx_irqs_off_exit, before the caller unmasks. */
+void lx_irqs_off_atomic_enter(void);
+void lx_irqs_off_atomic_exit(void);
 
 /* Forgets all tracked state (at boot: a fresh system has no locks held). */
 void lx_context_reset(void);
@@ -68,5 +76,16 @@ bool lx_context_forbids_sleep(char *buf, unsigned int len);
  * and returns false; returns true if sleeping is legal.  file may be NULL.
  */
 bool lx_might_sleep_check(const char *what, const char *file, int line);
+
+/*
+ * The annotation of a call that may sleep (Linux's might_sleep): the check
+ * above with LX_DEBUG_ATOMIC_SLEEP, nothing without.  Calls that really
+ * sleep use lx_might_sleep_check's result in both builds.
+ */
+#if LX_DEBUG_ATOMIC_SLEEP
+#define lx_might_sleep(what, file, line)	((void)lx_might_sleep_check((what), (file), (line)))
+#else
+#define lx_might_sleep(what, file, line)	((void)0)
+#endif
 
 #endif /* _LINUX_COMPAT_CONTEXT_H */
