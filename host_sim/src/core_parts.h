@@ -7,10 +7,13 @@
 
 #include <stdbool.h>
 #include "t_stddef.h"
+#include "host_sim/psc.h"
 
 /* Each creates its region(s) in the state U-Boot/Linux leave (cold: TRM reset). */
 ER hs_psc_create(bool cold);
 void hs_psc_destroy(void);
+/* Where module's state is kept (hs_psc_state's answer), for the access path's power check. */
+const enum hs_psc_state *hs_psc_state_ref(unsigned module);
 ER hs_syscfg_create(bool cold);
 void hs_syscfg_destroy(void);
 ER hs_aintc_create(bool cold);

@@ -180,6 +180,21 @@ enum hs_psc_state hs_psc_state(unsigned module)
 	return p ? p->state[m] : HS_PSC_SWRSTDISABLE;
 }
 
+/* Where the state hs_psc_state(module) reports is kept, for the register
+ * access path's per-access power check; stable for the process's life. */
+const enum hs_psc_state *hs_psc_state_ref(unsigned module)
+{
+	static const enum hs_psc_state always_enabled = HS_PSC_ENABLE;
+	static const enum hs_psc_state no_module = HS_PSC_SWRSTDISABLE;
+	unsigned m;
+	struct psc *p;
+
+	if (module == HS_NO_PSC)
+		return &always_enabled;
+	p = psc_of(module, &m);
+	return p ? &p->state[m] : &no_module;
+}
+
 bool hs_psc_enabled(unsigned module)
 {
 	return hs_psc_state(module) == HS_PSC_ENABLE;

@@ -16,32 +16,41 @@
 #include "host_sim/regs.h"
 #include "host_sim/psc.h"
 #include "space_internal.h"
+#include "core_parts.h"
 
 #define HS_PAGE          4096U
 #define HS_SPACE_PAGES   512U      /* 2 MiB of window space */
 #define HS_MAX_REGIONS   64U
 #define HS_NO_ELEM       (-1)
 
-/* One register, or one element of a register array. */
+/* One register, or one element of a register array.  The fields the access
+ * path reads come first (one cache line); the declaration and name are for
+ * reports and the log. */
 struct hs_elem {
-	const struct hs_reg *reg;
+	uint32_t *value;        /* stored value: own slot or the alias target's */
+	hs_before_read_fn before_read;
+	hs_after_write_fn after_write;
+	uint32_t mask;          /* effective mask (width bits if declared 0) */
+	uint32_t offset;
 	uint16_t index;
 	uint8_t width;          /* natural width */
 	uint8_t widths;         /* allowed widths (HS_Wn bits) */
-	uint32_t offset;
-	uint32_t mask;          /* effective mask (width bits if declared 0) */
-	uint32_t *value;        /* stored value: own slot or the alias target's */
+	uint8_t ok_widths;      /* widths an access may use without a report (none if reserved) */
+	uint8_t kind;           /* enum hs_reg_kind */
+	const struct hs_reg *reg;
 	char name[32];          /* "CMR[3]" */
 };
 
 struct hs_region {
 	struct hs_region_cfg cfg;
 	unsigned first_page;    /* in the window space */
+	const enum hs_psc_state *power_state;   /* the PSC module's state (HS_NO_PSC: always enabled) */
 	struct hs_elem *elems;
 	unsigned nelems;
 	uint32_t *values;       /* one per element */
 	int16_t *rd_map;        /* byte offset -> element readable there, or HS_NO_ELEM */
 	int16_t *wr_map;        /* byte offset -> element writable there */
+	int16_t *any_map;       /* byte offset -> element starting there in either direction */
 	bool logged;            /* named by the register-log filter */
 };
 
@@ -112,6 +121,7 @@ static void region_free(struct hs_region *r)
 	free(r->values);
 	free(r->rd_map);
 	free(r->wr_map);
+	free(r->any_map);
 	free(r);
 }
 
@@ -250,7 +260,8 @@ static bool region_build(struct hs_region *r)
 	r->values = calloc(n ? n : 1, sizeof(*r->values));
 	r->rd_map = malloc(cfg->size * sizeof(int16_t));
 	r->wr_map = malloc(cfg->size * sizeof(int16_t));
-	if (!r->elems || !r->values || !r->rd_map || !r->wr_map)
+	r->any_map = malloc(cfg->size * sizeof(int16_t));
+	if (!r->elems || !r->values || !r->rd_map || !r->wr_map || !r->any_map)
 		return decl_bug(cfg, NULL, "out of memory");
 	for (uint32_t i = 0; i < cfg->size; i++)
 		r->rd_map[i] = r->wr_map[i] = HS_NO_ELEM;
@@ -280,9 +291,13 @@ static bool region_build(struct hs_region *r)
 			struct hs_elem *e = &r->elems[n];
 
 			e->reg = reg;
+			e->before_read = reg->before_read;
+			e->after_write = reg->after_write;
+			e->kind = (uint8_t)reg->kind;
 			e->index = (uint16_t)k;
 			e->width = (uint8_t)width;
 			e->widths = (uint8_t)(reg->widths | width_bit(width));
+			e->ok_widths = reg->kind == HS_RSVD ? 0U : e->widths;
 			e->offset = reg->offset + k * stride;
 			e->mask = (reg->mask ? reg->mask : 0xFFFFFFFFU) & width_mask(width);
 			e->value = &r->values[n];
@@ -320,6 +335,8 @@ static bool region_build(struct hs_region *r)
 			return decl_bug(cfg, e->reg, "alias has a different element count");
 		e->value = t->value;
 	}
+	for (uint32_t off = 0; off < cfg->size; off++)
+		r->any_map[off] = r->rd_map[off] >= 0 ? r->rd_map[off] : r->wr_map[off] >= 0 ? r->wr_map[off] : HS_NO_ELEM;
 	return true;
 }
 
@@ -362,6 +379,7 @@ struct hs_region *hs_region_add(const struct hs_region_cfg *cfg)
 		return NULL;
 	}
 	r->cfg = *cfg;
+	r->power_state = hs_psc_state_ref(cfg->power);
 	if (!region_build(r)) {
 		region_free(r);
 		return NULL;
@@ -376,7 +394,7 @@ struct hs_region *hs_region_add(const struct hs_region_cfg *cfg)
 }
 
 /* Element starting at offset for reading (or writing); NULL if none. */
-static struct hs_elem *elem_at(const struct hs_region *r, uint32_t offset, bool write)
+static inline struct hs_elem *elem_at(const struct hs_region *r, uint32_t offset, bool write)
 {
 	int16_t i;
 
@@ -386,21 +404,19 @@ static struct hs_elem *elem_at(const struct hs_region *r, uint32_t offset, bool 
 	return i >= 0 ? &r->elems[i] : NULL;
 }
 
-/* Element at offset in either direction, for the model-side accessors. */
-static struct hs_elem *elem_any(const struct hs_region *r, uint32_t offset, const char *what)
+/* Element at offset in either direction (the readable one first), for the
+ * model-side accessors; NULL after a bug report. */
+static inline struct hs_elem *elem_any(const struct hs_region *r, uint32_t offset, const char *what)
 {
-	struct hs_elem *e;
+	int16_t i;
 
-	if (!r) {
+	if (r && offset < r->cfg.size && (i = r->any_map[offset]) >= 0)
+		return &r->elems[i];
+	if (!r)
 		rtos_host_bug("host_sim", "%s: NULL region", what);
-		return NULL;
-	}
-	e = elem_at(r, offset, false);
-	if (!e)
-		e = elem_at(r, offset, true);
-	if (!e)
+	else
 		rtos_host_bug("host_sim", "%s: no register at %s+0x%03" PRIx32, what, r->cfg.name, offset);
-	return e;
+	return NULL;
 }
 
 uint32_t hs_reg_get(const struct hs_region *r, uint32_t offset)
@@ -451,45 +467,39 @@ static void reglog(const struct hs_region *r, const struct hs_elem *e, uintptr_t
 		rtos_host_trace("mmio", "%s", line);
 }
 
-/* Region of a CPU access, with the power check; NULL after a bug report. */
-static struct hs_region *access_region(uintptr_t phys, unsigned width, bool write, uint32_t value)
+/* The access path compares an element's allowed widths with the access width itself. */
+_Static_assert(HS_W8 == 1U && HS_W16 == 2U && HS_W32 == 4U, "HS_Wn bits are the widths in bytes");
+
+/* Reports a CPU access to no region, or to one whose PSC module is not enabled. */
+static void region_bug(const struct hs_region *r, uintptr_t phys, unsigned width, bool write, uint32_t value)
 {
-	struct hs_region *r = region_at(phys);
 	char val[32] = "";
 
-	if (r && (r->cfg.power == HS_NO_PSC || hs_psc_enabled(r->cfg.power)))
-		return r;           /* the common case */
 	if (write)
 		snprintf(val, sizeof(val), " of 0x%0*" PRIx32, (int)(2U * width), value);
 	if (!r) {
 		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": no modelled device there",
 			      write ? "write" : "read", width, val, phys);
-		return NULL;
+		return;
 	}
-	if (r->cfg.power != HS_NO_PSC && !hs_psc_enabled(r->cfg.power)) {
-		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR " (%s+0x%03" PRIxPTR ")"
-			      ": %s is not powered (PSC%u module %u is %s, not Enable)",
-			      write ? "write" : "read", width, val, phys,
-			      r->cfg.name, phys - r->cfg.phys, r->cfg.name,
-			      (r->cfg.power >> 8) - 1U, r->cfg.power & 0xFFU,
-			      hs_psc_state(r->cfg.power) == HS_PSC_SWRSTDISABLE ? "SwRstDisable" :
-			      hs_psc_state(r->cfg.power) == HS_PSC_SYNCRESET ? "SyncReset" : "Disable");
-		return NULL;
-	}
-	return r;
+	rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR " (%s+0x%03" PRIxPTR ")"
+		      ": %s is not powered (PSC%u module %u is %s, not Enable)",
+		      write ? "write" : "read", width, val, phys,
+		      r->cfg.name, phys - r->cfg.phys, r->cfg.name,
+		      (r->cfg.power >> 8) - 1U, r->cfg.power & 0xFFU,
+		      hs_psc_state(r->cfg.power) == HS_PSC_SWRSTDISABLE ? "SwRstDisable" :
+		      hs_psc_state(r->cfg.power) == HS_PSC_SYNCRESET ? "SyncReset" : "Disable");
 }
 
-/* Element accessed at phys with direction/width checks; NULL after a bug report. */
-static struct hs_elem *access_elem(struct hs_region *r, uintptr_t phys, unsigned width, bool write,
-				   uint32_t value)
+/* Reports a CPU access at offset off of r that found no usable element e
+ * (none in that direction, a width it does not allow, or reserved). */
+static void elem_bug(const struct hs_region *r, const struct hs_elem *e, uint32_t off, unsigned width,
+		     bool write, uint32_t value)
 {
-	uint32_t off = (uint32_t)(phys - r->cfg.phys);
-	struct hs_elem *e = elem_at(r, off, write);
-	struct hs_elem *other;
+	uintptr_t phys = r->cfg.phys + off;
+	const struct hs_elem *other;
 	char val[32] = "";
 
-	if (e && (e->widths & width_bit(width)) && e->reg->kind != HS_RSVD)
-		return e;           /* the common case: no report to format */
 	if (write)
 		snprintf(val, sizeof(val), " of 0x%0*" PRIx32, (int)(2U * width), value);
 	if (!e) {
@@ -497,80 +507,71 @@ static struct hs_elem *access_elem(struct hs_region *r, uintptr_t phys, unsigned
 		if (other)
 			rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is %s",
 				      write ? "write" : "read", width, val, phys, r->cfg.name, other->name,
-				      kind_names[other->reg->kind]);
+				      kind_names[other->kind]);
 		else
 			rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR " (%s+0x%03" PRIx32
 				      "): no register there", write ? "write" : "read", width, val, phys,
 				      r->cfg.name, off);
-		return NULL;
-	}
-	if (!(e->widths & width_bit(width))) {
+	} else if (!(e->widths & width)) {
 		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is a %u-byte register",
 			      write ? "write" : "read", width, val, phys, r->cfg.name, e->name, e->width);
-		return NULL;
-	}
-	if (e->reg->kind == HS_RSVD) {
+	} else {
 		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is reserved",
 			      write ? "write" : "read", width, val, phys, r->cfg.name, e->name);
-		return NULL;
 	}
-	return e;
 }
 
 /* Spends the per-access CPU time (events and interrupts may run meanwhile). */
-static void access_cost(void)
+static inline void access_cost(void)
 {
 	if (space.access_ns)
 		rtos_host_consume(space.access_ns);
 }
 
-uint32_t hs_cpu_read(uintptr_t phys, unsigned width)
+/* One CPU read of width bytes (1, 2 or 4) at offset off of r: checked, hooked,
+ * logged, and it costs the access time; 0 after a bug report. */
+static uint32_t region_read(struct hs_region *r, uint32_t off, unsigned width)
 {
-	struct hs_region *r;
-	struct hs_elem *e = NULL;
+	struct hs_elem *e;
 	uint32_t v = 0;
 
-	if (!width_bit(width)) {
-		rtos_host_bug("host_sim", "read of %u bytes at 0x%08" PRIxPTR ": unsupported width", width, phys);
-		return 0;
-	}
-	r = access_region(phys, width, false, 0);
-	if (r)
-		e = access_elem(r, phys, width, false, 0);
-	if (e) {
-		struct hs_access a = { e->reg, e->index, e->offset, width, false };
+	if (*r->power_state != HS_PSC_ENABLE) {
+		region_bug(r, r->cfg.phys + off, width, false, 0);
+	} else if ((e = elem_at(r, off, false)) == NULL || !(e->ok_widths & width)) {
+		elem_bug(r, e, off, width, false, 0);
+	} else {
+		if (e->before_read) {
+			struct hs_access a = { e->reg, e->index, e->offset, width, false };
 
-		if (e->reg->before_read)
-			e->reg->before_read(r->cfg.ctx, &a, e->value);
+			e->before_read(r->cfg.ctx, &a, e->value);
+		}
 		v = *e->value & width_mask(width);
-		if (e->reg->kind == HS_COR)
+		if (e->kind == HS_COR)
 			*e->value &= ~e->mask;
-		reglog(r, e, phys, false, width, v);
+		if (r->logged)
+			reglog(r, e, r->cfg.phys + off, false, width, v);
 	}
 	access_cost();
 	return v;
 }
 
-void hs_cpu_write(uintptr_t phys, unsigned width, uint32_t value)
+/* One CPU write of width bytes (1, 2 or 4; value already masked to it) at
+ * offset off of r: checked, applied with the register's kind, logged, hooked,
+ * and it costs the access time. */
+static void region_write(struct hs_region *r, uint32_t off, unsigned width, uint32_t value)
 {
-	struct hs_region *r;
-	struct hs_elem *e = NULL;
+	struct hs_elem *e;
 
-	if (!width_bit(width)) {
-		rtos_host_bug("host_sim", "write of %u bytes at 0x%08" PRIxPTR ": unsupported width", width, phys);
-		return;
-	}
-	value &= width_mask(width);
-	r = access_region(phys, width, true, value);
-	if (r)
-		e = access_elem(r, phys, width, true, value);
-	if (e) {
-		struct hs_access a = { e->reg, e->index, e->offset, width, true };
+	if (*r->power_state != HS_PSC_ENABLE) {
+		region_bug(r, r->cfg.phys + off, width, true, value);
+	} else if ((e = elem_at(r, off, true)) == NULL || !(e->ok_widths & width)) {
+		elem_bug(r, e, off, width, true, value);
+	} else {
 		uint32_t old = *e->value;
 		uint32_t bits = e->mask & width_mask(width);
 		uint32_t nv;
 
-		switch (e->reg->kind) {
+		switch (e->kind) {
 		case HS_W1S:
 			nv = old | (value & bits);
 			break;
@@ -582,10 +583,48 @@ void hs_cpu_write(uintptr_t phys, unsigned width, uint32_t value)
 			break;
 		}
 		*e->value = nv;
-		reglog(r, e, phys, true, width, value);
-		if (e->reg->after_write)
-			e->reg->after_write(r->cfg.ctx, &a, old, nv, value);
+		if (r->logged)
+			reglog(r, e, r->cfg.phys + off, true, width, value);
+		if (e->after_write) {
+			struct hs_access a = { e->reg, e->index, e->offset, width, true };
+
+			e->after_write(r->cfg.ctx, &a, old, nv, value);
+		}
 	}
+	access_cost();
+}
+
+uint32_t hs_cpu_read(uintptr_t phys, unsigned width)
+{
+	struct hs_region *r;
+
+	if (!width_bit(width)) {
+		rtos_host_bug("host_sim", "read of %u bytes at 0x%08" PRIxPTR ": unsupported width", width, phys);
+		return 0;
+	}
+	r = region_at(phys);
+	if (r)
+		return region_read(r, (uint32_t)(phys - r->cfg.phys), width);
+	region_bug(NULL, phys, width, false, 0);
+	access_cost();
+	return 0;
+}
+
+void hs_cpu_write(uintptr_t phys, unsigned width, uint32_t value)
+{
+	struct hs_region *r;
+
+	if (!width_bit(width)) {
+		rtos_host_bug("host_sim", "write of %u bytes at 0x%08" PRIxPTR ": unsupported width", width, phys);
+		return;
+	}
+	value &= width_mask(width);
+	r = region_at(phys);
+	if (r) {
+		region_write(r, (uint32_t)(phys - r->cfg.phys), width, value);
+		return;
+	}
+	region_bug(NULL, phys, width, true, value);
 	access_cost();
 }
 
@@ -605,30 +644,54 @@ static bool mmio_claims(const volatile void *addr, void *ctx)
 	return hs_space_claims((uintptr_t)addr);
 }
 
+/* The region whose window holds addr, and addr's offset in it; NULL outside every region. */
+static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
+{
+	uintptr_t rel = addr - (uintptr_t)space.base;
+	struct hs_region *r;
+
+	if (rel >= (uintptr_t)HS_SPACE_PAGES * HS_PAGE || (r = space.page_owner[rel / HS_PAGE]) == NULL)
+		return NULL;
+	*off = (uint32_t)(rel - (uintptr_t)r->first_page * HS_PAGE);
+	return r;
+}
+
 static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
 {
-	uintptr_t phys = hs_space_to_phys((uintptr_t)addr);
+	uint32_t off;
+	struct hs_region *r = window_region((uintptr_t)addr, &off);
 
 	(void)ctx;
-	if (!phys) {
+	if (!r) {
 		rtos_host_bug("host_sim", "read of %u bytes at window address %p: outside every region",
 			      width, (const void *)addr);
 		return 0;
 	}
-	return hs_cpu_read(phys, width);
+	if (!width_bit(width)) {
+		rtos_host_bug("host_sim", "read of %u bytes at 0x%08" PRIxPTR ": unsupported width", width,
+			      r->cfg.phys + off);
+		return 0;
+	}
+	return region_read(r, off, width);
 }
 
 static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *ctx)
 {
-	uintptr_t phys = hs_space_to_phys((uintptr_t)addr);
+	uint32_t off;
+	struct hs_region *r = window_region((uintptr_t)addr, &off);
 
 	(void)ctx;
-	if (!phys) {
+	if (!r) {
 		rtos_host_bug("host_sim", "write of %u bytes (0x%" PRIx32 ") at window address %p: outside every region",
 			      width, data, (void *)addr);
 		return;
 	}
-	hs_cpu_write(phys, width, data);
+	if (!width_bit(width)) {
+		rtos_host_bug("host_sim", "write of %u bytes at 0x%08" PRIxPTR ": unsupported width", width,
+			      r->cfg.phys + off);
+		return;
+	}
+	region_write(r, off, width, data & width_mask(width));
 }
 
 static void *mmio_map(uintptr_t phys, SIZE size, void *ctx)

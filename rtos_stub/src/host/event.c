@@ -1,106 +1,216 @@
 /*
- * event.c — the event queue of the virtual clock: a binary heap keyed by
- * (time, sequence), so events at the same time run in scheduling order.
- * Device events, interrupt-line changes and the kernel's tick are events;
- * virtual time jumps from one to the next.
+ * event.c — the event queue of the virtual clock, ordered by (time, sequence),
+ * so events at the same time run in scheduling order.  Device events,
+ * interrupt-line changes and the kernel's tick are events; virtual time jumps
+ * from one to the next.
+ *
+ * Most events are due soon (an SPI frame's end, the next tick, a UART byte):
+ * they go into the front, a small array sorted latest-first, where inserting
+ * one that is due before most others moves few slots and taking the earliest
+ * is taking the last.  Everything due later than the front's latest is in a
+ * binary heap behind it (the front's latest moves there when the front is
+ * full), so a long queue stays O(log n).  A cancelled event's slot stays where
+ * it is and is skipped when it reaches the head (its generation no longer
+ * matches); when such slots outnumber the live ones they are swept out.
+ * The earliest live time is kept in event_head_time for the run loop.
  */
 #include <stdlib.h>
 #include <string.h>
 
 #include "kernel_impl.h"
 
-#define EV_NONE UINT32_MAX
+#define EV_NONE      UINT32_MAX
+#define EV_FRONT_CAP 32U
+#define EV_SWEEP_MIN 64U     /* stale slots tolerated before a sweep is considered */
 
-struct event {
+/* A queued event's key and identity; stale once the event's generation moved on. */
+struct ev_slot {
 	uint64_t time;
 	uint64_t seq;
+	uint32_t idx;        /* the event in ev_pool */
+	uint32_t gen;        /* its generation when queued */
+};
+
+struct event {
 	rtos_host_event_fn fn;
 	void    *arg;
-	uint32_t gen;        /* bumped on every reuse: stale handles are harmless */
-	uint32_t heap_pos;   /* EV_NONE when free */
+	uint32_t gen;        /* bumped on every release: stale handles and slots are harmless */
 	uint32_t next_free;
+	bool     queued;
 	bool     kernel;     /* kernel-internal (tick): not device work */
 };
 
 static struct event *ev_pool;
 static uint32_t ev_cap;
 static uint32_t ev_free = EV_NONE;
-static uint32_t *ev_heap;
-static uint32_t ev_len;
+static struct ev_slot ev_front[EV_FRONT_CAP];   /* latest first: the earliest is last */
+static uint32_t ev_front_len;
+static struct ev_slot *ev_heap;                  /* all later than every front slot */
+static uint32_t ev_heap_len;
+static uint32_t ev_heap_cap;
+static uint32_t ev_stale;                        /* slots of cancelled events still queued */
+static uint32_t ev_live;                         /* queued events */
 static uint64_t ev_seq;
 static uint_t ev_user;
+uint64_t event_head_time = UINT64_MAX;
 
-/* Heap order: earlier time first, then scheduling order. */
-static bool ev_before(uint32_t a, uint32_t b)
+/* Queue order: earlier time first, then scheduling order. */
+static inline bool ev_before(const struct ev_slot *a, const struct ev_slot *b)
 {
-	const struct event *ea = &ev_pool[a], *eb = &ev_pool[b];
-
-	return ea->time < eb->time || (ea->time == eb->time && ea->seq < eb->seq);
+	return a->time < b->time || (a->time == b->time && a->seq < b->seq);
 }
 
-/* Puts event idx at heap position pos. */
-static void ev_place(uint32_t pos, uint32_t idx)
+/* True if the slot's event was cancelled (the event may be in use again). */
+static inline bool ev_slot_stale(const struct ev_slot *s)
 {
-	ev_heap[pos] = idx;
-	ev_pool[idx].heap_pos = pos;
+	return ev_pool[s->idx].gen != s->gen;
 }
 
-/* Restores heap order upwards from pos. */
-static void ev_sift_up(uint32_t pos)
+/* Puts slot s at or above the hole at heap position pos. */
+static void ev_sift_up(uint32_t pos, struct ev_slot s)
 {
-	uint32_t idx = ev_heap[pos];
-
 	while (pos > 0) {
 		uint32_t parent = (pos - 1) / 2;
 
-		if (!ev_before(idx, ev_heap[parent]))
+		if (!ev_before(&s, &ev_heap[parent]))
 			break;
-		ev_place(pos, ev_heap[parent]);
+		ev_heap[pos] = ev_heap[parent];
 		pos = parent;
 	}
-	ev_place(pos, idx);
+	ev_heap[pos] = s;
 }
 
-/* Restores heap order downwards from pos. */
-static void ev_sift_down(uint32_t pos)
+/* Adds slot s to the heap; false on ENOMEM. */
+static bool ev_heap_push(struct ev_slot s)
 {
-	uint32_t idx = ev_heap[pos];
+	if (ev_heap_len == ev_heap_cap) {
+		uint32_t ncap = ev_heap_cap ? ev_heap_cap * 2 : 256;
+		struct ev_slot *nheap = realloc(ev_heap, ncap * sizeof(*nheap));
 
+		if (nheap == NULL)
+			return false;
+		ev_heap = nheap;
+		ev_heap_cap = ncap;
+	}
+	ev_sift_up(ev_heap_len++, s);
+	return true;
+}
+
+/* Removes the heap's earliest slot: the hole at the root goes down along the
+ * earlier children to a leaf, where the last slot (usually a late one) refills it. */
+static void ev_heap_pop(void)
+{
+	struct ev_slot last = ev_heap[--ev_heap_len];
+	uint32_t pos = 0;
+
+	if (ev_heap_len == 0)
+		return;
 	for (;;) {
 		uint32_t child = 2 * pos + 1;
 
-		if (child >= ev_len)
+		if (child >= ev_heap_len)
 			break;
-		if (child + 1 < ev_len && ev_before(ev_heap[child + 1], ev_heap[child]))
+		if (child + 1 < ev_heap_len && ev_before(&ev_heap[child + 1], &ev_heap[child]))
 			child++;
-		if (!ev_before(ev_heap[child], idx))
-			break;
-		ev_place(pos, ev_heap[child]);
+		ev_heap[pos] = ev_heap[child];
 		pos = child;
 	}
-	ev_place(pos, idx);
+	ev_sift_up(pos, last);
 }
 
-/* Removes the event at heap position pos. */
-static void ev_heap_remove(uint32_t pos)
+/* Inserts slot s into the front (which has room), keeping it latest-first. */
+static void ev_front_insert(struct ev_slot s)
 {
-	uint32_t last = ev_heap[--ev_len];
+	uint32_t pos = ev_front_len;
 
-	if (pos == ev_len)
-		return;
-	ev_place(pos, last);
-	ev_sift_down(pos);
-	ev_sift_up(ev_pool[last].heap_pos);
+	while (pos > 0 && ev_before(&ev_front[pos - 1], &s))
+		pos--;
+	memmove(&ev_front[pos + 1], &ev_front[pos], (ev_front_len - pos) * sizeof(ev_front[0]));
+	ev_front[pos] = s;
+	ev_front_len++;
 }
 
-/* Returns an event to the free list; its handle becomes stale. */
+/* Removes the front's cancelled slots, keeping its order. */
+static void ev_front_sweep(void)
+{
+	uint32_t n = 0;
+
+	for (uint32_t i = 0; i < ev_front_len; i++)
+		if (!ev_slot_stale(&ev_front[i]))
+			ev_front[n++] = ev_front[i];
+	ev_stale -= ev_front_len - n;
+	ev_front_len = n;
+}
+
+/* Queues slot s; false on ENOMEM. */
+static bool ev_queue(struct ev_slot s)
+{
+	if (ev_front_len == EV_FRONT_CAP)
+		ev_front_sweep();
+	if (ev_front_len == EV_FRONT_CAP) {
+		/* The front's latest precedes the whole heap: it becomes the heap's root. */
+		if (!ev_heap_push(ev_front[0]))
+			return false;
+		memmove(&ev_front[0], &ev_front[1], (EV_FRONT_CAP - 1U) * sizeof(ev_front[0]));
+		ev_front_len--;
+	}
+	if (ev_heap_len > 0 && !ev_before(&s, &ev_heap[0]))
+		return ev_heap_push(s);
+	ev_front_insert(s);
+	return true;
+}
+
+/* Drops cancelled slots at the head and sets event_head_time to the earliest live event's. */
+static void ev_settle(void)
+{
+	for (;;) {
+		if (ev_front_len > 0) {
+			const struct ev_slot *s = &ev_front[ev_front_len - 1];
+
+			if (!ev_slot_stale(s)) {
+				event_head_time = s->time;
+				return;
+			}
+			ev_front_len--;
+		} else if (ev_heap_len > 0) {
+			if (!ev_slot_stale(&ev_heap[0])) {
+				event_head_time = ev_heap[0].time;
+				return;
+			}
+			ev_heap_pop();
+		} else {
+			event_head_time = UINT64_MAX;
+			return;
+		}
+		ev_stale--;
+	}
+}
+
+/* Removes every cancelled slot (their count outgrew the live ones): the
+ * front keeps its order, the heap is rebuilt. */
+static void ev_sweep(void)
+{
+	uint32_t n = 0;
+
+	ev_front_sweep();
+	for (uint32_t i = 0; i < ev_heap_len; i++)
+		if (!ev_slot_stale(&ev_heap[i]))
+			ev_heap[n++] = ev_heap[i];
+	ev_heap_len = 0;
+	for (uint32_t i = 0; i < n; i++)
+		ev_sift_up(ev_heap_len++, ev_heap[i]);
+	ev_stale = 0;
+}
+
+/* Returns an event to the free list; its handle and slot become stale. */
 static void ev_release(uint32_t idx)
 {
 	struct event *ev = &ev_pool[idx];
 
 	if (!ev->kernel)
 		ev_user--;
-	ev->heap_pos = EV_NONE;
+	ev_live--;
+	ev->queued = false;
 	ev->fn = NULL;
 	ev->gen++;
 	ev->next_free = ev_free;
@@ -112,18 +222,12 @@ static bool ev_grow(void)
 {
 	uint32_t ncap = ev_cap ? ev_cap * 2 : 256;
 	struct event *npool = realloc(ev_pool, ncap * sizeof(*npool));
-	uint32_t *nheap;
 
 	if (npool == NULL)
 		return false;
 	ev_pool = npool;
-	nheap = realloc(ev_heap, ncap * sizeof(*nheap));
-	if (nheap == NULL)
-		return false;
-	ev_heap = nheap;
 	for (uint32_t i = ncap; i-- > ev_cap;) {
 		memset(&ev_pool[i], 0, sizeof(ev_pool[i]));
-		ev_pool[i].heap_pos = EV_NONE;
 		ev_pool[i].next_free = ev_free;
 		ev_free = i;
 	}
@@ -152,17 +256,21 @@ static rtos_host_event_t ev_schedule(uint64_t t_ns, rtos_host_event_fn fn, void 
 	}
 	idx = ev_free;
 	ev = &ev_pool[idx];
+	if (!ev_queue((struct ev_slot){ t_ns, ev_seq, idx, ev->gen })) {
+		rtos_host_bug("event", "out of memory for events");
+		return 0;
+	}
+	ev_seq++;
 	ev_free = ev->next_free;
-	ev->time = t_ns;
-	ev->seq = ev_seq++;
 	ev->fn = fn;
 	ev->arg = arg;
 	ev->kernel = kernel;
+	ev->queued = true;
+	ev_live++;
 	if (!kernel)
 		ev_user++;
-	ev_heap[ev_len] = idx;
-	ev->heap_pos = ev_len++;
-	ev_sift_up(ev->heap_pos);
+	if (t_ns < event_head_time)
+		event_head_time = t_ns;
 	return ((rtos_host_event_t)ev->gen << 32) | (idx + 1U);
 }
 
@@ -187,16 +295,13 @@ void rtos_host_event_cancel(rtos_host_event_t handle)
 	if (idx == 0 || idx > ev_cap)
 		return;
 	idx--;
-	if (ev_pool[idx].gen != gen || ev_pool[idx].heap_pos == EV_NONE)
+	if (ev_pool[idx].gen != gen || !ev_pool[idx].queued)
 		return;
-	ev_heap_remove(ev_pool[idx].heap_pos);
 	ev_release(idx);
-}
-
-/* Time of the earliest scheduled event, UINT64_MAX if none. */
-uint64_t event_next_time(void)
-{
-	return ev_len ? ev_pool[ev_heap[0]].time : UINT64_MAX;
+	ev_stale++;
+	if (ev_stale > EV_SWEEP_MIN && ev_stale > ev_live)
+		ev_sweep();
+	ev_settle();
 }
 
 /* Number of scheduled device (non-kernel) events. */
@@ -208,14 +313,23 @@ uint_t event_user_count(void)
 /* Pops and runs the earliest event as the hardware; interrupts it raises are delivered after it. */
 void event_run_next(void)
 {
-	uint32_t idx = ev_heap[0];
-	rtos_host_event_fn fn = ev_pool[idx].fn;
-	void *arg = ev_pool[idx].arg;
+	uint32_t idx;
+	rtos_host_event_fn fn;
+	void *arg;
 	enum exec_kind saved_kind = cpu.kind;
 	ID saved_id = cpu.exec_id;
 
-	ev_heap_remove(0);
+	/* ev_settle left a live slot at the head */
+	if (ev_front_len > 0) {
+		idx = ev_front[--ev_front_len].idx;
+	} else {
+		idx = ev_heap[0].idx;
+		ev_heap_pop();
+	}
+	fn = ev_pool[idx].fn;
+	arg = ev_pool[idx].arg;
 	ev_release(idx);
+	ev_settle();
 	cpu.kind = EXEC_EVENT;
 	cpu.exec_id = 0;
 	cpu.irq_defer++;
@@ -231,14 +345,18 @@ void event_reset(void)
 {
 	ev_free = EV_NONE;
 	for (uint32_t i = ev_cap; i-- > 0;) {
-		if (ev_pool[i].heap_pos != EV_NONE)
+		if (ev_pool[i].queued)
 			ev_pool[i].gen++;
-		ev_pool[i].heap_pos = EV_NONE;
+		ev_pool[i].queued = false;
 		ev_pool[i].fn = NULL;
 		ev_pool[i].next_free = ev_free;
 		ev_free = i;
 	}
-	ev_len = 0;
+	ev_front_len = 0;
+	ev_heap_len = 0;
+	ev_stale = 0;
+	ev_live = 0;
+	event_head_time = UINT64_MAX;
 	ev_seq = 0;
 	ev_user = 0;
 }

@@ -39,25 +39,29 @@ struct irq_line {
 struct cpu_state cpu;
 static struct irq_line lines[TMAX_INTNO + 1];
 static uint64_t pending_bits[IRQ_WORDS];
+uint_t irq_pending_lines;
 
-/* Keeps the pending bitmap in step with the line's edge and level. */
+/* Keeps the pending bitmap and count in step with the line's edge and level. */
 static void pend_update(INTNO n)
 {
 	uint64_t bit = 1ULL << (n % 64U);
+	uint64_t *word = &pending_bits[n / 64U];
+	bool was = (*word & bit) != 0;
+	bool is = lines[n].edge || lines[n].level;
 
-	if (lines[n].edge || lines[n].level)
-		pending_bits[n / 64U] |= bit;
-	else
-		pending_bits[n / 64U] &= ~bit;
+	if (is && !was) {
+		*word |= bit;
+		irq_pending_lines++;
+	} else if (!is && was) {
+		*word &= ~bit;
+		irq_pending_lines--;
+	}
 }
 
 /* True if any line has a request. */
 static bool any_pending(void)
 {
-	for (uint_t w = 0; w < IRQ_WORDS; w++)
-		if (pending_bits[w])
-			return true;
-	return false;
+	return irq_pending_lines != 0;
 }
 
 /* The highest-priority pending line above the current priority, or -1. */
@@ -150,8 +154,9 @@ bool irq_deliverable(void)
 	       pick_line() >= 0;
 }
 
-/* Delivers the pending interrupts the CPU accepts now, nested on the current stack. */
-void irq_dispatch_pending(void)
+/* Delivers the pending interrupts the CPU accepts now, nested on the current stack
+ * (irq_dispatch_pending's work once some line is pending). */
+void irq_deliver_pending(void)
 {
 	int n;
 
@@ -213,6 +218,7 @@ void irq_reset(void)
 		free(lines[n].isrs);
 	memset(lines, 0, sizeof(lines));
 	memset(pending_bits, 0, sizeof(pending_bits));
+	irq_pending_lines = 0;
 	memset(&cpu, 0, sizeof(cpu));
 	cpu.kind = EXEC_IDLE;
 }

@@ -208,7 +208,12 @@ void time_start(void);
 
 /* ---- Events (the device-event heap) ---- */
 void event_reset(void);
-uint64_t event_next_time(void);          /* UINT64_MAX if none */
+extern uint64_t event_head_time;         /* the earliest event's time, UINT64_MAX if none */
+/* Time of the earliest scheduled event, UINT64_MAX if none. */
+static inline uint64_t event_next_time(void)
+{
+	return event_head_time;
+}
 /* Pops and runs the earliest event; now_ns must already be its time. */
 void event_run_next(void);
 /* Number of scheduled non-kernel events. */
@@ -218,8 +223,15 @@ rtos_host_event_t event_at_kernel(uint64_t t_ns, rtos_host_event_fn fn, void *ar
 
 /* ---- Interrupts ---- */
 void irq_reset(void);
+extern uint_t irq_pending_lines;   /* lines with a latched edge or an asserted level */
+/* irq_dispatch_pending's work when some line is pending. */
+void irq_deliver_pending(void);
 /* Delivers pending interrupts the CPU accepts now (nested on the current stack). */
-void irq_dispatch_pending(void);
+static inline void irq_dispatch_pending(void)
+{
+	if (irq_pending_lines != 0)
+		irq_deliver_pending();
+}
 /* True if some line could be delivered in the current CPU state. */
 bool irq_deliverable(void);
 ER   irq_configure(INTNO intno, ATR intatr, PRI intpri);

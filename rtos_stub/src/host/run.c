@@ -141,6 +141,12 @@ void rtos_host_consume(uint64_t ns)
 	}
 	/* Inside a register access (irq_defer) the access completes before any switch. */
 	task_level = cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && cpu.irq_defer == 0;
+	/* Outside task level nothing can stop the time short of the next event: the
+	 * common case (a register access, a short delay in an ISR) is one addition. */
+	if (!task_level && ns < event_next_time() - now_ns) {
+		now_ns += ns;
+		return;
+	}
 	while (remaining > 0) {
 		uint64_t limit, next;
 

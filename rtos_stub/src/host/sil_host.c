@@ -28,11 +28,12 @@ void sil_host_unl_int(uint_t saved)
 /* After a device access: interrupts it raised are taken, then a switch to a task it readied;
  * a task at the run deadline hands the CPU to the harness (each access costs virtual time, so
  * a task that only polls registers must still stop where rtos_host_run_* ends). */
-static void access_done(void)
+static inline void access_done(void)
 {
 	cpu.irq_defer--;
 	irq_dispatch_pending();
-	dispatch_if_needed();
+	if (schedtsk != runtsk)
+		dispatch_if_needed();
 	if (cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && cpu.irq_defer == 0 &&
 	    run_active && now_ns >= run_deadline)
 		pause_to_harness();
