@@ -278,30 +278,32 @@ ktime_t hrtimer_get_remaining(const struct hrtimer *timer)
 /*
  * Takes the first due timer queued before this tick's pass began (limit) off the
  * queue and marks it running; NULL if none.  Timers a callback re-queues at a time
- * already due wait for the next tick instead of looping.
+ * already due wait for the next tick instead of looping.  Interrupts locked by
+ * the caller.
  */
-static struct hrtimer *take_due(u64 now, u64 limit)
+static struct hrtimer *take_due_locked(u64 now, u64 limit)
 {
-	struct hrtimer *t, *due = NULL;
-	SIL_PRE_LOC;
+	struct hrtimer *t;
 
-	SIL_LOC_INT();
 	list_for_each_entry(t, &queue.head, lx_node) {
 		if (t->lx_expires > (ktime_t)now)
-			break;
+			return NULL;
 		if (t->lx_seq < limit) {
-			due = t;
-			dequeue_locked(due);
-			due->lx_cancelled = 0;
-			queue.running = due;
-			break;
+			dequeue_locked(t);
+			t->lx_cancelled = 0;
+			queue.running = t;
+			return t;
 		}
 	}
-	SIL_UNL_INT();
-	return due;
+	return NULL;
 }
 
-/* Runs every timer due at now, in expiry order, in the calling (tick ISR) context. */
+/*
+ * Runs every timer due at now, in expiry order, in the calling (tick ISR)
+ * context.  Interrupts are locked around the queue work only: one locked
+ * section between two callbacks (the previous one's re-queueing, the next
+ * one's removal), none around a callback.
+ */
 void lx_hrtimer_run_due(uint64_t now)
 {
 	struct hrtimer *t;
@@ -314,7 +316,9 @@ void lx_hrtimer_run_due(uint64_t now)
 	if (t == NULL || t->lx_expires > (ktime_t)now)
 		return;
 	limit = queue.next_seq;
-	while ((t = take_due(now, limit)) != NULL) {
+	SIL_LOC_INT();
+	while ((t = take_due_locked(now, limit)) != NULL) {
+		SIL_UNL_INT();
 		lx_timer_callback_enter(true, t);
 		ret = t->function(t);
 		lx_timer_callback_exit();
@@ -331,6 +335,6 @@ void lx_hrtimer_run_due(uint64_t now)
 			enqueue_locked(t);
 		if (ret == HRTIMER_RESTART)
 			t->lx_cancelled = 0;
-		SIL_UNL_INT();
 	}
+	SIL_UNL_INT();
 }

@@ -201,25 +201,22 @@ int (del_timer_sync)(struct timer_list *timer)
 	return lx_del_timer_sync_at(timer, NULL, 0);
 }
 
-/* Takes the first due timer off the queue (marked running), or NULL. */
-static struct timer_list *take_due(unsigned long now, u64 limit)
+/* Takes the first due timer queued before this pass (limit) off the queue
+ * (marked running), or NULL; interrupts locked by the caller. */
+static struct timer_list *take_due_locked(unsigned long now, u64 limit)
 {
-	struct timer_list *t, *due = NULL;
-	SIL_PRE_LOC;
+	struct timer_list *t;
 
-	SIL_LOC_INT();
 	list_for_each_entry(t, &tq.head, lx_node) {
 		if (!time_after_eq(now, t->expires))
-			break;
+			return NULL;
 		if (t->lx_seq < limit) {
-			due = t;
-			dequeue_locked(due);
-			tq.running = due;
-			break;
+			dequeue_locked(t);
+			tq.running = t;
+			return t;
 		}
 	}
-	SIL_UNL_INT();
-	return due;
+	return NULL;
 }
 
 /* Runs the due timer_list callbacks (tick ISR), unless bottom halves are disabled. */
@@ -229,14 +226,19 @@ void lx_timers_run_due(void)
 	const struct timer_list *first = list_first_entry_or_null(&tq.head, struct timer_list, lx_node);
 	unsigned long now = jiffies;
 	u64 limit;
+	SIL_PRE_LOC;
 
 	if (first == NULL || time_before(now, first->expires) || lx_bh_disabled())
 		return;
 	limit = tq.next_seq;
-	while ((t = take_due(now, limit)) != NULL) {
+	SIL_LOC_INT();
+	while ((t = take_due_locked(now, limit)) != NULL) {
+		SIL_UNL_INT();
 		lx_timer_callback_enter(false, t);
 		t->function(t);
 		lx_timer_callback_exit();
+		SIL_LOC_INT();
 		tq.running = NULL;
 	}
+	SIL_UNL_INT();
 }
