@@ -38,6 +38,7 @@
 #define R_SET_RIS_TRIG    0x14U
 #define R_SET_FAL_TRIG    0x1CU
 #define R_INTSTAT         0x24U
+#define PAIR_REG_SLOTS    (R_INTSTAT / 4U + 1U)
 #define GPIO_MUX_FUNC     8U
 #define MAX_WATCHES       256U
 
@@ -54,6 +55,8 @@ struct pin {
 
 static struct {
 	struct hs_region *region;
+	uint32_t *pair_val[GPIO_PAIRS][PAIR_REG_SLOTS];   /* stored values pair_reg reads */
+	uint32_t *binten;
 	struct pin pins[HS_GPIO_NPINS];
 	uint32_t in_data[GPIO_PAIRS];
 	bool pinmux_check;
@@ -109,10 +112,10 @@ static bool pin_muxed(unsigned pin)
 	return hs_syscfg_pinmux_field(reg, shift) == GPIO_MUX_FUNC;
 }
 
-/* Stored value of a bank-pair register. */
+/* Stored value of a bank-pair register (DIR, OUT_DATA, the triggers or INTSTAT). */
 static uint32_t pair_reg(unsigned pair, uint32_t r)
 {
-	return hs_reg_get(g.region, PAIR_BASE(pair) + r);
+	return *g.pair_val[pair][r / 4U];
 }
 
 /* Makes the pin visible in traces. */
@@ -188,8 +191,8 @@ static void pin_resolve(unsigned pin, bool notify)
 		if (trig & m) {
 			unsigned bank = pin / 16U;
 
-			hs_reg_update(g.region, PAIR_BASE(pair) + R_INTSTAT, 0, m);
-			if (hs_reg_get(g.region, GPIO_BINTEN) & (1U << bank))
+			*g.pair_val[pair][R_INTSTAT / 4U] |= m;
+			if (*g.binten & (1U << bank))
 				hs_intc_raise(HS_GPIO_BANK_INTNO(bank));
 		}
 	}
@@ -303,6 +306,13 @@ ER hs_gpio_create(bool cold, bool pinmux_check)
 		.power = HS_PSC1_MODULE(HS_LPSC1_GPIO), .ctx = NULL });
 	if (!g.region)
 		return E_SYS;
+	for (unsigned pair = 0; pair < GPIO_PAIRS; pair++) {
+		static const uint32_t used[] = { R_DIR, R_OUT_DATA, R_SET_RIS_TRIG, R_SET_FAL_TRIG, R_INTSTAT };
+
+		for (unsigned i = 0; i < HS_ARRAY_SIZE(used); i++)
+			g.pair_val[pair][used[i] / 4U] = hs_reg_value_ptr(g.region, PAIR_BASE(pair) + used[i]);
+	}
+	g.binten = hs_reg_value_ptr(g.region, GPIO_BINTEN);
 	sys0 = hs_region_by_name("SYSCFG0");
 	if (!cold && sys0) {
 		for (unsigned i = 0; i < HS_ARRAY_SIZE(ev3_gpio_pins); i++) {

@@ -442,6 +442,13 @@ void hs_reg_update(struct hs_region *r, uint32_t offset, uint32_t clear, uint32_
 		*e->value = ((*e->value & ~clear) | set) & width_mask(e->width);
 }
 
+uint32_t *hs_reg_value_ptr(struct hs_region *r, uint32_t offset)
+{
+	struct hs_elem *e = elem_any(r, offset, "hs_reg_value_ptr");
+
+	return e ? e->value : NULL;
+}
+
 void hs_region_reset(struct hs_region *r)
 {
 	for (unsigned i = 0; r && i < r->nelems; i++)
@@ -530,7 +537,7 @@ static inline void access_cost(void)
 
 /* One CPU read of width bytes (1, 2 or 4) at offset off of r: checked, hooked,
  * logged, and it costs the access time; 0 after a bug report. */
-static uint32_t region_read(struct hs_region *r, uint32_t off, unsigned width)
+static inline __attribute__((always_inline)) uint32_t region_read(struct hs_region *r, uint32_t off, unsigned width)
 {
 	struct hs_elem *e;
 	uint32_t v = 0;
@@ -558,7 +565,8 @@ static uint32_t region_read(struct hs_region *r, uint32_t off, unsigned width)
 /* One CPU write of width bytes (1, 2 or 4; value already masked to it) at
  * offset off of r: checked, applied with the register's kind, logged, hooked,
  * and it costs the access time. */
-static void region_write(struct hs_region *r, uint32_t off, unsigned width, uint32_t value)
+static inline __attribute__((always_inline)) void region_write(struct hs_region *r, uint32_t off, unsigned width,
+								uint32_t value)
 {
 	struct hs_elem *e;
 
@@ -717,6 +725,7 @@ static const struct rtos_host_mmio_ops space_mmio_ops = {
 void hs_space_install_handler(void)
 {
 	rtos_host_set_mmio_handler(&space_mmio_ops);
+	rtos_host_set_mmio_window((uintptr_t)space.base, space.base ? (uintptr_t)HS_SPACE_PAGES * HS_PAGE : 0);
 }
 
 void hs_space_remove_handler(void)

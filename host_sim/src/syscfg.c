@@ -26,6 +26,7 @@
 
 static struct {
 	struct hs_region *r0, *r1;
+	uint32_t *pinmux[20];       /* PINMUX0..19's stored values (hs_syscfg_pinmux on every pin change) */
 	struct {
 		hs_syscfg_watch_fn fn;
 		void *ctx;
@@ -114,6 +115,8 @@ ER hs_syscfg_create(bool cold)
 		.regs = syscfg1_regs, .nregs = HS_ARRAY_SIZE(syscfg1_regs), .power = HS_NO_PSC });
 	if (!sc.r0 || !sc.r1)
 		return E_SYS;
+	for (unsigned n = 0; n < 20U; n++)
+		sc.pinmux[n] = hs_reg_value_ptr(sc.r0, SYSCFG_PINMUX0 + 4U * n);
 	/* U-Boot unlocks the kick registers and Linux leaves them so. */
 	if (!cold) {
 		hs_reg_set(sc.r0, SYSCFG_KICK0R, HS_KICK0_UNLOCK);
@@ -131,7 +134,7 @@ uint32_t hs_syscfg_pinmux(unsigned n)
 {
 	if (!sc.r0 || n >= 20U)
 		return 0;
-	return hs_reg_get(sc.r0, SYSCFG_PINMUX0 + 4U * n);
+	return *sc.pinmux[n];
 }
 
 unsigned hs_syscfg_pinmux_field(unsigned n, unsigned shift)

@@ -95,6 +95,10 @@ struct rtos_host_mmio_ops {
 };
 /* Installs the handler (NULL: plain memory accesses, no device windows). */
 void rtos_host_set_mmio_handler(const struct rtos_host_mmio_ops *ops);
+/* Optional, after rtos_host_set_mmio_handler: the handler claims exactly the
+ * addresses in [start, start + len), so accesses are routed by that range
+ * without calling claims (a handler change forgets it). */
+void rtos_host_set_mmio_window(uintptr_t start, uintptr_t len);
 /* The window for a physical register range, or NULL if none is modelled. */
 void *rtos_host_map_io(uintptr_t phys, SIZE size);
 

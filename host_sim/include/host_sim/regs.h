@@ -131,6 +131,13 @@ uint32_t hs_reg_get(const struct hs_region *r, uint32_t offset);
 void hs_reg_set(struct hs_region *r, uint32_t offset, uint32_t value);
 /* Sets/clears bits of the stored value without hooks (value = value & ~clear | set). */
 void hs_reg_update(struct hs_region *r, uint32_t offset, uint32_t clear, uint32_t set);
+/* Where the stored value of the register (array element) at offset lives:
+ * the word hs_reg_get reads and hs_reg_set writes, for a model that consults
+ * a register on every event (a load instead of a lookup).  Writes through it
+ * must keep to the register's width, as hs_reg_set does.  Valid until the
+ * region is freed (hs_region_reset keeps it); NULL after a bug report if
+ * offset is no register. */
+uint32_t *hs_reg_value_ptr(struct hs_region *r, uint32_t offset);
 /* Resets every register of the region to its declared reset value. */
 void hs_region_reset(struct hs_region *r);
 

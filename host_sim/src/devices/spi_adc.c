@@ -31,6 +31,13 @@ enum {
 
 struct spi0 {
 	struct hs_region *r;
+	/* stored values of the registers every frame consults (hs_reg_value_ptr) */
+	uint32_t *gcr0, *gcr1, *int0, *flg, *dat1, *delay, *fmt[4];
+	/* the frame timing of the last format and delay seen (frame_ns depends on nothing else) */
+	bool timing_known;
+	uint32_t timing_fmt, timing_delay;
+	uint64_t timing_ns;
+	unsigned timing_bits;
 	bool busy, tx_full;
 	uint16_t tx_buf;            /* word waiting in the TX buffer */
 	unsigned tx_buf_fmt;
@@ -86,7 +93,7 @@ static uint16_t adc_frame(struct spi0 *s, uint16_t cmd)
 /* Drives the SPI0 interrupt line from SPIFLG and SPIINT0. */
 static void spi_irq_update(struct spi0 *s)
 {
-	uint32_t flg = hs_reg_get(s->r, SPIFLG), ena = hs_reg_get(s->r, SPIINT0);
+	uint32_t flg = *s->flg, ena = *s->int0;
 	bool level = ((flg & FLG_RXINT) && (ena & INT0_RXINTENA)) ||
 		     ((flg & FLG_OVRN) && (ena & INT0_OVRNINTENA));
 
@@ -99,16 +106,31 @@ static void spi_irq_update(struct spi0 *s)
 /* Frame length in ns for a data format. */
 static uint64_t frame_ns(struct spi0 *s, unsigned fmt, unsigned *bits)
 {
-	uint32_t f = hs_reg_get(s->r, SPIFMT0 + 4U * fmt);
-	uint32_t delay = hs_reg_get(s->r, SPIDELAY);
+	uint32_t f = *s->fmt[fmt];
+	uint32_t delay = *s->delay;
 	unsigned charlen = f & 0x1FU, prescale = (f >> 8) & 0xFFU;
 	/* chip-select setup (C2TDELAY) and hold (T2CDELAY) in module clocks */
 	uint64_t cs_cycles = ((delay >> 24) & 0xFFU) + ((delay >> 16) & 0xFFU) + 2U;
 
+	if (s->timing_known && f == s->timing_fmt && delay == s->timing_delay) {
+		*bits = s->timing_bits;
+		return s->timing_ns;
+	}
 	if (charlen < 2)
 		charlen = 16;
+	s->timing_known = true;
+	s->timing_fmt = f;
+	s->timing_delay = delay;
+	s->timing_bits = charlen;
+	s->timing_ns = hs_cycles_to_ns((uint64_t)charlen * (prescale + 1U) + cs_cycles, SPI_CLOCK_HZ);
 	*bits = charlen;
-	return hs_cycles_to_ns((uint64_t)charlen * (prescale + 1U) + cs_cycles, SPI_CLOCK_HZ);
+	return s->timing_ns;
+}
+
+/* Sets and clears SPIFLG bits (hs_reg_update on the stored value; SPIFLG is 32 bits wide). */
+static void flg_update(struct spi0 *s, uint32_t clear, uint32_t set)
+{
+	*s->flg = (*s->flg & ~clear) | set;
 }
 
 static void frame_start(struct spi0 *s, uint16_t word, unsigned fmt);
@@ -125,10 +147,10 @@ static void frame_done(void *arg)
 	if (!(s->rx & BUF_RXEMPTY)) {
 		s->rx |= BUF_RXOVR;
 		s->stats.rx_overruns++;
-		hs_reg_update(s->r, SPIFLG, 0, FLG_OVRN);
+		flg_update(s, 0, FLG_OVRN);
 	}
 	s->rx = (s->rx & BUF_RXOVR) | (s->shift_out & mask);
-	hs_reg_update(s->r, SPIFLG, 0, FLG_RXINT | FLG_TXINT);
+	flg_update(s, 0, FLG_RXINT | FLG_TXINT);
 	if (s->tx_full) {
 		s->tx_full = false;
 		frame_start(s, s->tx_buf, s->tx_buf_fmt);
@@ -150,17 +172,17 @@ static void frame_start(struct spi0 *s, uint16_t word, unsigned fmt)
 /* A word written to SPIDAT0/1: transfer now, or park it in the TX buffer. */
 static void spi_send(struct spi0 *s, uint16_t word)
 {
-	uint32_t gcr1 = hs_reg_get(s->r, SPIGCR1);
-	unsigned fmt = (hs_reg_get(s->r, SPIDAT1) >> 24) & 3U;
+	uint32_t gcr1 = *s->gcr1;
+	unsigned fmt = (*s->dat1 >> 24) & 3U;
 
-	if (!(hs_reg_get(s->r, SPIGCR0) & 1U) || !(gcr1 & (1U << 24)) || (gcr1 & 3U) != 3U) {
+	if (!(*s->gcr0 & 1U) || !(gcr1 & (1U << 24)) || (gcr1 & 3U) != 3U) {
 		rtos_host_bug("host_sim", "SPI0: word 0x%04x written with the module %s: no transfer",
 			      word, !(hs_reg_get(s->r, SPIGCR0) & 1U) ? "in reset (SPIGCR0.RESET=0)" :
 			      !(gcr1 & (1U << 24)) ? "disabled (SPIGCR1.ENABLE=0)" :
 			      "not master (SPIGCR1.MASTER/CLKMOD)");
 		return;
 	}
-	hs_reg_update(s->r, SPIFLG, FLG_TXINT, 0);
+	flg_update(s, FLG_TXINT, 0);
 	if (!s->busy) {
 		frame_start(s, word, fmt);
 	} else if (!s->tx_full) {
@@ -179,8 +201,8 @@ static void write_dat(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	struct spi0 *s = ctx;
 
 	if (a->offset == SPIDAT0) {
-		/* SPIDAT0 and SPIDAT1 share the data half */
-		hs_reg_update(s->r, SPIDAT1, 0xFFFFU, nv & 0xFFFFU);
+		/* SPIDAT0 and SPIDAT1 share the data half (SPIDAT1 is 32 bits wide) */
+		*s->dat1 = (*s->dat1 & ~0xFFFFU) | (nv & 0xFFFFU);
 	} else if (a->width == 1) {
 		return;                 /* a byte write to the control half does not start a transfer */
 	}
@@ -205,7 +227,7 @@ static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 	}
 	*value = buf_value(s);
 	s->rx = (s->rx | BUF_RXEMPTY) & ~BUF_RXOVR;
-	hs_reg_update(s->r, SPIFLG, FLG_RXINT, 0);
+	flg_update(s, FLG_RXINT, 0);
 	spi_irq_update(s);
 }
 
@@ -285,6 +307,14 @@ static ER spi_create(const struct hs_board_cfg *cfg, void **ctx)
 		free(s);
 		return E_PAR;
 	}
+	s->gcr0 = hs_reg_value_ptr(s->r, SPIGCR0);
+	s->gcr1 = hs_reg_value_ptr(s->r, SPIGCR1);
+	s->int0 = hs_reg_value_ptr(s->r, SPIINT0);
+	s->flg = hs_reg_value_ptr(s->r, SPIFLG);
+	s->dat1 = hs_reg_value_ptr(s->r, SPIDAT1);
+	s->delay = hs_reg_value_ptr(s->r, SPIDELAY);
+	for (unsigned i = 0; i < 4U; i++)
+		s->fmt[i] = hs_reg_value_ptr(s->r, SPIFMT0 + 4U * i);
 	s->rx = BUF_RXEMPTY;
 	s->adc_range_5v = true;
 	/* Linux leaves SPI0 out of reset (EV3RT had to do it itself: facts §2) */

@@ -118,14 +118,16 @@ static void ev_heap_pop(void)
 	ev_sift_up(pos, last);
 }
 
-/* Inserts slot s into the front (which has room), keeping it latest-first. */
+/* Inserts slot s, scheduled after every queued slot, into the front (which
+ * has room), keeping it latest-first: the slots due no later than s move up. */
 static void ev_front_insert(struct ev_slot s)
 {
 	uint32_t pos = ev_front_len;
 
-	while (pos > 0 && ev_before(&ev_front[pos - 1], &s))
+	while (pos > 0 && ev_front[pos - 1].time <= s.time) {
+		ev_front[pos] = ev_front[pos - 1];
 		pos--;
-	memmove(&ev_front[pos + 1], &ev_front[pos], (ev_front_len - pos) * sizeof(ev_front[0]));
+	}
 	ev_front[pos] = s;
 	ev_front_len++;
 }
@@ -142,7 +144,8 @@ static void ev_front_sweep(void)
 	ev_front_len = n;
 }
 
-/* Queues slot s; false on ENOMEM. */
+/* Queues slot s, scheduled after every queued slot (its sequence number is
+ * the highest, so only times need comparing); false on ENOMEM. */
 static bool ev_queue(struct ev_slot s)
 {
 	if (ev_front_len == EV_FRONT_CAP)
@@ -154,7 +157,7 @@ static bool ev_queue(struct ev_slot s)
 		memmove(&ev_front[0], &ev_front[1], (EV_FRONT_CAP - 1U) * sizeof(ev_front[0]));
 		ev_front_len--;
 	}
-	if (ev_heap_len > 0 && !ev_before(&s, &ev_heap[0]))
+	if (ev_heap_len > 0 && s.time >= ev_heap[0].time)
 		return ev_heap_push(s);
 	ev_front_insert(s);
 	return true;

@@ -129,8 +129,16 @@ bool rtos_host_run_until_idle(uint64_t max_ns)
 	return run_loop(max_ns > UINT64_MAX - now_ns ? UINT64_MAX : now_ns + max_ns, true);
 }
 
-/* The calling context is busy for ns of virtual CPU time; events fire meanwhile. */
-void rtos_host_consume(uint64_t ns)
+/* True if the running code may be suspended or preempted while it consumes
+ * time: a task outside any ISR and register access. */
+static inline bool consume_at_task_level(void)
+{
+	/* Inside a register access (irq_defer) the access completes before any switch. */
+	return cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && cpu.irq_defer == 0;
+}
+
+/* rtos_host_consume when an event falls due, a task consumes, or before boot. */
+static __attribute__((noinline)) void consume_slow(uint64_t ns)
 {
 	uint64_t remaining = ns;
 	bool task_level;
@@ -139,14 +147,7 @@ void rtos_host_consume(uint64_t ns)
 		rtos_host_bug("consume", "rtos_host_consume before rtos_host_boot");
 		return;
 	}
-	/* Inside a register access (irq_defer) the access completes before any switch. */
-	task_level = cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && cpu.irq_defer == 0;
-	/* Outside task level nothing can stop the time short of the next event: the
-	 * common case (a register access, a short delay in an ISR) is one addition. */
-	if (!task_level && ns < event_next_time() - now_ns) {
-		now_ns += ns;
-		return;
-	}
+	task_level = consume_at_task_level();
 	while (remaining > 0) {
 		uint64_t limit, next;
 
@@ -170,4 +171,16 @@ void rtos_host_consume(uint64_t ns)
 		if (remaining > 0)
 			pause_to_harness();
 	}
+}
+
+/* The calling context is busy for ns of virtual CPU time; events fire meanwhile. */
+void rtos_host_consume(uint64_t ns)
+{
+	/* Outside task level nothing can stop the time short of the next event: the
+	 * common case (a register access, a short delay in an ISR) is one addition. */
+	if (ns < event_next_time() - now_ns && kernel_booted && !consume_at_task_level()) {
+		now_ns += ns;
+		return;
+	}
+	consume_slow(ns);
 }

@@ -7,6 +7,18 @@
 #include "kernel_impl.h"
 
 static const struct rtos_host_mmio_ops *mmio_ops;
+static uintptr_t mmio_window_start;
+static uintptr_t mmio_window_len;     /* 0: ask claims */
+
+/* True if the installed handler serves mem. */
+static inline bool mmio_claimed(const struct rtos_host_mmio_ops *ops, const volatile void *mem)
+{
+	if (ops == NULL)
+		return false;
+	if (mmio_window_len != 0)
+		return (uintptr_t)mem - mmio_window_start < mmio_window_len;
+	return ops->claims(mem, ops->ctx);
+}
 
 /* Masks all interrupts (nesting-safe); returns the previous lock depth. */
 uint_t sil_host_loc_int(void)
@@ -62,7 +74,7 @@ uint32_t sil_host_read(const volatile void *mem, uint_t width)
 
 	if (!width_ok("sil_host_read", mem, width))
 		return 0;
-	if (ops != NULL && ops->claims(mem, ops->ctx)) {
+	if (mmio_claimed(ops, mem)) {
 		cpu.irq_defer++;
 		v = ops->read(mem, width, ops->ctx);
 		access_done();
@@ -85,7 +97,7 @@ void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
 
 	if (!width_ok("sil_host_write", mem, width))
 		return;
-	if (ops != NULL && ops->claims(mem, ops->ctx)) {
+	if (mmio_claimed(ops, mem)) {
 		cpu.irq_defer++;
 		ops->write(mem, width, data, ops->ctx);
 		access_done();
@@ -112,6 +124,23 @@ void rtos_host_set_mmio_handler(const struct rtos_host_mmio_ops *ops)
 		return;
 	}
 	mmio_ops = ops;
+	mmio_window_start = 0;
+	mmio_window_len = 0;
+}
+
+/* Routes [start, start + len) to the installed handler without asking claims. */
+void rtos_host_set_mmio_window(uintptr_t start, uintptr_t len)
+{
+	if (mmio_ops == NULL) {
+		rtos_host_bug("sil", "rtos_host_set_mmio_window without a handler");
+		return;
+	}
+	if (len != 0 && start + len - 1U < start) {
+		rtos_host_bug("sil", "rtos_host_set_mmio_window: range wraps around");
+		return;
+	}
+	mmio_window_start = start;
+	mmio_window_len = len;
 }
 
 /* The handler's window for [phys, phys+size), or NULL if none is modelled. */
