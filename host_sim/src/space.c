@@ -23,9 +23,8 @@
 #define HS_MAX_REGIONS   64U
 #define HS_NO_ELEM       (-1)
 
-/* One register, or one element of a register array.  The fields the access
- * path reads come first (one cache line); the declaration and name are for
- * reports and the log. */
+/* One register, or one element of a register array: what the access path
+ * reads (its name, for reports and the log, is in the region's names). */
 struct hs_elem {
 	uint32_t *value;        /* stored value: own slot or the alias target's */
 	hs_before_read_fn before_read;
@@ -38,19 +37,24 @@ struct hs_elem {
 	uint8_t ok_widths;      /* widths an access may use without a report (none if reserved) */
 	uint8_t kind;           /* enum hs_reg_kind */
 	const struct hs_reg *reg;
-	char name[32];          /* "CMR[3]" */
 };
+
+#define HS_ELEM_NAME 32U        /* "CMR[3]" */
 
 struct hs_region {
 	struct hs_region_cfg cfg;
 	unsigned first_page;    /* in the window space */
 	const enum hs_psc_state *power_state;   /* the PSC module's state (HS_NO_PSC: always enabled) */
 	struct hs_elem *elems;
+	char (*names)[HS_ELEM_NAME];   /* one per element */
 	unsigned nelems;
 	uint32_t *values;       /* one per element */
-	int16_t *rd_map;        /* byte offset -> element readable there, or HS_NO_ELEM */
-	int16_t *wr_map;        /* byte offset -> element writable there */
-	int16_t *any_map;       /* byte offset -> element starting there in either direction */
+	/* Byte offset -> element, for offsets below map_len (the end of the last
+	 * register: beyond it there is none, and the maps stay small and cached). */
+	uint32_t map_len;
+	int16_t *rd_map;        /* element readable there, or HS_NO_ELEM */
+	int16_t *wr_map;        /* element writable there */
+	int16_t *any_map;       /* element starting there in either direction */
 	bool logged;            /* named by the register-log filter */
 };
 
@@ -118,6 +122,7 @@ int hs_space_init(uint32_t access_ns)
 static void region_free(struct hs_region *r)
 {
 	free(r->elems);
+	free(r->names);
 	free(r->values);
 	free(r->rd_map);
 	free(r->wr_map);
@@ -256,14 +261,25 @@ static bool region_build(struct hs_region *r)
 		n += cfg->regs[i].count ? cfg->regs[i].count : 1U;
 	if (n > 30000U)
 		return decl_bug(cfg, NULL, "too many registers");
+	r->map_len = 0;
+	for (unsigned i = 0; i < cfg->nregs; i++) {
+		const struct hs_reg *reg = &cfg->regs[i];
+		uint64_t width = reg->width ? reg->width : 4U;
+		uint64_t count = reg->count ? reg->count : 1U;
+		uint64_t end = (uint64_t)reg->offset + (count - 1U) * (reg->stride ? reg->stride : width) + width;
+
+		if (end > r->map_len)
+			r->map_len = end < cfg->size ? (uint32_t)end : cfg->size;
+	}
 	r->elems = calloc(n ? n : 1, sizeof(*r->elems));
+	r->names = calloc(n ? n : 1, sizeof(*r->names));
 	r->values = calloc(n ? n : 1, sizeof(*r->values));
-	r->rd_map = malloc(cfg->size * sizeof(int16_t));
-	r->wr_map = malloc(cfg->size * sizeof(int16_t));
-	r->any_map = malloc(cfg->size * sizeof(int16_t));
-	if (!r->elems || !r->values || !r->rd_map || !r->wr_map || !r->any_map)
+	r->rd_map = malloc((r->map_len ? r->map_len : 1U) * sizeof(int16_t));
+	r->wr_map = malloc((r->map_len ? r->map_len : 1U) * sizeof(int16_t));
+	r->any_map = malloc((r->map_len ? r->map_len : 1U) * sizeof(int16_t));
+	if (!r->elems || !r->names || !r->values || !r->rd_map || !r->wr_map || !r->any_map)
 		return decl_bug(cfg, NULL, "out of memory");
-	for (uint32_t i = 0; i < cfg->size; i++)
+	for (uint32_t i = 0; i < r->map_len; i++)
 		r->rd_map[i] = r->wr_map[i] = HS_NO_ELEM;
 
 	n = 0;
@@ -303,9 +319,9 @@ static bool region_build(struct hs_region *r)
 			e->value = &r->values[n];
 			r->values[n] = reg->reset & width_mask(width);
 			if (reg->count)
-				snprintf(e->name, sizeof(e->name), "%s[%u]", reg->name, k);
+				snprintf(r->names[n], sizeof(r->names[n]), "%s[%u]", reg->name, k);
 			else
-				snprintf(e->name, sizeof(e->name), "%s", reg->name);
+				snprintf(r->names[n], sizeof(r->names[n]), "%s", reg->name);
 			if (kind_readable(reg->kind) && !map_elem(r->rd_map, r, e, (int16_t)n))
 				return decl_bug(cfg, reg, "overlaps another readable register");
 			if (kind_writable(reg->kind) && !map_elem(r->wr_map, r, e, (int16_t)n))
@@ -335,7 +351,7 @@ static bool region_build(struct hs_region *r)
 			return decl_bug(cfg, e->reg, "alias has a different element count");
 		e->value = t->value;
 	}
-	for (uint32_t off = 0; off < cfg->size; off++)
+	for (uint32_t off = 0; off < r->map_len; off++)
 		r->any_map[off] = r->rd_map[off] >= 0 ? r->rd_map[off] : r->wr_map[off] >= 0 ? r->wr_map[off] : HS_NO_ELEM;
 	return true;
 }
@@ -393,12 +409,18 @@ struct hs_region *hs_region_add(const struct hs_region_cfg *cfg)
 	return r;
 }
 
+/* Name of element e of region r ("CMR[3]"). */
+static const char *elem_name(const struct hs_region *r, const struct hs_elem *e)
+{
+	return r->names[e - r->elems];
+}
+
 /* Element starting at offset for reading (or writing); NULL if none. */
 static inline struct hs_elem *elem_at(const struct hs_region *r, uint32_t offset, bool write)
 {
 	int16_t i;
 
-	if (offset >= r->cfg.size)
+	if (offset >= r->map_len)
 		return NULL;
 	i = write ? r->wr_map[offset] : r->rd_map[offset];
 	return i >= 0 ? &r->elems[i] : NULL;
@@ -410,7 +432,7 @@ static inline struct hs_elem *elem_any(const struct hs_region *r, uint32_t offse
 {
 	int16_t i;
 
-	if (r && offset < r->cfg.size && (i = r->any_map[offset]) >= 0)
+	if (r && offset < r->map_len && (i = r->any_map[offset]) >= 0)
 		return &r->elems[i];
 	if (!r)
 		rtos_host_bug("host_sim", "%s: NULL region", what);
@@ -466,7 +488,7 @@ static void reglog(const struct hs_region *r, const struct hs_elem *e, uintptr_t
 	if (!space.logging || !r->logged)
 		return;
 	snprintf(line, sizeof(line), "%c%u %s.%s @0x%08" PRIxPTR " = 0x%0*" PRIx32,
-		 write ? 'W' : 'R', width, r->cfg.name, e ? e->name : "?", phys,
+		 write ? 'W' : 'R', width, r->cfg.name, e ? elem_name(r, e) : "?", phys,
 		 (int)(2U * width), value);
 	if (space.log_out)
 		fprintf(space.log_out, "%" PRIu64 " %s\n", rtos_host_now(), line);
@@ -513,7 +535,7 @@ static void elem_bug(const struct hs_region *r, const struct hs_elem *e, uint32_
 		other = elem_at(r, off, !write);
 		if (other)
 			rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is %s",
-				      write ? "write" : "read", width, val, phys, r->cfg.name, other->name,
+				      write ? "write" : "read", width, val, phys, r->cfg.name, elem_name(r, other),
 				      kind_names[other->kind]);
 		else
 			rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR " (%s+0x%03" PRIx32
@@ -521,10 +543,10 @@ static void elem_bug(const struct hs_region *r, const struct hs_elem *e, uint32_
 				      r->cfg.name, off);
 	} else if (!(e->widths & width)) {
 		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is a %u-byte register",
-			      write ? "write" : "read", width, val, phys, r->cfg.name, e->name, e->width);
+			      write ? "write" : "read", width, val, phys, r->cfg.name, elem_name(r, e), e->width);
 	} else {
 		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is reserved",
-			      write ? "write" : "read", width, val, phys, r->cfg.name, e->name);
+			      write ? "write" : "read", width, val, phys, r->cfg.name, elem_name(r, e));
 	}
 }
 

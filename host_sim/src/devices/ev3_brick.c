@@ -457,23 +457,56 @@ uint32_t ev3_output_pin5_mv(unsigned port)
 
 /* ---- ADC sources ---- */
 
+/* What an ADC channel measures: pin 1 or 6 of an input port, pin 5 of an
+ * output port, or (ADC_BRICK) a brick quantity; port in the low bits. */
+enum { ADC_BRICK = 0x00, ADC_IN_PIN1 = 0x10, ADC_IN_PIN6 = 0x20, ADC_OUT_PIN5 = 0x30 };
+#define ADC_CHANNELS 16U
+
+/* The ADC source of each channel, from the wiring tables (the first port
+ * naming a channel wins, input pins before output pins), built on first use. */
+static const uint8_t *adc_sources(void)
+{
+	static uint8_t source[ADC_CHANNELS];
+	static bool built;
+
+	if (built)
+		return source;
+	for (unsigned ch = 0; ch < ADC_CHANNELS; ch++) {
+		source[ch] = ADC_BRICK;
+		for (unsigned p = EV3_OUTPUT_PORTS; p-- > 0;)
+			if (ch == ev3_output_pins[p].adc_pin5)
+				source[ch] = (uint8_t)(ADC_OUT_PIN5 | p);
+		for (unsigned p = EV3_INPUT_PORTS; p-- > 0;) {
+			if (ch == ev3_input_pins[p].adc_pin6)
+				source[ch] = (uint8_t)(ADC_IN_PIN6 | p);
+			if (ch == ev3_input_pins[p].adc_pin1)
+				source[ch] = (uint8_t)(ADC_IN_PIN1 | p);
+		}
+	}
+	built = true;
+	return source;
+}
+
 /* Voltage of an ADC channel (facts §6 channel map). */
 uint32_t ev3_adc_channel_mv(unsigned ch)
 {
 	double amps = 0;
+	unsigned src = ch < ADC_CHANNELS ? adc_sources()[ch] : ADC_BRICK;
 
-	for (unsigned p = 0; p < EV3_INPUT_PORTS; p++) {
-		if (ch == ev3_input_pins[p].adc_pin1)
-			return ev3_input_pin_mv(p, 1);
-		if (ch == ev3_input_pins[p].adc_pin6)
-			return ev3_input_pin_mv(p, 6);
+	switch (src & 0xF0U) {
+	case ADC_IN_PIN1:
+		return ev3_input_pin_mv(src & 0xFU, 1);
+	case ADC_IN_PIN6:
+		return ev3_input_pin_mv(src & 0xFU, 6);
+	case ADC_OUT_PIN5:
+		return ev3_output_pin5_mv(src & 0xFU);
+	default:
+		break;
 	}
-	for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
-		if (ch == ev3_output_pins[p].adc_pin5)
-			return ev3_output_pin5_mv(p);
-	for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
-		if (brick.out[p].motor)
-			amps += ev3_motor_current_a(brick.out[p].motor);
+	if (ch == EV3_ADC_MOTOR_CURRENT || ch == EV3_ADC_BATTERY_CURRENT)
+		for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
+			if (brick.out[p].motor)
+				amps += ev3_motor_current_a(brick.out[p].motor);
 	switch (ch) {
 	case EV3_ADC_BATTERY_VOLTAGE:   /* 1:2 divider assumed */
 		return brick.battery_mv / 2U;
