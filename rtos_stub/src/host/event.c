@@ -146,7 +146,7 @@ static void ev_front_sweep(void)
 
 /* Queues slot s, scheduled after every queued slot (its sequence number is
  * the highest, so only times need comparing); false on ENOMEM. */
-static bool ev_queue(struct ev_slot s)
+static __attribute__((noinline)) bool ev_queue(struct ev_slot s)
 {
 	if (ev_front_len == EV_FRONT_CAP)
 		ev_front_sweep();
@@ -238,28 +238,50 @@ static bool ev_grow(void)
 	return true;
 }
 
+/* ev_schedule's checks: false after a bug report for no function or no
+ * memory; a time in the past is reported and moved to now. */
+static __attribute__((noinline)) bool ev_schedule_check(uint64_t *t_ns, rtos_host_event_fn fn)
+{
+	if (fn == NULL) {
+		rtos_host_bug("event", "rtos_host_event_at with a NULL function");
+		return false;
+	}
+	if (*t_ns < now_ns) {
+		rtos_host_bug("event", "event scheduled in the past (t=%llu ns < now); runs now",
+			      (unsigned long long)*t_ns);
+		*t_ns = now_ns;
+	}
+	if (ev_free == EV_NONE && !ev_grow()) {
+		rtos_host_bug("event", "out of memory for events");
+		return false;
+	}
+	return true;
+}
+
 /* Schedules fn(arg) at t_ns; a time in the past is a bug and runs now. */
-static rtos_host_event_t ev_schedule(uint64_t t_ns, rtos_host_event_fn fn, void *arg, bool kernel)
+static inline __attribute__((always_inline)) rtos_host_event_t ev_schedule(uint64_t t_ns, rtos_host_event_fn fn,
+									    void *arg, bool kernel)
 {
 	uint32_t idx;
 	struct event *ev;
 
-	if (fn == NULL) {
-		rtos_host_bug("event", "rtos_host_event_at with a NULL function");
+	if ((fn == NULL || t_ns < now_ns || ev_free == EV_NONE) && !ev_schedule_check(&t_ns, fn))
 		return 0;
-	}
-	if (t_ns < now_ns) {
-		rtos_host_bug("event", "event scheduled in the past (t=%llu ns < now); runs now",
-			      (unsigned long long)t_ns);
-		t_ns = now_ns;
-	}
-	if (ev_free == EV_NONE && !ev_grow()) {
-		rtos_host_bug("event", "out of memory for events");
-		return 0;
-	}
 	idx = ev_free;
 	ev = &ev_pool[idx];
-	if (!ev_queue((struct ev_slot){ t_ns, ev_seq, idx, ev->gen })) {
+	if (ev_front_len < EV_FRONT_CAP && (ev_heap_len == 0 || t_ns < ev_heap[0].time)) {
+		/* the common case, inline: into the front, moving up the slots due no later */
+		uint32_t pos = ev_front_len++;
+
+		while (pos > 0 && ev_front[pos - 1].time <= t_ns) {
+			ev_front[pos] = ev_front[pos - 1];
+			pos--;
+		}
+		ev_front[pos].time = t_ns;
+		ev_front[pos].seq = ev_seq;
+		ev_front[pos].idx = idx;
+		ev_front[pos].gen = ev->gen;
+	} else if (!ev_queue((struct ev_slot){ t_ns, ev_seq, idx, ev->gen })) {
 		rtos_host_bug("event", "out of memory for events");
 		return 0;
 	}

@@ -229,7 +229,8 @@ void irq_deliver_pending(void);
 /* Delivers pending interrupts the CPU accepts now (nested on the current stack). */
 static inline void irq_dispatch_pending(void)
 {
-	if (irq_pending_lines != 0)
+	/* inside a device event or access, or under a lock, nothing is delivered yet */
+	if (irq_pending_lines != 0 && cpu.irq_defer == 0 && cpu.sil_lock == 0 && !cpu.locked)
 		irq_deliver_pending();
 }
 /* True if some line could be delivered in the current CPU state. */
