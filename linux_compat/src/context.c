@@ -258,7 +258,10 @@ bool lx_in_interrupt(void)
 bool lx_in_atomic(void)
 {
 #if LX_DEBUG_ATOMIC_SLEEP
-	return lx_in_interrupt() || lx_preempt_count() > 0 || lx_irqs_disabled() || sns_dsp();
+	/* The context is asked once: outside interrupt context the depth is the task's. */
+	if (lx_in_interrupt())
+		return true;
+	return ctx.task_atomic > 0 || ctx.irqs_off > 0 || sns_loc() || sns_dsp();
 #else
 	return ctx.preempt > 0 || ctx.irqs_off > 0 || lx_in_interrupt() || sns_loc() || sns_dsp();
 #endif
