@@ -197,7 +197,7 @@ static void pin_resolve(unsigned pin, bool notify)
 		}
 	}
 	pin_trace(pin);
-	if (notify || changed || drives != old_drives || p->contention != old_cont) {
+	if (p->first_watch >= 0 && (notify || changed || drives != old_drives || p->contention != old_cont)) {
 		struct hs_pin_state st;
 
 		pin_state_of(pin, &st);
