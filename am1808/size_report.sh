@@ -13,9 +13,11 @@ component_of() {
 	*ev3_drivers/d_pwm.c*)     echo "driver d_pwm" ;;
 	*ev3_drivers/d_analog.c*)  echo "driver d_analog" ;;
 	*ev3_drivers/d_uart.c*)    echo "driver d_uart" ;;
+	*ev3_drivers/d_ui.c*)      echo "driver d_ui" ;;
 	*hacks/pwm_hack.c*)        echo "hack pwm" ;;
 	*hacks/analog_hack.c*)     echo "hack analog" ;;
 	*hacks/uart_hack.c*)       echo "hack uart" ;;
+	*hacks/ui_hack.c*)         echo "hack ui" ;;
 	*hacks/*)                  echo "hacks (shared)" ;;
 	*api/*)                    echo "api" ;;
 	*newlib*|*libgcc*)         echo "libc + libgcc" ;;
@@ -23,8 +25,8 @@ component_of() {
 	esac
 }
 declare -A text data bss itext
-order=("rtos glue" "linux_compat" "driver d_pwm" "driver d_analog" "driver d_uart" \
-	"hack pwm" "hack analog" "hack uart" "hacks (shared)" "api" "libc + libgcc" "other")
+order=("rtos glue" "linux_compat" "driver d_pwm" "driver d_analog" "driver d_uart" "driver d_ui" \
+	"hack pwm" "hack analog" "hack uart" "hack ui" "hacks (shared)" "api" "libc + libgcc" "other")
 for c in "${order[@]}"; do text[$c]=0; data[$c]=0; bss[$c]=0; itext[$c]=0; done
 
 # attribute FILE FALLBACK_SOURCE ARRAY-PREFIX: adds each defined symbol's size to its component.
@@ -71,5 +73,5 @@ shim=$(( ${text["rtos glue"]} + ${text[linux_compat]} ))
 ishim=$(( ${itext["rtos glue"]} + ${itext[linux_compat]} ))
 echo
 echo "lib text = every function in libev3lx.a; image text = what the firmware keeps after --gc-sections"
-echo "(rooted at ev3api_cfg: the three drivers, their service calls and the API); .rodata counts as text."
+echo "(rooted at ev3api_cfg: the drivers, their service calls and the API); .rodata counts as text."
 echo "linux_compat + rtos glue .text: $shim bytes in the library, $ishim bytes in the image (target <= 8192 at -Os)"
