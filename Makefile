@@ -7,6 +7,8 @@
 .DEFAULT_GOAL := all
 .SUFFIXES:
 .DELETE_ON_ERROR:
+# Keep the objects of test programs (intermediate files of a pattern chain).
+.SECONDARY:
 SHELL := /bin/bash
 
 NPROC := $(shell nproc 2>/dev/null || echo 2)
