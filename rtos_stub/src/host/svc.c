@@ -75,6 +75,9 @@ ER prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode)
 	if (t->cfg->domid == TDOM_KERNEL)
 		return E_OK;
 	hi = lo + size;
+	/* The usual case: a buffer on the task's own stack. */
+	if (lo >= (uintptr_t)t->co.stack_lo && hi <= (uintptr_t)t->co.stack_lo + t->co.stack_size)
+		return E_OK;
 	while (lo < hi) {
 		const struct mem_region *r = region_at(t, lo, pmmode, &stack);
 
