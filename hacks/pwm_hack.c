@@ -118,16 +118,10 @@ static ER_UINT svc_pwm_set_busy(intptr_t mask, intptr_t p2, intptr_t p3, intptr_
 				intptr_t p5, ID cdmid)
 {
 	u8 byte = (u8)mask;
-	mm_segment_t old_fs;
-	ssize_t ret;
 
 	if (mask < 0 || mask > LMS_PWM_PORT_MASK)
 		return E_PAR;
-	old_fs = get_fs();
-	set_fs(KERNEL_DS);	/* the byte is the hack's own (see docs/porting.md) */
-	ret = lx_dev_write(motor_file, (const char __user *)&byte, 1, NULL);
-	set_fs(old_fs);
-	return lx_errno_to_er(ret);
+	return lx_errno_to_er(kernel_write(motor_file, &byte, 1, NULL));
 }
 
 /* PWM_FN_MOTOR_DATA: copies one port's MOTORDATA to the caller. */

@@ -63,19 +63,6 @@ static void __exit uart_hack_exit(void)
 }
 module_exit(uart_hack_exit);
 
-/* An ioctl whose argument is the hack's own buffer (KERNEL_DS: on HRP2 the
- * service routine's stack is not in the caller's domain). */
-static ER uart_kernel_ioctl(unsigned int cmd, void *arg)
-{
-	mm_segment_t old_fs = get_fs();
-	long ret;
-
-	set_fs(KERNEL_DS);
-	ret = lx_dev_ioctl(uart_file, cmd, (unsigned long)arg);
-	set_fs(old_fs);
-	return lx_errno_to_er(ret);
-}
-
 /* Common checks: task context, port 0..3, the driver up.  E_OK or the error. */
 static ER uart_hack_check(intptr_t port)
 {
@@ -101,7 +88,7 @@ static ER uart_hack_set_conn(intptr_t port, s8 conn, s8 mode)
 	}
 	dc.connection[port] = conn;
 	dc.mode[port] = mode;
-	return uart_kernel_ioctl(LMS_UART_SET_CONN, &dc);
+	return lx_errno_to_er(lx_dev_ioctl_kernel(uart_file, LMS_UART_SET_CONN, &dc));
 }
 
 /* UART_FN_SET_MODE */
@@ -158,7 +145,7 @@ static ER_UINT svc_uart_clear_changed(intptr_t port, intptr_t p2, intptr_t p3, i
 
 	if (ercd != E_OK)
 		return ercd;
-	return uart_kernel_ioctl(LMS_UART_CLEAR_CHANGED, &ctl);
+	return lx_errno_to_er(lx_dev_ioctl_kernel(uart_file, LMS_UART_CLEAR_CHANGED, &ctl));
 }
 
 /* UART_FN_WRITE: [port, data...] written to the device. */
@@ -166,8 +153,6 @@ static ER_UINT svc_uart_write(intptr_t port, intptr_t data, intptr_t len, intptr
 			      intptr_t p5, ID cdmid)
 {
 	u8 cmd[1 + LMS_UART_DATA_SIZE];
-	mm_segment_t old_fs;
-	ssize_t ret;
 	ER ercd = uart_hack_check(port);
 
 	if (ercd != E_OK)
@@ -178,11 +163,7 @@ static ER_UINT svc_uart_write(intptr_t port, intptr_t data, intptr_t len, intptr
 	    copy_from_user(cmd + 1, (const void __user *)data, (unsigned long)len))
 		return E_MACV;
 	cmd[0] = (u8)port;
-	old_fs = get_fs();
-	set_fs(KERNEL_DS);
-	ret = lx_dev_write(uart_file, (const char __user *)cmd, (size_t)len + 1, NULL);
-	set_fs(old_fs);
-	return lx_errno_to_er(ret);
+	return lx_errno_to_er(kernel_write(uart_file, cmd, (size_t)len + 1, NULL));
 }
 
 /* UART_FN_MAP: the address of the shared memory. */

@@ -128,6 +128,12 @@ ssize_t simple_read_from_buffer(void __user *to, size_t count, loff_t *ppos,
 ssize_t simple_write_to_buffer(void *to, size_t available, loff_t *ppos,
 			       const void __user *from, size_t count);
 
+/* The file's write() with a kernel buffer (the address limit KERNEL_DS for the
+ * call): bytes written or -errno; pos NULL: the file position. */
+ssize_t kernel_write(struct file *file, const void *buf, size_t count, loff_t *pos);
+/* The file's read() into a kernel buffer, likewise. */
+ssize_t kernel_read(struct file *file, void *buf, size_t count, loff_t *pos);
+
 /* Registers a char device as /dev/<name>, minor 0 (see above): the major
  * (major 0) or 0, -EINVAL, -EBUSY (major or name taken), -ENOMEM (registry full).  Process context. */
 int register_chrdev(unsigned int major, const char *name, const struct file_operations *fops);

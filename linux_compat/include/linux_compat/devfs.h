@@ -131,4 +131,8 @@ static inline __poll_t lx_dev_poll(struct file *file)
  * length), or the driver's error.  Process context. */
 int lx_dev_mmap(struct file *file, size_t length, void **addr);
 
+/* lx_dev_ioctl whose argument points to a kernel buffer (KERNEL_DS for the
+ * call): how a hack hands the driver a structure of its own. */
+long lx_dev_ioctl_kernel(struct file *file, unsigned int cmd, void *arg);
+
 #endif /* _LINUX_COMPAT_DEVFS_H */

@@ -256,9 +256,42 @@ static void body(void)
 	kfree(mmap_alloc);
 }
 
+/* A buffer of the kernel's, outside the user domain the next body runs in. */
+static char kernel_buf[8] = "kernel!";
+static int kernel_value = 41;
+
+/* kernel_write/kernel_read/lx_dev_ioctl_kernel from a user-domain task: the
+ * driver's copy_*_user accept the kernel buffer for that one call only. */
+static void user_domain_body(void)
+{
+	struct file *f;
+	char back[8] = { 0 };
+
+	is_int(misc_register(&test_misc), 0, "misc_register (user-domain run)");
+	is_int(lx_dev_open("/dev/lx_test", O_RDWR, &f), 0, "open");
+	is_int(lx_dev_write(f, (const char __user *)kernel_buf, sizeof(kernel_buf), NULL), -EFAULT,
+	       "write() of a kernel buffer on the caller's behalf: -EFAULT");
+	is_int(kernel_write(f, kernel_buf, sizeof(kernel_buf), NULL), sizeof(kernel_buf),
+	       "kernel_write of the same buffer");
+	{
+		loff_t pos = 0;
+
+		is_int(kernel_read(f, back, sizeof(back), &pos), sizeof(back), "kernel_read");
+		is_str(back, "kernel!", "reads back what kernel_write wrote");
+	}
+	is_int(lx_dev_ioctl(f, TEST_IOC_ADD, (unsigned long)&kernel_value), -EFAULT,
+	       "ioctl with a kernel structure on the caller's behalf: -EFAULT");
+	is_int(lx_dev_ioctl_kernel(f, TEST_IOC_ADD, &kernel_value), 0, "lx_dev_ioctl_kernel");
+	is_int(kernel_value, 42, "the driver updated the kernel structure");
+	ok(segment_eq(get_fs(), USER_DS), "the address limit is back to USER_DS");
+	lx_dev_close(f);
+	misc_deregister(&test_misc);
+}
+
 int main(void)
 {
-	tap_plan(69);
+	tap_plan(80);
 	ok(lx_test_run(body), "test task ran to completion");
+	ok(lx_test_run_in(user_domain_body, 1, NULL), "user-domain task ran to completion");
 	return tap_done();
 }
