@@ -162,6 +162,34 @@ static bool parse_seconds(const char *s, double *out)
 	return true;
 }
 
+/*
+ * The options every app takes: --seconds, --seed, --trace, and --every where
+ * every_ms is given.  -1 if the current option is none of them; else
+ * EV3SIM_EXIT_OK, or the status of its usage error.
+ */
+static int shared_option(struct args *a, const char *v, double *seconds, uint64_t *seed,
+			 const char **trace_path, unsigned *every_ms)
+{
+	if (is(a, "--seconds")) {
+		if (!parse_seconds(v, seconds))
+			return usage_error(a, "--seconds: bad value '%s' (0 < N <= 3600)", v);
+	} else if (is(a, "--seed")) {
+		if (!ev3sim_parse_uint(v, UINT64_MAX, seed))
+			return usage_error(a, "--seed: bad value '%s' (an unsigned integer)", v);
+	} else if (is(a, "--trace")) {
+		*trace_path = v;
+	} else if (every_ms != NULL && is(a, "--every")) {
+		uint64_t ms;
+
+		if (!ev3sim_parse_uint(v, 60000, &ms) || ms == 0)
+			return usage_error(a, "--every: bad value '%s' (1..60000 ms)", v);
+		*every_ms = (unsigned)ms;
+	} else {
+		return -1;
+	}
+	return EV3SIM_EXIT_OK;
+}
+
 /* A path gnuplot can take inside single quotes. */
 static bool plain_path(const char *s)
 {
@@ -187,7 +215,7 @@ static int cmd_balance(struct args *a)
 	const char *csv = NULL, *plot = NULL, *log_path = NULL, *v;
 	double gyro_noise = 0.3;
 	char err[256], line[1024];
-	int status = EV3SIM_EXIT_OK;
+	int status = EV3SIM_EXIT_OK, st;
 
 	while (next_option(a)) {
 		if (is(a, "--help") || is(a, "-h")) {
@@ -208,12 +236,9 @@ static int cmd_balance(struct args *a)
 			    is(a, "--csv") || is(a, "--plot"))
 				return usage_error(a, "%s needs a value", a->name);
 			return usage_error(a, "unknown option %s", a->name);
-		} else if (is(a, "--seconds")) {
-			if (!parse_seconds(v, &o.seconds))
-				return usage_error(a, "--seconds: bad value '%s' (0 < N <= 3600)", v);
-		} else if (is(a, "--seed")) {
-			if (!ev3sim_parse_uint(v, UINT64_MAX, &o.seed))
-				return usage_error(a, "--seed: bad value '%s' (an unsigned integer)", v);
+		} else if ((st = shared_option(a, v, &o.seconds, &o.seed, &o.trace_path, NULL)) >= 0) {
+			if (st != EV3SIM_EXIT_OK)
+				return st;
 		} else if (is(a, "--logger-hz")) {
 			uint64_t hz;
 
@@ -255,8 +280,6 @@ static int cmd_balance(struct args *a)
 			if (!ev3sim_fault_parse(v, 1, &o.faults[o.nfaults], err, sizeof(err)))
 				return usage_error(a, "--fault: %s", err);
 			o.nfaults++;
-		} else if (is(a, "--trace")) {
-			o.trace_path = v;
 		} else if (is(a, "--csv")) {
 			csv = v;
 		} else if (is(a, "--plot")) {
@@ -324,6 +347,7 @@ static int cmd_motor(struct args *a)
 	bool speed_given = false, power_given = false;
 	const char *v;
 	char err[256];
+	int st;
 
 	while (next_option(a)) {
 		if (is(a, "--help") || is(a, "-h")) {
@@ -352,20 +376,10 @@ static int cmd_motor(struct args *a)
 			o.power_mode = is(a, "--power");
 			speed_given |= !o.power_mode;
 			power_given |= o.power_mode;
-		} else if (is(a, "--seconds")) {
-			if (!parse_seconds(v, &o.seconds))
-				return usage_error(a, "--seconds: bad value '%s' (0 < N <= 3600)", v);
-		} else if (is(a, "--every")) {
-			uint64_t ms;
-
-			if (!ev3sim_parse_uint(v, 60000, &ms) || ms == 0)
-				return usage_error(a, "--every: bad value '%s' (1..60000 ms)", v);
-			o.every_ms = (unsigned)ms;
-		} else if (is(a, "--seed")) {
-			if (!ev3sim_parse_uint(v, UINT64_MAX, &o.seed))
-				return usage_error(a, "--seed: bad value '%s' (an unsigned integer)", v);
-		} else if (is(a, "--trace")) {
-			o.trace_path = v;
+		} else if ((st = shared_option(a, v, &o.seconds, &o.seed, &o.trace_path,
+					       &o.every_ms)) >= 0) {
+			if (st != EV3SIM_EXIT_OK)
+				return st;
 		} else {
 			return usage_error(a, "unknown option %s", a->name);
 		}
@@ -384,6 +398,7 @@ static int cmd_sensors(struct args *a)
 	struct ev3sim_sensors_opts o;
 	const char *v;
 	char err[256];
+	int st;
 
 	ev3sim_sensors_defaults(&o);
 	while (next_option(a)) {
@@ -403,20 +418,10 @@ static int cmd_sensors(struct args *a)
 			   a->name[6] == '\0') {
 			if (!ev3sim_output_device_parse(v, &o.out[a->name[5] - 'A']))
 				return usage_error(a, "bad output device '%s' (none, large, medium)", v);
-		} else if (is(a, "--seconds")) {
-			if (!parse_seconds(v, &o.seconds))
-				return usage_error(a, "--seconds: bad value '%s' (0 < N <= 3600)", v);
-		} else if (is(a, "--every")) {
-			uint64_t ms;
-
-			if (!ev3sim_parse_uint(v, 60000, &ms) || ms == 0)
-				return usage_error(a, "--every: bad value '%s' (1..60000 ms)", v);
-			o.every_ms = (unsigned)ms;
-		} else if (is(a, "--seed")) {
-			if (!ev3sim_parse_uint(v, UINT64_MAX, &o.seed))
-				return usage_error(a, "--seed: bad value '%s' (an unsigned integer)", v);
-		} else if (is(a, "--trace")) {
-			o.trace_path = v;
+		} else if ((st = shared_option(a, v, &o.seconds, &o.seed, &o.trace_path,
+					       &o.every_ms)) >= 0) {
+			if (st != EV3SIM_EXIT_OK)
+				return st;
 		} else {
 			return usage_error(a, "unknown option %s", a->name);
 		}
