@@ -52,37 +52,44 @@ bool lx_dev_exists(const char *path);
 /* Calls the legacy .ioctl with the file's inode under the big kernel lock (out of line). */
 long lx_dev_legacy_ioctl(struct file *file, unsigned int cmd, unsigned long arg);
 
+/*
+ * The checks read() and write() share: the file open for mode, the driver
+ * has the operation, a valid position (pos NULL: the file's f_pos) and the
+ * count clamped to MAX_RW_COUNT.  0, or -EBADF / -EINVAL.
+ */
+static inline int lx_dev_rw_check(struct file *file, unsigned int mode, bool has_op,
+				  loff_t **pos, size_t *count)
+{
+	if (unlikely(!file || !((__force unsigned int)file->f_mode & mode)))
+		return -EBADF;
+	if (unlikely(!has_op))
+		return -EINVAL;
+	if (!*pos)
+		*pos = &file->f_pos;
+	if (unlikely(**pos < 0))
+		return -EINVAL;
+	if (unlikely(*count > MAX_RW_COUNT))
+		*count = MAX_RW_COUNT;
+	return 0;
+}
+
 /* The driver's read(): bytes read, 0 at end of file, or -errno.  pos NULL: the file's f_pos. */
 static inline ssize_t lx_dev_read(struct file *file, char __user *buf, size_t count, loff_t *pos)
 {
-	if (unlikely(!file || !((__force unsigned int)file->f_mode & (__force unsigned int)FMODE_READ)))
-		return -EBADF;
-	if (unlikely(!file->f_op->read))
-		return -EINVAL;
-	if (!pos)
-		pos = &file->f_pos;
-	if (unlikely(*pos < 0))
-		return -EINVAL;
-	if (unlikely(count > MAX_RW_COUNT))
-		count = MAX_RW_COUNT;
-	return file->f_op->read(file, buf, count, pos);
+	int ret = lx_dev_rw_check(file, (__force unsigned int)FMODE_READ,
+				  file && file->f_op->read, &pos, &count);
+
+	return ret ? ret : file->f_op->read(file, buf, count, pos);
 }
 
 /* The driver's write(): bytes written (0 is not an error), or -errno.  pos NULL: f_pos. */
 static inline ssize_t lx_dev_write(struct file *file, const char __user *buf, size_t count,
 				   loff_t *pos)
 {
-	if (unlikely(!file || !((__force unsigned int)file->f_mode & (__force unsigned int)FMODE_WRITE)))
-		return -EBADF;
-	if (unlikely(!file->f_op->write))
-		return -EINVAL;
-	if (!pos)
-		pos = &file->f_pos;
-	if (unlikely(*pos < 0))
-		return -EINVAL;
-	if (unlikely(count > MAX_RW_COUNT))
-		count = MAX_RW_COUNT;
-	return file->f_op->write(file, buf, count, pos);
+	int ret = lx_dev_rw_check(file, (__force unsigned int)FMODE_WRITE,
+				  file && file->f_op->write, &pos, &count);
+
+	return ret ? ret : file->f_op->write(file, buf, count, pos);
 }
 
 /* The driver's .unlocked_ioctl, else its legacy .ioctl (with the file's
