@@ -256,27 +256,9 @@ static const struct lx_module_param *find_param(const char *module, const char *
 	return NULL;
 }
 
-/* A signed value within [min, max]: 0, -EINVAL or -ERANGE. */
-static int parse_signed(const char *value, long long min, long long max, long long *out)
-{
-	int ret = kstrtoll(value, 0, out);
-
-	return (ret == 0 && (*out < min || *out > max)) ? -ERANGE : ret;
-}
-
-/* An unsigned value up to max: 0, -EINVAL or -ERANGE. */
-static int parse_unsigned(const char *value, unsigned long long max, unsigned long long *out)
-{
-	int ret = kstrtoull(value, 0, out);
-
-	return (ret == 0 && *out > max) ? -ERANGE : ret;
-}
-
-/* Parses value for p and stores it: 0 or -EINVAL / -ERANGE. */
+/* Parses value for p and stores it: 0 or -EINVAL / -ERANGE (the kstrto* rules). */
 static int store_param(const struct lx_module_param *p, const char *value)
 {
-	long long sv = 0;
-	unsigned long long uv = 0;
 	bool bv;
 	int ret = 0;
 
@@ -295,40 +277,19 @@ static int store_param(const struct lx_module_param *p, const char *value)
 			*(bool *)p->arg = p->type == LX_PARAM_bool ? bv : !bv;
 		return ret;
 	case LX_PARAM_int:
-		ret = parse_signed(value, INT_MIN, INT_MAX, &sv);
-		if (ret == 0)
-			*(int *)p->arg = (int)sv;
-		return ret;
+		return kstrtoint(value, 0, (int *)p->arg);
 	case LX_PARAM_short:
-		ret = parse_signed(value, SHRT_MIN, SHRT_MAX, &sv);
-		if (ret == 0)
-			*(short *)p->arg = (short)sv;
-		return ret;
+		return kstrtos16(value, 0, (s16 *)p->arg);
 	case LX_PARAM_long:
-		ret = parse_signed(value, LONG_MIN, LONG_MAX, &sv);
-		if (ret == 0)
-			*(long *)p->arg = (long)sv;
-		return ret;
+		return kstrtol(value, 0, (long *)p->arg);
 	case LX_PARAM_uint:
-		ret = parse_unsigned(value, UINT_MAX, &uv);
-		if (ret == 0)
-			*(unsigned int *)p->arg = (unsigned int)uv;
-		return ret;
+		return kstrtouint(value, 0, (unsigned int *)p->arg);
 	case LX_PARAM_ushort:
-		ret = parse_unsigned(value, USHRT_MAX, &uv);
-		if (ret == 0)
-			*(unsigned short *)p->arg = (unsigned short)uv;
-		return ret;
+		return kstrtou16(value, 0, (u16 *)p->arg);
 	case LX_PARAM_ulong:
-		ret = parse_unsigned(value, ULONG_MAX, &uv);
-		if (ret == 0)
-			*(unsigned long *)p->arg = (unsigned long)uv;
-		return ret;
+		return kstrtoul(value, 0, (unsigned long *)p->arg);
 	case LX_PARAM_byte:
-		ret = parse_unsigned(value, UCHAR_MAX, &uv);
-		if (ret == 0)
-			*(unsigned char *)p->arg = (unsigned char)uv;
-		return ret;
+		return kstrtou8(value, 0, (u8 *)p->arg);
 	}
 	return -EINVAL;
 }
