@@ -13,7 +13,7 @@ WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes 
 # linux_compat/include and use gnu11 (typeof, statement expressions).
 LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers
 
-COMMON_INC := -Irtos_stub/include -Ihost_sim/include -Iapi -Itests -Iev3_drivers -Ihacks
+COMMON_INC := -Irtos_stub/include -Ihost_sim/include -Iapi -Itests -Itests/lib -Iev3_drivers -Ihacks
 # Linux code is held to kbuild W=1: -Wextra without -Wmissing-field-initializers
 # (LEGO fills struct miscdevice positionally: { minor, name, fops }).
 LINUX_INC  := -D__KERNEL__ -Wno-missing-field-initializers -Ilinux_compat/include -Ilinux_compat/mach-davinci/include

@@ -2,7 +2,7 @@
 #
 # Components append to:
 #   HOST_SRCS      sources of libev3lx.a in every host configuration
-#   TEST_SUPPORT_SRCS  sources linked into every test (tests/support/)
+#   TEST_SUPPORT_SRCS  sources linked into every test (tests/lib/, with its headers)
 #   HOST_PROGRAMS  programs built in build/host/ (each NAME with NAME_SRCS)
 # Tests are every tests/**/test_*.c: one TAP program each, linked against
 # the library; build/<config>/tests/<path>/test_x.t mirrors the source tree.

@@ -12,7 +12,7 @@
 #include <linux_compat/devfs.h>
 #include <linux_compat/heap.h>
 
-#include "../ev3_drivers/pwm/pwm_test.h"
+#include "pwm_test.h"
 
 static bool all_obj(void)
 {

@@ -11,7 +11,7 @@
  */
 #include <stdlib.h>
 #include <string.h>
-#include "api/api_test.h"
+#include "api_test.h"
 #include <linux/module.h>
 #include <linux_compat/devfs.h>
 #include <linux_compat/heap.h>

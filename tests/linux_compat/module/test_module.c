@@ -6,8 +6,8 @@
  */
 #define KBUILD_MODNAME "lxtest"
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
-#include "rtos_stub/rtos_test.h"
+#include "lx_core_test.h"
+#include "rtos_test.h"
 #include <linux/module.h>
 #include <linux/moduleparam.h>
 #include <linux/init.h>

@@ -5,7 +5,7 @@
  * callbacks, self-cancellation, overruns after a long CPU lock.
  */
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
+#include "lx_core_test.h"
 #include <linux/hrtimer.h>
 #include <linux/completion.h>
 #include <linux/delay.h>

@@ -3,7 +3,7 @@
  * add_timer, timer_pending, from_timer), conversions, busy delays and sleeps.
  */
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
+#include "lx_core_test.h"
 #include <linux/timer.h>
 #include <linux/jiffies.h>
 #include <linux/delay.h>
