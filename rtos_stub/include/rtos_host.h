@@ -17,6 +17,10 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 
+/* The length of one tick in virtual nanoseconds: TIC_NUME/TIC_DENO ms (kernel.h),
+ * which must come out as a whole number of nanoseconds. */
+#define RTOS_HOST_TICK_NS	((uint64_t)(TIC_NUME) * 1000000U / (TIC_DENO))
+
 /* ---- Boot and run ---- */
 
 /* Resets the kernel, checks cfg (and its includes), creates all objects, runs
