@@ -40,7 +40,7 @@
 
 /* linux_compat's configuration fragment (includes linux_irq_cfg). */
 extern const struct rtos_cfg linux_compat_cfg;
-/* The Linux interrupt lines (linux_compat/src/irq_cfg.c). */
+/* The Linux interrupt lines (linux_compat/mach-davinci/irq_cfg.c). */
 extern const struct rtos_cfg linux_irq_cfg;
 
 /* ATT_INI of linux_compat_cfg: clears all linux_compat state (a fresh boot). */

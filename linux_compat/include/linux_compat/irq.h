@@ -2,7 +2,7 @@
  * linux_compat/irq.h — how Linux IRQs sit on the RTOS's interrupt lines.
  *
  * The EV3RT approach: interrupt service routines are bound statically.  The
- * configuration fragment linux_irq_cfg (linux_compat/src/irq_cfg.c, included
+ * configuration fragment linux_irq_cfg (linux_compat/mach-davinci/irq_cfg.c, included
  * by linux_compat's RTOS configuration) declares CFG_INT + ATT_ISR for every
  * line in LX_IRQ_LINES below, initially disabled.  request_irq records the
  * Linux handler and enables the line (ena_int); free_irq of the last handler
@@ -15,7 +15,7 @@
  * configures above (TMIN_INTPRI) still preempts them.
  *
  * GPIO bank lines (42..50) are demultiplexed into per-pin IRQs
- * (101 + gpio, mach/irqs.h) by lx_gpio_bank_isr (linux_compat/src/gpio.c):
+ * (101 + gpio, mach/irqs.h) by lx_gpio_bank_isr (linux_compat/mach-davinci/gpio.c):
  * drivers request the pin IRQs, never the bank lines.
  */
 #ifndef _LINUX_COMPAT_IRQ_H
