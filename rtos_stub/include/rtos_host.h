@@ -106,6 +106,16 @@ void rtos_host_set_mmio_window(uintptr_t start, uintptr_t len);
 /* The window for a physical register range, or NULL if none is modelled. */
 void *rtos_host_map_io(uintptr_t phys, SIZE size);
 
+/* ---- Boot arguments ---- */
+
+/* The command line the simulated boot loader hands the next boots (NULL:
+ * none), as U-Boot's bootargs: the board sets it when it is created, the
+ * layers above read it (linux_compat takes "module.param=value" words as
+ * module parameters).  The string must stay valid until changed. */
+void rtos_host_set_boot_args(const char *args);
+/* The command line set by rtos_host_set_boot_args ("" if none). */
+const char *rtos_host_boot_args(void);
+
 /* ---- Trace ---- */
 
 /* Every kernel event (dispatch, ISR entry/exit, tick work, service-call

@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdio.h>
 #include "rtos_host.h"
 #include "host_sim/clock.h"
 #include "host_sim/gpio.h"
@@ -683,6 +684,7 @@ void ev3_fault_uart_counts(unsigned port, uint32_t *flipped, uint32_t *dropped, 
 static ER ports_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	static const char *const rng_names[EV3_INPUT_PORTS] = { "in1.port", "in2.port", "in3.port", "in4.port" };
+	static char boot_args[160];
 
 	memset(&brick, 0, sizeof(brick));
 	brick.battery_mv = 9000;
@@ -694,6 +696,12 @@ static ER ports_create(const struct hs_board_cfg *cfg, void **ctx)
 		hs_rng_stream(&brick.in[p].rng, rng_names[p]);
 		input_apply_pins(&brick.in[p]);
 	}
+	/* The firmware command line of this board: d_uart finds the stand-in
+	 * UARTs of ports 3 and 4 through it, as a boot loader tells Linux. */
+	snprintf(boot_args, sizeof(boot_args),
+		 "d_uart.port3_base=%#x d_uart.port3_irq=%u d_uart.port4_base=%#x d_uart.port4_irq=%u",
+		 EV3_SUART_PORT3_BASE, EV3_SUART_PORT3_INTNO, EV3_SUART_PORT4_BASE, EV3_SUART_PORT4_INTNO);
+	rtos_host_set_boot_args(boot_args);
 	brick.ready = true;
 	*ctx = &brick;
 	return E_OK;
@@ -712,6 +720,7 @@ static void ports_destroy(void *ctx)
 		hs_event_cancel(&fault_jobs->ev);
 		fault_job_free(fault_jobs);
 	}
+	rtos_host_set_boot_args(NULL);
 	brick.ready = false;
 }
 

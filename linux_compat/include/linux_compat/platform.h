@@ -28,4 +28,10 @@ void lx_platform_halt(void) __attribute__((__noreturn__));
  * context", with the host kernel's name for it on the host). */
 void lx_platform_describe_interrupt(char *buf, size_t len);
 
+/* The boot command line ("" if none): its "module.param=value" words set
+ * module parameters before the modules are initialised.  Host: the one the
+ * simulated board hands over (rtos_host_boot_args); AM1808: the one the
+ * firmware's start-up passed to lx_compat_set_boot_args. */
+const char *lx_platform_boot_args(void);
+
 #endif /* _LINUX_COMPAT_PLATFORM_H */
