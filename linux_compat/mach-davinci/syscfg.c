@@ -7,6 +7,7 @@
 #include <mach/da8xx.h>
 #include <mach/hardware.h>
 #include <linux_compat/irq.h>
+#include <linux_compat/machine.h>
 
 void __iomem *da8xx_syscfg0_base;
 void __iomem *da8xx_syscfg1_base;

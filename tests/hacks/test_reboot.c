@@ -16,6 +16,7 @@
 #include <linux_compat/devfs.h>
 #include <linux_compat/heap.h>
 #include <linux_compat/irq.h>
+#include <linux_compat/machine.h>
 #include <linux/ioport.h>
 #include <mach/gpio.h>
 #include "lms_pwm.h"
