@@ -70,7 +70,7 @@ static void trace_sink(const char *line, void *ctx)
 
 static void attach(void)
 {
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
 	ev3_attach_uart_sensor(0, 29, NULL);
 	ev3_set_scene(0, &scene);
 }

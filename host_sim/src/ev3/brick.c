@@ -46,9 +46,9 @@ struct in_port {
 };
 
 struct out_port {
-	struct ev3_motor *motor;
-	enum ev3_motor_kind kind;
-	struct ev3_motor_options opt;
+	struct hs_motor *motor;
+	enum hs_motor_kind kind;
+	struct hs_motor_options opt;
 	bool has_motor;
 };
 
@@ -77,7 +77,7 @@ void ev3_set_battery_mv(uint32_t mv)
 	brick.battery_mv = mv;
 	for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
 		if (brick.out[p].motor)
-			ev3_motor_inputs_changed(brick.out[p].motor);
+			hs_motor_inputs_changed(brick.out[p].motor);
 }
 
 /* ---- input pins ---- */
@@ -401,7 +401,7 @@ static void input_plug(struct in_port *p, bool plugged)
 	input_apply_pins(p);
 }
 
-ER ev3_attach_motor(unsigned port, enum ev3_motor_kind kind, const struct ev3_motor_options *opt)
+ER ev3_attach_motor(unsigned port, enum hs_motor_kind kind, const struct hs_motor_options *opt)
 {
 	struct out_port *o;
 
@@ -409,11 +409,11 @@ ER ev3_attach_motor(unsigned port, enum ev3_motor_kind kind, const struct ev3_mo
 		return E_OBJ;
 	if (port >= EV3_OUTPUT_PORTS)
 		return E_ID;
-	if (!ev3_motor_params_of(kind))
+	if (!hs_motor_params_of(kind))
 		return E_PAR;
 	o = &brick.out[port];
-	ev3_motor_destroy(o->motor);
-	o->motor = ev3_motor_create(port, kind, opt);
+	hs_motor_destroy(o->motor);
+	o->motor = hs_motor_create(port, kind, opt);
 	if (!o->motor)
 		return E_NOMEM;
 	o->kind = kind;
@@ -430,14 +430,14 @@ ER ev3_detach_output(unsigned port)
 		return E_OBJ;
 	if (port >= EV3_OUTPUT_PORTS)
 		return E_ID;
-	ev3_motor_destroy(brick.out[port].motor);
+	hs_motor_destroy(brick.out[port].motor);
 	brick.out[port].motor = NULL;
 	brick.out[port].has_motor = false;
 	return E_OK;
 }
 
 /* The motor on an output port, or NULL. */
-struct ev3_motor *ev3_output_motor(unsigned port)
+struct hs_motor *ev3_output_motor(unsigned port)
 {
 	return port < EV3_OUTPUT_PORTS ? brick.out[port].motor : NULL;
 }
@@ -452,7 +452,7 @@ uint32_t ev3_output_pin5_mv(unsigned port)
 	if (hs_gpio_soc_output(ev3_output_pins[port].det_5w, &lvl))
 		pull_high = lvl;
 	if (brick.out[port].motor)
-		return ev3_motor_pin5_mv(brick.out[port].motor, pull_high);
+		return hs_motor_pin5_mv(brick.out[port].motor, pull_high);
 	return pull_high ? 5000U : OUT_OPEN_PIN5_MV;
 }
 
@@ -507,7 +507,7 @@ uint32_t ev3_adc_channel_mv(unsigned ch)
 	if (ch == EV3_ADC_MOTOR_CURRENT || ch == EV3_ADC_BATTERY_CURRENT)
 		for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
 			if (brick.out[p].motor)
-				amps += ev3_motor_current_a(brick.out[p].motor);
+				amps += hs_motor_current_a(brick.out[p].motor);
 	switch (ch) {
 	case EV3_ADC_BATTERY_VOLTAGE:   /* 1:2 divider assumed */
 		return brick.battery_mv / 2U;
@@ -580,23 +580,23 @@ static void fault_apply(const struct ev3_fault *f, bool on)
 	case EV3_FAULT_UNPLUG: input_plug(ip, !on); break;
 	case EV3_FAULT_MOTOR_UNPLUG:
 		if (on) {
-			ev3_motor_destroy(op->motor);
+			hs_motor_destroy(op->motor);
 			op->motor = NULL;
 		} else if (op->has_motor && !op->motor) {
-			op->motor = ev3_motor_create(f->port, op->kind, &op->opt);
+			op->motor = hs_motor_create(f->port, op->kind, &op->opt);
 		}
 		break;
 	case EV3_FAULT_ENCODER_STUCK:
 		if (op->motor)
-			ev3_motor_set_encoder_stuck(op->motor, on);
+			hs_motor_set_encoder_stuck(op->motor, on);
 		break;
 	case EV3_FAULT_ENCODER_NOISE:
 		if (op->motor)
-			ev3_motor_set_encoder_noise(op->motor, v);
+			hs_motor_set_encoder_noise(op->motor, v);
 		break;
 	case EV3_FAULT_MOTOR_STALL:
 		if (op->motor)
-			ev3_motor_set_stalled(op->motor, on);
+			hs_motor_set_stalled(op->motor, on);
 		break;
 	case EV3_FAULT_ADC_NOISE:
 		brick.adc_noise_mv = v;
@@ -713,7 +713,7 @@ static void ports_destroy(void *ctx)
 	for (unsigned p = 0; p < EV3_INPUT_PORTS; p++)
 		input_clear(&brick.in[p]);
 	for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++) {
-		ev3_motor_destroy(brick.out[p].motor);
+		hs_motor_destroy(brick.out[p].motor);
 		brick.out[p].motor = NULL;
 	}
 	while (fault_jobs) {
@@ -727,7 +727,7 @@ static void ports_destroy(void *ctx)
 static const struct hs_device ev3_ports_device = { "EV3_PORTS", ports_create, NULL, ports_destroy };
 
 const struct hs_device *const ev3_board_devices[] = {
-	&ev3_ehrpwm1_device, &ev3_ecap0_device, &ev3_ecap1_device, &ev3_spi0_device,
+	&hs_ehrpwm1_device, &hs_ecap0_device, &hs_ecap1_device, &ev3_spi0_device,
 	&ev3_uart1_device, &ev3_uart0_device, &ev3_suart_in3_device, &ev3_suart_in4_device,
 	&ev3_ports_device, &ev3_ui_device, NULL,
 };

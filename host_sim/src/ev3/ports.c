@@ -17,8 +17,8 @@ const struct ev3_output_pins ev3_output_pins[EV3_OUTPUT_PORTS] = {
 	{ HS_GPIO(5, 3),  HS_GPIO(5, 10), HS_GPIO(6, 9),  HS_GPIO(5, 15), HS_GPIO(2, 8),  14 },
 };
 
-const enum ev3_pwm_source ev3_output_pwm[EV3_OUTPUT_PORTS] = {
-	EV3_PWM_EHRPWM1_B, EV3_PWM_EHRPWM1_A, EV3_PWM_ECAP0, EV3_PWM_ECAP1,
+const enum hs_pwm_output ev3_output_pwm[EV3_OUTPUT_PORTS] = {
+	HS_PWM_EHRPWM1_B, HS_PWM_EHRPWM1_A, HS_PWM_ECAP0, HS_PWM_ECAP1,
 };
 
 /* UART1 runs from the ASYNC3 domain at 132 MHz as LEGO's kernel sets PLL1,

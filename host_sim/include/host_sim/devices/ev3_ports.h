@@ -16,6 +16,7 @@
 #include <stdint.h>
 #include "host_sim/board.h"
 #include "host_sim/gpio.h"
+#include "host_sim/devices/pwm.h"
 
 #define EV3_INPUT_PORTS   4U
 #define EV3_OUTPUT_PORTS  4U
@@ -39,17 +40,10 @@ struct ev3_output_pins {
 	uint8_t adc_pin5;           /* ADC channel of pin 5 */
 };
 
-/* Which PWM drives an output port. */
-enum ev3_pwm_source {
-	EV3_PWM_EHRPWM1_A,
-	EV3_PWM_EHRPWM1_B,
-	EV3_PWM_ECAP0,
-	EV3_PWM_ECAP1,
-};
-
 extern const struct ev3_input_pins ev3_input_pins[EV3_INPUT_PORTS];
 extern const struct ev3_output_pins ev3_output_pins[EV3_OUTPUT_PORTS];
-extern const enum ev3_pwm_source ev3_output_pwm[EV3_OUTPUT_PORTS];
+/* Which PWM output of the AM1808 drives each output port. */
+extern const enum hs_pwm_output ev3_output_pwm[EV3_OUTPUT_PORTS];
 
 /* ADC channels of the brick's own signals (facts §6). */
 #define EV3_ADC_BATTERY_TEMP     2U
