@@ -54,7 +54,6 @@ struct out_port {
 
 static struct {
 	bool ready;
-	uint32_t battery_mv;
 	struct in_port in[EV3_INPUT_PORTS];
 	struct out_port out[EV3_OUTPUT_PORTS];
 	double adc_noise_mv;
@@ -62,19 +61,14 @@ static struct {
 	struct hs_rng fault_rng;
 	struct ev3_fault_record log[MAX_FAULT_LOG];
 	unsigned nlog;
-} brick = { .battery_mv = 9000 };
+} brick;
 
 /* ---- battery ---- */
-
-uint32_t ev3_battery_mv(void)
-{
-	return brick.battery_mv;
-}
 
 /* Sets the battery voltage; the motors pick it up at once. */
 void ev3_set_battery_mv(uint32_t mv)
 {
-	brick.battery_mv = mv;
+	ev3_battery_store(mv);
 	for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
 		if (brick.out[p].motor)
 			hs_motor_inputs_changed(brick.out[p].motor);
@@ -510,7 +504,7 @@ uint32_t ev3_adc_channel_mv(unsigned ch)
 				amps += hs_motor_current_a(brick.out[p].motor);
 	switch (ch) {
 	case EV3_ADC_BATTERY_VOLTAGE:   /* 1:2 divider assumed */
-		return brick.battery_mv / 2U;
+		return ev3_battery_mv() / 2U;
 	case EV3_ADC_MOTOR_CURRENT:     /* 1 V per ampere assumed */
 		return amps > 5.0 ? 5000U : (uint32_t)(amps * 1000.0);
 	case EV3_ADC_BATTERY_CURRENT:   /* brick draw 0.1 A plus the motors */
@@ -687,7 +681,7 @@ static ER ports_create(const struct hs_board_cfg *cfg, void **ctx)
 	static char boot_args[160];
 
 	memset(&brick, 0, sizeof(brick));
-	brick.battery_mv = 9000;
+	ev3_battery_store(EV3_BATTERY_MV_DEFAULT);
 	hs_rng_stream(&brick.adc_rng, "adc.noise");
 	hs_rng_stream(&brick.fault_rng, "faults");
 	for (unsigned p = 0; p < EV3_INPUT_PORTS; p++) {
@@ -724,10 +718,4 @@ static void ports_destroy(void *ctx)
 	brick.ready = false;
 }
 
-static const struct hs_device ev3_ports_device = { "EV3_PORTS", ports_create, NULL, ports_destroy };
-
-const struct hs_device *const ev3_board_devices[] = {
-	&hs_ehrpwm1_device, &hs_ecap0_device, &hs_ecap1_device, &ev3_spi0_device,
-	&ev3_uart1_device, &ev3_uart0_device, &ev3_suart_in3_device, &ev3_suart_in4_device,
-	&ev3_ports_device, &ev3_ui_device, NULL,
-};
+const struct hs_device ev3_ports_device = { "EV3_PORTS", ports_create, NULL, ports_destroy };

@@ -36,8 +36,6 @@ struct ecap {
 	double low;
 };
 
-static struct ecap *ecaps[2];
-
 /* eCAP counter now. */
 static uint32_t ecap_counter(const struct ecap *c)
 {
@@ -170,6 +168,28 @@ static const struct hs_reg ecap_regs[] = {
 	{ .name = "REVID", .offset = ECAP_REVID, .kind = HS_RO, .reset = 0x44D22100 },
 };
 
+/* Low fraction of the APWM output. */
+static double ecap_low_fraction(const void *ctx, unsigned channel)
+{
+	const struct ecap *c = ctx;
+
+	(void)channel;
+	return c->low;
+}
+
+/* APWM frequency in Hz (0 if stopped). */
+static double ecap_frequency(const void *ctx, unsigned channel)
+{
+	const struct ecap *c = ctx;
+
+	(void)channel;
+	if (!c->running)
+		return 0;
+	return (double)PWM_CLOCK_HZ / ((double)hs_reg_get(c->r, CAP1) + 1.0);
+}
+
+static const struct hs_pwm_source_ops ecap_ops = { ecap_low_fraction, ecap_frequency };
+
 /* Creates eCAP n. */
 static ER ecap_create_n(unsigned n, void **ctx)
 {
@@ -186,7 +206,7 @@ static ER ecap_create_n(unsigned n, void **ctx)
 		return E_PAR;
 	}
 	c->low = 1.0;
-	ecaps[n] = c;
+	hs_pwm_output_attach(c->src, &ecap_ops, c, 0);
 	*ctx = c;
 	return E_OK;
 }
@@ -209,27 +229,9 @@ static void ecap_destroy(void *ctx)
 	struct ecap *c = ctx;
 
 	hs_event_cancel(&c->load_ev);
-	for (int i = 0; i < 2; i++)
-		if (ecaps[i] == c)
-			ecaps[i] = NULL;
+	hs_pwm_output_attach(c->src, NULL, NULL, 0);
 	free(c);
 }
 
 const struct hs_device hs_ecap0_device = { "ECAP0", ecap0_create, NULL, ecap_destroy };
 const struct hs_device hs_ecap1_device = { "ECAP1", ecap1_create, NULL, ecap_destroy };
-
-/* Low fraction of eCAP n's output; 1.0 without the module. */
-double hs_ecap_low_fraction(unsigned n)
-{
-	return ecaps[n ? 1 : 0] ? ecaps[n ? 1 : 0]->low : 1.0;
-}
-
-/* APWM frequency of eCAP n in Hz (0 if stopped or absent). */
-double hs_ecap_frequency(unsigned n)
-{
-	const struct ecap *c = ecaps[n ? 1 : 0];
-
-	if (!c || !c->running)
-		return 0;
-	return (double)PWM_CLOCK_HZ / ((double)hs_reg_get(c->r, CAP1) + 1.0);
-}

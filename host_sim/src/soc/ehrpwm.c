@@ -131,8 +131,6 @@ struct ehrpwm {
 	int syscfg_watch;
 };
 
-static struct ehrpwm *ehrpwm1;
-
 /* Time-base clock for TBCTL dividers. */
 static uint64_t tbclk_hz(uint32_t tbctl)
 {
@@ -419,6 +417,29 @@ static const struct hs_reg ehrpwm_regs[] = {
 	{ .name = "PCCTL", .offset = PCCTL, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_unmodelled },
 };
 
+/* Low fraction of output channel (0 = A, 1 = B). */
+static double ehrpwm_low_fraction(const void *ctx, unsigned channel)
+{
+	const struct ehrpwm *e = ctx;
+
+	return e->low[channel ? 1 : 0];
+}
+
+/* PWM frequency in Hz of both outputs (0 if stopped). */
+static double ehrpwm_frequency(const void *ctx, unsigned channel)
+{
+	const struct ehrpwm *e = ctx;
+	uint32_t tbctl;
+
+	(void)channel;
+	if (!e->running)
+		return 0;
+	tbctl = hs_reg_get(e->r, TBCTL);
+	return (double)tbclk_hz(tbctl) / tb_period_cycles(e, tbctl);
+}
+
+static const struct hs_pwm_source_ops ehrpwm_ops = { ehrpwm_low_fraction, ehrpwm_frequency };
+
 /* Creates the EHRPWM1 region and state. */
 static ER ehrpwm_create(const struct hs_board_cfg *cfg, void **ctx)
 {
@@ -435,7 +456,8 @@ static ER ehrpwm_create(const struct hs_board_cfg *cfg, void **ctx)
 	}
 	e->low[0] = e->low[1] = 1.0;    /* outputs low after reset */
 	e->syscfg_watch = hs_syscfg_watch(ehrpwm_syscfg_changed, e);
-	ehrpwm1 = e;
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_A, &ehrpwm_ops, e, 0);
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_B, &ehrpwm_ops, e, 1);
 	*ctx = e;
 	return E_OK;
 }
@@ -447,26 +469,9 @@ static void ehrpwm_destroy(void *ctx)
 
 	hs_event_cancel(&e->load_ev);
 	hs_syscfg_unwatch(e->syscfg_watch);
-	if (ehrpwm1 == e)
-		ehrpwm1 = NULL;
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_A, NULL, NULL, 0);
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_B, NULL, NULL, 0);
 	free(e);
 }
 
 const struct hs_device hs_ehrpwm1_device = { "EHRPWM1", ehrpwm_create, NULL, ehrpwm_destroy };
-
-/* Low fraction of output 0 (A) or 1 (B); 1.0 without the module. */
-double hs_ehrpwm1_low_fraction(unsigned output)
-{
-	return ehrpwm1 ? ehrpwm1->low[output ? 1 : 0] : 1.0;
-}
-
-/* PWM frequency in Hz (0 if stopped or absent). */
-double hs_ehrpwm1_frequency(void)
-{
-	uint32_t tbctl;
-
-	if (!ehrpwm1 || !ehrpwm1->running)
-		return 0;
-	tbctl = hs_reg_get(ehrpwm1->r, TBCTL);
-	return (double)tbclk_hz(tbctl) / tb_period_cycles(ehrpwm1, tbctl);
-}

@@ -1,11 +1,28 @@
 /*
- * pwm_outputs.c — the PWM outputs of eHRPWM1 and eCAP0/1 as one table: what
- * each output drives (the peer the board connects) and its state now.
+ * pwm_outputs.c — the PWM outputs of eHRPWM1 and eCAP0/1 as one table: the
+ * model behind each output (entered by the model) and what it drives (the
+ * peer the board connects).
  */
 #include "host_sim/devices/pwm.h"
 #include "pwm_outputs.h"
 
+static struct {
+	const struct hs_pwm_source_ops *ops;
+	const void *ctx;
+	unsigned channel;
+} sources[HS_PWM_OUTPUTS];
+
 static struct hs_pwm_peer peers[HS_PWM_OUTPUTS];
+
+void hs_pwm_output_attach(enum hs_pwm_output out, const struct hs_pwm_source_ops *ops,
+			  const void *ctx, unsigned channel)
+{
+	if ((unsigned)out >= HS_PWM_OUTPUTS)
+		return;
+	sources[out].ops = ops;
+	sources[out].ctx = ctx;
+	sources[out].channel = channel;
+}
 
 void hs_pwm_connect(enum hs_pwm_output out, const struct hs_pwm_peer *peer)
 {
@@ -20,26 +37,18 @@ void hs_pwm_output_changed(enum hs_pwm_output out)
 		peers[out].changed(peers[out].ctx, out);
 }
 
-/* Low fraction of an output now. */
+/* Low fraction of an output now; 1.0 (held low, as after reset) without its model. */
 double hs_pwm_low_fraction(enum hs_pwm_output out)
 {
-	switch (out) {
-	case HS_PWM_EHRPWM1_A: return hs_ehrpwm1_low_fraction(0);
-	case HS_PWM_EHRPWM1_B: return hs_ehrpwm1_low_fraction(1);
-	case HS_PWM_ECAP0: return hs_ecap_low_fraction(0);
-	case HS_PWM_ECAP1: return hs_ecap_low_fraction(1);
-	default: return 1.0;
-	}
+	if ((unsigned)out >= HS_PWM_OUTPUTS || sources[out].ops == NULL)
+		return 1.0;
+	return sources[out].ops->low_fraction(sources[out].ctx, sources[out].channel);
 }
 
-/* PWM frequency of an output now (0 if stopped). */
+/* PWM frequency of an output now (0 if stopped or without its model). */
 double hs_pwm_frequency(enum hs_pwm_output out)
 {
-	switch (out) {
-	case HS_PWM_EHRPWM1_A:
-	case HS_PWM_EHRPWM1_B: return hs_ehrpwm1_frequency();
-	case HS_PWM_ECAP0: return hs_ecap_frequency(0);
-	case HS_PWM_ECAP1: return hs_ecap_frequency(1);
-	default: return 0;
-	}
+	if ((unsigned)out >= HS_PWM_OUTPUTS || sources[out].ops == NULL)
+		return 0;
+	return sources[out].ops->frequency(sources[out].ctx, sources[out].channel);
 }

@@ -26,10 +26,15 @@
  * UARTs, the ports, the brick buttons and LEDs of ev3_ui.h), NULL-terminated,
  * for hs_board_cfg.devices. */
 extern const struct hs_device *const ev3_board_devices[];
+/* The ports' model (input pins, sensor links, motors, faults), one of them. */
+extern const struct hs_device ev3_ports_device;
 
-/* Battery voltage in mV (default 9000); motors and the ADC follow it. */
+/* Battery voltage in mV (default EV3_BATTERY_MV_DEFAULT); motors and the ADC follow it. */
+#define EV3_BATTERY_MV_DEFAULT	9000U
 uint32_t ev3_battery_mv(void);
 void ev3_set_battery_mv(uint32_t mv);
+/* Records the voltage without telling anyone (the ports model does the telling). */
+void ev3_battery_store(uint32_t mv);
 
 /* ---- input ports (0..3 = ports 1..4) ---- */
 

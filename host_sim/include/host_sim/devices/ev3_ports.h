@@ -17,6 +17,7 @@
 #include "host_sim/board.h"
 #include "host_sim/gpio.h"
 #include "host_sim/devices/pwm.h"
+#include "host_sim/devices/uart16550.h"
 
 #define EV3_INPUT_PORTS   4U
 #define EV3_OUTPUT_PORTS  4U
@@ -51,16 +52,18 @@ extern const enum hs_pwm_output ev3_output_pwm[EV3_OUTPUT_PORTS];
 #define EV3_ADC_BATTERY_CURRENT  3U
 #define EV3_ADC_BATTERY_VOLTAGE  4U
 
-/* The UART behind each input port: register base, AINTC line, module clock. */
-struct ev3_port_uart {
-	const char *name;           /* region name */
-	uintptr_t base;
-	unsigned intno;
-	uint32_t clock_hz;          /* module clock: baud = clock / (16 or 13 * divisor) */
-	bool stand_in;              /* true: not a real AM1808 UART (PRU soft UART stand-in) */
-};
+/* The UART behind each input port: register base, AINTC line, module clock
+ * (ports 3 and 4: stand-ins for the PRU soft UARTs, see below). */
+extern const struct hs_uart_cfg ev3_port_uart[EV3_INPUT_PORTS];
 
-extern const struct ev3_port_uart ev3_port_uart[EV3_INPUT_PORTS];
+/* The board devices creating them (port 1: UART1, port 2: UART0, ports 3/4: stand-ins). */
+extern const struct hs_device ev3_uart1_device;
+extern const struct hs_device ev3_uart0_device;
+extern const struct hs_device ev3_suart_in3_device;
+extern const struct hs_device ev3_suart_in4_device;
+
+/* The UART behind input port (0..3), or NULL if its device is not on the board. */
+struct ev3_uart *ev3_uart_of_port(unsigned port);
 
 /* Stand-in UARTs for the PRU soft UARTs of ports 3 and 4 (reserved range
  * after the McBSP FIFO registers in the AM1808 memory map). */
