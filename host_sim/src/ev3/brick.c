@@ -15,7 +15,7 @@
 #include "rtos_host.h"
 #include "host_sim/clock.h"
 #include "host_sim/gpio.h"
-#include "host_sim/scenario.h"
+#include "host_sim/rng.h"
 #include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/pwm.h"
 #include "host_sim/devices/spi_adc.h"

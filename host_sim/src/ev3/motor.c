@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include "host_sim/clock.h"
 #include "host_sim/gpio.h"
-#include "host_sim/scenario.h"
+#include "host_sim/rng.h"
 #include "host_sim/trace.h"
 #include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/ev3_motor.h"

@@ -17,7 +17,7 @@
 #include <string.h>
 #include "rtos_host.h"
 #include "host_sim/clock.h"
-#include "host_sim/scenario.h"
+#include "host_sim/rng.h"
 #include "host_sim/devices/uart_sensor.h"
 
 #define TXQ_FRAMES 64U
