@@ -1,4 +1,4 @@
-# The AM1808 target (issue 8): libev3lx.a built with arm-none-eabi-gcc for the
+# The AM1808 target: libev3lx.a built with arm-none-eabi-gcc for the
 # ARM926EJ-S, a link-check firmware image against the HRP2 service calls, a
 # U-Boot uImage, and a size report.  Components append target sources to
 # AM1808_SRCS (host-only code stays out).

@@ -482,7 +482,7 @@ static const uint8_t *adc_sources(void)
 	return source;
 }
 
-/* Voltage of an ADC channel (facts §6 channel map). */
+/* Voltage of an ADC channel (LEGO's d_analog.c channel map). */
 uint32_t ev3_adc_channel_mv(unsigned ch)
 {
 	double amps = 0;

@@ -4,13 +4,13 @@
  *
  * Parameters (docs/host-sim-devices.md has the discussion):
  *   no-load speed: ev3dev's maximum speeds, 1050 deg/s large and 1560 deg/s
- *     medium (facts §4), taken as the no-load speed at 9 V;
+ *     medium (ev3dev's ev3_motor_defs.c), taken as the no-load speed at 9 V;
  *   stall torque: 0.40 N m large, 0.12 N m medium (Philo Hurbain's motor
  *     comparison, philohome.com, measured at 9 V; rounded);
  *   mechanical time constants 40 ms / 20 ms and dry friction 4 % / 12 % of
  *     stall torque: estimates, consistent with LEGO's minimum duty offsets
- *     (0.95|p| + 500 large, 0.8|p| + 2000 medium, facts §4);
- *   pin 5 ID: pybricks' 10-bit readings (facts §4): large 0.16 / 4.48 V,
+ *     (0.95|p| + 500 large, 0.8|p| + 2000 medium, LEGO's d_pwm.c);
+ *   pin 5 ID: pybricks' 10-bit readings (device.c): large 0.16 / 4.48 V,
  *     medium 0.36 / 4.21 V with the encoder low / high.
  */
 #include <math.h>
@@ -148,7 +148,7 @@ static double seg_theta(const struct hs_motor *m, uint64_t t)
 }
 
 /* Quadrature (INT, DIR) for half-count index h: 00, 10, 11, 01 going forward
- * (facts §4: forward when INT equals the inverted DIR just after an INT edge). */
+ * (LEGO's d_pwm.c: forward when INT equals the inverted DIR just after an INT edge). */
 static void quad_levels(int64_t h, bool *int_lvl, bool *dir_lvl)
 {
 	unsigned q = (unsigned)(h & 3);

@@ -283,7 +283,7 @@ static ER spi_create(const struct hs_board_cfg *cfg, void **ctx)
 	for (unsigned i = 0; i < 4U; i++)
 		s->fmt[i] = hs_reg_value_ptr(s->r, SPIFMT0 + 4U * i);
 	s->rx = BUF_RXEMPTY;
-	/* Linux leaves SPI0 out of reset (EV3RT had to do it itself: facts §2) */
+	/* Linux leaves SPI0 out of reset (EV3RT's driver had to take it out itself) */
 	if (!cfg || !cfg->cold_reset)
 		hs_reg_set(s->r, SPIGCR0, 1);
 	spi = s;

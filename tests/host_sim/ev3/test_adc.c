@@ -1,7 +1,7 @@
 /*
  * test_adc.c — SPI0 transfers in virtual time and the EV3's ADC answering
  * two frames late with the voltage each port pin has: identification
- * voltages of motors and analog devices as the facts' detection rules
+ * voltages of motors and analog devices as LEGO's d_analog.c detection rules
  * expect them, all read the way d_analog reads them (SPIDAT0/SPIBUF polls).
  */
 #include "devtest.h"

@@ -1,7 +1,7 @@
 /*
  * test_motor.c — EV3 motors through the registers a driver writes: speed
  * against duty and direction (eHRPWM1 and eCAP), brake against coast, the
- * tacho edges counted with the facts' direction rule against the shaft
+ * tacho edges counted with LEGO's d_pwm.c direction rule against the shaft
  * angle both ways, the sleep when nothing moves, and the stall/encoder
  * faults.
  */
@@ -62,7 +62,7 @@ int main(void)
 	hs_gpio_watch(tacho.int_pin, int_watch, NULL);
 	hs_gpio_watch(tacho.dir_pin, dir_watch, NULL);
 
-	/* speed against duty, forward (facts §3: DIR0 high, DIR1 floating) */
+	/* speed against duty, forward (LEGO's d_pwm.c: DIR0 high, DIR1 floating) */
 	s25 = speed_after(0, 1, 2500, 500 * MS);
 	s50 = speed_after(0, 1, 5000, 500 * MS);
 	s75 = speed_after(0, 1, 7500, 500 * MS);

@@ -54,7 +54,7 @@ enum hbridge_input {
 };
 
 /* The bridge's time split for inputs in0 (DIR0, pin 1) and in1 (DIR1, pin 2)
- * with the PWM signal low for pwm_low of each period (facts §3: forward =
+ * with the PWM signal low for pwm_low of each period (LEGO's d_pwm.c: forward =
  * DIR0 high + DIR1 floating, reverse = the mirror, brake = both high,
  * coast = both low). */
 struct hbridge_drive hbridge_resolve(enum hbridge_input in0, enum hbridge_input in1, double pwm_low);

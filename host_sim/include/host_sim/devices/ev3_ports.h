@@ -1,6 +1,6 @@
 /*
  * ev3_ports.h — how the EV3's input ports 1-4 and output ports A-D are wired
- * to the AM1808 (EP2 board, facts §3 and §6): GPIO pins, PWM sources, ADC
+ * to the AM1808 (EP2 board, the pin tables of LEGO's d_pwm.c and d_analog.c): GPIO pins, PWM sources, ADC
  * channels, and the UART behind each input port.  Host only; the tables
  * are data the device models and the tests share.
  *
@@ -22,7 +22,7 @@
 #define EV3_INPUT_PORTS   4U
 #define EV3_OUTPUT_PORTS  4U
 
-/* GPIOs of an input port (facts §3, EP2). */
+/* GPIOs of an input port (LEGO's d_pwm.c/d_analog.c pin tables, EP2). */
 struct ev3_input_pins {
 	unsigned pin1_9v;           /* pin 1: switches 9 V for NXT sensors (brick output) */
 	unsigned pin2;              /* LEGDET: NXT device detect (input) */
@@ -46,7 +46,7 @@ extern const struct ev3_output_pins ev3_output_pins[EV3_OUTPUT_PORTS];
 /* Which PWM output of the AM1808 drives each output port. */
 extern const enum hs_pwm_output ev3_output_pwm[EV3_OUTPUT_PORTS];
 
-/* ADC channels of the brick's own signals (facts §6). */
+/* ADC channels of the brick's own signals (LEGO's d_analog.c). */
 #define EV3_ADC_BATTERY_TEMP     2U
 #define EV3_ADC_MOTOR_CURRENT    15U
 #define EV3_ADC_BATTERY_CURRENT  3U

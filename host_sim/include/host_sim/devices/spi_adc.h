@@ -1,6 +1,6 @@
 /*
  * spi_adc.h — SPI0 of the AM1808 with the EV3's analog-to-digital converter
- * on it (facts §2, §6).  Host only.
+ * on it (AM1808 TRM; LEGO's d_analog.c).  Host only.
  *
  * SPI0 (0x01C41000): SPIGCR0/1, SPIINT0, SPILVL, SPIFLG, SPIPC0-5,
  * SPIDAT0/1, SPIBUF (RXEMPTY bit 31, RXOVR 30, TXFULL 29), SPIEMU,

@@ -6,7 +6,7 @@
  * port 1, UART0 behind port 2 and two stand-ins for the PRU soft UARTs of
  * ports 3 and 4, ev3_ports.h: ev3_port_uart).  Host only.
  *
- * Registers are 32-bit words (facts §2): RBR/THR 0x00, IER 0x04, IIR/FCR
+ * Registers are 32-bit words (AM1808 TRM): RBR/THR 0x00, IER 0x04, IIR/FCR
  * 0x08, LCR 0x0C, MCR 0x10, LSR 0x14, MSR 0x18, SCR 0x1C, DLL 0x20, DLH
  * 0x24, REVID1/2 0x28/0x2C, PWREMU_MGMT 0x30, MDR 0x34; byte accesses are
  * accepted too.  DLL/DLH also appear at 0x00/0x04 while LCR.DLAB is set.
