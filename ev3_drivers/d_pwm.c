@@ -127,8 +127,8 @@
 #define PROGRAM_STOP_BRAKE_MS 100
 #define RAMP_FLOOR_SPEED   5       /* a ramp never asks for less, or a step ramp would stall */
 #define RAMP_FLOOR_POWER   10
-#define APPROACH_COUNTS_MIN 15     /* a step slows down over its last 15 counts or more, */
-#define APPROACH_COUNTS_MAX 60     /* 3/4 count per unit of speed (30 at speed 40), */
+#define APPROACH_COUNTS_MIN 15     /* a step slows down over its last counts: 3/4 per unit */
+#define APPROACH_COUNTS_MAX 60     /* of speed (30 at speed 40), at least 15, at most 60, */
 #define APPROACH_SPEED     3       /* and arrives at this speed, slow enough not to overshoot */
 #define APPROACH_MS        100     /* a braking time command slows down over its last 100 ms */
 #define PID_SCALE          100     /* fixed point of the PID accumulators */
@@ -361,10 +361,13 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 	spin_lock(&pwm_lock);
 	/*
 	 * Above speed 35 the DIR pin may have moved on by the time it is read, so
-	 * the last direction is kept - but only while this edge came quickly too:
-	 * the averaged speed lags a fast reversal, the edge interval does not.
+	 * the last direction is kept - but only while the port drives that way
+	 * (braking or reversing, the shaft may turn back right after an edge and
+	 * cross it again quickly) and this edge came quickly too: the averaged
+	 * speed lags a fast reversal, the edge interval does not.
 	 */
-	if (p->last_dir && abs(p->speed) > FAST_SPEED && p->stamp_valid &&
+	if (p->last_dir && p->power * p->last_dir > 0 && abs(p->speed) > FAST_SPEED &&
+	    p->stamp_valid &&
 	    ((stamp - p->stamps[(p->stamp_head + STAMP_RING - 1) % STAMP_RING]) & STAMP_MASK) *
 	    FAST_SPEED < counts_per_pulse(p))
 		dir = p->last_dir;
@@ -483,9 +486,10 @@ static s32 pid_step(struct pwm_port *p, s32 target)
 /*
  * Holds hold_pos with LEGO's proportional term (the windings shorted when the
  * shaft is on it).  A free shaft settles within a count or two of the point,
- * so an integral only winds up while a load keeps it further off and still;
- * once the load lets go, it unwinds as soon as the shaft is pushed past the
- * point.  Without a load nothing integrates and the shaft stays where the
+ * so an integral only starts when a load keeps the shaft further off (and
+ * still); from then on it integrates the whole displacement, bringing the
+ * loaded shaft back to the point and unwinding when the load lets go.
+ * Without a load nothing integrates and the shaft stays where the
  * proportional term left it.
  */
 static void brake_hold(struct pwm_port *p)
@@ -493,13 +497,8 @@ static void brake_hold(struct pwm_port *p)
 	s32 err = p->position - p->hold_pos;
 	s32 power;
 
-	if (abs(p->speed) <= HOLD_I_SPEED) {
-		if (err > HOLD_LOAD_COUNTS || err < -HOLD_LOAD_COUNTS)
-			p->hold_i += err > 0 ? err - HOLD_LOAD_COUNTS : err + HOLD_LOAD_COUNTS;
-		else if ((err < 0 && p->hold_i > 0) || (err > 0 && p->hold_i < 0))
-			p->hold_i += err;
-		p->hold_i = clamp(p->hold_i, -HOLD_I_MAX, HOLD_I_MAX);
-	}
+	if (abs(p->speed) <= HOLD_I_SPEED && (p->hold_i || abs(err) > HOLD_LOAD_COUNTS))
+		p->hold_i = clamp(p->hold_i + err, -HOLD_I_MAX, HOLD_I_MAX);
 	power = clamp(-BRAKE_HOLD_GAIN * err - HOLD_I_GAIN * p->hold_i, -POWER_MAX, POWER_MAX);
 	p->power = 0;
 	if (power == 0)
@@ -551,15 +550,18 @@ static u32 approach_span(const struct pwm_profile *pr)
 /*
  * Target (signed) of a limited command at a progress, or false when it is
  * done: the ramp up from the speed (power) the command found, the constant
- * phase, the ramp down, and the approach to the end.
+ * phase, the ramp down, and the approach to the end (*approaching set):
+ * the speed falls in proportion to what is left, to APPROACH_SPEED.
  */
-static bool profile_target(const struct pwm_profile *pr, u32 progress, s32 *target)
+static bool profile_target(const struct pwm_profile *pr, u32 progress, s32 *target,
+			   bool *approaching)
 {
 	u32 peak = abs(pr->peak), mag = peak;
 	u32 total = pr->up + pr->flat + pr->down;
 	u32 floor = min_t(u32, mag, pr->regulated ? RAMP_FLOOR_SPEED : RAMP_FLOOR_POWER);
 	u32 near = approach_span(pr), left;
 
+	*approaching = false;
 	if (total == 0) {
 		*target = pr->peak;
 		return true;
@@ -571,10 +573,25 @@ static bool profile_target(const struct pwm_profile *pr, u32 progress, s32 *targ
 		mag = max(scale_fraction(mag, min(progress + pr->ramp_in, pr->up), pr->up), floor);
 	else if (progress >= pr->up + pr->flat)
 		mag = max(scale_fraction(mag, left, pr->down), floor);
-	if (left < near && mag > APPROACH_SPEED)
-		mag = min_t(u32, mag, APPROACH_SPEED + scale_fraction(peak - APPROACH_SPEED, left, near));
+	*approaching = left < near && mag > APPROACH_SPEED;
+	if (*approaching)
+		mag = min_t(u32, mag, max_t(u32, scale_fraction(peak, left, near), APPROACH_SPEED));
 	*target = pr->peak < 0 ? -(s32)mag : (s32)mag;
 	return true;
+}
+
+/*
+ * Approaching the end, each step down of the target cuts the regulator's
+ * power in proportion at once (the power a speed needs is about proportional
+ * to it): the incremental PID alone would take tens of ms to let go, and
+ * the motor would run past the end.
+ */
+static void approach_cut(struct pwm_port *p, s32 target)
+{
+	s32 was = abs(p->setpoint);
+
+	if (target * p->setpoint > 0 && abs(target) < was)
+		p->pid_power = p->pid_power / was * abs(target);
 }
 
 /* Ends a port's command: hold at hold_pos or coast, and clear its busy bits. */
@@ -602,14 +619,17 @@ static void limited_tick(struct pwm_port *p, int port, ktime_t now)
 {
 	struct pwm_profile *pr = &p->profile;
 	s32 target, end;
+	bool approaching;
 
-	if (!profile_target(pr, profile_progress(pr, p, now), &target)) {
+	if (!profile_target(pr, profile_progress(pr, p, now), &target, &approaching)) {
 		end = pr->origin + (pr->peak < 0 ? -(s32)(pr->up + pr->flat + pr->down)
 						 : (s32)(pr->up + pr->flat + pr->down));
 		/* A step command holds exactly its end position, not where momentum took it. */
 		port_finish(p, port, pr->brake, pr->by_time ? p->position : end);
 		return;
 	}
+	if (approaching)
+		approach_cut(p, target);
 	p->setpoint = target;
 	if (pr->regulated && p->tacho)
 		port_drive_power(p, pid_step(p, target), true);
@@ -636,9 +656,9 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 	struct pwm_port *s = &ports[m->partner];
 	struct pwm_profile *pr = &m->profile;
 	s32 target, end, err, lag, slave_target, master_target;
-	bool brake = pr->brake;
+	bool brake = pr->brake, approaching;
 
-	if (!profile_target(pr, profile_progress(pr, m, now), &target)) {
+	if (!profile_target(pr, profile_progress(pr, m, now), &target, &approaching)) {
 		/* A step pair holds its end positions, a timed one where time ran out. */
 		if (pr->by_time) {
 			port_finish(s, m->partner, brake, s->position);
@@ -662,6 +682,10 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 		s32 slow = (lag - SYNC_LAG_FREE) * SYNC_LAG_SLOWDOWN;
 
 		master_target = target > 0 ? max(target - slow, 0) : min(target + slow, 0);
+	}
+	if (approaching) {
+		approach_cut(m, master_target);
+		approach_cut(s, slave_target);
 	}
 	port_drive_power(m, pid_step(m, master_target), true);
 	m->setpoint = master_target;
