@@ -2,6 +2,8 @@
 # nothing here goes into the AM1808 target library).
 #   include/host_sim/          core API: regs, board, gpio, intc, psc, syscfg, clock, trace, scenario
 #   include/host_sim/devices/  device models (eHRPWM/eCAP, SPI0 + ADC, UARTs, motors, sensors)
-#   src/                       core: register space, trapping, AINTC, GPIO, PSC, SYSCFG, TIMER64P3, traces
-#   src/devices/               device models
-HOST_SRCS += $(sort $(wildcard host_sim/src/*.c) $(wildcard host_sim/src/devices/*.c))
+#   src/core/                  the simulator: register space, trapping, virtual clock, traces, scenarios
+#   src/soc/                   the AM1808's peripherals (AINTC, GPIO, PSC, SYSCFG, PLLC, eHRPWM/eCAP, SPI0, UARTs)
+#   src/ev3/                   the EV3 board (ports, motors, sensors, LUMP, buttons/LEDs, ADC front end)
+#   src/bench/                 the full-brick speed run
+HOST_SRCS += $(sort $(foreach d,core soc ev3 bench,$(wildcard host_sim/src/$(d)/*.c)))

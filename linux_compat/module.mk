@@ -1,12 +1,13 @@
 # linux_compat: the Linux kernel API over rtos_stub.
-#   include/linux, include/asm, include/asm-generic, include/mach   headers at Linux paths
+#   include/linux, include/asm, include/asm-generic   headers at Linux paths
 #   include/linux_compat/   linux_compat's own interfaces (context, config, report)
 #   src/*.c                 both targets;  src/host/*.c, src/am1808/*.c   one target only
-HOST_SRCS   += $(sort $(wildcard linux_compat/src/*.c linux_compat/src/host/*.c))
-AM1808_SRCS += $(sort $(wildcard linux_compat/src/*.c linux_compat/src/am1808/*.c))
+#   mach-davinci/           the DaVinci (AM1808) machine: include/mach/, GPIO banks, IRQ lines
+HOST_SRCS   += $(sort $(wildcard linux_compat/src/*.c linux_compat/src/host/*.c linux_compat/mach-davinci/*.c))
+AM1808_SRCS += $(sort $(wildcard linux_compat/src/*.c linux_compat/src/am1808/*.c linux_compat/mach-davinci/*.c))
 
 # Every linux_compat header must compile on its own (host and AM1808).
-LX_HEADERS := $(sort $(shell find linux_compat/include -name '*.h' 2>/dev/null))
+LX_HEADERS := $(sort $(shell find linux_compat/include linux_compat/mach-davinci/include -name '*.h' 2>/dev/null))
 LX_HDRCHECK_host   := $(patsubst %.h,$(BUILD)/host/hdrcheck/%.o,$(LX_HEADERS))
 LX_HDRCHECK_am1808 := $(patsubst %.h,$(BUILD)/am1808/hdrcheck/%.o,$(LX_HEADERS))
 

@@ -16,7 +16,7 @@ LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks test
 COMMON_INC := -Irtos_stub/include -Ihost_sim/include -Iapi -Itests -Iev3_drivers -Ihacks
 # Linux code is held to kbuild W=1: -Wextra without -Wmissing-field-initializers
 # (LEGO fills struct miscdevice positionally: { minor, name, fops }).
-LINUX_INC  := -D__KERNEL__ -Wno-missing-field-initializers -Ilinux_compat/include
+LINUX_INC  := -D__KERNEL__ -Wno-missing-field-initializers -Ilinux_compat/include -Ilinux_compat/mach-davinci/include
 
 # Build-time kernel settings (TIC_NUME/TIC_DENO: tick length in ms).
 TIC_NUME ?= 1

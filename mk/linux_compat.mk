@@ -8,7 +8,8 @@
 #   builds unchanged as an out-of-tree module against Debian's 6.1
 #   linux-headers with W=1 and sparse (C=2), without a warning (as kbuild-check).
 
-LXH_HEADERS  := $(patsubst linux_compat/include/%,%,$(sort $(shell find linux_compat/include -name '*.h' 2>/dev/null)))
+LXH_DIRS     := linux_compat/include linux_compat/mach-davinci/include
+LXH_HEADERS  := $(sort $(foreach d,$(LXH_DIRS),$(patsubst $(d)/%,%,$(shell find $(d) -name '*.h' 2>/dev/null))))
 LXH_OUT      := $(BUILD)/linux-headers-check
 LXH_OBJS     := $(foreach h,$(LXH_HEADERS),$(LXH_OUT)/host/$(h:.h=.o) $(LXH_OUT)/am1808/$(h:.h=.o))
 
@@ -16,13 +17,14 @@ $(LXH_OUT)/src/%.c:
 	@mkdir -p $(@D)
 	@printf '#include <%s>\n#include <%s>\n' '$*.h' '$*.h' > $@
 
-$(LXH_OUT)/host/%.o: $(LXH_OUT)/src/%.c linux_compat/include/%.h
+$(LXH_OUT)/host/%.o: $(LXH_OUT)/src/%.c
 	@mkdir -p $(@D)
-	@$(CC_host) -std=gnu11 $(LINUX_INC) $(COMMON_INC) $(WARN) $(CFLAGS_host) $(KERNEL_DEFS) -c $< -o $@
+	@$(CC_host) -std=gnu11 $(LINUX_INC) $(COMMON_INC) $(WARN) $(CFLAGS_host) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
 
-$(LXH_OUT)/am1808/%.o: $(LXH_OUT)/src/%.c linux_compat/include/%.h
+$(LXH_OUT)/am1808/%.o: $(LXH_OUT)/src/%.c
 	@mkdir -p $(@D)
-	@$(CC_am1808) -std=gnu11 $(LINUX_INC) $(COMMON_INC) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -c $< -o $@
+	@$(CC_am1808) -std=gnu11 $(LINUX_INC) $(COMMON_INC) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
+-include $(LXH_OBJS:.o=.d)
 
 .PRECIOUS: $(LXH_OUT)/src/%.c
 .PHONY: linux-headers-check

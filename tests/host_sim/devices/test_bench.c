@@ -5,7 +5,7 @@
  * loose floor, since sanitizers and qemu are slow).
  */
 #include "tap.h"
-#include "host_sim/devices/ev3_bench.h"
+#include "host_sim/bench.h"
 
 int main(void)
 {

@@ -11,7 +11,7 @@
 #include "host_sim/clock.h"
 #include "host_sim/psc.h"
 #include "host_sim/scenario.h"
-#include "host_sim/devices/ev3_bench.h"
+#include "host_sim/bench.h"
 #include "host_sim/devices/ev3_brick.h"
 
 static const struct rtos_cfg bench_cfg = { .name = "ev3_bench" };

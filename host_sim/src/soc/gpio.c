@@ -28,7 +28,7 @@
 #include "host_sim/regs.h"
 #include "host_sim/syscfg.h"
 #include "host_sim/trace.h"
-#include "core_parts.h"
+#include "../core/core_parts.h"
 
 #define GPIO_PAIRS        5U
 #define GPIO_BINTEN       0x08U

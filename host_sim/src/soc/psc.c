@@ -13,7 +13,7 @@
 #include "host_sim/board.h"
 #include "host_sim/psc.h"
 #include "host_sim/regs.h"
-#include "core_parts.h"
+#include "../core/core_parts.h"
 
 #define PSC_NMOD       32U
 #define PSC_PTCMD      0x120U
