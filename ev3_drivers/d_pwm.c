@@ -13,6 +13,30 @@
  * GPIOs per port; a quadrature-like tacho (an interrupt pin counted on both
  * edges plus a direction pin); edge times stamped from TIMER64P3.
  *
+ * What applications see behaves as LEGO's driver does (measured on the same
+ * byte streams and motors):
+ *  - A command re-issued while running (a control loop sending STEP_SYNC,
+ *    SPEED, POWER, STEP_/TIME_SPEED every few ms) changes the target and
+ *    nothing else: the regulator keeps its accumulated power, a ramp resumes
+ *    where the port runs, the same sync pair runs on (its slave keeping its
+ *    lag, even when the turn changes sign), so the motors run at the speed a
+ *    single command gives.  A command naming one motor of a pair floats both.
+ *  - A step command slows down over its last counts (3/4 of a count per unit
+ *    of speed, 15..60) to speed 3 and stops on its end without overshoot,
+ *    then holds it if braking (a 90-count step at speed 30 is busy ~630 ms);
+ *    a braking time command slows down over its last 100 ms (<= 3 degrees
+ *    past where time runs out).
+ *  - MOTORDATA TachoCounts counts from the start of the current command: 0
+ *    while unlimited, back to 0 when a limited command ends (its busy bits
+ *    clear) and from the stop after OUTPUT_STOP; TachoSensor is cumulative
+ *    (cleared by CLR_COUNT and SET_TYPE only).
+ *  - OUTPUT_STOP with brake holds the stop position with LEGO's proportional
+ *    term: settled within 250 ms, a count or so back from the overshoot, and
+ *    it stays put; only a load displacing the shaft by more than 3 counts
+ *    starts an integral that brings it back.
+ *  - MOTORDATA Speed is the measured speed, except after OUTPUT_STOP: the
+ *    commanded 0 from the next 2 ms tick until the port is driven again.
+ *
  * Concurrency: one spinlock guards all port state.  The tacho interrupt and
  * the 2 ms control hrtimer run with interrupts off and take it plainly;
  * write() takes it with interrupts saved, for a few dozen instructions.
