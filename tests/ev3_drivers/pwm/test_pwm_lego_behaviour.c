@@ -12,7 +12,9 @@
  *     (0 while unlimited, 0 again when a step ends, from the stop after a
  *     STOP); TachoSensor is cumulative;
  *  4. a brake hold settles within 250 ms and then stays put;
- *  5. MOTORDATA Speed is the commanded 0 from the first sample after STOP.
+ *  5. MOTORDATA Speed is the commanded 0 from the first sample after STOP;
+ *  6. and what already matched stays: regulated speed within 2 %, POWER 30
+ *     at 323 deg/s, reversal, polarity, CLR_COUNT, TIME_SPEED's end time.
  */
 #define PWM_TEST_LIMIT_NS (400ULL * 1000 * 1000 * 1000)
 #include "pwm_test.h"
@@ -312,6 +314,46 @@ static void test_speed_after_stop(int brake)
 	rest();
 }
 
+/* Mean speed (deg/s) of A over its second second at an unlimited command. */
+static double unlimited_dps(uint8_t op, int value)
+{
+	double dps[2];
+
+	pwm_cmd_value(op, 1U << PORT_A, value);
+	pwm_cmd(LMS_PWM_OUTPUT_START, 1U << PORT_A);
+	speeds_while(NULL, SAMPLE_MS, 1000, dps);
+	speeds_while(NULL, SAMPLE_MS, 1000, dps);
+	return dps[0];
+}
+
+/* 6. What matched LEGO's driver before stays as it was. */
+static void test_unchanged(void)
+{
+	double dps, took;
+
+	dps = unlimited_dps(LMS_PWM_OUTPUT_SPEED, 50);
+	ok(near(dps, PWM_LARGE_DPS(50), 0.02), "SPEED 50 regulated to %.0f deg/s (%.0f +-2%%)", dps,
+	   PWM_LARGE_DPS(50));
+	dps = unlimited_dps(LMS_PWM_OUTPUT_SPEED, -50);
+	ok(near(dps, -PWM_LARGE_DPS(50), 0.02), "reversed without a stop: %.0f deg/s", dps);
+	rest();
+	dps = unlimited_dps(LMS_PWM_OUTPUT_POWER, 30);
+	ok(near(dps, 323, 0.02), "POWER 30 runs at %.0f deg/s (323 +-2%%)", dps);
+	rest();
+	pwm_cmd_value(LMS_PWM_OUTPUT_POLARITY, 1U << PORT_A, -1);
+	dps = unlimited_dps(LMS_PWM_OUTPUT_SPEED, 40);
+	pwm_cmd_value(LMS_PWM_OUTPUT_POLARITY, 1U << PORT_A, 1);
+	ok(near(dps, -PWM_LARGE_DPS(40), 0.02), "polarity -1: SPEED 40 runs at %.0f deg/s", dps);
+	rest();
+	pwm_cmd(LMS_PWM_OUTPUT_CLR_COUNT, 1U << PORT_A);
+	dly_tsk(SAMPLE_MS);
+	ok(motor_data_of(PORT_A).tacho_sensor == 0, "CLR_COUNT: TachoSensor 0");
+	pwm_cmd_step(LMS_PWM_OUTPUT_TIME_SPEED, 1U << PORT_A, 40, 0, 500, 0, 0);
+	took = wait_idle(1U << PORT_A, 2000);
+	ok(fabs(took - 500) <= 5, "TIME_SPEED 500 ms: busy %.0f ms (+-1%%)", took);
+	rest();
+}
+
 static void body(void)
 {
 	ok(pwm_set_types(LMS_PWM_TYPE_TACHO, LMS_PWM_TYPE_TACHO, LMS_PWM_TYPE_TACHO,
@@ -322,6 +364,7 @@ static void body(void)
 	test_brake_hold();
 	test_speed_after_stop(1);
 	test_speed_after_stop(0);
+	test_unchanged();
 }
 
 int main(void)
@@ -329,7 +372,7 @@ int main(void)
 	const int motors[4] = { EV3_MOTOR_LARGE, EV3_MOTOR_LARGE, PWM_TEST_NO_MOTOR,
 				PWM_TEST_NO_MOTOR };
 
-	tap_plan(43);
+	tap_plan(49);
 	ok(pwm_test_run(body, motors), "test body ran to its end");
 	return tap_done();
 }
