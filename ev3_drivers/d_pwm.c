@@ -239,7 +239,7 @@ struct pwm_port {
 	s32 setpoint;         /* speed (or user power) the control loop last asked for */
 
 	s32 hold_pos;         /* BRAKED: position to hold */
-	s32 hold_i;           /* BRAKED: integral of the displacement beyond the dead band */
+	s32 hold_i;           /* BRAKED: integral of the displacement, once a load showed */
 	ktime_t brake_until;  /* BRAKE_TIMED */
 
 	s32 power;            /* applied power, -POWER_MAX..POWER_MAX */
@@ -256,7 +256,7 @@ struct pwm_port {
 
 	/* derived in the control tick */
 	s8 speed;
-	bool stopped;         /* since OUTPUT_STOP: MOTORDATA shows the commanded speed 0 */
+	bool stopped;         /* OUTPUT_STOP until driven again: MOTORDATA shows speed 0 */
 	s32 command_origin;   /* TachoCounts reference */
 	s32 sensor_origin;    /* TachoSensor reference */
 
