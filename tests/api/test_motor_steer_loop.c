@@ -4,7 +4,8 @@
  * The robot (two large motors, each carrying half of a 0.6 kg chassis on
  * 56 mm wheels) must move forward as fast as after a single call with the
  * same arguments, straight and in a curve, and keep moving when the loop
- * steers a little left and right in turn, as a line follower does.
+ * steers a little left and right in turn, as a line follower does; the same
+ * for ev3_motor_set_power on each wheel from the loop.
  */
 #include <math.h>
 #include "api_test.h"
@@ -36,6 +37,8 @@ static double wheel_deg(unsigned port)
 	return ev3_motor_angle_deg(ev3_output_motor(port));
 }
 
+static bool by_power;   /* drive with ev3_motor_set_power per wheel instead of steering */
+
 /* Wheel speeds (deg/s) over ms, steering every LOOP_MS if loop, else once before. */
 static void drive(bool loop, int speed, int turn, bool wiggle, unsigned ms, double dps[2])
 {
@@ -44,8 +47,12 @@ static void drive(bool loop, int speed, int turn, bool wiggle, unsigned ms, doub
 	unsigned n = 0;
 
 	while (at_now_ms() - t0 < ms) {
-		if (loop || n == 0)
+		if ((loop || n == 0) && by_power) {
+			ev3_motor_set_power(LEFT, speed);
+			ev3_motor_set_power(RIGHT, speed);
+		} else if (loop || n == 0) {
 			ev3_motor_steer(LEFT, RIGHT, speed, wiggle && (n & 1) ? -turn : turn);
+		}
 		n++;
 		dly_tsk(LOOP_MS);
 	}
@@ -100,11 +107,19 @@ static void body(void)
 	ok(forward_mm_s(wiggle) >= 0.9 * forward_mm_s(once),
 	   "steering 10 left and right in turn every 4 ms: %.0f mm/s forward (>= 90%% of %.0f)",
 	   forward_mm_s(wiggle), forward_mm_s(once));
+
+	by_power = true;
+	run(false, 40, 0, false, once);
+	run(true, 40, 0, false, loop);
+	ok(forward_mm_s(once) > 150 &&
+	   fabs(forward_mm_s(loop) - forward_mm_s(once)) <= 0.03 * forward_mm_s(once),
+	   "set_power 40 on both wheels every 4 ms: %.0f mm/s, as once (%.0f mm/s, +-3%%)",
+	   forward_mm_s(loop), forward_mm_s(once));
 }
 
 int main(void)
 {
-	tap_plan(8);
+	tap_plan(9);
 	ok(at_run(attach, body, 1, 60), "the application finished");
 	return tap_done();
 }
