@@ -144,10 +144,10 @@
 #define POWER_MAX          10000   /* internal power: user power x 100 */
 #define FAST_SPEED         35      /* above this the tacho DIR pin is not trusted */
 #define BRAKE_HOLD_GAIN    400     /* hold power per count of displacement */
-#define HOLD_LOAD_COUNTS   3       /* a hold this far off is under load: the integral works */
+#define HOLD_LOAD_COUNTS   4       /* a hold this far off is under load: the integral works */
 #define HOLD_I_GAIN        10      /* hold power per accumulated count-tick */
 #define HOLD_I_MAX         (POWER_MAX / HOLD_I_GAIN)
-#define HOLD_I_SPEED       3       /* the integral only grows while the shaft is (nearly) still */
+#define HOLD_STILL_TICKS   25      /* the integral only grows once no edge came for 50 ms */
 #define PROGRAM_STOP_BRAKE_MS 100
 #define RAMP_FLOOR_SPEED   5       /* a ramp never asks for less, or a step ramp would stall */
 #define RAMP_FLOOR_POWER   10
@@ -240,6 +240,8 @@ struct pwm_port {
 
 	s32 hold_pos;         /* BRAKED: position to hold */
 	s32 hold_i;           /* BRAKED: integral of the displacement, once a load showed */
+	s32 hold_seen;        /* BRAKED: the position at the last tick ... */
+	u16 hold_still;       /* ... and for how many ticks it has not changed */
 	ktime_t brake_until;  /* BRAKE_TIMED */
 
 	s32 power;            /* applied power, -POWER_MAX..POWER_MAX */
@@ -521,7 +523,14 @@ static void brake_hold(struct pwm_port *p)
 	s32 err = p->position - p->hold_pos;
 	s32 power;
 
-	if (abs(p->speed) <= HOLD_I_SPEED && (p->hold_i || abs(err) > HOLD_LOAD_COUNTS))
+	if (p->position != p->hold_seen) {
+		p->hold_seen = p->position;
+		p->hold_still = 0;
+	} else if (p->hold_still < HOLD_STILL_TICKS) {
+		p->hold_still++;
+	}
+	/* Still means no edge for a while (the measured speed reads 0 at every turn-around too). */
+	if (p->hold_still >= HOLD_STILL_TICKS && (p->hold_i || abs(err) > HOLD_LOAD_COUNTS))
 		p->hold_i = clamp(p->hold_i + err, -HOLD_I_MAX, HOLD_I_MAX);
 	power = clamp(-BRAKE_HOLD_GAIN * err - HOLD_I_GAIN * p->hold_i, -POWER_MAX, POWER_MAX);
 	p->power = 0;
@@ -628,6 +637,7 @@ static void port_finish(struct pwm_port *p, int port, bool brake, s32 hold_pos)
 		p->state = STATE_BRAKED;
 		p->hold_pos = hold_pos;
 		p->hold_i = 0;
+		p->hold_still = 0;
 		brake_hold(p);
 	} else {
 		p->state = STATE_IDLE;
@@ -810,7 +820,8 @@ static bool valid_nos(u8 nos)
 static bool regulating(const struct pwm_port *p)
 {
 	return p->state == STATE_REG || p->state == STATE_SYNC_MASTER ||
-	       p->state == STATE_SYNC_SLAVE || (p->state == STATE_LIMITED && p->profile.regulated);
+	       (p->state == STATE_SYNC_SLAVE && p->sync_factor != 0) ||
+	       (p->state == STATE_LIMITED && p->profile.regulated);
 }
 
 /*
@@ -1218,13 +1229,14 @@ static int cmd_sync(const u8 *b, bool by_time)
 		sync_dissolve(m);
 		sync_dissolve(s);
 		lag = 0;
+		m->hold_i = 0;
+		s->hold_i = 0;
+		s->hold_still = 0;
 	}
 	if (!regulating(m))
 		pid_reset(m);
-	if (!regulating(s)) {
+	if (!regulating(s))
 		pid_reset(s);
-		s->hold_i = 0;
-	}
 	m->profile = (struct pwm_profile){
 		.by_time = by_time, .brake = brake, .regulated = true,
 		.peak = speed * m->polarity, .flat = step, .origin = m->position, .start = now,

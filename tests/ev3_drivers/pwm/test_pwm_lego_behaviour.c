@@ -135,6 +135,8 @@ static void test_reissue(void)
 	steady_speeds(send_sync, 4, dps);
 	ok(near(dps[1], dps[0] / 2, 0.05), "turn 50 re-issued: the slave at half the master (%.0f of %.0f)",
 	   dps[1], dps[0]);
+	sync_turn = 200;
+	test_reissued("STEP_SYNC 40 turn 200", send_sync);
 	sync_turn = 0;
 	test_reissued("SPEED 40 + START", send_speed);
 	test_reissued("POWER 30 + START", send_power);
@@ -372,7 +374,7 @@ int main(void)
 	const int motors[4] = { EV3_MOTOR_LARGE, EV3_MOTOR_LARGE, PWM_TEST_NO_MOTOR,
 				PWM_TEST_NO_MOTOR };
 
-	tap_plan(49);
+	tap_plan(52);
 	ok(pwm_test_run(body, motors), "test body ran to its end");
 	return tap_done();
 }
