@@ -273,29 +273,38 @@ static void test_counters(void)
 	rest();
 }
 
-/* 4. Brake hold: settled within 250 ms of STOP, and still there a second later. */
+/* 4. Brake hold: settled within 250 ms of STOP, and still there a second later
+ * (stopped at four different points within a count: the pull-back differs). */
 static void test_brake_hold(void)
 {
-	double stop_at, angle[100], settled_ms = 0, drift;
+	double worst_settle = 0, worst_drift = 0, worst_off = 0;
 
-	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 1U << PORT_A, 40);
-	pwm_cmd(LMS_PWM_OUTPUT_START, 1U << PORT_A);
-	dly_tsk(1000);
-	stop_at = motor_angle(PORT_A);
-	pwm_cmd_value(LMS_PWM_OUTPUT_STOP, 1U << PORT_A, 1);
-	for (int i = 0; i < 100; i++) {
-		dly_tsk(SAMPLE_MS);
-		angle[i] = motor_angle(PORT_A);
+	for (int k = 0; k < 4; k++) {
+		double stop_at, angle[100], settled_ms = 0, drift;
+
+		pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 1U << PORT_A, 40);
+		pwm_cmd(LMS_PWM_OUTPUT_START, 1U << PORT_A);
+		dly_tsk(1000 + 3 * k);
+		stop_at = motor_angle(PORT_A);
+		pwm_cmd_value(LMS_PWM_OUTPUT_STOP, 1U << PORT_A, 1);
+		for (int i = 0; i < 100; i++) {
+			dly_tsk(SAMPLE_MS);
+			angle[i] = motor_angle(PORT_A);
+		}
+		for (int i = 0; i < 100; i++)
+			if (fabs(angle[i] - angle[99]) > 0.5)
+				settled_ms = (i + 1) * SAMPLE_MS;
+		drift = angle[99] - angle[24];
+		worst_settle = fmax(worst_settle, settled_ms);
+		worst_drift = fmax(worst_drift, fabs(drift));
+		worst_off = fmax(worst_off, fabs(angle[99] - stop_at));
+		tap_diag("stop %d: settled after %.0f ms, %.2f deg from the stop point, drift %.2f", k,
+			 settled_ms, angle[99] - stop_at, drift);
+		rest();
 	}
-	for (int i = 0; i < 100; i++)
-		if (fabs(angle[i] - angle[99]) > 0.5)
-			settled_ms = (i + 1) * SAMPLE_MS;
-	drift = angle[99] - angle[24];
-	ok(settled_ms <= 250, "brake hold settled %.0f ms after STOP (<= 250)", settled_ms);
-	ok(fabs(drift) <= 0.5, "then stays put: %.2f deg from 250 ms to 1 s", drift);
-	ok(fabs(angle[99] - stop_at) <= 3.0, "held %.2f deg from the stop point (<= 3)",
-	   angle[99] - stop_at);
-	rest();
+	ok(worst_settle <= 250, "brake hold settled %.0f ms after STOP at worst (<= 250)", worst_settle);
+	ok(worst_drift <= 0.5, "then stays put: %.2f deg from 250 ms to 1 s at worst", worst_drift);
+	ok(worst_off <= 3.0, "held %.2f deg from the stop point at worst (<= 3)", worst_off);
 }
 
 /* 5. MOTORDATA Speed after STOP is the commanded 0. */
