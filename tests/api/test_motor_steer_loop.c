@@ -5,7 +5,8 @@
  * 56 mm wheels) must move forward as fast as after a single call with the
  * same arguments, straight and in a curve, and keep moving when the loop
  * steers a little left and right in turn, as a line follower does; the same
- * for ev3_motor_set_power on each wheel from the loop.
+ * for ev3_motor_set_power on each wheel from the loop.  A blocking rotate
+ * waits for the whole step, its slow approach to the end included.
  */
 #include <math.h>
 #include "api_test.h"
@@ -117,11 +118,24 @@ static void body(void)
 	   fabs(forward_mm_s(loop) - forward_mm_s(once)) <= 0.03 * forward_mm_s(once),
 	   "set_power 40 on both wheels every 4 ms: %.0f mm/s, as once (%.0f mm/s, +-3%%)",
 	   forward_mm_s(loop), forward_mm_s(once));
+
+	/* A blocking rotate waits for the whole step, its approach to the end included. */
+	for (int speed = 100; speed >= 10; speed -= 45) {
+		double l0 = wheel_deg(LEFT);
+		uint64_t t0 = at_now_ms();
+		ER ercd = ev3_motor_rotate(LEFT, 1080, speed, true);
+
+		ok(ercd == E_OK && fabs(wheel_deg(LEFT) - l0 - 1080) <= 2,
+		   "rotate 1080 deg at speed %d, blocking: %d after %u ms, at %.1f deg", speed,
+		   (int)ercd, (unsigned)(at_now_ms() - t0), wheel_deg(LEFT) - l0);
+		ev3_motor_stop(LEFT, false);
+		dly_tsk(500);
+	}
 }
 
 int main(void)
 {
-	tap_plan(9);
+	tap_plan(12);
 	ok(at_run(attach, body, 1, 60), "the application finished");
 	return tap_done();
 }
