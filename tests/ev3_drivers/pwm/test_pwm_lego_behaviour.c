@@ -21,6 +21,7 @@
 
 #define PORT_A      0U
 #define PORT_B      1U
+#define PORT_C      2U      /* a medium motor */
 #define PAIR        0x03U
 #define SAMPLE_MS   10
 
@@ -187,6 +188,22 @@ static void test_step_end(int speed, int32_t counts)
 	rest();
 }
 
+/* The same on the medium motor, whose regulator has other gains. */
+static void test_step_end_medium(int speed, int32_t counts)
+{
+	double c0 = motor_angle(PORT_C), took, over, end;
+
+	pwm_cmd_step(LMS_PWM_OUTPUT_STEP_SPEED, 1U << PORT_C, speed, 0, counts, 0, 1);
+	took = wait_idle(1U << PORT_C, 5000);
+	end = c0 + counts;
+	over = overshoot_after(PORT_C, end, 1, 800);
+	ok(over <= 0.5 && fabs(motor_angle(PORT_C) - end) <= 1.0,
+	   "medium STEP_SPEED %d for %d counts: overshoot %.2f deg, ends %.2f off, busy %.0f ms",
+	   speed, counts, over, motor_angle(PORT_C) - end, took);
+	pwm_cmd_value(LMS_PWM_OUTPUT_STOP, 1U << PORT_C, 0);
+	dly_tsk(1000);
+}
+
 static void test_approach(void)
 {
 	double a0 = motor_angle(PORT_A), b0 = motor_angle(PORT_B), took, over_a, over_b, end_a, end_b;
@@ -199,6 +216,8 @@ static void test_approach(void)
 	test_step_end(50, 360);
 	test_step_end(-50, 360);
 	test_step_end(80, 720);
+	test_step_end_medium(30, 90);
+	test_step_end_medium(90, 360);
 
 	a0 = motor_angle(PORT_A);
 	b0 = motor_angle(PORT_B);
@@ -230,7 +249,7 @@ static void test_counters(void)
 {
 	struct lms_motor_data md;
 	int32_t sensor0 = motor_data_of(PORT_A).tacho_sensor, worst = 0, after;
-	double a0 = motor_angle(PORT_A);
+	int64_t pins0 = ev3_motor_tacho_counts(ev3_output_motor(PORT_A)), pins;
 
 	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 1U << PORT_A, 40);
 	pwm_cmd(LMS_PWM_OUTPUT_START, 1U << PORT_A);
@@ -242,9 +261,10 @@ static void test_counters(void)
 	}
 	ok(worst == 0, "TachoCounts 0 throughout an unlimited run (worst %d)", worst);
 	md = motor_data_of(PORT_A);
-	ok(fabs(md.tacho_sensor - sensor0 - (motor_angle(PORT_A) - a0)) <= 1.0,
-	   "TachoSensor cumulative: %d counts for %.1f deg", md.tacho_sensor - sensor0,
-	   motor_angle(PORT_A) - a0);
+	pins = ev3_motor_tacho_counts(ev3_output_motor(PORT_A)) - pins0;
+	ok(llabs(md.tacho_sensor - sensor0 - pins) <= 1,
+	   "TachoSensor cumulative: %d counts for the encoder's %lld", md.tacho_sensor - sensor0,
+	   (long long)pins);
 
 	pwm_cmd_value(LMS_PWM_OUTPUT_STOP, 1U << PORT_A, 1);
 	dly_tsk(SAMPLE_MS);
@@ -367,8 +387,8 @@ static void test_unchanged(void)
 
 static void body(void)
 {
-	ok(pwm_set_types(LMS_PWM_TYPE_TACHO, LMS_PWM_TYPE_TACHO, LMS_PWM_TYPE_TACHO,
-			 LMS_PWM_TYPE_TACHO) == E_OK, "SET_TYPE large on every port");
+	ok(pwm_set_types(LMS_PWM_TYPE_TACHO, LMS_PWM_TYPE_TACHO, LMS_PWM_TYPE_MINITACHO,
+			 LMS_PWM_TYPE_TACHO) == E_OK, "SET_TYPE large on A and B, medium on C");
 	test_reissue();
 	test_approach();
 	test_counters();
@@ -380,10 +400,10 @@ static void body(void)
 
 int main(void)
 {
-	const int motors[4] = { EV3_MOTOR_LARGE, EV3_MOTOR_LARGE, PWM_TEST_NO_MOTOR,
+	const int motors[4] = { EV3_MOTOR_LARGE, EV3_MOTOR_LARGE, EV3_MOTOR_MEDIUM,
 				PWM_TEST_NO_MOTOR };
 
-	tap_plan(52);
+	tap_plan(54);
 	ok(pwm_test_run(body, motors), "test body ran to its end");
 	return tap_done();
 }
