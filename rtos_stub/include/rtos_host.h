@@ -44,6 +44,10 @@ void rtos_host_run_until(uint64_t t_ns);
  * until max_ns of virtual time have passed.  Returns true if idle was reached. */
 bool rtos_host_run_until_idle(uint64_t max_ns);
 
+/* True once ext_ker has ended the system (until the next boot): the run
+ * functions return at once; rtos_host_shutdown still runs the ATT_TER routines. */
+bool rtos_host_exited(void);
+
 /* Virtual time in ns since boot. */
 uint64_t rtos_host_now(void);
 

@@ -48,6 +48,14 @@ void ready_insert_tail(struct tcb *t)
 		schedtsk = t;
 }
 
+/* Marks t ready at the head of its priority queue. */
+void ready_insert_head(struct tcb *t)
+{
+	queue_insert_before(ready_queue[t->bpri].next, &t->node);
+	ready_map |= 1U << (t->bpri - 1);
+	update_schedtsk();
+}
+
 /* Removes t from the ready queue. */
 void ready_remove(struct tcb *t)
 {
@@ -121,6 +129,7 @@ __attribute__((noreturn)) static void task_exit_running(void)
 	/* TOPPERS: ext_tsk releases the CPU lock and re-enables dispatching. */
 	cpu.locked = false;
 	cpu.dsp_disabled = false;
+	mtx_release_all(t);
 	ready_remove(t);
 	t->state = TTS_DMT;
 	trace_task("exit", t);
@@ -147,6 +156,9 @@ void task_activate(struct tcb *t)
 {
 	t->state = TTS_RDY;
 	t->bpri = t->cfg->itskpri;
+	t->base_pri = t->cfg->itskpri;
+	t->suspended = false;
+	t->mtx_last = NULL;
 	t->wupcnt = 0;
 	t->wait = WAIT_NONE;
 	t->co.restart = true;
@@ -156,6 +168,14 @@ void task_activate(struct tcb *t)
 
 /* Puts runtsk to wait; returns the release code (E_OK, E_TMOUT, E_RLWAI...). */
 ER wait_block(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO tmout)
+{
+	wait_enter(kind, objid, wq, tpri, tmout);
+	task_switch();
+	return runtsk->wercd;
+}
+
+/* Puts runtsk into the waiting state and its queue, without switching yet. */
+void wait_enter(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO tmout)
 {
 	struct tcb *t = runtsk;
 
@@ -170,8 +190,6 @@ ER wait_block(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO tm
 	if (tmout != TMO_FEVR)
 		tmevt_enqueue(&t->tmevt, tick_after_ms((RELTIM)tmout));
 	trace_task("wait", t);
-	task_switch();
-	return t->wercd;
 }
 
 /* Inserts a waiting task into its wait queue (FIFO, or by priority after its peers). */
@@ -192,9 +210,11 @@ void wait_requeue(struct tcb *t, bool tpri)
 	queue_insert_before(pos, &t->node);
 }
 
-/* Releases a waiting task with ercd; it becomes ready (the caller dispatches). */
-void wait_release(struct tcb *t, ER ercd)
+/* Takes t out of its wait (queue, timeout) without making it ready. */
+static void wait_cancel(struct tcb *t)
 {
+	enum wait_kind kind = t->wait;
+
 	if (t->wait_queue != NULL) {
 		queue_remove(&t->node);
 		t->wait_queue = NULL;
@@ -202,12 +222,61 @@ void wait_release(struct tcb *t, ER ercd)
 	if (tmevt_queued(&t->tmevt))
 		tmevt_dequeue(&t->tmevt);
 	t->wait = WAIT_NONE;
+	/* leaving a mutex's queue other than by getting it may lower the owner's priority */
+	if (kind == WAIT_MTX && mtx_table[t->wobjid]->owner != t)
+		mtx_waiter_left(t->wobjid);
+}
+
+/* Releases a waiting task with ercd; it becomes ready, or suspended after sus_tsk (the caller dispatches). */
+void wait_release(struct tcb *t, ER ercd)
+{
+	wait_cancel(t);
 	t->wercd = ercd;
-	t->state = TTS_RDY;
 	if (trace_on())
 		rtos_host_trace("kernel", "release %s %s", t->cfg->name ? t->cfg->name : "?",
 				ercd_name(ercd));
+	if (t->suspended) {
+		t->state = TTS_SUS;
+		return;
+	}
+	t->state = TTS_RDY;
 	ready_insert_tail(t);
+}
+
+/* True if the queue t waits in is in priority order. */
+bool wait_queue_tpri(const struct tcb *t)
+{
+	switch (t->wait) {
+	case WAIT_SEM:
+		return (sem_table[t->wobjid]->cfg->sematr & TA_TPRI) != 0;
+	case WAIT_FLG:
+		return (flg_table[t->wobjid]->cfg->flgatr & TA_TPRI) != 0;
+	case WAIT_SDTQ:
+		return (dtq_table[t->wobjid]->cfg->dtqatr & TA_TPRI) != 0;
+	case WAIT_SPDQ:
+		return (pdq_table[t->wobjid]->cfg->pdqatr & TA_TPRI) != 0;
+	case WAIT_MTX:
+		return mtx_table[t->wobjid]->cfg->mtxatr != TA_NULL;
+	default:
+		return false;
+	}
+}
+
+/* Sets t's current priority; head: a ready task goes first among its new peers. */
+void task_set_priority(struct tcb *t, PRI pri, bool head)
+{
+	if (t->state == TTS_RDY) {
+		ready_remove(t);
+		t->bpri = pri;
+		if (head)
+			ready_insert_head(t);
+		else
+			ready_insert_tail(t);
+	} else {
+		t->bpri = pri;
+		if (t->state == TTS_WAI && wait_queue_tpri(t))
+			wait_requeue(t, true);
+	}
 }
 
 /* Time event of a waiting task: E_TMOUT (E_OK for dly_tsk). */
@@ -263,6 +332,7 @@ ER task_create_all(void)
 		queue_init(&t->node);
 		t->state = TTS_DMT;
 		t->bpri = t->cfg->itskpri;
+		t->base_pri = t->cfg->itskpri;
 		t->tmevt.heap_index = UINT32_MAX;
 		t->tmevt.callback = wait_timeout;
 		if (!co_create(&t->co, size, task_entry))
@@ -372,17 +442,17 @@ ER chg_pri(ID tskid, PRI tskpri)
 	if (t->state == TTS_DMT)
 		return svc_result("chg_pri", E_OBJ);
 	newpri = tskpri == TPRI_INI ? t->cfg->itskpri : tskpri;
-	if (t->state == TTS_RDY) {
-		ready_remove(t);
-		t->bpri = newpri;
-		ready_insert_tail(t);
-	} else {
-		t->bpri = newpri;
-		if (t->wait == WAIT_SEM)
-			wait_requeue(t, (sem_table[t->wobjid]->cfg->sematr & TA_TPRI) != 0);
-		else if (t->wait == WAIT_FLG)
-			wait_requeue(t, (flg_table[t->wobjid]->cfg->flgatr & TA_TPRI) != 0);
-	}
+	/* HRP2: a base priority above the ceiling of a mutex the task holds or waits for */
+	for (const struct mtxcb *m = t->mtx_last; m != NULL; m = m->prev_locked)
+		if (m->cfg->mtxatr == TA_CEILING && newpri < m->cfg->ceilpri)
+			return svc_result("chg_pri", E_ILUSE);
+	if (t->state == TTS_WAI && t->wait == WAIT_MTX && mtx_table[t->wobjid]->cfg->mtxatr == TA_CEILING &&
+	    newpri < mtx_table[t->wobjid]->cfg->ceilpri)
+		return svc_result("chg_pri", E_ILUSE);
+	t->base_pri = newpri;
+	task_set_priority(t, mtx_effective_priority(t), false);
+	if (t->state == TTS_WAI && t->wait == WAIT_MTX)
+		mtx_waiter_left(t->wobjid);	/* the owner inherits the waiter's new priority */
 	dispatch_if_needed();
 	return E_OK;
 }
@@ -566,4 +636,86 @@ ER dly_tsk(RELTIM dlytim)
 	if (dlytim > TMAX_RELTIM)
 		return svc_result("dly_tsk", E_PAR);
 	return svc_result("dly_tsk", wait_block(WAIT_DLY, 0, NULL, false, (TMO)dlytim));
+}
+
+/* ---- Suspension and termination ---- */
+
+/* Suspends a task: a ready one leaves the ready queue, a waiting one keeps waiting (TTS_WAS). */
+ER sus_tsk(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	if (!ctx_task_unlocked())
+		return svc_result("sus_tsk", E_CTX);
+	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+		return svc_result("sus_tsk", ercd);
+	if (t == runtsk && cpu.dsp_disabled)
+		return svc_result("sus_tsk", E_CTX);
+	if (t->state == TTS_DMT)
+		return svc_result("sus_tsk", E_OBJ);
+	if (t->suspended)
+		return svc_result("sus_tsk", E_QOVR);
+	t->suspended = true;
+	if (t->state == TTS_RDY) {
+		ready_remove(t);
+		t->state = TTS_SUS;
+	}
+	trace_task("suspend", t);
+	dispatch_if_needed();
+	return E_OK;
+}
+
+/* Resumes a suspended task (E_OBJ if it is not suspended). */
+ER rsm_tsk(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	if (!ctx_task_unlocked())
+		return svc_result("rsm_tsk", E_CTX);
+	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
+		return svc_result("rsm_tsk", ercd);
+	if (!t->suspended)
+		return svc_result("rsm_tsk", E_OBJ);
+	t->suspended = false;
+	if (t->state == TTS_SUS) {
+		t->state = TTS_RDY;
+		ready_insert_tail(t);
+	}
+	trace_task("resume", t);
+	dispatch_if_needed();
+	return E_OK;
+}
+
+/* Terminates another task: out of its queues, its mutexes unlocked; a queued activation restarts it. */
+ER ter_tsk(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	if (!ctx_task_unlocked())
+		return svc_result("ter_tsk", E_CTX);
+	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+		return svc_result("ter_tsk", ercd);
+	if (t == runtsk)
+		return svc_result("ter_tsk", E_ILUSE);
+	if (t->state == TTS_DMT)
+		return svc_result("ter_tsk", E_OBJ);
+	if (t->state == TTS_RDY)
+		ready_remove(t);
+	else if (t->state == TTS_WAI)
+		wait_cancel(t);
+	if (t == paused_task)
+		paused_task = NULL;
+	t->state = TTS_DMT;
+	t->suspended = false;
+	mtx_release_all(t);
+	trace_task("terminate", t);
+	if (t->actcnt > 0) {
+		t->actcnt--;
+		task_activate(t);
+	}
+	dispatch_if_needed();
+	return E_OK;
 }
