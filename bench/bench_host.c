@@ -30,7 +30,7 @@
 #include <unistd.h>
 #include "bench_brick.h"
 #include "rtos_host.h"
-#include "host_sim/devices/ev3_bench.h"
+#include "host_sim/bench.h"
 
 #define DEFAULT_CALLS      10000U
 #define DEFAULT_VIRTUAL_S  10.0
