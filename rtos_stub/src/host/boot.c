@@ -379,6 +379,7 @@ static void free_objects(void)
 	paused_task = NULL;
 	run_active = false;
 	kernel_exited = false;
+	kernel_stalled = false;
 }
 
 /*

@@ -103,21 +103,25 @@ static ER dtq_send(const char *svc, ID dtqid, intptr_t data, TMO tmout, bool non
 
 ER snd_dtq(ID dtqid, intptr_t data)
 {
+	svc_charge();
 	return dtq_send("snd_dtq", dtqid, data, TMO_FEVR, false);
 }
 
 ER psnd_dtq(ID dtqid, intptr_t data)
 {
+	svc_charge();
 	return dtq_send("psnd_dtq", dtqid, data, TMO_POL, false);
 }
 
 ER ipsnd_dtq(ID dtqid, intptr_t data)
 {
+	svc_charge();
 	return dtq_send("ipsnd_dtq", dtqid, data, TMO_POL, true);
 }
 
 ER tsnd_dtq(ID dtqid, intptr_t data, TMO tmout)
 {
+	svc_charge();
 	return dtq_send("tsnd_dtq", dtqid, data, tmout, false);
 }
 
@@ -144,11 +148,13 @@ static ER dtq_force(const char *svc, ID dtqid, intptr_t data, bool nontask)
 
 ER fsnd_dtq(ID dtqid, intptr_t data)
 {
+	svc_charge();
 	return dtq_force("fsnd_dtq", dtqid, data, false);
 }
 
 ER ifsnd_dtq(ID dtqid, intptr_t data)
 {
+	svc_charge();
 	return dtq_force("ifsnd_dtq", dtqid, data, true);
 }
 
@@ -191,16 +197,19 @@ static ER dtq_receive(const char *svc, ID dtqid, intptr_t *p_data, TMO tmout)
 
 ER rcv_dtq(ID dtqid, intptr_t *p_data)
 {
+	svc_charge();
 	return dtq_receive("rcv_dtq", dtqid, p_data, TMO_FEVR);
 }
 
 ER prcv_dtq(ID dtqid, intptr_t *p_data)
 {
+	svc_charge();
 	return dtq_receive("prcv_dtq", dtqid, p_data, TMO_POL);
 }
 
 ER trcv_dtq(ID dtqid, intptr_t *p_data, TMO tmout)
 {
+	svc_charge();
 	return dtq_receive("trcv_dtq", dtqid, p_data, tmout);
 }
 
@@ -210,6 +219,7 @@ ER ini_dtq(ID dtqid)
 	struct dtqcb *d;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("ini_dtq", E_CTX);
 	if ((d = dtq_lookup(dtqid, &ercd)) == NULL)
@@ -228,6 +238,7 @@ ER ref_dtq(ID dtqid, T_RDTQ *pk_rdtq)
 	struct dtqcb *d;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("ref_dtq", E_CTX);
 	if ((d = dtq_lookup(dtqid, &ercd)) == NULL)
@@ -312,21 +323,25 @@ static ER pdq_send(const char *svc, ID pdqid, intptr_t data, PRI datapri, TMO tm
 
 ER snd_pdq(ID pdqid, intptr_t data, PRI datapri)
 {
+	svc_charge();
 	return pdq_send("snd_pdq", pdqid, data, datapri, TMO_FEVR, false);
 }
 
 ER psnd_pdq(ID pdqid, intptr_t data, PRI datapri)
 {
+	svc_charge();
 	return pdq_send("psnd_pdq", pdqid, data, datapri, TMO_POL, false);
 }
 
 ER ipsnd_pdq(ID pdqid, intptr_t data, PRI datapri)
 {
+	svc_charge();
 	return pdq_send("ipsnd_pdq", pdqid, data, datapri, TMO_POL, true);
 }
 
 ER tsnd_pdq(ID pdqid, intptr_t data, PRI datapri, TMO tmout)
 {
+	svc_charge();
 	return pdq_send("tsnd_pdq", pdqid, data, datapri, tmout, false);
 }
 
@@ -375,16 +390,19 @@ static ER pdq_receive(const char *svc, ID pdqid, intptr_t *p_data, PRI *p_datapr
 
 ER rcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri)
 {
+	svc_charge();
 	return pdq_receive("rcv_pdq", pdqid, p_data, p_datapri, TMO_FEVR);
 }
 
 ER prcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri)
 {
+	svc_charge();
 	return pdq_receive("prcv_pdq", pdqid, p_data, p_datapri, TMO_POL);
 }
 
 ER trcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri, TMO tmout)
 {
+	svc_charge();
 	return pdq_receive("trcv_pdq", pdqid, p_data, p_datapri, tmout);
 }
 
@@ -393,6 +411,7 @@ ER ini_pdq(ID pdqid)
 	struct pdqcb *p;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("ini_pdq", E_CTX);
 	if ((p = pdq_lookup(pdqid, &ercd)) == NULL)
@@ -409,6 +428,7 @@ ER ref_pdq(ID pdqid, T_RPDQ *pk_rpdq)
 	struct pdqcb *p;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("ref_pdq", E_CTX);
 	if ((p = pdq_lookup(pdqid, &ercd)) == NULL)

@@ -155,18 +155,21 @@ static ER mtx_lock(const char *svc, ID mtxid, TMO tmout, bool polling)
 /* Locks a mutex, waiting while another task holds it. */
 ER loc_mtx(ID mtxid)
 {
+	svc_charge();
 	return mtx_lock("loc_mtx", mtxid, TMO_FEVR, false);
 }
 
 /* Locks a mutex if it is free, else E_TMOUT. */
 ER ploc_mtx(ID mtxid)
 {
+	svc_charge();
 	return mtx_lock("ploc_mtx", mtxid, TMO_POL, true);
 }
 
 /* Locks a mutex, waiting at most tmout ms. */
 ER tloc_mtx(ID mtxid, TMO tmout)
 {
+	svc_charge();
 	return mtx_lock("tloc_mtx", mtxid, tmout, false);
 }
 
@@ -177,6 +180,7 @@ ER unl_mtx(ID mtxid)
 	ER ercd = E_OK;
 	struct tcb *t;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("unl_mtx", E_CTX);
 	if ((m = mtx_lookup(mtxid, &ercd)) == NULL)
@@ -197,6 +201,7 @@ ER ini_mtx(ID mtxid)
 	struct mtxcb *m;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("ini_mtx", E_CTX);
 	if ((m = mtx_lookup(mtxid, &ercd)) == NULL)
@@ -219,6 +224,7 @@ ER ref_mtx(ID mtxid, T_RMTX *pk_rmtx)
 	struct mtxcb *m;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("ref_mtx", E_CTX);
 	if ((m = mtx_lookup(mtxid, &ercd)) == NULL)

@@ -116,6 +116,7 @@ static bool run_loop(uint64_t t, bool until_idle)
 
 	run_active = true;
 	run_deadline = t;
+	stall_watch_start();
 	for (;;) {
 		uint64_t next;
 
@@ -145,6 +146,7 @@ static bool run_loop(uint64_t t, bool until_idle)
 		now_ns = next;
 		event_run_next();
 	}
+	stall_watch_stop();
 	run_active = false;
 	return idle;
 }

@@ -159,6 +159,7 @@ void task_activate(struct tcb *t)
 	t->base_pri = t->cfg->itskpri;
 	t->suspended = false;
 	t->mtx_last = NULL;
+	t->ext_svc_depth = 0;
 	t->wupcnt = 0;
 	t->wait = WAIT_NONE;
 	t->co.restart = true;
@@ -309,7 +310,7 @@ ER check_out_ptr(const void *p, SIZE size)
 	if (p == NULL)
 		return E_MACV;
 	if (cpu.kind == EXEC_TASK && runtsk->cfg->domid != TDOM_KERNEL &&
-	    prb_mem(p, size, TSK_SELF, TPM_WRITE) != E_OK)
+	    mem_probe(p, size, TSK_SELF, TPM_WRITE) != E_OK)
 		return E_MACV;
 	return E_OK;
 }
@@ -377,6 +378,7 @@ ER act_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("act_tsk", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -392,6 +394,7 @@ ER iact_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("iact_tsk", E_CTX);
 	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
@@ -406,6 +409,7 @@ ER_UINT can_act(ID tskid)
 	ER ercd = E_OK;
 	uint_t n;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("can_act", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -418,6 +422,7 @@ ER_UINT can_act(ID tskid)
 /* Ends the calling task; from non-task context it is a reported bug and returns. */
 void ext_tsk(void)
 {
+	svc_charge();
 	if (cpu.kind != EXEC_TASK || cpu.isr_depth != 0) {
 		svc_result("ext_tsk", E_CTX);
 		rtos_host_bug("ext_tsk", "called from non-task context (E_CTX)");
@@ -433,6 +438,7 @@ ER chg_pri(ID tskid, PRI tskpri)
 	ER ercd = E_OK;
 	PRI newpri;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("chg_pri", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -463,6 +469,7 @@ ER get_pri(ID tskid, PRI *p_tskpri)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("get_pri", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -478,6 +485,7 @@ ER get_pri(ID tskid, PRI *p_tskpri)
 /* ID of the running task (task context). */
 ER get_tid(ID *p_tskid)
 {
+	svc_charge();
 	if (cpu.kind != EXEC_TASK)
 		return svc_result("get_tid", E_CTX);
 	if (check_out_ptr(p_tskid, sizeof(*p_tskid)) != E_OK)
@@ -489,6 +497,7 @@ ER get_tid(ID *p_tskid)
 /* ID of the task the interrupt came on top of, TSK_NONE if the CPU was idle. */
 ER iget_tid(ID *p_tskid)
 {
+	svc_charge();
 	if (cpu.kind == EXEC_TASK)
 		return svc_result("iget_tid", E_CTX);
 	if (p_tskid == NULL)
@@ -502,6 +511,7 @@ ER iget_tid(ID *p_tskid)
 /* Sleeps until woken (a queued wakeup is consumed at once). */
 ER slp_tsk(void)
 {
+	svc_charge();
 	if (!ctx_may_block())
 		return svc_result("slp_tsk", E_CTX);
 	if (runtsk->wupcnt > 0) {
@@ -516,6 +526,7 @@ ER tslp_tsk(TMO tmout)
 {
 	struct tcb *t;
 
+	svc_charge();
 	if (!ctx_may_block())
 		return svc_result("tslp_tsk", E_CTX);
 	if (!tmout_valid(tmout))
@@ -551,6 +562,7 @@ ER wup_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("wup_tsk", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -566,6 +578,7 @@ ER iwup_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("iwup_tsk", E_CTX);
 	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
@@ -580,6 +593,7 @@ ER_UINT can_wup(ID tskid)
 	ER ercd = E_OK;
 	uint_t n;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("can_wup", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -606,6 +620,7 @@ ER rel_wai(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("rel_wai", E_CTX);
 	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
@@ -621,6 +636,7 @@ ER irel_wai(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("irel_wai", E_CTX);
 	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
@@ -631,6 +647,7 @@ ER irel_wai(ID tskid)
 /* Delays the calling task for at least dlytim ms (rel_wai ends it early with E_RLWAI). */
 ER dly_tsk(RELTIM dlytim)
 {
+	svc_charge();
 	if (!ctx_may_block())
 		return svc_result("dly_tsk", E_CTX);
 	if (dlytim > TMAX_RELTIM)
@@ -646,6 +663,7 @@ ER sus_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("sus_tsk", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -672,6 +690,7 @@ ER rsm_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("rsm_tsk", E_CTX);
 	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
@@ -694,6 +713,7 @@ ER ter_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("ter_tsk", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
