@@ -714,12 +714,13 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 	tokenize(ctx, text, name);
 	for (;;) {
 		struct tok *t = peek(ctx, 0);
-		int a;
 
 		if (t->kind == TK_EOF)
 			break;
 		if (t->kind == TK_ID && is_punct(peek(ctx, 1), "(")) {
-			if ((a = api_lookup(t->text)) >= 0) {
+			int a = api_lookup(t->text);
+
+			if (a >= 0) {
 				parse_api(ctx, (enum api)a);
 				continue;
 			}

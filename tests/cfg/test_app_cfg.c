@@ -9,6 +9,7 @@
 #include "tap.h"
 #include "kernel.h"
 #include "rtos_host.h"
+#include "rtos_cfg.h"
 #include "kernel_cfg.h"
 #include "app.h"
 
@@ -22,10 +23,11 @@ int main(void)
 {
 	const struct app_result *r = &app_result;
 
-	tap_plan(16);
+	tap_plan(18);
 	ok(MAIN_TASK == 1 && WORKER_TASK == 2 && EV3_CYC_TASK_EV3_CYC1 == 3 && TDOM_APP == 1,
 	   "kernel_cfg.h: tasks numbered in order, the EV3 cyclic handler's task after them");
 	ok(CYC1 == 1 && EV3_CYC1 == 2 && DTQ1 == 1 && MTX1 == 1, "kernel_cfg.h: cyclic handlers and other objects from 1");
+	ok(EXTRA_SEM == 1 && SEM1 == 2, "an INCLUDEd file's objects are numbered where it is included");
 	if (rtos_host_boot(&ev3rt_app_cfg) != E_OK) {
 		tap_diag("boot: %s", rtos_host_boot_error());
 		return tap_done();
@@ -49,6 +51,7 @@ int main(void)
 
 		is_int(get_pri(EV3_CYC_TASK_EV3_CYC1, &pri), E_CTX, "get_pri from the harness is E_CTX (non-task)");
 	}
+	is_int(ev3rt_app_cfg.nsems, 2, "the INCLUDEd semaphore is in the tables");
 	rtos_host_shutdown();
 	ok(rtos_host_bug_count() == 0, "no bug reports");
 	return tap_done();
