@@ -547,7 +547,7 @@ static void parse_api(struct cfg_ctx *ctx, enum api a)
 			if (ctx->include == NULL)
 				report(ctx, name->file, name->line, what, "INCLUDE is not available here");
 			else
-				ctx->include(ctx, s, name->file, name->line, ctx->include_arg);
+				ctx->nerrors += ctx->include(ctx, s, name->file, name->line, ctx->include_arg);
 			free(s);
 			return;
 		}
@@ -761,6 +761,11 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 	ctx->pos = saved_pos;
 	ctx->dom_depth = saved_depth;
 	return ctx->nerrors - errors;
+}
+
+int cfg_errors(const struct cfg_ctx *ctx)
+{
+	return ctx->nerrors;
 }
 
 int cfg_finish(struct cfg_ctx *ctx)

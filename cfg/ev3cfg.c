@@ -129,13 +129,14 @@ static void collect_c_includes(struct cfg_ctx *ctx, const char *raw)
 	}
 }
 
-/* Preprocesses and parses one configuration file; returns the errors. */
+/* Preprocesses and parses one configuration file; returns the errors it
+ * printed itself (cfg_parse counts its own in ctx). */
 static int process_file(struct cfg_ctx *ctx, struct tool *tool, const char *path)
 {
 	char cmd[8192] = "";
 	FILE *f, *pipe;
 	char *raw, *text;
-	int errors, status;
+	int status;
 
 	if ((f = fopen(path, "r")) == NULL) {
 		fprintf(stderr, "ev3cfg: %s: %s\n", path, strerror(errno));
@@ -168,9 +169,9 @@ static int process_file(struct cfg_ctx *ctx, struct tool *tool, const char *path
 		free(text);
 		return 1;
 	}
-	errors = cfg_parse(ctx, text, path);
+	cfg_parse(ctx, text, path);
 	free(text);
-	return errors;
+	return 0;
 }
 
 static bool file_exists(const char *path)
@@ -281,8 +282,9 @@ int main(int argc, char **argv)
 	ctx = cfg_new(stderr, include_file, &tool);
 	tool.included[tool.nincluded++] = strdup(input);
 	errors = process_file(ctx, &tool, input);
-	errors += cfg_finish(ctx);
-	errors += cfg_bind_modules(ctx, tool.objects, tool.nobjects);
+	cfg_finish(ctx);
+	cfg_bind_modules(ctx, tool.objects, tool.nobjects);
+	errors += cfg_errors(ctx);
 	if (errors > 0) {
 		fprintf(stderr, "ev3cfg: %s: %d error%s\n", input, errors, errors == 1 ? "" : "s");
 		cfg_free(ctx);

@@ -92,3 +92,28 @@ $(BUILD)/$(1)/obj/tests/cfg/test_cfg_errors.o: tests/cfg/test_cfg_errors.c cfg/c
 	$(Q)$$(CC_$(1)) -r -nostdlib -o $$@ $$@.main.o $$@.gen.o
 endef
 $(foreach c,$(HOST_CONFIGS),$(eval $(call ev3rt_cfg_unit_test,$(c))))
+
+# `make cfg-error-check` (in `make test`): every configuration in tests/cfg/bad
+# fails — in ev3cfg or when kernel_cfg.c is compiled — with the messages its
+# "/* expect: ... */" lines give (file, line, static API).
+CFG_BAD_INC := -Itests/cfg/bad -Icfg $(call layer_inc,api)
+
+.PHONY: cfg-error-check
+cfg-error-check: $(EV3CFG)
+	@set -e; export LC_ALL=C; n=0; \
+	for f in tests/cfg/bad/*.cfg; do \
+		out=$(BUILD)/cfg-error-check/$$(basename $$f .cfg); rm -rf $$out; mkdir -p $$out; \
+		if $(EV3CFG) -o $$out --cpp 'gcc -E' $(CFG_BAD_INC) --object $$out/main.o $$f 2> $$out/errors.txt; then \
+			if gcc -std=gnu11 -I$$out $(CFG_BAD_INC) -c $$out/kernel_cfg.c -o $$out/kernel_cfg.o \
+				2>> $$out/errors.txt; then \
+				echo "cfg-error-check: $$f: accepted"; exit 1; \
+			fi; \
+		fi; \
+		grep '^/\* expect: ' $$f | sed 's|^/\* expect: \(.*\) \*/$$|\1|' | while IFS= read -r e; do \
+			grep -qF -- "$$e" $$out/errors.txt || \
+				{ echo "cfg-error-check: $$f: no \"$$e\" in:"; cat $$out/errors.txt; exit 1; }; \
+		done; \
+		n=$$((n + 1)); \
+	done; \
+	echo "cfg-error-check: $$n bad configurations, each reported at its file, line and static API"
+TEST_SUITE_EXTRA += cfg-error-check
