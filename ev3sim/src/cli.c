@@ -68,7 +68,7 @@ static const char balance_usage[] =
 static const char motor_usage[] =
 	"usage: ev3sim motor [options]\n"
 	"\n"
-	"Runs a motor through the EV3 API (ev3_motor_set_speed or _set_power), prints\n"
+	"Runs a motor through the EV3 API (ev3lx_motor_set_speed or _set_power), prints\n"
 	"time, measured speed and counts every --every ms, then a key=value summary.\n"
 	"\n"
 	"  --port P         output port A..D (default A)\n"
