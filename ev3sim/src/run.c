@@ -16,7 +16,7 @@
 #define CHUNK_NS        10000000ULL     /* run in 10 ms slices: the CSV's row period */
 #define DRAIN_NS        20000000ULL
 #define GYROBOY_RELEASE_NS 4000000000ULL
-#define TOUCH_PRESS_NS  1000000000ULL
+#define TOUCH_PRESS_NS  3000000000ULL
 #define TOUCH_HOLD_NS   300000000ULL
 
 static const char *const robot_names[] = { "bare", "gyroboy", "tribot" };

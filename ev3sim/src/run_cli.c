@@ -33,7 +33,7 @@ static const char run_usage[] =
 	"                                  upright until --release, then falls unless balanced\n"
 	"                         tribot:  large motors B (left), C (right), touch on 1, colour on 3\n"
 	"                                  looking down at a line-following mat, ultrasonic on 4;\n"
-	"                                  the touch sensor is pressed at 1 s (unless --touch)\n"
+	"                                  the touch sensor is pressed at 3 s (unless --touch)\n"
 	"  --in1 .. --in4 DEV   none, touch, nxt-touch, nxt-light, gyro, color, ultrasonic, ir\n"
 	"  --outA .. --outD DEV none, large, medium (override the robot's)\n"
 	"  --seconds N          virtual seconds to run (default 10, max 3600)\n"

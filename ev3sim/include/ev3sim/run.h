@@ -76,7 +76,7 @@ struct ev3sim_run_result {
 };
 
 /* The robot's devices on the ports, no faults, actions or pushes; for the
- * tribot a touch press at 1 s; the gyro boy let go at 4 s with a 0.5 degree
+ * tribot a touch press at 3 s; the gyro boy let go at 4 s with a 0.5 degree
  * tilt, its gyro's noise 0.3 deg/s. */
 void ev3sim_run_defaults(struct ev3sim_run_opts *o, enum ev3sim_robot_kind robot);
 
