@@ -7,8 +7,7 @@ extern "C" {
 
 #include "ev3api.h"
 
-#define MAIN_PRIORITY     (TMIN_APP_TPRI + 2)
-#define BALANCE_PRIORITY  (TMIN_APP_TPRI)
+#define MAIN_PRIORITY     (TMIN_APP_TPRI + 1)
 
 #ifndef STACK_SIZE
 #define STACK_SIZE        4096

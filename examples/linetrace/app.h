@@ -8,7 +8,6 @@ extern "C" {
 #include "ev3api.h"
 
 #define MAIN_PRIORITY     (TMIN_APP_TPRI + 1)
-#define TRACE_PRIORITY    (TMIN_APP_TPRI)
 
 #ifndef STACK_SIZE
 #define STACK_SIZE        4096
