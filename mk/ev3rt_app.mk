@@ -50,8 +50,8 @@ $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(
 	for o in $$(EV3RT_OBJS_$(1)_$(2)); do \
 		script=$$$$(awk -v o="$$$$o" '$$$$1 == o { print $$$$2 }' $(BUILD)/$(2)/ev3rt/$(1)/gen/modules.txt); \
 		if [ -n "$$$$script" ]; then \
-			$$(CC_$(2)) -r -nostdlib -o "$$$$o.mod" -Wl,-T,"$$$$script" "$$$$o"; \
-			objs="$$$$objs $$$$o.mod"; \
+			$$(CC_$(2)) -r -nostdlib -o "$$$$o.mod.o" -Wl,-T,"$$$$script" "$$$$o"; \
+			objs="$$$$objs $$$$o.mod.o"; \
 		else \
 			objs="$$$$objs $$$$o"; \
 		fi; \

@@ -3,6 +3,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "rtos_host.h"
 #include "host_sim/scenario.h"
@@ -26,6 +27,20 @@ static const enum ev3_ui_button ui_button_of[] = {
 	EV3_UI_BUTTON_LEFT, EV3_UI_BUTTON_RIGHT, EV3_UI_BUTTON_UP,
 	EV3_UI_BUTTON_DOWN, EV3_UI_BUTTON_ENTER, EV3_UI_BUTTON_BACK,
 };
+
+#define MAX_IMAGE_REGIONS 8
+
+/*
+ * The app's writable memory as loaded (the regions of its ATT_MOD modules):
+ * copied before its first boot and put back before every later one, as a
+ * power-on loads the app afresh — so runs in one process do not share the
+ * app's statics.
+ */
+static struct {
+	const struct rtos_cfg *app;
+	unsigned n;
+	struct { void *base, *copy; SIZE size; } region[MAX_IMAGE_REGIONS];
+} image;
 
 static struct {
 	const struct ev3sim_run_opts *o;
@@ -77,6 +92,36 @@ void ev3sim_run_defaults(struct ev3sim_run_opts *o, enum ev3sim_robot_kind robot
 	default:
 		break;
 	}
+}
+
+/* Copies the app's writable regions at its first run, restores them at later ones. */
+static ER load_image(const struct rtos_cfg *app)
+{
+	if (image.app == app) {
+		for (unsigned i = 0; i < image.n; i++)
+			memcpy(image.region[i].base, image.region[i].copy, image.region[i].size);
+		return E_OK;
+	}
+	for (unsigned i = 0; i < image.n; i++)
+		free(image.region[i].copy);
+	memset(&image, 0, sizeof(image));
+	for (uint_t i = 0; i < app->nmems; i++) {
+		const struct rtos_mem_cfg *m = &app->mems[i];
+
+		if (!(m->access & TPM_WRITE) || m->size == 0)
+			continue;
+		if (image.n == MAX_IMAGE_REGIONS)
+			return E_NOMEM;
+		image.region[image.n].base = (void *)(uintptr_t)m->base;
+		image.region[image.n].size = m->size;
+		image.region[image.n].copy = malloc(m->size);
+		if (image.region[image.n].copy == NULL)
+			return E_NOMEM;
+		memcpy(image.region[image.n].copy, m->base, m->size);
+		image.n++;
+	}
+	image.app = app;
+	return E_OK;
 }
 
 /* Syslog lines of the run: counted and handed to the sink. */
@@ -279,6 +324,10 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 			snprintf(err, errlen, "bad device on port %u", p + 1);
 			return E_PAR;
 		}
+	if (load_image(app) != E_OK) {
+		snprintf(err, errlen, "out of memory for the app's image");
+		return E_SYS;
+	}
 	memset(&run, 0, sizeof(run));
 	run.o = o;
 	run.r = r;
@@ -349,7 +398,7 @@ void ev3sim_run_summary(const struct ev3sim_run_opts *o, const struct ev3sim_run
 	}
 	snprintf(buf, len, "app=%s robot=%s seconds=%g seed=%llu %slog_lines=%u warnings=%u errors=%u "
 		 "bugs=%u sim_speed=%.0fx",
-		 o->app_name ? o->app_name : "?", ev3sim_robot_name(o->robot), r->seconds,
+		 o->app_name ? o->app_name : "?", ev3sim_robot_name(o->robot), o->seconds,
 		 (unsigned long long)o->seed, world, r->log_lines, r->warnings, r->errors, r->bugs,
 		 r->wall_s > 0 ? r->seconds / r->wall_s : 0.0);
 }

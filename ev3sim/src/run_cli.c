@@ -280,7 +280,7 @@ static int run_program(char *const argv[])
 int ev3sim_run_command(int argc, char **argv)
 {
 	char root[PATH_MAX], app[PATH_MAX], runner[2 * PATH_MAX + 64], app_arg[PATH_MAX + 16];
-	char out_arg[sizeof(runner) + 16], cfg_path[PATH_MAX + 16];
+	char cfg_path[PATH_MAX + 16];
 	const char *base;
 	struct stat st;
 	char **args;
@@ -300,11 +300,10 @@ int ev3sim_run_command(int argc, char **argv)
 	}
 	base = strrchr(app, '/');
 	base = base && base[1] ? base + 1 : "app";
-	snprintf(runner, sizeof(runner), "%s/build/host/apps/%s/%s", root, base, base);
+	snprintf(runner, sizeof(runner), "%s/build/host/ev3rt/run_%s/run_%s", root, base, base);
 	snprintf(app_arg, sizeof(app_arg), "APP=%s", app);
-	snprintf(out_arg, sizeof(out_arg), "APP_RUNNER=%s", runner);
 	{
-		char *make_argv[] = { "make", "-s", "--no-print-directory", "-C", root, app_arg, out_arg,
+		char *make_argv[] = { "make", "-s", "--no-print-directory", "-C", root, app_arg,
 				      "ev3rt-app", NULL };
 
 		if (run_program(make_argv) != 0) {

@@ -1,6 +1,6 @@
 /*
  * example_test.h — running an EV3RT example app (examples/NAME, configured
- * from its app.cfg and linked into this test as EV3RT_APP_CFG) in ev3sim's
+ * from its app.cfg and linked into this test as ev3rt_app_cfg) in ev3sim's
  * robots, and reading what it logged.
  */
 #ifndef EV3LX_TESTS_EXAMPLE_TEST_H
@@ -12,7 +12,7 @@
 #include "ev3sim/run.h"
 
 /* The app's configuration, generated from its app.cfg. */
-extern const struct rtos_cfg EV3RT_APP_CFG;
+extern const struct rtos_cfg ev3rt_app_cfg;
 
 #define EX_MAX_LINES 64
 
@@ -38,6 +38,17 @@ static inline const char *ex_logged(const char *prefix)
 	return NULL;
 }
 
+/* How many logged NOTICE lines start with prefix and contain what. */
+static inline unsigned ex_count(const char *prefix, const char *what)
+{
+	unsigned n = 0;
+
+	for (unsigned i = 0; i < ex_log.n; i++)
+		n += strncmp(ex_log.lines[i], prefix, strlen(prefix)) == 0 &&
+		     strstr(ex_log.lines[i], what) != NULL;
+	return n;
+}
+
 /* Runs the app with o (its log captured); false if the run could not be done. */
 static inline bool ex_run(struct ev3sim_run_opts *o, struct ev3sim_run_result *r)
 {
@@ -45,7 +56,7 @@ static inline bool ex_run(struct ev3sim_run_opts *o, struct ev3sim_run_result *r
 
 	memset(&ex_log, 0, sizeof(ex_log));
 	o->log_sink = ex_log_sink;
-	if (ev3sim_run(o, &EV3RT_APP_CFG, r, err, sizeof(err)) != E_OK) {
+	if (ev3sim_run(o, &ev3rt_app_cfg, r, err, sizeof(err)) != E_OK) {
 		tap_diag("run failed: %s", err);
 		return false;
 	}
