@@ -41,15 +41,15 @@ static void bench_task(intptr_t exinf)
 static void attach_devices(void)
 {
 	if (bench_kind == BENCH_BRICK_LIGHT) {
-		ev3_attach_motor(BENCH_MOTOR_PORT, EV3_MOTOR_LARGE, NULL);
+		ev3_attach_motor(BENCH_MOTOR_PORT, HS_MOTOR_LARGE, NULL);
 		ev3_attach_uart_sensor(BENCH_SENSOR_PORT, UART_SENSOR_TYPE_GYRO, NULL);
 		ev3_set_scene(BENCH_SENSOR_PORT, &gyro_scene);
 		return;
 	}
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
-	ev3_attach_motor(1, EV3_MOTOR_LARGE, NULL);
-	ev3_attach_motor(2, EV3_MOTOR_MEDIUM, NULL);
-	ev3_attach_motor(3, EV3_MOTOR_MEDIUM, NULL);
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
+	ev3_attach_motor(1, HS_MOTOR_LARGE, NULL);
+	ev3_attach_motor(2, HS_MOTOR_MEDIUM, NULL);
+	ev3_attach_motor(3, HS_MOTOR_MEDIUM, NULL);
 	ev3_attach_uart_sensor(0, UART_SENSOR_TYPE_COLOR, NULL);
 	ev3_attach_uart_sensor(1, UART_SENSOR_TYPE_GYRO, NULL);
 	ev3_attach_uart_sensor(2, UART_SENSOR_TYPE_ULTRASONIC, NULL);

@@ -100,9 +100,9 @@ static ER plug_in(const struct ev3sim_balance_opts *o, char *err, size_t errlen)
 		else if (o->faults[i].target == EV3SIM_FAULT_GYRO_DRIFT)
 			gyro.gyro_drift_dps = o->faults[i].value;
 	}
-	ercd = ev3_attach_motor(LEFT_PORT, EV3_MOTOR_LARGE, NULL);
+	ercd = ev3_attach_motor(LEFT_PORT, HS_MOTOR_LARGE, NULL);
 	if (ercd == E_OK)
-		ercd = ev3_attach_motor(RIGHT_PORT, EV3_MOTOR_LARGE, NULL);
+		ercd = ev3_attach_motor(RIGHT_PORT, HS_MOTOR_LARGE, NULL);
 	if (ercd == E_OK)
 		ercd = ev3_attach_uart_sensor(GYRO_PORT, UART_SENSOR_TYPE_GYRO, &gyro);
 	if (ercd != E_OK) {

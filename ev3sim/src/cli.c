@@ -344,7 +344,7 @@ static int cmd_balance(struct args *a)
 static int cmd_motor(struct args *a)
 {
 	struct ev3sim_motor_opts o = {
-		.port = 0, .kind = EV3_MOTOR_LARGE, .value = 50, .seconds = 2.0, .every_ms = 100, .seed = 1,
+		.port = 0, .kind = HS_MOTOR_LARGE, .value = 50, .seconds = 2.0, .every_ms = 100, .seed = 1,
 	};
 	bool speed_given = false, power_given = false;
 	const char *v;
@@ -364,9 +364,9 @@ static int cmd_motor(struct args *a)
 				return usage_error(a, "--port: bad value '%s' (A..D)", v);
 		} else if (is(a, "--kind")) {
 			if (strcmp(v, "large") == 0)
-				o.kind = EV3_MOTOR_LARGE;
+				o.kind = HS_MOTOR_LARGE;
 			else if (strcmp(v, "medium") == 0)
-				o.kind = EV3_MOTOR_MEDIUM;
+				o.kind = HS_MOTOR_MEDIUM;
 			else
 				return usage_error(a, "--kind: bad value '%s' (large or medium)", v);
 		} else if (is(a, "--speed") || is(a, "--power")) {

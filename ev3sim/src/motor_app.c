@@ -40,9 +40,9 @@ static void motor_task(intptr_t exinf)
 	int speed = 0;
 
 	(void)exinf;
-	check(ev3lx_motor_config(port, run.o.kind == EV3_MOTOR_MEDIUM ? MEDIUM_MOTOR : LARGE_MOTOR));
+	check(ev3lx_motor_config(port, run.o.kind == HS_MOTOR_MEDIUM ? MEDIUM_MOTOR : LARGE_MOTOR));
 	fprintf(run.out, "# motor %c (%s), %s %d for %g s\n# t_s  speed_pct  counts_deg\n",
-		'A' + run.o.port, run.o.kind == EV3_MOTOR_MEDIUM ? "medium" : "large",
+		'A' + run.o.port, run.o.kind == HS_MOTOR_MEDIUM ? "medium" : "large",
 		run.o.power_mode ? "power" : "speed", run.o.value, run.o.seconds);
 	get_tim(&t0);
 	if (run.o.power_mode)
@@ -98,7 +98,7 @@ ER ev3sim_motor_app(const struct ev3sim_motor_opts *o, FILE *out, char *err, siz
 
 	if (o->port > 3 || o->value < -100 || o->value > 100 || !(o->seconds > 0) ||
 	    o->seconds > 3600 || o->every_ms == 0 ||
-	    (o->kind != EV3_MOTOR_LARGE && o->kind != EV3_MOTOR_MEDIUM)) {
+	    (o->kind != HS_MOTOR_LARGE && o->kind != HS_MOTOR_MEDIUM)) {
 		snprintf(err, errlen, "bad motor options");
 		return E_PAR;
 	}
@@ -123,7 +123,7 @@ ER ev3sim_motor_app(const struct ev3sim_motor_opts *o, FILE *out, char *err, siz
 	wall = ev3sim_wall_seconds() - wall0;
 	fprintf(out, "port=%c kind=%s mode=%s value=%d seconds=%g counts=%ld final_speed_pct=%d "
 		"mean_speed_dps=%.1f api_errors=%u bugs=%u sim_speed=%.0fx\n",
-		'A' + o->port, o->kind == EV3_MOTOR_MEDIUM ? "medium" : "large",
+		'A' + o->port, o->kind == HS_MOTOR_MEDIUM ? "medium" : "large",
 		o->power_mode ? "power" : "speed", o->value, o->seconds, (long)run.counts, run.speed,
 		run.counts / o->seconds, run.api_errors, rtos_host_bug_count(),
 		wall > 0 ? rtos_host_now() * 1e-9 / wall : 0.0);

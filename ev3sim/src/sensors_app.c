@@ -316,8 +316,8 @@ static ER plug_in(const struct ev3sim_sensors_opts *o)
 			break;
 		}
 		if (ercd == E_OK && o->out[p] != EV3SIM_OUT_NONE)
-			ercd = ev3_attach_motor(p, o->out[p] == EV3SIM_OUT_MEDIUM ? EV3_MOTOR_MEDIUM :
-						EV3_MOTOR_LARGE, NULL);
+			ercd = ev3_attach_motor(p, o->out[p] == EV3SIM_OUT_MEDIUM ? HS_MOTOR_MEDIUM :
+						HS_MOTOR_LARGE, NULL);
 	}
 	return ercd;
 }

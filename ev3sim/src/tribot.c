@@ -38,7 +38,7 @@
 static struct tribot {
 	bool running;
 	struct ev3sim_tribot_cfg cfg;
-	struct ev3_motor *motor[2];
+	struct hs_motor *motor[2];
 	hs_event_t step_ev;
 	double angle_deg[2];            /* shaft angles at the last step */
 	double x, y, heading;           /* m, m, rad */
@@ -117,11 +117,11 @@ static void tribot_step(void *arg)
 	(void)arg;
 	tb.step_ev = 0;
 	for (int i = 0; i < 2; i++) {
-		double a = ev3_motor_angle_deg(tb.motor[i]);
+		double a = hs_motor_angle_deg(tb.motor[i]);
 
 		d[i] = (a - tb.angle_deg[i]) * DEG * WHEEL_RADIUS_M;
 		tb.angle_deg[i] = a;
-		ev3_motor_set_load(tb.motor[i], rolling_load(ev3_motor_speed_dps(tb.motor[i])),
+		hs_motor_set_load(tb.motor[i], rolling_load(hs_motor_speed_dps(tb.motor[i])),
 				   MASS_KG / 2.0 * WHEEL_RADIUS_M * WHEEL_RADIUS_M);
 	}
 	ds = (d[0] + d[1]) / 2.0;
@@ -169,7 +169,7 @@ ER ev3sim_tribot_start(const struct ev3sim_tribot_cfg *cfg)
 		tb.motor[i] = ev3_output_motor(ports[i]);
 		if (tb.motor[i] == NULL)
 			return E_OBJ;
-		tb.angle_deg[i] = ev3_motor_angle_deg(tb.motor[i]);
+		tb.angle_deg[i] = hs_motor_angle_deg(tb.motor[i]);
 	}
 	if (cfg->color_port >= 0 && ev3_input_uart_sensor((unsigned)cfg->color_port) == NULL)
 		return E_OBJ;

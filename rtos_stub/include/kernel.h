@@ -24,8 +24,6 @@
 #ifndef TIC_DENO
 #define TIC_DENO 5U
 #endif
-/* Tick length in nanoseconds; TIC_NUME/TIC_DENO must divide evenly into ns. */
-#define TIC_NS   ((uint64_t)(TIC_NUME) * 1000000U / (TIC_DENO))
 
 /* ---- Object types ---- */
 typedef uint_t   FLGPTN;  /* eventflag bit pattern */

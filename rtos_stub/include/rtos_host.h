@@ -17,6 +17,10 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 
+/* The length of one tick in virtual nanoseconds: TIC_NUME/TIC_DENO ms (kernel.h),
+ * which must come out as a whole number of nanoseconds. */
+#define RTOS_HOST_TICK_NS	((uint64_t)(TIC_NUME) * 1000000U / (TIC_DENO))
+
 /* ---- Boot and run ---- */
 
 /* Resets the kernel, checks cfg (and its includes), creates all objects, runs
@@ -101,6 +105,16 @@ void rtos_host_set_mmio_handler(const struct rtos_host_mmio_ops *ops);
 void rtos_host_set_mmio_window(uintptr_t start, uintptr_t len);
 /* The window for a physical register range, or NULL if none is modelled. */
 void *rtos_host_map_io(uintptr_t phys, SIZE size);
+
+/* ---- Boot arguments ---- */
+
+/* The command line the simulated boot loader hands the next boots (NULL:
+ * none), as U-Boot's bootargs: the board sets it when it is created, the
+ * layers above read it (linux_compat takes "module.param=value" words as
+ * module parameters).  The string must stay valid until changed. */
+void rtos_host_set_boot_args(const char *args);
+/* The command line set by rtos_host_set_boot_args ("" if none). */
+const char *rtos_host_boot_args(void);
 
 /* ---- Trace ---- */
 

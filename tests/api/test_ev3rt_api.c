@@ -69,15 +69,15 @@ static bool warned(const char *what)
 static void attach_motors(void)
 {
 	rtos_host_trace_set_sink(trace_sink, NULL);
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
-	ev3_attach_motor(1, EV3_MOTOR_LARGE, NULL);
-	ev3_attach_motor(2, EV3_MOTOR_LARGE, NULL);
-	ev3_attach_motor(3, EV3_MOTOR_MEDIUM, NULL);
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
+	ev3_attach_motor(1, HS_MOTOR_LARGE, NULL);
+	ev3_attach_motor(2, HS_MOTOR_LARGE, NULL);
+	ev3_attach_motor(3, HS_MOTOR_MEDIUM, NULL);
 }
 
 static double model_angle(unsigned port)
 {
-	return ev3_motor_angle_deg(ev3_output_motor(port));
+	return hs_motor_angle_deg(ev3_output_motor(port));
 }
 
 static void motor_body(void)
@@ -92,8 +92,8 @@ static void motor_body(void)
 	is_int(ev3_motor_get_type((motor_port_t)4), E_ID, "get_type of a bad port: E_ID");
 
 	/* set_power: a regulated speed on a large motor, a power on an unregulated one */
-	ev3_motor_set_load(ev3_output_motor(0), LOAD_NM, 0);
-	ev3_motor_set_load(ev3_output_motor(2), LOAD_NM, 0);
+	hs_motor_set_load(ev3_output_motor(0), LOAD_NM, 0);
+	hs_motor_set_load(ev3_output_motor(2), LOAD_NM, 0);
 	is_int(ev3_motor_set_power(EV3_PORT_A, 50), E_OK, "set_power A 50");
 	is_int(ev3_motor_set_power(EV3_PORT_C, 50), E_OK, "set_power C 50");
 	dly_tsk(800);
@@ -127,7 +127,7 @@ static void motor_body(void)
 	is_int(ev3_motor_stop(EV3_PORT_B, false), E_OK, "stop B coasting");
 	is_int(ev3_motor_stop(EV3_PORT_C, true), E_OK, "stop C");
 	is_int(ev3_motor_stop(EV3_PORT_D, true), E_OK, "stop D");
-	ev3_motor_set_load(ev3_output_motor(0), 0, 0);
+	hs_motor_set_load(ev3_output_motor(0), 0, 0);
 	dly_tsk(600);
 	is_int(ev3_motor_reset_counts(EV3_PORT_A), E_OK, "reset_counts");
 	dly_tsk(4);

@@ -11,14 +11,14 @@ static ER ctx_result;
 
 static void attach(void)
 {
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
-	ev3_attach_motor(1, EV3_MOTOR_LARGE, NULL);
-	ev3_attach_motor(3, EV3_MOTOR_MEDIUM, NULL);
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
+	ev3_attach_motor(1, HS_MOTOR_LARGE, NULL);
+	ev3_attach_motor(3, HS_MOTOR_MEDIUM, NULL);
 }
 
 static double model_angle(unsigned port)
 {
-	return ev3_motor_angle_deg(ev3_output_motor(port));
+	return hs_motor_angle_deg(ev3_output_motor(port));
 }
 
 static void call_from_interrupt(void *arg)

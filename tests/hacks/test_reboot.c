@@ -11,11 +11,12 @@
  */
 #include <stdlib.h>
 #include <string.h>
-#include "api/api_test.h"
+#include "api_test.h"
 #include <linux/module.h>
 #include <linux_compat/devfs.h>
 #include <linux_compat/heap.h>
 #include <linux_compat/irq.h>
+#include <linux_compat/machine.h>
 #include <linux/ioport.h>
 #include <mach/gpio.h>
 #include "lms_pwm.h"
@@ -69,7 +70,7 @@ static void trace_sink(const char *line, void *ctx)
 
 static void attach(void)
 {
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
 	ev3_attach_uart_sensor(0, 29, NULL);
 	ev3_set_scene(0, &scene);
 }

@@ -175,7 +175,7 @@ ER ev3_bench_full_brick(double virtual_s, uint64_t seed, struct ev3_bench_result
 	for (unsigned p = 0; p < 4; p++) {
 		const struct ev3_output_pins *op = &ev3_output_pins[p];
 
-		ev3_attach_motor(p, p < 2 ? EV3_MOTOR_LARGE : EV3_MOTOR_MEDIUM, NULL);
+		ev3_attach_motor(p, p < 2 ? HS_MOTOR_LARGE : HS_MOTOR_MEDIUM, NULL);
 		if (p & 1U) {           /* B and D in reverse */
 			gpio_release(op->dir0);
 			gpio_drive(op->dir1, 1);
@@ -206,7 +206,7 @@ ER ev3_bench_full_brick(double virtual_s, uint64_t seed, struct ev3_bench_result
 	for (unsigned p = 0; p < 4; p++) {
 		r->sensor_bytes += hosts[p].bytes;
 		r->data_frames += uart_sensor_get_stats(ev3_input_uart_sensor(p))->data_frames;
-		r->tacho_counts[p] = ev3_motor_tacho_counts(ev3_output_motor(p));
+		r->tacho_counts[p] = hs_motor_tacho_counts(ev3_output_motor(p));
 	}
 	hs_sim_shutdown();
 	r->wall_s = clock_s(CLOCK_MONOTONIC) - t0;

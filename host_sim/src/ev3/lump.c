@@ -1,5 +1,5 @@
 /*
- * lump.c — framing of the LEGO UART sensor protocol (facts §8).
+ * lump.c — framing of the LEGO UART sensor protocol (LEGO's d_uart_mod.c, pybricks' port_lump.c).
  */
 #include <string.h>
 #include "host_sim/devices/lump.h"

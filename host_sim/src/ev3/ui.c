@@ -15,7 +15,7 @@
 #include "host_sim/clock.h"
 #include "host_sim/gpio.h"
 #include "host_sim/regs.h"
-#include "host_sim/scenario.h"
+#include "host_sim/rng.h"
 #include "host_sim/trace.h"
 #include "host_sim/devices/ev3_ui.h"
 

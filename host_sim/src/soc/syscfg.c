@@ -14,7 +14,7 @@
 #include "host_sim/board.h"
 #include "host_sim/regs.h"
 #include "host_sim/syscfg.h"
-#include "../core/core_parts.h"
+#include "soc_parts.h"
 
 #define SYSCFG_KICK0R    0x038U
 #define SYSCFG_KICK1R    0x03CU

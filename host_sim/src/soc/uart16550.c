@@ -1,8 +1,7 @@
 /*
  * uart16550.c — AM1808 UART (TRM "Universal Asynchronous Receiver/
- * Transmitter"), 16550-compatible, with the EV3 port wiring of
- * ev3_ports.h.  Bytes are events on the virtual clock; everything else is
- * computed when read.
+ * Transmitter"), 16550-compatible.  Bytes are events on the virtual clock;
+ * everything else is computed when read.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -12,7 +11,6 @@
 #include "host_sim/psc.h"
 #include "host_sim/regs.h"
 #include "host_sim/trace.h"
-#include "host_sim/devices/ev3_ports.h"
 #include "host_sim/devices/uart16550.h"
 
 enum {
@@ -39,8 +37,7 @@ enum {
 #define FIFO_SIZE  16U
 
 struct ev3_uart {
-	const struct ev3_port_uart *cfg;
-	unsigned port;
+	const struct hs_uart_cfg *cfg;
 	struct hs_region *r;
 	uint8_t fcr;                /* FCR is write-only: its state lives here */
 	/* copies of the registers the byte path consults, kept by the write hooks */
@@ -63,7 +60,6 @@ struct ev3_uart {
 	struct ev3_uart_stats stats;
 };
 
-static struct ev3_uart *port_uarts[EV3_INPUT_PORTS];
 
 /* ---- helpers ---- */
 
@@ -516,20 +512,19 @@ static const struct hs_reg uart_regs[] = {
 	  .after_write = write_mcr_mdr },
 };
 
-/* ---- devices ---- */
+/* ---- life cycle ---- */
 
-static ER uart_create_port(unsigned port, unsigned power, void **ctx)
+ER hs_uart_create(const struct hs_uart_cfg *cfg, struct ev3_uart **out)
 {
 	struct ev3_uart *u = calloc(1, sizeof(*u));
 	const struct hs_board_cfg *bc = hs_board_config();
 
 	if (!u)
 		return E_NOMEM;
-	u->cfg = &ev3_port_uart[port];
-	u->port = port;
+	u->cfg = cfg;
 	u->r = hs_region_add(&(struct hs_region_cfg){ .name = u->cfg->name, .phys = u->cfg->base,
 		.size = 0x1000, .regs = uart_regs, .nregs = HS_ARRAY_SIZE(uart_regs),
-		.power = power, .ctx = u });
+		.power = cfg->power, .ctx = u });
 	if (!u->r) {
 		free(u);
 		return E_PAR;
@@ -541,57 +536,18 @@ static ER uart_create_port(unsigned port, unsigned power, void **ctx)
 		hs_reg_set(u->r, PWREMU, u->pwremu);
 	}
 	u->line_high = true;
-	port_uarts[port] = u;
-	*ctx = u;
+	*out = u;
 	return E_OK;
 }
 
-/* Frees a UART. */
-static void uart_destroy(void *ctx)
+void hs_uart_destroy(struct ev3_uart *u)
 {
-	struct ev3_uart *u = ctx;
-
+	if (!u)
+		return;
 	hs_event_cancel(&u->tx_ev);
 	hs_event_cancel(&u->timeout_ev);
 	hs_event_cancel(&u->break_ev);
-	if (port_uarts[u->port] == u)
-		port_uarts[u->port] = NULL;
 	free(u);
-}
-
-/* Board device: UART1 (input port 1). */
-static ER uart1_create(const struct hs_board_cfg *cfg, void **ctx)
-{
-	return uart_create_port(0, HS_PSC1_MODULE(HS_LPSC1_UART1), ctx);
-}
-
-/* Board device: UART0 (input port 2). */
-static ER uart0_create(const struct hs_board_cfg *cfg, void **ctx)
-{
-	return uart_create_port(1, HS_PSC0_MODULE(HS_LPSC0_UART0), ctx);
-}
-
-/* Board device: stand-in UART of input port 3. */
-static ER suart3_create(const struct hs_board_cfg *cfg, void **ctx)
-{
-	return uart_create_port(2, HS_NO_PSC, ctx);
-}
-
-/* Board device: stand-in UART of input port 4. */
-static ER suart4_create(const struct hs_board_cfg *cfg, void **ctx)
-{
-	return uart_create_port(3, HS_NO_PSC, ctx);
-}
-
-const struct hs_device ev3_uart1_device = { "UART1", uart1_create, NULL, uart_destroy };
-const struct hs_device ev3_uart0_device = { "UART0", uart0_create, NULL, uart_destroy };
-const struct hs_device ev3_suart_in3_device = { "SUART_IN3", suart3_create, NULL, uart_destroy };
-const struct hs_device ev3_suart_in4_device = { "SUART_IN4", suart4_create, NULL, uart_destroy };
-
-/* The UART of an input port. */
-struct ev3_uart *ev3_uart_of_port(unsigned port)
-{
-	return port < EV3_INPUT_PORTS ? port_uarts[port] : NULL;
 }
 
 /* Connects the far end. */

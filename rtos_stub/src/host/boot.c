@@ -342,6 +342,20 @@ static void run_termination_routines(void)
 	terminating = false;
 }
 
+static const char *boot_args;    /* the boot loader's command line, kept across boots */
+
+/* Sets the command line later boots see. */
+void rtos_host_set_boot_args(const char *args)
+{
+	boot_args = args;
+}
+
+/* The command line, "" if none was set. */
+const char *rtos_host_boot_args(void)
+{
+	return boot_args != NULL ? boot_args : "";
+}
+
 /* Runs the ATT_TER routines, then frees task stacks and forgets objects and events. */
 void rtos_host_shutdown(void)
 {

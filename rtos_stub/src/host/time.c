@@ -4,7 +4,7 @@
  *
  * Time events are kept in a heap keyed by (tick index, sequence) and are
  * processed by the kernel's part of the tick interrupt (INTNO_TICK).  Tick k
- * is the boundary at k * TIC_NS.  A relative time of ms from now expires at
+ * is the boundary at k * RTOS_HOST_TICK_NS.  A relative time of ms from now expires at
  * the first tick boundary at or after now + ms, and never at a tick already
  * processed (docs/rtos-stub.md, "Timing rules").  The tick interrupt is only
  * raised at boundaries where something is due, unless ISRs are attached to
@@ -97,7 +97,7 @@ static void tick_fire(void *arg);
 /* Makes sure a tick interrupt happens at boundary tick (or earlier). */
 static void tick_need(uint64_t tick)
 {
-	uint64_t t = tick * TIC_NS;
+	uint64_t t = tick * RTOS_HOST_TICK_NS;
 
 	if (tick_every)
 		return;
@@ -152,7 +152,7 @@ void tmevt_dequeue(struct tmevt *ev)
 uint64_t tick_after_ms(RELTIM ms)
 {
 	uint64_t due = now_ns + (uint64_t)ms * NS_PER_MS;
-	uint64_t tick = (due + TIC_NS - 1) / TIC_NS;
+	uint64_t tick = (due + RTOS_HOST_TICK_NS - 1) / RTOS_HOST_TICK_NS;
 
 	return tick > tick_done ? tick : tick_done + 1;
 }
@@ -166,7 +166,7 @@ static void tick_fire(void *arg)
 	tick_event = 0;
 	tick_event_time = UINT64_MAX;
 	if (tick_every) {
-		tick_event_time = (now_ns / TIC_NS + 1) * TIC_NS;
+		tick_event_time = (now_ns / RTOS_HOST_TICK_NS + 1) * RTOS_HOST_TICK_NS;
 		tick_event = event_at_kernel(tick_event_time, tick_fire, NULL);
 	}
 	rtos_host_irq_raise(INTNO_TICK);
@@ -175,7 +175,7 @@ static void tick_fire(void *arg)
 /* The kernel's part of the tick interrupt: processes every time event due by now. */
 void tick_handler(void)
 {
-	uint64_t cur = now_ns / TIC_NS;
+	uint64_t cur = now_ns / RTOS_HOST_TICK_NS;
 
 	tick_done = cur;
 	while (tm_len > 0 && tm_heap[0]->tick <= cur) {
@@ -210,8 +210,8 @@ void time_reset(void)
 void time_start(void)
 {
 	if (tick_every) {
-		tick_event_time = TIC_NS;
-		tick_event = event_at_kernel(TIC_NS, tick_fire, NULL);
+		tick_event_time = RTOS_HOST_TICK_NS;
+		tick_event = event_at_kernel(RTOS_HOST_TICK_NS, tick_fire, NULL);
 	}
 }
 
@@ -227,7 +227,7 @@ static uint64_t cyc_due_ns(const struct cyccb *c, uint64_t k)
 /* Tick at which activation k runs: the first boundary at or after its due time. */
 static uint64_t cyc_tick(const struct cyccb *c, uint64_t k)
 {
-	return (cyc_due_ns(c, k) + TIC_NS - 1) / TIC_NS;
+	return (cyc_due_ns(c, k) + RTOS_HOST_TICK_NS - 1) / RTOS_HOST_TICK_NS;
 }
 
 /* Tick callback of a cyclic handler: queues the next activation, then runs the handler. */
@@ -469,7 +469,7 @@ ER get_tim(SYSTIM *p_systim)
 		return svc_result("get_tim", E_CTX);
 	if (check_out_ptr(p_systim, sizeof(*p_systim)) != E_OK)
 		return svc_result("get_tim", E_MACV);
-	*p_systim = (SYSTIM)((now_ns / TIC_NS) * TIC_NS / NS_PER_MS);
+	*p_systim = (SYSTIM)((now_ns / RTOS_HOST_TICK_NS) * RTOS_HOST_TICK_NS / NS_PER_MS);
 	return E_OK;
 }
 

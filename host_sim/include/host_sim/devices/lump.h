@@ -1,6 +1,6 @@
 /*
  * lump.h — the LEGO UART sensor message protocol, as both ends frame it
- * (facts §8): header bits 7-6 message class, bits 5-3 payload size code,
+ * (LEGO's d_uart_mod.c, pybricks' port_lump.c): header bits 7-6 message class, bits 5-3 payload size code,
  * bits 2-0 command or mode; check byte = 0xFF XOR every preceding byte.
  * Used by the sensor models (device side) and by tests (host side).
  */

@@ -1,9 +1,12 @@
 /*
  * uart16550.h — the AM1808 UART (16550-compatible) as used behind the EV3
- * input ports: UART1 (port 1), UART0 (port 2) and two stand-ins for the PRU
- * soft UARTs of ports 3 and 4 (ev3_ports.h: ev3_port_uart).  Host only.
+ * input ports.  The model is one 16550 at an address, on an interrupt line,
+ * with a module clock (struct hs_uart_cfg); which UARTs a board has and
+ * what sits on their lines is the board's business (the EV3: UART1 behind
+ * port 1, UART0 behind port 2 and two stand-ins for the PRU soft UARTs of
+ * ports 3 and 4, ev3_ports.h: ev3_port_uart).  Host only.
  *
- * Registers are 32-bit words (facts §2): RBR/THR 0x00, IER 0x04, IIR/FCR
+ * Registers are 32-bit words (AM1808 TRM): RBR/THR 0x00, IER 0x04, IIR/FCR
  * 0x08, LCR 0x0C, MCR 0x10, LSR 0x14, MSR 0x18, SCR 0x1C, DLL 0x20, DLH
  * 0x24, REVID1/2 0x28/0x2C, PWREMU_MGMT 0x30, MDR 0x34; byte accesses are
  * accepted too.  DLL/DLH also appear at 0x00/0x04 while LCR.DLAB is set.
@@ -22,15 +25,23 @@
 #include <stdint.h>
 #include "host_sim/board.h"
 
-extern const struct hs_device ev3_uart1_device;     /* input port 1 */
-extern const struct hs_device ev3_uart0_device;     /* input port 2 */
-extern const struct hs_device ev3_suart_in3_device; /* input port 3 stand-in */
-extern const struct hs_device ev3_suart_in4_device; /* input port 4 stand-in */
-
 struct ev3_uart;
 
-/* The UART behind input port (0..3), or NULL if its device is not on the board. */
-struct ev3_uart *ev3_uart_of_port(unsigned port);
+/* One UART instance: register base, AINTC line, module clock, power domain. */
+struct hs_uart_cfg {
+	const char *name;           /* region name */
+	uintptr_t base;
+	unsigned intno;
+	uint32_t clock_hz;          /* module clock: baud = clock / (16 or 13 * divisor) */
+	unsigned power;             /* HS_PSCx_MODULE(n), or HS_NO_PSC */
+};
+
+/* Creates a UART (cfg must stay valid while it exists) in the state Linux
+ * leaves it, or at TRM reset with the board's cold_reset.  Returns E_OK
+ * and *out, E_NOMEM, or E_PAR if its registers cannot be placed. */
+ER hs_uart_create(const struct hs_uart_cfg *cfg, struct ev3_uart **out);
+/* Stops its events and frees it. */
+void hs_uart_destroy(struct ev3_uart *u);
 
 /* The far end: called when a byte the UART sent has left the wire, and
  * when the UART starts/stops sending a break (LCR.BC). */

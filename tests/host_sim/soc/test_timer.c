@@ -10,6 +10,7 @@
 #include "host_sim/board.h"
 #include "host_sim/clock.h"
 #include "host_sim/scenario.h"
+#include "host_sim/timer64.h"
 
 #define T3     0x01F0D000U
 #define TIM12  (T3 + 0x10)

@@ -1,6 +1,6 @@
 /*
  * test_uart_sensor.c — each EV3 UART sensor's power-up as the host UART
- * receives it, checked against the protocol facts (§8, §9): pin 6 held low
+ * receives it, checked against the protocol (LEGO's d_uart_mod.c, pybricks' port_lump.c) and the sensors' captures: pin 6 held low
  * ~500 ms (a break on the UART), TYPE, MODES, SPEED 57600, INFO per mode
  * highest first (NAME, RAW, SI, SYMBOL only with a unit, FORMAT; no PCT),
  * ACK, header bits, lengths, check bytes and the captured durations; then

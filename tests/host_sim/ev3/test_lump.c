@@ -1,5 +1,5 @@
 /*
- * test_lump.c — LEGO UART protocol framing (facts §8): size codes, check
+ * test_lump.c — LEGO UART protocol framing (LEGO's d_uart_mod.c, pybricks' port_lump.c): size codes, check
  * bytes, padding, frame lengths, the parser.
  */
 #include "tap.h"

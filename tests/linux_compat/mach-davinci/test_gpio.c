@@ -7,8 +7,8 @@
  * pins' handlers run, lowest first; rising-only and falling-only triggers
  * are honoured; masking and freeing reprogram triggers, BINTEN and the line.
  */
-#include "../lx_test.h"
-#include "../fake_mmio.h"
+#include "lx_test.h"
+#include "fake_mmio.h"
 #include <linux/gpio.h>
 #include <linux/interrupt.h>
 #include <linux/irq.h>

@@ -6,7 +6,7 @@
  * gpio_direction_output drives the pin; edges of several pins in one bank
  * interrupt are each delivered once, lowest pin first.
  */
-#include "../lx_test.h"
+#include "lx_test.h"
 #include <linux/gpio.h>
 #include <linux/interrupt.h>
 #include "host_sim/board.h"

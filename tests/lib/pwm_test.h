@@ -40,7 +40,7 @@ static void pwm_test_task(intptr_t exinf)
 	pwm_test_done = true;
 }
 
-/* Boots the brick with motors[port] (an ev3_motor_kind or PWM_TEST_NO_MOTOR),
+/* Boots the brick with motors[port] (an hs_motor_kind or PWM_TEST_NO_MOTOR),
  * runs body in a task of domain domid with extra merged in; true if the body
  * finished within the time limit. */
 static inline bool pwm_test_run_in(void (*body)(void), const int motors[4], ID domid,
@@ -65,7 +65,7 @@ static inline bool pwm_test_run_in(void (*body)(void), const int motors[4], ID d
 	}
 	for (unsigned port = 0; port < 4; port++)
 		if (motors[port] != PWM_TEST_NO_MOTOR &&
-		    ev3_attach_motor(port, (enum ev3_motor_kind)motors[port], NULL) != E_OK)
+		    ev3_attach_motor(port, (enum hs_motor_kind)motors[port], NULL) != E_OK)
 			tap_diag("could not attach a motor to port %c", 'A' + port);
 	end = hs_now() + PWM_TEST_LIMIT_NS;
 	while (!pwm_test_done && hs_now() < end)
@@ -141,12 +141,12 @@ static inline ER pwm_set_types(uint8_t a, uint8_t b, uint8_t c, uint8_t d)
 
 static inline double motor_angle(unsigned port)
 {
-	return ev3_motor_angle_deg(ev3_output_motor(port));
+	return hs_motor_angle_deg(ev3_output_motor(port));
 }
 
 static inline double motor_dps(unsigned port)
 {
-	return ev3_motor_speed_dps(ev3_output_motor(port));
+	return hs_motor_speed_dps(ev3_output_motor(port));
 }
 
 static inline struct lms_motor_data motor_data_of(unsigned port)

@@ -1,7 +1,7 @@
 /*
  * test_motor.c — EV3 motors through the registers a driver writes: speed
  * against duty and direction (eHRPWM1 and eCAP), brake against coast, the
- * tacho edges counted with the facts' direction rule against the shaft
+ * tacho edges counted with LEGO's d_pwm.c direction rule against the shaft
  * angle both ways, the sleep when nothing moves, and the stall/encoder
  * faults.
  */
@@ -39,12 +39,12 @@ static double speed_after(unsigned port, int mode, uint16_t duty, uint64_t ns)
 	devtest_duty(port, duty);
 	devtest_bridge(port, mode);
 	hs_sim_run_for(ns);
-	return ev3_motor_speed_dps(ev3_output_motor(port));
+	return hs_motor_speed_dps(ev3_output_motor(port));
 }
 
 int main(void)
 {
-	struct ev3_motor *m;
+	struct hs_motor *m;
 	double s25, s50, s75, s100, rev, a0, brake_speed, coast_speed;
 	int64_t counted;
 
@@ -52,9 +52,9 @@ int main(void)
 	devtest_boot(1, NULL);
 	devtest_pwm_setup();
 
-	is_int(ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL), E_OK, "large motor on port A");
-	is_int(ev3_attach_motor(4, EV3_MOTOR_LARGE, NULL), E_ID, "port 4 is no output port");
-	is_int(ev3_attach_motor(1, (enum ev3_motor_kind)7, NULL), E_PAR, "unknown motor kind refused");
+	is_int(ev3_attach_motor(0, HS_MOTOR_LARGE, NULL), E_OK, "large motor on port A");
+	is_int(ev3_attach_motor(4, HS_MOTOR_LARGE, NULL), E_ID, "port 4 is no output port");
+	is_int(ev3_attach_motor(1, (enum hs_motor_kind)7, NULL), E_PAR, "unknown motor kind refused");
 	m = ev3_output_motor(0);
 	tacho.int_pin = ev3_output_pins[0].tacho_int;
 	tacho.dir_pin = ev3_output_pins[0].tacho_dir;
@@ -62,7 +62,7 @@ int main(void)
 	hs_gpio_watch(tacho.int_pin, int_watch, NULL);
 	hs_gpio_watch(tacho.dir_pin, dir_watch, NULL);
 
-	/* speed against duty, forward (facts §3: DIR0 high, DIR1 floating) */
+	/* speed against duty, forward (LEGO's d_pwm.c: DIR0 high, DIR1 floating) */
 	s25 = speed_after(0, 1, 2500, 500 * MS);
 	s50 = speed_after(0, 1, 5000, 500 * MS);
 	s75 = speed_after(0, 1, 7500, 500 * MS);
@@ -74,7 +74,7 @@ int main(void)
 	in_range(s25, 200, 260, "25%% duty minus dry friction");
 
 	counted = tacho.count;
-	a0 = ev3_motor_angle_deg(m);
+	a0 = hs_motor_angle_deg(m);
 	in_range((double)counted - a0, -1.0, 1.0, "counts forward = shaft angle (%lld vs %.1f deg)",
 		 (long long)counted, a0);
 	ok(tacho.dir_edges >= tacho.int_edges - 1 && tacho.dir_edges <= tacho.int_edges + 1,
@@ -83,11 +83,11 @@ int main(void)
 	/* reverse */
 	rev = speed_after(0, -1, 10000, 800 * MS);
 	in_range(rev, -1070, -1030, "reverse (DIR0 floating, DIR1 high) turns backwards");
-	in_range((double)tacho.count - ev3_motor_angle_deg(m), -1.0, 1.0,
+	in_range((double)tacho.count - hs_motor_angle_deg(m), -1.0, 1.0,
 		 "counts after reversing still equal the angle (%lld vs %.1f)", (long long)tacho.count,
-		 ev3_motor_angle_deg(m));
+		 hs_motor_angle_deg(m));
 	ok(tacho.count < counted, "the count went down while reversing");
-	is_int(ev3_motor_tacho_counts(m), tacho.count, "model's own count matches the pins");
+	is_int(hs_motor_tacho_counts(m), tacho.count, "model's own count matches the pins");
 
 	/* brake against coast from full speed */
 	speed_after(0, 1, 10000, 300 * MS);
@@ -97,7 +97,7 @@ int main(void)
 	tap_diag("30 ms after full speed: braked %.0f, coasting %.0f deg/s", brake_speed, coast_speed);
 	ok(brake_speed < coast_speed, "braking stops faster than coasting");
 	hs_sim_run_for(3000 * MS);
-	is_int((int64_t)ev3_motor_speed_dps(m), 0, "coasting motor comes to rest (dry friction)");
+	is_int((int64_t)hs_motor_speed_dps(m), 0, "coasting motor comes to rest (dry friction)");
 	{
 		uint64_t edges = tacho.int_edges;
 
@@ -106,7 +106,7 @@ int main(void)
 	}
 
 	/* medium motor on an eCAP port */
-	is_int(ev3_attach_motor(2, EV3_MOTOR_MEDIUM, NULL), E_OK, "medium motor on port C (eCAP0)");
+	is_int(ev3_attach_motor(2, HS_MOTOR_MEDIUM, NULL), E_OK, "medium motor on port C (eCAP0)");
 	{
 		double med = speed_after(2, 1, 10000, 500 * MS);
 		double med_half = speed_after(2, -1, 5000, 500 * MS);
@@ -117,10 +117,10 @@ int main(void)
 	}
 
 	/* load slows it; a stall fault locks it and stops the edges */
-	ev3_motor_set_load(m, 0.2, 0);
+	hs_motor_set_load(m, 0.2, 0);
 	s50 = speed_after(0, 1, 10000, 500 * MS);
 	in_range(s50, 450, 560, "half the stall torque as load halves the speed (%.0f)", s50);
-	ev3_motor_set_load(m, 0, 0);
+	hs_motor_set_load(m, 0, 0);
 	{
 		struct ev3_fault f = { EV3_FAULT_MOTOR_STALL, 0, 0, 200 * MS };
 		uint64_t t = hs_now() + 100 * MS, edges;
@@ -142,9 +142,9 @@ int main(void)
 		ev3_fault_at(t, &f);
 		hs_sim_run_until(t + 1);
 		edges = tacho.int_edges;
-		a = ev3_motor_angle_deg(m);
+		a = hs_motor_angle_deg(m);
 		hs_sim_run_for(50 * MS);
-		ok(tacho.int_edges == edges && ev3_motor_angle_deg(m) > a + 30, "stuck encoder: shaft moves, pins frozen");
+		ok(tacho.int_edges == edges && hs_motor_angle_deg(m) > a + 30, "stuck encoder: shaft moves, pins frozen");
 	}
 	hs_sim_shutdown();
 	return tap_done();

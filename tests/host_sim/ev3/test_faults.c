@@ -35,7 +35,7 @@ static void run(uint64_t seed, const char *vcd, struct outcome *o)
 	memset(o, 0, sizeof(*o));
 	devtest_boot(seed, vcd);
 	devtest_pwm_setup();
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
 	devtest_duty(0, 6000);
 	devtest_bridge(0, 1);
 	host_init(&h, 0);
@@ -62,7 +62,7 @@ static void run(uint64_t seed, const char *vcd, struct outcome *o)
 		o->log_ok &= found;
 	}
 	ev3_fault_uart_counts(0, &o->flipped, &o->dropped, &o->duplicated);
-	o->glitches = ev3_motor_glitches(ev3_output_motor(0));
+	o->glitches = hs_motor_glitches(ev3_output_motor(0));
 	o->bytes = h.n;
 	o->framing = ev3_uart_get_stats(ev3_uart_of_port(0))->framing_errors;
 	hs_sim_shutdown();

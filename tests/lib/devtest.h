@@ -120,7 +120,7 @@ static inline void devtest_duty(unsigned port, uint16_t duty)
 	}
 }
 
-/* H-bridge: 1 forward, -1 reverse, 2 brake, 0 coast (facts §3). */
+/* H-bridge: 1 forward, -1 reverse, 2 brake, 0 coast (LEGO's d_pwm.c). */
 static inline void devtest_bridge(unsigned port, int mode)
 {
 	const struct ev3_output_pins *p = &ev3_output_pins[port];

@@ -8,8 +8,9 @@
 #include "rtos_host.h"
 #include "host_sim/board.h"
 #include "host_sim/regs.h"
-#include "core_parts.h"
-#include "space_internal.h"
+#include "../core/core_parts.h"
+#include "../core/space_internal.h"
+#include "soc_parts.h"
 
 #define MAX_DEVICES 32U
 

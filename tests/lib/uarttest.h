@@ -3,7 +3,7 @@
  * port's UART through its registers, collects received bytes with their
  * arrival time and line status, and sends host messages.  It frames and
  * checks messages itself (independently of host_sim's lump.c), from the
- * protocol facts: header bits 7-6 class, 5-3 size code, 2-0 command/mode,
+ * protocol (LEGO's d_uart_mod.c): header bits 7-6 class, 5-3 size code, 2-0 command/mode,
  * check = 0xFF XOR all preceding bytes.
  */
 #ifndef TESTS_HOST_SIM_DEVICES_UARTTEST_H
@@ -105,7 +105,7 @@ static inline uint8_t chk(const uint8_t *b, unsigned n)
 	return c;
 }
 
-/* Payload length from a header by the facts' rule. */
+/* Payload length from a header by the protocol's rule. */
 static inline unsigned hdr_len(uint8_t h)
 {
 	return 1U << ((h >> 3) & 7U);

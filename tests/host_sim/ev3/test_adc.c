@@ -1,7 +1,7 @@
 /*
  * test_adc.c — SPI0 transfers in virtual time and the EV3's ADC answering
  * two frames late with the voltage each port pin has: identification
- * voltages of motors and analog devices as the facts' detection rules
+ * voltages of motors and analog devices as LEGO's d_analog.c detection rules
  * expect them, all read the way d_analog reads them (SPIDAT0/SPIBUF polls).
  */
 #include "devtest.h"
@@ -86,8 +86,8 @@ int main(void)
 	NEAR(read_mv(4, NULL), 4500, 10, "battery channel: 9 V through the 1:2 divider");
 
 	/* motors: ID voltage follows the encoder level */
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
-	ev3_attach_motor(1, EV3_MOTOR_MEDIUM, &(struct ev3_motor_options){ .start_deg = 0.6 });
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
+	ev3_attach_motor(1, HS_MOTOR_MEDIUM, &(struct hs_motor_options){ .start_deg = 0.6 });
 	gpio_out(a->det_5w, 0);
 	NEAR(read_mv(1, NULL), 160, 10, "large motor, encoder low: 0.16 V (< 250: TACHO)");
 	NEAR(read_mv(0, NULL), 4210, 10, "medium motor, encoder high: 4.21 V (> 2600)");
@@ -95,13 +95,13 @@ int main(void)
 	v1 = read_mv(0, NULL);
 	ok(v1 >= 1600 && v1 < 2000, "medium, encoder high, 5w pulled high: MINITACHO window (%u)", v1);
 	ev3_detach_output(1);
-	ev3_attach_motor(1, EV3_MOTOR_LARGE, &(struct ev3_motor_options){ .start_deg = 0.6 });
+	ev3_attach_motor(1, HS_MOTOR_LARGE, &(struct hs_motor_options){ .start_deg = 0.6 });
 	v2 = read_mv(0, NULL);
 	ok(v2 >= 2000, "large, encoder high, 5w pulled high: TACHO (%u)", v2);
 	gpio_out(ev3_output_pins[1].det_5w, 0);
 	NEAR(read_mv(0, NULL), 4480, 10, "large motor, encoder high: 4.48 V");
 	ev3_detach_output(1);
-	ev3_attach_motor(1, EV3_MOTOR_MEDIUM, NULL);
+	ev3_attach_motor(1, HS_MOTOR_MEDIUM, NULL);
 	v1 = read_mv(0, NULL);
 	NEAR(v1, 360, 10, "medium, encoder low: 0.36 V (250-450: MINITACHO)");
 	gpio_out(ev3_output_pins[1].tacho_dir, 0);
