@@ -7,7 +7,7 @@
  *                 then starts the two cyclic handlers and exits;
  *   balance task  (high priority) one control step per activation: gyro
  *                 rate and wheel counts through the API, offset tracking,
- *                 state feedback, ev3_motor_set_power on both motors;
+ *                 state feedback, ev3lx_motor_set_power on both motors;
  *                 activated by a cyclic handler every EV3SIM_BALANCE_PERIOD_MS,
  *                 which also counts deadline misses;
  *   logger task   (low priority) woken at logger_hz by a 1 ms cyclic
