@@ -23,14 +23,13 @@ static void attach_touch(void)
 
 static void poll_body(void)
 {
-	bool pressed = false;
 	uint64_t start_ms;
 
 	is_int(ev3_sensor_config(EV3_PORT_1, TOUCH_SENSOR), E_OK, "config touch on port 1");
 	dly_tsk(10);
 	start_ms = at_now_ms();
 	rtos_host_event_at(rtos_host_now() + 200 * AT_MS, press, NULL);
-	while (ev3_touch_sensor_is_pressed(EV3_PORT_1, &pressed) == E_OK && !pressed)
+	while (!ev3_touch_sensor_is_pressed(EV3_PORT_1))	/* EV3RT's idiom */
 		rounds++;
 	pressed_at_ms = at_now_ms() - start_ms;
 }
