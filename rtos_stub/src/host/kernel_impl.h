@@ -137,7 +137,7 @@ struct tcb {
 	struct mtxcb *mtx_last;          /* the mutex it locked last (a stack through mtxcb.prev_locked) */
 	intptr_t wdata;                  /* data queues: the element sent or received */
 	PRI      wdpri;                  /* priority data queues: its priority */
-	uint_t   ext_svc_depth;          /* inside cal_svc: nested service calls are not charged */
+	uint_t   nocharge_depth;         /* inside a call whose cost covers its nested calls (cal_svc) */
 	uint_t   actcnt;
 	uint_t   wupcnt;
 	enum wait_kind wait;
@@ -348,28 +348,14 @@ const char *ercd_name(ER ercd);
 
 /* ---- CPU cost of service calls (cost.c) and stall watch (stall.c) ---- */
 extern struct rtos_host_cpu_cost cpu_cost;
-/* True if a service call made now costs CPU time: a task at task level, not
- * inside an extended service (whose measured cost includes its calls). */
-static inline bool charge_applies(void)
-{
-	return cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && cpu.irq_defer == 0 &&
-	       runtsk->ext_svc_depth == 0 && (cpu_cost.kernel_domain || runtsk->cfg->domid != TDOM_KERNEL);
-}
-/* Charges ns of CPU time to the calling task (preemption may happen meanwhile). */
-static inline void svc_charge_ns(uint32_t ns)
-{
-	if (ns != 0 && charge_applies())
-		rtos_host_consume(ns);
-}
-/* The first step of every service call: its CPU time. */
-static inline void svc_charge(void)
-{
-	svc_charge_ns(cpu_cost.svc_ns);
-}
-/* The cost of extended service call fncd. */
-uint32_t ext_svc_cost(FN fncd);
-/* prb_mem without its charge (the kernel's own pointer checks). */
-ER mem_probe(const void *base, SIZE size, ID tskid, MODE pmmode);
+/* The first step of every service call: its CPU time, charged to the calling
+ * task (which may be preempted meanwhile).  Out of line in cost.c, so that
+ * make bench's instruction counter sees one call of simulation code. */
+void svc_charge(void);
+/* cal_svc's charge: the extended service's cost, and no charge for the calls
+ * it makes; returns the calling task (NULL in non-task context) for svc_ext_exit. */
+struct tcb *svc_ext_enter(FN fncd);
+void svc_ext_exit(struct tcb *caller);
 /* The stall watch runs while the harness runs the system. */
 void stall_watch_start(void);
 void stall_watch_stop(void);

@@ -27,14 +27,9 @@ ER_UINT cal_svc(FN fncd, intptr_t par1, intptr_t par2, intptr_t par3, intptr_t p
 		svc_charge();
 		return svc_result("cal_svc", E_RSFN);
 	}
-	if (cpu.kind != EXEC_TASK)
-		return fn(par1, par2, par3, par4, par5, TDOM_KERNEL);
-	/* The measured cost covers the whole call, the service calls inside it included. */
-	svc_charge_ns(ext_svc_cost(fncd));
-	caller = runtsk;
-	caller->ext_svc_depth++;
-	ercd = fn(par1, par2, par3, par4, par5, caller->cfg->domid);
-	caller->ext_svc_depth--;
+	caller = svc_ext_enter(fncd);
+	ercd = fn(par1, par2, par3, par4, par5, caller != NULL ? caller->cfg->domid : TDOM_KERNEL);
+	svc_ext_exit(caller);
 	return ercd;
 }
 
@@ -67,18 +62,12 @@ static const struct mem_region *region_at(const struct tcb *t, uintptr_t addr, M
 /* E_OK if task tskid's domain may access [base, base+size) with pmmode, else E_MACV. */
 ER prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode)
 {
-	svc_charge();
-	return mem_probe(base, size, tskid, pmmode);
-}
-
-/* prb_mem's checks, for the kernel's own pointer checks (no charge). */
-ER mem_probe(const void *base, SIZE size, ID tskid, MODE pmmode)
-{
 	struct tcb *t;
 	ER ercd = E_OK;
 	uintptr_t lo = (uintptr_t)base, hi;
 	struct mem_region stack;
 
+	svc_charge();
 	if (tskid == TSK_SELF) {		/* the common case: no lookup */
 		if (cpu.kind != EXEC_TASK)
 			return svc_result("prb_mem", E_ID);

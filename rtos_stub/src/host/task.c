@@ -159,7 +159,7 @@ void task_activate(struct tcb *t)
 	t->base_pri = t->cfg->itskpri;
 	t->suspended = false;
 	t->mtx_last = NULL;
-	t->ext_svc_depth = 0;
+	t->nocharge_depth = 0;
 	t->wupcnt = 0;
 	t->wait = WAIT_NONE;
 	t->co.restart = true;
@@ -307,12 +307,17 @@ struct tcb *task_lookup(ID tskid, bool self_ok, ER *ercd)
 /* Checks an output pointer from the caller: E_OK, or E_MACV (NULL, or outside its domain). */
 ER check_out_ptr(const void *p, SIZE size)
 {
+	ER ercd;
+
 	if (p == NULL)
 		return E_MACV;
-	if (cpu.kind == EXEC_TASK && runtsk->cfg->domid != TDOM_KERNEL &&
-	    mem_probe(p, size, TSK_SELF, TPM_WRITE) != E_OK)
-		return E_MACV;
-	return E_OK;
+	if (cpu.kind != EXEC_TASK || runtsk->cfg->domid == TDOM_KERNEL)
+		return E_OK;
+	/* part of the calling service call, which has paid for it */
+	runtsk->nocharge_depth++;
+	ercd = prb_mem(p, size, TSK_SELF, TPM_WRITE);
+	runtsk->nocharge_depth--;
+	return ercd != E_OK ? E_MACV : E_OK;
 }
 
 /* Creates the control blocks and stacks of the configured tasks (rows already checked). */
