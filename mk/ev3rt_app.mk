@@ -23,7 +23,7 @@ EV3RT_APP_WARN ?= -Wall -Wno-unused-parameter
 define ev3rt_app
 EV3RT_DIR_$(1)_$(2)  := $(BUILD)/$(2)/ev3rt/$(1)
 EV3RT_OBJS_$(1)_$(2) := $$(patsubst %.c,$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o,$(4))
-EV3RT_INC_$(1)_$(2)  := -I$(BUILD)/$(2)/ev3rt/$(1)/gen -I$(patsubst %/,%,$(dir $(3))) -Icfg $(COMMON_INC)
+EV3RT_INC_$(1)_$(2)  := -I$(BUILD)/$(2)/ev3rt/$(1)/gen -I$(patsubst %/,%,$(dir $(3))) -Icfg $(call layer_inc,api)
 
 $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg $$(wildcard $(dir $(3))*.h)
 	@mkdir -p $$(@D)
