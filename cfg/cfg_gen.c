@@ -547,7 +547,7 @@ static void parse_api(struct cfg_ctx *ctx, enum api a)
 			if (ctx->include == NULL)
 				report(ctx, name->file, name->line, what, "INCLUDE is not available here");
 			else
-				ctx->include(ctx, s, name->file, name->line, ctx->include_arg);
+				ctx->nerrors += ctx->include(ctx, s, name->file, name->line, ctx->include_arg);
 			free(s);
 			return;
 		}
@@ -714,12 +714,13 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 	tokenize(ctx, text, name);
 	for (;;) {
 		struct tok *t = peek(ctx, 0);
-		int a;
 
 		if (t->kind == TK_EOF)
 			break;
 		if (t->kind == TK_ID && is_punct(peek(ctx, 1), "(")) {
-			if ((a = api_lookup(t->text)) >= 0) {
+			int a = api_lookup(t->text);
+
+			if (a >= 0) {
 				parse_api(ctx, (enum api)a);
 				continue;
 			}
@@ -760,6 +761,11 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 	ctx->pos = saved_pos;
 	ctx->dom_depth = saved_depth;
 	return ctx->nerrors - errors;
+}
+
+int cfg_errors(const struct cfg_ctx *ctx)
+{
+	return ctx->nerrors;
 }
 
 int cfg_finish(struct cfg_ctx *ctx)

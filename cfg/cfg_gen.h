@@ -13,7 +13,8 @@
 struct cfg_ctx;
 
 /* Called for INCLUDE("file") found in from_file at from_line: parse that
- * file (cfg_parse) and return the number of errors it produced. */
+ * file (cfg_parse) and return the number of errors it printed itself (those
+ * cfg_parse reports are counted already). */
 typedef int (*cfg_include_fn)(struct cfg_ctx *ctx, const char *file, const char *from_file,
 			      int from_line, void *arg);
 
@@ -25,6 +26,9 @@ void cfg_free(struct cfg_ctx *ctx);
  * the position); C declarations between static APIs are skipped.  Returns the
  * number of errors reported ("file:line: error: API(ID): message"). */
 int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name);
+
+/* Errors reported so far. */
+int cfg_errors(const struct cfg_ctx *ctx);
 
 /* Records an #include directive of a .cfg file, copied into kernel_cfg.c. */
 void cfg_add_c_include(struct cfg_ctx *ctx, const char *directive);

@@ -106,44 +106,37 @@ static void append_quoted(char *cmd, size_t size, const char *s)
 /* Copies the #include directives of a configuration file into kernel_cfg.c's list. */
 static void collect_c_includes(struct cfg_ctx *ctx, const char *raw)
 {
-	const char *line = raw;
+	for (const char *line = raw; *line != '\0';) {
+		size_t n = strcspn(line, "\n");
+		char buf[1024];
+		char *p = buf, *end;
 
-	while (line != NULL && *line != '\0') {
-		const char *end = strchr(line, '\n');
-		const char *p = line;
-		size_t n = end != NULL ? (size_t)(end - line) : strlen(line);
-
-		while (p < line + n && isspace((unsigned char)*p))
+		snprintf(buf, sizeof(buf), "%.*s", (int)(n < sizeof(buf) ? n : sizeof(buf) - 1), line);
+		line += n + (line[n] == '\n');
+		while (isspace((unsigned char)*p))
 			p++;
-		if (p < line + n && *p == '#') {
-			const char *q = p + 1;
-
-			while (q < line + n && isspace((unsigned char)*q))
-				q++;
-			if ((size_t)(line + n - q) > 7 && strncmp(q, "include", 7) == 0) {
-				char directive[1024];
-				size_t dl = (size_t)(line + n - p);
-
-				if (dl >= sizeof(directive))
-					dl = sizeof(directive) - 1;
-				memcpy(directive, p, dl);
-				while (dl > 0 && isspace((unsigned char)directive[dl - 1]))
-					dl--;
-				directive[dl] = '\0';
-				cfg_add_c_include(ctx, directive);
-			}
-		}
-		line = end != NULL ? end + 1 : NULL;
+		if (*p != '#')
+			continue;
+		end = p + 1;
+		while (isspace((unsigned char)*end))
+			end++;
+		if (strncmp(end, "include", 7) != 0)
+			continue;
+		end = p + strlen(p);
+		while (end > p && isspace((unsigned char)end[-1]))
+			*--end = '\0';
+		cfg_add_c_include(ctx, p);
 	}
 }
 
-/* Preprocesses and parses one configuration file; returns the errors. */
+/* Preprocesses and parses one configuration file; returns the errors it
+ * printed itself (cfg_parse counts its own in ctx). */
 static int process_file(struct cfg_ctx *ctx, struct tool *tool, const char *path)
 {
 	char cmd[8192] = "";
 	FILE *f, *pipe;
 	char *raw, *text;
-	int errors, status;
+	int status;
 
 	if ((f = fopen(path, "r")) == NULL) {
 		fprintf(stderr, "ev3cfg: %s: %s\n", path, strerror(errno));
@@ -176,9 +169,9 @@ static int process_file(struct cfg_ctx *ctx, struct tool *tool, const char *path
 		free(text);
 		return 1;
 	}
-	errors = cfg_parse(ctx, text, path);
+	cfg_parse(ctx, text, path);
 	free(text);
-	return errors;
+	return 0;
 }
 
 static bool file_exists(const char *path)
@@ -289,8 +282,9 @@ int main(int argc, char **argv)
 	ctx = cfg_new(stderr, include_file, &tool);
 	tool.included[tool.nincluded++] = strdup(input);
 	errors = process_file(ctx, &tool, input);
-	errors += cfg_finish(ctx);
-	errors += cfg_bind_modules(ctx, tool.objects, tool.nobjects);
+	cfg_finish(ctx);
+	cfg_bind_modules(ctx, tool.objects, tool.nobjects);
+	errors += cfg_errors(ctx);
 	if (errors > 0) {
 		fprintf(stderr, "ev3cfg: %s: %d error%s\n", input, errors, errors == 1 ? "" : "s");
 		cfg_free(ctx);

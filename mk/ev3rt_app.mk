@@ -25,7 +25,7 @@ EV3RT_DIR_$(1)_$(2)  := $(BUILD)/$(2)/ev3rt/$(1)
 EV3RT_OBJS_$(1)_$(2) := $$(patsubst %.c,$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o,$(4))
 EV3RT_INC_$(1)_$(2)  := -I$(BUILD)/$(2)/ev3rt/$(1)/gen -I$(patsubst %/,%,$(dir $(3))) -Icfg $(call layer_inc,api)
 
-$(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg $$(wildcard $(dir $(3))*.h)
+$(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg $$(wildcard $(dir $(3))*.h $(dir $(3))*.cfg)
 	@mkdir -p $$(@D)
 	$$(quiet) CFG $(2) $(3)
 	$(Q)$$(EV3CFG) -o $$(@D) --cpp '$$(CC_$(2)) -E' $$(EV3RT_INC_$(1)_$(2)) $(KERNEL_DEFS) \
@@ -50,8 +50,8 @@ $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(
 	for o in $$(EV3RT_OBJS_$(1)_$(2)); do \
 		script=$$$$(awk -v o="$$$$o" '$$$$1 == o { print $$$$2 }' $(BUILD)/$(2)/ev3rt/$(1)/gen/modules.txt); \
 		if [ -n "$$$$script" ]; then \
-			$$(CC_$(2)) -r -nostdlib -o "$$$$o.mod.o" -Wl,-T,"$$$$script" "$$$$o"; \
-			objs="$$$$objs $$$$o.mod.o"; \
+			$$(CC_$(2)) -r -nostdlib -o "$$$$o.dom.o" -Wl,-T,"$$$$script" "$$$$o"; \
+			objs="$$$$objs $$$$o.dom.o"; \
 		else \
 			objs="$$$$objs $$$$o"; \
 		fi; \
@@ -92,3 +92,28 @@ $(BUILD)/$(1)/obj/tests/cfg/test_cfg_errors.o: tests/cfg/test_cfg_errors.c cfg/c
 	$(Q)$$(CC_$(1)) -r -nostdlib -o $$@ $$@.main.o $$@.gen.o
 endef
 $(foreach c,$(HOST_CONFIGS),$(eval $(call ev3rt_cfg_unit_test,$(c))))
+
+# `make cfg-error-check` (in `make test`): every configuration in tests/cfg/bad
+# fails — in ev3cfg or when kernel_cfg.c is compiled — with the messages its
+# "/* expect: ... */" lines give (file, line, static API).
+CFG_BAD_INC := -Itests/cfg/bad -Icfg $(call layer_inc,api)
+
+.PHONY: cfg-error-check
+cfg-error-check: $(EV3CFG)
+	@set -e; export LC_ALL=C; n=0; \
+	for f in tests/cfg/bad/*.cfg; do \
+		out=$(BUILD)/cfg-error-check/$$(basename $$f .cfg); rm -rf $$out; mkdir -p $$out; \
+		if $(EV3CFG) -o $$out --cpp 'gcc -E' $(CFG_BAD_INC) --object $$out/main.o $$f 2> $$out/errors.txt; then \
+			if gcc -std=gnu11 -I$$out $(CFG_BAD_INC) -c $$out/kernel_cfg.c -o $$out/kernel_cfg.o \
+				2>> $$out/errors.txt; then \
+				echo "cfg-error-check: $$f: accepted"; exit 1; \
+			fi; \
+		fi; \
+		grep '^/\* expect: ' $$f | sed 's|^/\* expect: \(.*\) \*/$$|\1|' | while IFS= read -r e; do \
+			grep -qF -- "$$e" $$out/errors.txt || \
+				{ echo "cfg-error-check: $$f: no \"$$e\" in:"; cat $$out/errors.txt; exit 1; }; \
+		done; \
+		n=$$((n + 1)); \
+	done; \
+	echo "cfg-error-check: $$n bad configurations, each reported at its file, line and static API"
+TEST_SUITE_EXTRA += cfg-error-check
