@@ -46,3 +46,18 @@ $(eval $(call ev3rt_app,$(EV3RT_RUN_NAME),host,$(APP)/app.cfg,$(EV3RT_RUN_SRCS),
 .PHONY: ev3rt-app
 ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)
 endif
+
+# `make ev3sim-run-check` (in make test): `ev3sim run` builds an app directory
+# and runs it, ending with its summary line.
+.PHONY: ev3sim-run-check
+ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
+	+$(Q)out=$$($(BUILD)/host/ev3sim run examples/blink --seconds 3 --click back:1500ms --quiet) || \
+		{ echo "ev3sim-run-check: FAILED: ev3sim run examples/blink exited $$?"; exit 1; }; \
+	summary=$$(printf '%s\n' "$$out" | tail -n 1); \
+	case "$$summary" in \
+	"app=blink robot=bare seconds=3 seed=1 "*" warnings=0 errors=0 bugs=0 sim_speed="*) \
+		echo "ev3sim-run-check: $$summary";; \
+	*) echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1;; \
+	esac
+
+TEST_SUITE_EXTRA += ev3sim-run-check
