@@ -20,8 +20,8 @@ $(call ev3rt_app,$(1),$(2),examples/$(1)/app.cfg,examples/$(1)/app.c)
 $(BUILD)/$(2)/obj/tests/examples/test_$(1).o: tests/examples/test_$(1).c $(BUILD)/$(2)/ev3rt/$(1)/$(1).o
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(2) $$<
-	$(Q)$$(CC_$(2)) $$(call src_flags,$$<) $$(WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) -MMD -MP \
-		-c $$< -o $$@.main.o
+	$(Q)$$(CC_$(2)) $$(call src_flags,$$<) $$(WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+		-MMD -MP -MF $$(@:.o=.d) -MT $$@ -c $$< -o $$@.main.o
 	$(Q)$$(CC_$(2)) -r -nostdlib -o $$@ $$@.main.o $(BUILD)/$(2)/ev3rt/$(1)/$(1).o
 endef
 $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_rules,$(e),$(c)))))
