@@ -352,6 +352,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		return E_SYS;
 	}
 	rtos_host_trace_set_sink(trace_sink, NULL);
+	if (o->quiet)
+		ev3sim_quiet_console();
 	ercd = plug_in(o);
 	if (ercd != E_OK)
 		snprintf(err, errlen, "cannot plug the devices in (%d)", (int)ercd);
