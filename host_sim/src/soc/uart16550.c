@@ -141,20 +141,20 @@ static unsigned iir_id(const struct ev3_uart *u)
 	bool rx_error = u->overrun || (u->rx_count && u->rx_err[u->rx_head]);
 
 	if ((ier & IER_ELSI) && rx_error)
-		return 0x6U;
+		return HS_UART_IIR_LINE_STATUS;
 	if ((ier & IER_ERBI) && u->rx_count >= rx_trigger(u))
-		return 0x4U;
+		return HS_UART_IIR_RX_DATA;
 	if ((ier & IER_ERBI) && u->timeout_int && u->rx_count)
-		return 0xCU;
+		return HS_UART_IIR_RX_TIMEOUT;
 	if ((ier & IER_ETBEI) && u->thre_int)
-		return 0x2U;
-	return 0x1U;
+		return HS_UART_IIR_THR_EMPTY;
+	return HS_UART_IIR_NONE;
 }
 
 /* Drives the interrupt request line from the current sources. */
 static void irq_update(struct ev3_uart *u)
 {
-	bool level = iir_id(u) != 0x1U;
+	bool level = iir_id(u) != HS_UART_IIR_NONE;
 
 	if (level != u->irq) {
 		u->irq = level;
@@ -376,8 +376,8 @@ static void read_iir(void *ctx, const struct hs_access *a, uint32_t *value)
 	struct ev3_uart *u = ctx;
 	unsigned id = iir_id(u);
 
-	*value = id | (fifo_mode(u) ? 0xC0U : 0U);
-	if (id == 0x2U) {           /* reading IIR clears a THRE interrupt */
+	*value = id | (fifo_mode(u) ? HS_UART_IIR_FIFOS_ON : 0U);
+	if (id == HS_UART_IIR_THR_EMPTY) {   /* reading IIR clears a THRE interrupt */
 		u->thre_int = false;
 		irq_update(u);
 	}

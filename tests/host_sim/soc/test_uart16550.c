@@ -19,7 +19,7 @@ static void setup(uint32_t base, uint32_t clock, uint32_t baud, uint32_t fcr)
 	wr32(base + 0x0C, 0x03);
 	wr32(base + 0x20, div & 0xFF);
 	wr32(base + 0x24, div >> 8);
-	wr32(base + 0x08, fcr);
+	wr32(base + HS_UART_IIR, fcr);    /* FCR */
 }
 
 int main(void)
@@ -36,7 +36,7 @@ int main(void)
 
 	/* 115200 baud at 150 MHz: divisor 81, 10 bits = ~86.8 us; loopback */
 	setup(U0, 150000000U, 115200, 0x07);
-	wr32(U0 + 0x08, 0x01);
+	wr32(U0 + HS_UART_IIR, 0x01);
 	is_int(ev3_uart_baud(u), 115741, "baud = 150 MHz / (16 x 81)");
 	wr32(U0 + 0x10, 0x10);                      /* MCR.LOOP */
 	t0 = hs_now();
@@ -61,28 +61,30 @@ int main(void)
 	ok(!(rd32(U0 + 0x14) & 0x02), "OE cleared by the read");
 	is_int(ev3_uart_get_stats(u)->overruns, 1, "one byte lost");
 	is_int(rd32(U0 + 0x00), 0, "the FIFO kept the first 16");
-	wr32(U0 + 0x08, 0x03);                      /* clear RX */
+	wr32(U0 + HS_UART_IIR, 0x03);                      /* clear RX */
 	ok(!(rd32(U0 + 0x14) & 0x01), "FCR RXCLR empties the FIFO");
 
 	/* interrupts: IIR priorities, THRE cleared by reading IIR, level on line 25 */
-	wr32(U0 + 0x08, 0x41);                      /* FIFO, trigger 4 */
+	wr32(U0 + HS_UART_IIR, 0x41);                      /* FIFO, trigger 4 */
 	wr32(U0 + 0x04, 0x03);                      /* ERBI, ETBEI */
-	iir = rd32(U0 + 0x08);
-	ok((iir & 0x0F) == 0x02 && (iir & 0xC0) == 0xC0, "enabling ETBEI with empty THR: IIR = THRE, FIFOs on");
-	iir = rd32(U0 + 0x08);
-	is_int(iir & 0x0F, 0x01, "reading IIR cleared the THRE interrupt");
+	iir = rd32(U0 + HS_UART_IIR);
+	ok((iir & HS_UART_IIR_ID_MASK) == HS_UART_IIR_THR_EMPTY &&
+	   (iir & HS_UART_IIR_FIFOS_ON) == HS_UART_IIR_FIFOS_ON,
+	   "enabling ETBEI with empty THR: IIR = THRE, FIFOs on");
+	iir = rd32(U0 + HS_UART_IIR);
+	is_int(iir & HS_UART_IIR_ID_MASK, HS_UART_IIR_NONE, "reading IIR cleared the THRE interrupt");
 	for (int i = 0; i < 4; i++)
 		wr32(U0 + 0x00, 0x30U + (uint32_t)i);
 	hs_sim_run_for(500 * 1000);
 	ok(hs_intc_pending(EV3_UART0_INTNO), "4 bytes reach the trigger: line 25 asserted");
-	is_int(rd32(U0 + 0x08) & 0x0F, 0x04, "IIR: received data available");
+	is_int(rd32(U0 + HS_UART_IIR) & HS_UART_IIR_ID_MASK, HS_UART_IIR_RX_DATA, "IIR: received data available");
 	(void)rd32(U0 + 0x00);
 	hs_sim_run_for(500 * 1000);
-	is_int(rd32(U0 + 0x08) & 0x0F, 0x0C, "below trigger, 4 characters idle: character timeout");
+	is_int(rd32(U0 + HS_UART_IIR) & HS_UART_IIR_ID_MASK, HS_UART_IIR_RX_TIMEOUT, "below trigger, 4 characters idle: character timeout");
 	while (rd32(U0 + 0x14) & 1U)
 		(void)rd32(U0 + 0x00);
-	iir = rd32(U0 + 0x08);
-	ok((iir & 0x0F) == 0x01 || (iir & 0x0F) == 0x02, "drained: no receive interrupt left");
+	iir = rd32(U0 + HS_UART_IIR) & HS_UART_IIR_ID_MASK;
+	ok(iir == HS_UART_IIR_NONE || iir == HS_UART_IIR_THR_EMPTY, "drained: no receive interrupt left");
 	wr32(U0 + 0x04, 0);
 
 	/* DLAB maps the divisor at 0x00/0x04 */

@@ -27,6 +27,24 @@
 
 struct ev3_uart;
 
+/* Register offsets (32-bit words, AM1808 TRM, UART chapter). */
+#define HS_UART_RBR	0x00U   /* THR on writes, DLL while LCR.DLAB */
+#define HS_UART_IER	0x04U
+#define HS_UART_IIR	0x08U   /* FCR on writes */
+#define HS_UART_LCR	0x0CU
+#define HS_UART_LSR	0x14U
+
+/* IIR bits 3-0, the interrupt identification, highest priority first
+ * (AM1808 TRM, UART chapter, table "Interrupt Identification and Interrupt
+ * Clearing Information"); bits 7-6 are set while the FIFOs are enabled. */
+#define HS_UART_IIR_LINE_STATUS	0x6U    /* overrun, parity, framing error or break */
+#define HS_UART_IIR_RX_DATA	0x4U    /* receiver data at the trigger level */
+#define HS_UART_IIR_RX_TIMEOUT	0xCU    /* character timeout with data in the FIFO */
+#define HS_UART_IIR_THR_EMPTY	0x2U
+#define HS_UART_IIR_NONE	0x1U    /* no interrupt pending */
+#define HS_UART_IIR_ID_MASK	0x0FU
+#define HS_UART_IIR_FIFOS_ON	0xC0U
+
 /* One UART instance: register base, AINTC line, module clock, power domain. */
 struct hs_uart_cfg {
 	const char *name;           /* region name */
