@@ -103,10 +103,10 @@ static inline bool fake_claims(const volatile void *addr, void *ctx)
 /* Bank pair and register of a GPIO block offset, or -1 outside the bank pairs. */
 static inline int fake_gpio_reg(uint32_t off, uint32_t *reg)
 {
-	if (off < 0x10 || off >= 0x10 + 5 * 0x28)
+	if (off < HS_GPIO_PAIR_OFFSET(0) || off >= HS_GPIO_PAIR_OFFSET(0) + HS_GPIO_PAIRS * HS_GPIO_PAIR_STRIDE)
 		return -1;
-	*reg = (off - 0x10) % 0x28;
-	return (int)((off - 0x10) / 0x28);
+	*reg = (off - HS_GPIO_PAIR_OFFSET(0)) % HS_GPIO_PAIR_STRIDE;
+	return (int)((off - HS_GPIO_PAIR_OFFSET(0)) / HS_GPIO_PAIR_STRIDE);
 }
 
 static inline uint32_t fake_read(const volatile void *addr, unsigned width, void *ctx)

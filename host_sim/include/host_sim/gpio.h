@@ -26,7 +26,9 @@
  * pair of banks (32 pins) at HS_GPIO_PAIR_OFFSET, in which a pin is bit
  * HS_GPIO_PAIR_BIT of every register. */
 #define HS_GPIO_BINTEN            0x08U
-#define HS_GPIO_PAIR_OFFSET(pin)  (0x10U + 0x28U * ((unsigned)(pin) / 32U))
+#define HS_GPIO_PAIR_STRIDE       0x28U
+#define HS_GPIO_PAIRS             ((HS_GPIO_NPINS + 31U) / 32U)
+#define HS_GPIO_PAIR_OFFSET(pin)  (0x10U + HS_GPIO_PAIR_STRIDE * ((unsigned)(pin) / 32U))
 #define HS_GPIO_PAIR_BIT(pin)     (1U << ((unsigned)(pin) % 32U))
 #define HS_GPIO_DIR               0x00U   /* offsets in a pair's block; DIR bit 1 = input */
 #define HS_GPIO_OUT_DATA          0x04U

@@ -16,7 +16,7 @@
 #include "host_sim/syscfg.h"
 
 #define GPIO       0x01E26000U
-#define PAIR(n)    (GPIO + 0x10 + 0x28 * (n))
+#define PAIR(n)    (GPIO + HS_GPIO_PAIR_OFFSET(32U * (n)))
 #define SYSCFG0    0x01C14000U
 #define KICK0R     (SYSCFG0 + 0x38)
 #define KICK1R     (SYSCFG0 + 0x3C)
