@@ -9,7 +9,9 @@
 #      code outside a host/ directory never names rtos_stub's host interface;
 #      only hacks include another layer's .c file (the verbatim driver);
 #   2. every undefined symbol of an object in OBJDIR (one per configuration)
-#      that another layer's object defines is an edge the first layer may use.
+#      that another layer's object defines is an edge the first layer may use;
+#      inside host_sim, an object of host_sim/src/<sublayer>/ uses only its own
+#      sublayer and those before it in SUBLAYERS_host_sim.
 # Prints each violation and exits 1 if there is any.
 set -u
 export LC_ALL=C
@@ -101,6 +103,23 @@ for objdir in "$@"; do
 		may_use "$from" "$to" || violation "$user uses $sym of $def ($to is not a layer $from may use)"
 	done < <(sort -k1,1 "$defs" | join -1 1 -2 1 -o 2.1,2.2,2.3,1.2,1.3 - <(sort -k1,1 "$undefs") |
 		 awk '$2 != $4')
+	# host_sim's sublayers: symbol user-object defining-object within host_sim
+	while read -r sym user def; do
+		u=${user#host_sim/src/}; u=${u%%/*}
+		d=${def#host_sim/src/}; d=${d%%/*}
+		[ "$u" = "$d" ] && continue
+		nedges=$((nedges + 1))
+		ui=-1; di=-1; i=0
+		for s in ${SUBLAYERS_host_sim:-}; do
+			[ "$s" = "$u" ] && ui=$i
+			[ "$s" = "$d" ] && di=$i
+			i=$((i + 1))
+		done
+		if [ "$ui" -lt 0 ] || [ "$di" -lt 0 ] || [ "$di" -gt "$ui" ]; then
+			violation "$user uses $sym of $def (host_sim's $u may not use its $d)"
+		fi
+	done < <(sort -k1,1 "$defs" | join -1 1 -2 1 -o 2.1,2.3,1.3 - <(sort -k1,1 "$undefs") |
+		 awk '$2 ~ /^host_sim\/src\// && $3 ~ /^host_sim\/src\//')
 	rm -f "$defs" "$undefs"
 done
 

@@ -4,7 +4,8 @@
 # layers' objects follows an edge of LAYER_EDGES (mk/layer_check.sh).
 .PHONY: layer-check
 layer-check: $(LIB_host) $(BUILD)/am1808/libev3lx.a
-	@LAYERS='$(LAYERS)' $(foreach l,$(LAYERS),LAYER_EDGES_$(l)='$(LAYER_EDGES_$(l))' HDR_$(l)='$(HDR_$(l))') \
+	@LAYERS='$(LAYERS)' SUBLAYERS_host_sim='$(SUBLAYERS_host_sim)' \
+		$(foreach l,$(LAYERS),LAYER_EDGES_$(l)='$(LAYER_EDGES_$(l))' HDR_$(l)='$(HDR_$(l))') \
 		bash mk/layer_check.sh $(BUILD)/host/obj $(BUILD)/am1808/obj
 TEST_SUITE_EXTRA += layer-check
 

@@ -38,6 +38,11 @@ LAYER_EDGES_tests        := api hacks ev3_drivers linux_compat rtos_stub host_si
 
 LAYERS := rtos_stub linux_compat ev3_drivers hacks api host_sim am1808 ev3sim bench tests
 
+# host_sim's own layers, lowest first (host_sim/src/<sublayer>/): an object
+# may use only the symbols of its own sublayer and those below it, so no SoC
+# model calls a board function and nothing below reaches up.
+SUBLAYERS_host_sim := core soc ev3 harness bench
+
 # The layer of a path: its top directory.
 LAYER_OF = $(firstword $(subst /, ,$(1)))
 
