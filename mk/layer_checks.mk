@@ -1,9 +1,11 @@
 # Checks of the layering (mk/layers.mk), both in `make test`.
 #
 # `make layer-check`: every #include line and every link edge between the
-# layers' objects follows an edge of LAYER_EDGES (mk/layer_check.sh).
+# layers' objects follows an edge of LAYER_EDGES (mk/layer_check.sh), after
+# a self-test on fake layers proves each kind of violation is caught.
 .PHONY: layer-check
 layer-check: $(LIB_host) $(BUILD)/am1808/libev3lx.a
+	@bash mk/layer_check_selftest.sh $(abspath $(BUILD))/layer-check-selftest
 	@LAYERS='$(LAYERS)' SUBLAYERS_host_sim='$(SUBLAYERS_host_sim)' \
 		$(foreach l,$(LAYERS),LAYER_EDGES_$(l)='$(LAYER_EDGES_$(l))' HDR_$(l)='$(HDR_$(l))') \
 		bash mk/layer_check.sh $(BUILD)/host/obj $(BUILD)/am1808/obj
