@@ -1,5 +1,5 @@
 /*
- * ev3_brick.c — the EV3 ports: what is plugged in, the electrical level of
+ * brick.c — the EV3 ports: what is plugged in, the electrical level of
  * each pin, the links between UART sensors and their UARTs, the battery,
  * the ADC's analog sources, and seeded fault injection.
  *
