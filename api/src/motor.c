@@ -244,7 +244,7 @@ static RELTIM rotate_timeout_ms(int degrees, int speed)
 	uint32_t spd = (uint32_t)(speed < 0 ? -speed : speed);
 
 	/* cppcheck-suppress zerodivcond ; speed is never 0: ev3_motor_rotate answers E_PAR first */
-	return (RELTIM)(1000U + deg * 40U / spd);
+	return (RELTIM)(1000U + deg * 400U / spd);
 }
 
 ER ev3_motor_rotate(motor_port_t port, int degrees, int speed, bool blocking)
