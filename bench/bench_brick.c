@@ -92,7 +92,7 @@ static ER wait_streaming(sensor_port_t port)
 	ER ercd = E_TMOUT;
 
 	for (unsigned waited = 0; waited < STREAM_TIMEOUT_MS; waited += POLL_MS) {
-		ercd = ev3_uart_sensor_get_raw(port, raw, sizeof(raw));
+		ercd = ev3lx_uart_sensor_get_raw(port, raw, sizeof(raw));
 		if (ercd == E_OK)
 			return E_OK;
 		dly_tsk(POLL_MS);
@@ -114,16 +114,16 @@ ER bench_brick_prepare(void)
 	for (unsigned p = 0; p < TNUM_MOTOR_PORT; p++) {
 		if (light && p != BENCH_MOTOR_PORT)
 			continue;
-		ercd = ev3_motor_config((motor_port_t)p, motors[p]);
+		ercd = ev3lx_motor_config((motor_port_t)p, motors[p]);
 		if (ercd == E_OK)
-			ercd = ev3_motor_set_speed((motor_port_t)p, 40);
+			ercd = ev3lx_motor_set_speed((motor_port_t)p, 40);
 		if (ercd != E_OK)
 			return ercd;
 	}
 	for (unsigned p = 0; p < TNUM_SENSOR_PORT; p++) {
 		if (light && p != BENCH_SENSOR_PORT)
 			continue;
-		ercd = ev3_sensor_config((sensor_port_t)p, sensors[p]);
+		ercd = ev3lx_sensor_config((sensor_port_t)p, sensors[p]);
 		if (ercd != E_OK)
 			return ercd;
 	}

@@ -18,6 +18,8 @@ HDR_hacks        := hacks
 HDR_api          := api
 HDR_host_sim     := host_sim/include
 HDR_ev3sim       := ev3sim/include
+HDR_cfg          := cfg
+HDR_examples     :=
 HDR_tests        := tests/lib
 
 # Which layers each layer may use (include or link).  hacks sees the drivers it
@@ -38,10 +40,12 @@ LAYER_EDGES_host_sim     := rtos_stub
 LAYER_EDGES_am1808       := api hacks linux_compat rtos_stub
 LAYER_PATH_am1808        := ev3_drivers
 LAYER_EDGES_ev3sim       := api hacks ev3_drivers linux_compat rtos_stub host_sim
+LAYER_EDGES_cfg          :=
+LAYER_EDGES_examples     := api rtos_stub
 LAYER_EDGES_bench        := api hacks ev3_drivers linux_compat rtos_stub host_sim
-LAYER_EDGES_tests        := api hacks ev3_drivers linux_compat rtos_stub host_sim ev3sim
+LAYER_EDGES_tests        := api hacks ev3_drivers linux_compat rtos_stub host_sim ev3sim examples cfg
 
-LAYERS := rtos_stub linux_compat ev3_drivers hacks api host_sim am1808 ev3sim bench tests
+LAYERS := rtos_stub linux_compat ev3_drivers hacks api host_sim am1808 ev3sim cfg examples bench tests
 
 # host_sim's own layers, lowest first (host_sim/src/<sublayer>/): an object
 # may use only the symbols of its own sublayer and those below it, so no SoC

@@ -16,6 +16,11 @@ static inline bool api_can_write(const void *p, SIZE size)
 	return sns_ctx() || prb_mem(p, size, TSK_SELF, TPM_WRITE) == E_OK;
 }
 
+/* EV3RT's convention for a call that cannot return its error (a getter, or
+ * a value corrected instead of refused): a warning through syslog naming the
+ * call, the port or value, and the error. */
+void api_warn(const char *call, int arg, ER ercd);
+
 /* Forget everything of a previous boot (ATT_INI of ev3api_cfg, in config.c). */
 void api_motor_boot(void);
 void api_sensor_boot(void);

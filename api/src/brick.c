@@ -31,7 +31,7 @@ static const uint8_t pattern_of[TNUM_LED_COLOR] = {
 };
 
 struct click_handler {
-	ev3_button_handler_t handler;
+	ISR handler;
 	intptr_t exinf;
 };
 
@@ -45,14 +45,14 @@ void api_brick_boot(void)
 	ui_shm = NULL;
 }
 
-ER ev3_led_set_color(ledcolor_t color)
+ER ev3lx_led_set_color(ledcolor_t color)
 {
 	if ((unsigned)color >= TNUM_LED_COLOR)
 		return E_PAR;
 	return ui_svc_led(pattern_of[color]);
 }
 
-ER ev3_button_is_pressed(button_t button, bool *p_pressed)
+ER ev3lx_button_is_pressed(button_t button, bool *p_pressed)
 {
 	if ((unsigned)button >= TNUM_BUTTON)
 		return E_ID;
@@ -70,7 +70,7 @@ ER ev3_button_is_pressed(button_t button, bool *p_pressed)
 	return E_OK;
 }
 
-ER ev3_button_set_on_clicked(button_t button, ev3_button_handler_t handler, intptr_t exinf)
+ER ev3lx_button_set_on_clicked(button_t button, ISR handler, intptr_t exinf)
 {
 	struct click_handler *h;
 	ER ercd;

@@ -2,7 +2,7 @@
  * motor.c — the EV3 motor API over d_pwm's extended service calls.
  *
  * Commands go to d_pwm through pwm_hack's service calls (one call per API
- * call: the hot path of ev3_motor_set_speed is one cal_svc carrying the
+ * call: the hot path of ev3lx_motor_set_speed is one cal_svc carrying the
  * OUTPUT_SPEED and OUTPUT_START commands).  Counts and speed are read from
  * the MOTORDATA array d_pwm publishes (its /dev/lms_motor mapping), which the
  * driver refreshes every 2 ms.
@@ -12,7 +12,7 @@
 #include "api_internal.h"
 #include "pwm_hack.h"
 
-/* What each output port was configured as (NONE_MOTOR until ev3_motor_config). */
+/* What each output port was configured as (NONE_MOTOR until ev3lx_motor_config). */
 static motor_type_t motor_type[TNUM_MOTOR_PORT];
 /* d_pwm's MOTORDATA[4], mapped at the first configuration. */
 static const volatile struct lms_motor_data *motor_data;
@@ -74,7 +74,7 @@ void api_motor_boot(void)
 	motor_data = NULL;
 }
 
-ER ev3_motor_config(motor_port_t port, motor_type_t type)
+ER ev3lx_motor_config(motor_port_t port, motor_type_t type)
 {
 	uint8_t cmd[5];
 	motor_type_t old;
@@ -110,7 +110,7 @@ ER ev3_motor_config(motor_port_t port, motor_type_t type)
 	return pwm_command(cmd, 2);
 }
 
-ER ev3_motor_get_type(motor_port_t port, motor_type_t *p_type)
+ER ev3lx_motor_get_type(motor_port_t port, motor_type_t *p_type)
 {
 	if ((unsigned)port >= TNUM_MOTOR_PORT)
 		return E_ID;
@@ -139,17 +139,17 @@ static ER run_motor(motor_port_t port, uint8_t opcode, int value, unsigned type_
 	return pwm_command2(set, sizeof(set), start, sizeof(start));
 }
 
-ER ev3_motor_set_speed(motor_port_t port, int speed)
+ER ev3lx_motor_set_speed(motor_port_t port, int speed)
 {
 	return run_motor(port, LMS_PWM_OUTPUT_SPEED, speed, REGULATED_MOTOR);
 }
 
-ER ev3_motor_set_power(motor_port_t port, int power)
+ER ev3lx_motor_set_power(motor_port_t port, int power)
 {
 	return run_motor(port, LMS_PWM_OUTPUT_POWER, power, ANY_MOTOR);
 }
 
-ER ev3_motor_get_speed(motor_port_t port, int *p_speed)
+ER ev3lx_motor_get_speed(motor_port_t port, int *p_speed)
 {
 	ER ercd = check_reading(port, ANY_MOTOR, p_speed, sizeof(*p_speed));
 
@@ -159,7 +159,7 @@ ER ev3_motor_get_speed(motor_port_t port, int *p_speed)
 	return E_OK;
 }
 
-ER ev3_motor_stop(motor_port_t port, bool brake)
+ER ev3lx_motor_stop(motor_port_t port, bool brake)
 {
 	uint8_t cmd[3];
 	ER ercd;
@@ -173,7 +173,7 @@ ER ev3_motor_stop(motor_port_t port, bool brake)
 	return pwm_command(cmd, sizeof(cmd));
 }
 
-ER ev3_motor_get_counts(motor_port_t port, int32_t *p_counts)
+ER ev3lx_motor_get_counts(motor_port_t port, int32_t *p_counts)
 {
 	ER ercd = check_reading(port, ANY_MOTOR, p_counts, sizeof(*p_counts));
 
@@ -183,7 +183,7 @@ ER ev3_motor_get_counts(motor_port_t port, int32_t *p_counts)
 	return E_OK;
 }
 
-ER ev3_motor_reset_counts(motor_port_t port)
+ER ev3lx_motor_reset_counts(motor_port_t port)
 {
 	uint8_t cmd[2];
 	ER ercd;
@@ -206,7 +206,7 @@ static void put_s32(uint8_t *p, int32_t v)
 	p[3] = (uint8_t)(u >> 24);
 }
 
-ER ev3_motor_is_busy(motor_port_t port, bool *p_busy)
+ER ev3lx_motor_is_busy(motor_port_t port, bool *p_busy)
 {
 	ER_UINT busy;
 	ER ercd = check_reading(port, ANY_MOTOR, p_busy, sizeof(*p_busy));
@@ -243,11 +243,11 @@ static RELTIM rotate_timeout_ms(int degrees, int speed)
 	uint32_t deg = (uint32_t)(degrees < 0 ? -degrees : degrees);
 	uint32_t spd = (uint32_t)(speed < 0 ? -speed : speed);
 
-	/* cppcheck-suppress zerodivcond ; speed is never 0: ev3_motor_rotate answers E_PAR first */
+	/* cppcheck-suppress zerodivcond ; speed is never 0: ev3lx_motor_rotate answers E_PAR first */
 	return (RELTIM)(1000U + deg * 400U / spd);
 }
 
-ER ev3_motor_rotate(motor_port_t port, int degrees, int speed, bool blocking)
+ER ev3lx_motor_rotate(motor_port_t port, int degrees, int speed, bool blocking)
 {
 	uint8_t cmd[LMS_PWM_STEP_LEN];
 	ER ercd;
@@ -297,16 +297,17 @@ static ER sync_pair(motor_port_t left, motor_port_t right, int speed, int turn, 
 	cmd[LMS_PWM_SYNC_OFF_TURN] = (uint8_t)(uint16_t)(int16_t)turn;
 	cmd[LMS_PWM_SYNC_OFF_TURN + 1] = (uint8_t)((uint16_t)(int16_t)turn >> 8);
 	put_s32(&cmd[LMS_PWM_SYNC_OFF_STEP], degrees);
-	cmd[LMS_PWM_SYNC_OFF_BRAKE] = 1;
+	/* a limited run ends braked; an endless one runs until the next command */
+	cmd[LMS_PWM_SYNC_OFF_BRAKE] = degrees != 0 ? 1U : 0U;
 	return pwm_command(cmd, sizeof(cmd));
 }
 
-ER ev3_motor_steer(motor_port_t left, motor_port_t right, int speed, int turn)
+ER ev3lx_motor_steer(motor_port_t left, motor_port_t right, int speed, int turn)
 {
 	return sync_pair(left, right, speed, turn, 0);
 }
 
-ER ev3_motor_sync(motor_port_t left, motor_port_t right, int speed, int turn, int degrees)
+ER ev3lx_motor_sync(motor_port_t left, motor_port_t right, int speed, int turn, int degrees)
 {
 	if (degrees <= 0 || degrees > 10000000)
 		return E_PAR;

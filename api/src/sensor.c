@@ -35,8 +35,25 @@
 enum {
 	COLOR_MODE_REFLECT = 0, COLOR_MODE_AMBIENT = 1, COLOR_MODE_COLOR = 2, COLOR_MODE_RGB_RAW = 4,
 	US_MODE_DIST_CM = 0,
-	GYRO_MODE_ANGLE = 0, GYRO_MODE_RATE = 1,
-	IR_MODE_PROX = 0,
+	US_MODE_LISTEN = 2,
+	GYRO_MODE_ANGLE = 0, GYRO_MODE_RATE = 1, GYRO_MODE_CAL = 4,
+	IR_MODE_PROX = 0, IR_MODE_SEEK = 1, IR_MODE_REMOTE = 2,
+};
+
+/*
+ * IR-REMOTE reports per channel a code of the buttons held (LEGO's EV3
+ * infrared sensor documentation): 0 none, 1..4 one of red up, red down,
+ * blue up, blue down, 5..8 a red with a blue button, 9 the beacon button,
+ * 10 both red, 11 both blue.  The API gives them as bit masks.
+ */
+static const uint8_t remote_buttons_of[] = {
+	[0] = 0,
+	[1] = IR_RED_UP_BUTTON, [2] = IR_RED_DOWN_BUTTON,
+	[3] = IR_BLUE_UP_BUTTON, [4] = IR_BLUE_DOWN_BUTTON,
+	[5] = IR_RED_UP_BUTTON | IR_BLUE_UP_BUTTON, [6] = IR_RED_UP_BUTTON | IR_BLUE_DOWN_BUTTON,
+	[7] = IR_RED_DOWN_BUTTON | IR_BLUE_UP_BUTTON, [8] = IR_RED_DOWN_BUTTON | IR_BLUE_DOWN_BUTTON,
+	[9] = IR_BEACON_BUTTON,
+	[10] = IR_RED_UP_BUTTON | IR_RED_DOWN_BUTTON, [11] = IR_BLUE_UP_BUTTON | IR_BLUE_DOWN_BUTTON,
 };
 
 static sensor_type_t sensor_type[TNUM_SENSOR_PORT];
@@ -84,7 +101,7 @@ void api_sensor_boot(void)
 	analog_shm = NULL;
 }
 
-ER ev3_sensor_config(sensor_port_t port, sensor_type_t type)
+ER ev3lx_sensor_config(sensor_port_t port, sensor_type_t type)
 {
 	sensor_type_t old;
 	ER ercd;
@@ -95,6 +112,8 @@ ER ev3_sensor_config(sensor_port_t port, sensor_type_t type)
 		return E_ID;
 	if ((unsigned)type >= TNUM_SENSOR_TYPE)
 		return E_PAR;
+	if (type == HT_NXT_ACCEL_SENSOR || type == HT_NXT_COLOR_SENSOR || type == NXT_TEMP_SENSOR)
+		return E_NOSPT;	/* I2C sensors: no driver yet */
 	ercd = map_shared_memory();
 	if (ercd != E_OK)
 		return ercd;
@@ -114,7 +133,7 @@ ER ev3_sensor_config(sensor_port_t port, sensor_type_t type)
 	return E_OK;
 }
 
-ER ev3_sensor_get_type(sensor_port_t port, sensor_type_t *p_type)
+ER ev3lx_sensor_get_type(sensor_port_t port, sensor_type_t *p_type)
 {
 	if ((unsigned)port >= TNUM_SENSOR_PORT)
 		return E_ID;
@@ -224,35 +243,48 @@ static ER read_s16(sensor_port_t port, sensor_type_t type, int mode, int16_t div
 	return ercd;
 }
 
-ER ev3_gyro_sensor_get_angle(sensor_port_t port, int16_t *p_angle)
+ER ev3lx_gyro_sensor_get_angle(sensor_port_t port, int16_t *p_angle)
 {
 	return read_s16(port, GYRO_SENSOR, GYRO_MODE_ANGLE, 1, p_angle);
 }
 
-ER ev3_gyro_sensor_get_rate(sensor_port_t port, int16_t *p_rate)
+ER ev3lx_gyro_sensor_get_rate(sensor_port_t port, int16_t *p_rate)
 {
 	return read_s16(port, GYRO_SENSOR, GYRO_MODE_RATE, 1, p_rate);
 }
 
-ER ev3_gyro_sensor_reset(sensor_port_t port)
+ER ev3lx_gyro_sensor_reset(sensor_port_t port)
 {
 	uint8_t raw[2];
 	ER ercd;
 
-	/* The gyro restarts its angle at 0 on a mode change: pass through RATE. */
-	ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_RATE, raw, sizeof(raw));
+	/* GYRO-CAL recalibrates; any mode change restarts the angle at 0. */
+	ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_CAL, raw, sizeof(raw));
 	if (ercd == E_OK)
 		ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_ANGLE, raw, sizeof(raw));
 	return ercd;
 }
 
-ER ev3_ultrasonic_sensor_get_distance(sensor_port_t port, int16_t *p_cm)
+ER ev3lx_ultrasonic_sensor_get_distance(sensor_port_t port, int16_t *p_cm)
 {
 	/* the sensor reports tenths of a cm */
 	return read_s16(port, ULTRASONIC_SENSOR, US_MODE_DIST_CM, 10, p_cm);
 }
 
-ER ev3_touch_sensor_is_pressed(sensor_port_t port, bool *p_pressed)
+ER ev3lx_ultrasonic_sensor_listen(sensor_port_t port, bool *p_heard)
+{
+	uint8_t raw;
+	ER ercd;
+
+	if (!api_can_write(p_heard, sizeof(*p_heard)))
+		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
+	ercd = read_uart(port, ULTRASONIC_SENSOR, US_MODE_LISTEN, &raw, 1);
+	if (ercd == E_OK)
+		*p_heard = raw != 0;
+	return ercd;
+}
+
+ER ev3lx_touch_sensor_is_pressed(sensor_port_t port, bool *p_pressed)
 {
 	ER ercd = check_sensor(port, TOUCH_SENSOR, p_pressed, sizeof(*p_pressed));
 
@@ -262,7 +294,7 @@ ER ev3_touch_sensor_is_pressed(sensor_port_t port, bool *p_pressed)
 	return E_OK;
 }
 
-ER ev3_color_sensor_get_color(sensor_port_t port, colorid_t *p_color)
+ER ev3lx_color_sensor_get_color(sensor_port_t port, colorid_t *p_color)
 {
 	uint8_t raw;
 	ER ercd;
@@ -275,17 +307,17 @@ ER ev3_color_sensor_get_color(sensor_port_t port, colorid_t *p_color)
 	return ercd;
 }
 
-ER ev3_color_sensor_get_reflect(sensor_port_t port, uint8_t *p_pct)
+ER ev3lx_color_sensor_get_reflect(sensor_port_t port, uint8_t *p_pct)
 {
 	return read_uart(port, COLOR_SENSOR, COLOR_MODE_REFLECT, p_pct, 1);
 }
 
-ER ev3_color_sensor_get_ambient(sensor_port_t port, uint8_t *p_pct)
+ER ev3lx_color_sensor_get_ambient(sensor_port_t port, uint8_t *p_pct)
 {
 	return read_uart(port, COLOR_SENSOR, COLOR_MODE_AMBIENT, p_pct, 1);
 }
 
-ER ev3_color_sensor_get_rgb_raw(sensor_port_t port, rgb_raw_t *p_rgb)
+ER ev3lx_color_sensor_get_rgb_raw(sensor_port_t port, rgb_raw_t *p_rgb)
 {
 	uint8_t raw[6];
 	ER ercd;
@@ -301,12 +333,45 @@ ER ev3_color_sensor_get_rgb_raw(sensor_port_t port, rgb_raw_t *p_rgb)
 	return ercd;
 }
 
-ER ev3_infrared_sensor_get_distance(sensor_port_t port, int8_t *p_pct)
+ER ev3lx_infrared_sensor_get_distance(sensor_port_t port, int8_t *p_pct)
 {
 	return read_uart(port, INFRARED_SENSOR, IR_MODE_PROX, p_pct, 1);
 }
 
-ER ev3_uart_sensor_get_raw(sensor_port_t port, void *buf, uint_t size)
+ER ev3lx_infrared_sensor_seek(sensor_port_t port, ir_seek_t *p_seek)
+{
+	int8_t raw[8];
+	ER ercd;
+
+	if (!api_can_write(p_seek, sizeof(*p_seek)))
+		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
+	ercd = read_uart(port, INFRARED_SENSOR, IR_MODE_SEEK, raw, sizeof(raw));
+	if (ercd == E_OK) {
+		/* the sample is heading, distance of channel 1, then of 2, 3, 4 */
+		for (unsigned c = 0; c < 4; c++) {
+			p_seek->heading[c] = raw[2 * c];
+			p_seek->distance[c] = raw[2 * c + 1];
+		}
+	}
+	return ercd;
+}
+
+ER ev3lx_infrared_sensor_get_remote(sensor_port_t port, ir_remote_t *p_remote)
+{
+	uint8_t raw[4];
+	ER ercd;
+
+	if (!api_can_write(p_remote, sizeof(*p_remote)))
+		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
+	ercd = read_uart(port, INFRARED_SENSOR, IR_MODE_REMOTE, raw, sizeof(raw));
+	if (ercd == E_OK) {
+		for (unsigned c = 0; c < 4; c++)
+			p_remote->channel[c] = raw[c] < sizeof(remote_buttons_of) ? remote_buttons_of[raw[c]] : 0U;
+	}
+	return ercd;
+}
+
+ER ev3lx_uart_sensor_get_raw(sensor_port_t port, void *buf, uint_t size)
 {
 	const int8_t *sample;
 	int mode;

@@ -14,6 +14,7 @@
 #include "ev3sim/cli.h"
 #include "ev3sim/parse.h"
 #include "ev3sim/plot.h"
+#include "ev3sim/run.h"
 #include "ev3sim/serial_log.h"
 
 #define MAX_PUSH_NM		5.0       /* largest push torque, N m */
@@ -32,7 +33,8 @@ static const char main_usage[] =
 	"commands:\n"
 	"  balance   the self-balancing robot (gyro boy) with a gyro logger\n"
 	"  motor     run one motor and print its speed and counts\n"
-	"  sensors   plug in sensors and motors, print what the drivers detect and live values\n";
+	"  sensors   plug in sensors and motors, print what the drivers detect and live values\n"
+	"  run       build an EV3RT application directory and run it in a robot\n";
 
 static const char balance_usage[] =
 	"usage: ev3sim balance [options]\n"
@@ -72,7 +74,7 @@ static const char balance_usage[] =
 static const char motor_usage[] =
 	"usage: ev3sim motor [options]\n"
 	"\n"
-	"Runs a motor through the EV3 API (ev3_motor_set_speed or _set_power), prints\n"
+	"Runs a motor through the EV3 API (ev3lx_motor_set_speed or _set_power), prints\n"
 	"time, measured speed and counts every --every ms, then a key=value summary.\n"
 	"\n"
 	"  --port P         output port A..D (default A)\n"
@@ -539,10 +541,16 @@ static int cmd_sensors(struct args *a)
 	return EV3SIM_EXIT_OK;
 }
 
+static int cmd_run(struct args *a)
+{
+	return ev3sim_run_command(a->argc - a->i, a->argv + a->i);
+}
+
 int ev3sim_main(int argc, char **argv)
 {
 	static const struct { const char *name; int (*run)(struct args *); } cmds[] = {
 		{ "balance", cmd_balance }, { "motor", cmd_motor }, { "sensors", cmd_sensors },
+		{ "run", cmd_run },
 	};
 	struct args a = { .argc = argc, .argv = argv, .i = 2 };
 

@@ -40,32 +40,32 @@ static void motor_task(intptr_t exinf)
 	int speed = 0;
 
 	(void)exinf;
-	check(ev3_motor_config(port, run.o.kind == HS_MOTOR_MEDIUM ? MEDIUM_MOTOR : LARGE_MOTOR));
+	check(ev3lx_motor_config(port, run.o.kind == HS_MOTOR_MEDIUM ? MEDIUM_MOTOR : LARGE_MOTOR));
 	fprintf(run.out, "# motor %c (%s), %s %d for %g s\n# t_s  speed_pct  counts_deg\n",
 		'A' + run.o.port, run.o.kind == HS_MOTOR_MEDIUM ? "medium" : "large",
 		run.o.power_mode ? "power" : "speed", run.o.value, run.o.seconds);
 	get_tim(&t0);
 	if (run.o.power_mode)
-		check(ev3_motor_set_power(port, run.o.value));
+		check(ev3lx_motor_set_power(port, run.o.value));
 	else
-		check(ev3_motor_set_speed(port, run.o.value));
+		check(ev3lx_motor_set_speed(port, run.o.value));
 	for (uint64_t k = 1; k <= rows; k++) {
 		SYSTIM target = t0 + (SYSTIM)(k * run.o.every_ms);
 
 		get_tim(&now);
 		if (target > now)
 			dly_tsk((RELTIM)(target - now));
-		check(ev3_motor_get_speed(port, &speed));
-		check(ev3_motor_get_counts(port, &counts));
+		check(ev3lx_motor_get_speed(port, &speed));
+		check(ev3lx_motor_get_counts(port, &counts));
 		fprintf(run.out, "%7.3f  %4d  %8ld\n", (double)(k * run.o.every_ms) / 1000.0, speed,
 			(long)counts);
 	}
 	get_tim(&now);
 	if (now < t0 + (SYSTIM)(run.o.seconds * 1000.0))
 		dly_tsk((RELTIM)(t0 + (SYSTIM)(run.o.seconds * 1000.0) - now));
-	check(ev3_motor_get_speed(port, &speed));
-	check(ev3_motor_get_counts(port, &counts));
-	check(ev3_motor_stop(port, true));
+	check(ev3lx_motor_get_speed(port, &speed));
+	check(ev3lx_motor_get_counts(port, &counts));
+	check(ev3lx_motor_stop(port, true));
 	run.speed = speed;
 	run.counts = counts;
 	run.done = true;

@@ -15,20 +15,20 @@ static void touch_body(void)
 {
 	bool pressed = true;
 
-	is_int(ev3_sensor_config(EV3_PORT_1, TOUCH_SENSOR), E_OK, "config touch on port 1");
+	is_int(ev3lx_sensor_config(EV3_PORT_1, TOUCH_SENSOR), E_OK, "config touch on port 1");
 	dly_tsk(10);
-	is_int(ev3_touch_sensor_is_pressed(EV3_PORT_1, &pressed), E_OK, "is_pressed");
+	is_int(ev3lx_touch_sensor_is_pressed(EV3_PORT_1, &pressed), E_OK, "is_pressed");
 	ok(!pressed, "released");
 	ev3_set_touch(0, true);
 	dly_tsk(10);
-	ev3_touch_sensor_is_pressed(EV3_PORT_1, &pressed);
+	ev3lx_touch_sensor_is_pressed(EV3_PORT_1, &pressed);
 	ok(pressed, "pressed");
 	ev3_set_touch(0, false);
 	dly_tsk(10);
-	ev3_touch_sensor_is_pressed(EV3_PORT_1, &pressed);
+	ev3lx_touch_sensor_is_pressed(EV3_PORT_1, &pressed);
 	ok(!pressed, "released again");
-	is_int(ev3_touch_sensor_is_pressed(EV3_PORT_2, &pressed), E_OBJ, "unconfigured port: E_OBJ");
-	is_int(ev3_touch_sensor_is_pressed(EV3_PORT_1, &global_flag), E_MACV,
+	is_int(ev3lx_touch_sensor_is_pressed(EV3_PORT_2, &pressed), E_OBJ, "unconfigured port: E_OBJ");
+	is_int(ev3lx_touch_sensor_is_pressed(EV3_PORT_1, &global_flag), E_MACV,
 	       "outside the domain: E_MACV");
 }
 

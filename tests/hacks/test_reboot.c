@@ -84,19 +84,19 @@ static void body(void)
 	uint8_t pct = 0;
 
 	r->pwm_state = (int)lx_module_find("d_pwm")->state;
-	r->config_ercd = ev3_motor_config(EV3_PORT_A, LARGE_MOTOR);
+	r->config_ercd = ev3lx_motor_config(EV3_PORT_A, LARGE_MOTOR);
 	if (r->config_ercd == E_OK)
-		r->config_ercd = ev3_sensor_config(EV3_PORT_1, COLOR_SENSOR);
-	r->speed_ercd = ev3_motor_set_speed(EV3_PORT_A, 40);
-	r->reflect_ercd = ev3_color_sensor_get_reflect(EV3_PORT_1, &pct);
+		r->config_ercd = ev3lx_sensor_config(EV3_PORT_1, COLOR_SENSOR);
+	r->speed_ercd = ev3lx_motor_set_speed(EV3_PORT_A, 40);
+	r->reflect_ercd = ev3lx_color_sensor_get_reflect(EV3_PORT_1, &pct);
 	r->reflect = pct;
 	r->reflect_ms = at_now_ms();
 	dly_tsk(500);
-	ev3_motor_get_speed(EV3_PORT_A, &speed);
-	ev3_motor_get_counts(EV3_PORT_A, &counts);
+	ev3lx_motor_get_speed(EV3_PORT_A, &speed);
+	ev3lx_motor_get_counts(EV3_PORT_A, &counts);
 	r->speed = speed;
 	r->counts = counts;
-	ev3_motor_stop(EV3_PORT_A, false);
+	ev3lx_motor_stop(EV3_PORT_A, false);
 }
 
 /* The first line where the two traces differ, for the diagnostic. */

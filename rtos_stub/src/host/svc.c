@@ -20,11 +20,22 @@ static uint_t nregions[TNUM_DOMID + 1];
 ER_UINT cal_svc(FN fncd, intptr_t par1, intptr_t par2, intptr_t par3, intptr_t par4, intptr_t par5)
 {
 	EXTSVC fn;
+	struct tcb *caller;
+	ER_UINT ercd;
 
-	if ((uint_t)fncd - 1U >= (uint_t)TNUM_FNCD || (fn = svc_table[fncd]) == NULL)
+	if ((uint_t)fncd - 1U >= (uint_t)TNUM_FNCD || (fn = svc_table[fncd]) == NULL) {
+		svc_charge();
 		return svc_result("cal_svc", E_RSFN);
-	return fn(par1, par2, par3, par4, par5,
-		  cpu.kind == EXEC_TASK ? runtsk->cfg->domid : TDOM_KERNEL);
+	}
+	if (cpu.kind != EXEC_TASK)
+		return fn(par1, par2, par3, par4, par5, TDOM_KERNEL);
+	/* The measured cost covers the whole call, the service calls inside it included. */
+	svc_charge_ns(ext_svc_cost(fncd));
+	caller = runtsk;
+	caller->ext_svc_depth++;
+	ercd = fn(par1, par2, par3, par4, par5, caller->cfg->domid);
+	caller->ext_svc_depth--;
+	return ercd;
 }
 
 /* The domain of the calling task (TDOM_KERNEL in non-task context). */
@@ -55,6 +66,13 @@ static const struct mem_region *region_at(const struct tcb *t, uintptr_t addr, M
 
 /* E_OK if task tskid's domain may access [base, base+size) with pmmode, else E_MACV. */
 ER prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode)
+{
+	svc_charge();
+	return mem_probe(base, size, tskid, pmmode);
+}
+
+/* prb_mem's checks, for the kernel's own pointer checks (no charge). */
+ER mem_probe(const void *base, SIZE size, ID tskid, MODE pmmode)
 {
 	struct tcb *t;
 	ER ercd = E_OK;

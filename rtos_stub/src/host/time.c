@@ -280,6 +280,7 @@ ER sta_cyc(ID cycid)
 	struct cyccb *c;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("sta_cyc", E_CTX);
 	if ((c = cyc_lookup(cycid, &ercd)) == NULL)
@@ -301,6 +302,7 @@ ER stp_cyc(ID cycid)
 	struct cyccb *c;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("stp_cyc", E_CTX);
 	if ((c = cyc_lookup(cycid, &ercd)) == NULL)
@@ -367,6 +369,7 @@ static ER alm_stop(const char *svc, ID almid)
 /* Starts (or restarts) an alarm almtim ms from now. */
 ER sta_alm(ID almid, RELTIM almtim)
 {
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("sta_alm", E_CTX);
 	return alm_start("sta_alm", almid, almtim);
@@ -375,6 +378,7 @@ ER sta_alm(ID almid, RELTIM almtim)
 /* sta_alm from non-task context. */
 ER ista_alm(ID almid, RELTIM almtim)
 {
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("ista_alm", E_CTX);
 	return alm_start("ista_alm", almid, almtim);
@@ -383,6 +387,7 @@ ER ista_alm(ID almid, RELTIM almtim)
 /* Stops an alarm. */
 ER stp_alm(ID almid)
 {
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("stp_alm", E_CTX);
 	return alm_stop("stp_alm", almid);
@@ -391,6 +396,7 @@ ER stp_alm(ID almid)
 /* stp_alm from non-task context. */
 ER istp_alm(ID almid)
 {
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("istp_alm", E_CTX);
 	return alm_stop("istp_alm", almid);
@@ -465,6 +471,7 @@ void cyc_reset(void)
 /* System time in ms since boot, as the tick counter sees it (whole ticks). */
 ER get_tim(SYSTIM *p_systim)
 {
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("get_tim", E_CTX);
 	if (check_out_ptr(p_systim, sizeof(*p_systim)) != E_OK)
@@ -476,6 +483,7 @@ ER get_tim(SYSTIM *p_systim)
 /* Performance time in us since boot (any context; wraps at 2^32 us). */
 ER get_utm(SYSUTM *p_sysutm)
 {
+	svc_charge();
 	if (p_sysutm == NULL)
 		return svc_result("get_utm", E_MACV);
 	*p_sysutm = (SYSUTM)(now_ns / 1000U);
