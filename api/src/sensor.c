@@ -194,6 +194,11 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 			in_data = true;
 			waited = 0;
 			limit = MODE_TIMEOUT_MS;
+		} else if (state != LMS_UART_STATE_DATA && in_data) {
+			/* the sensor reconnects: a whole handshake's bound again */
+			in_data = false;
+			waited = 0;
+			limit = START_TIMEOUT_MS;
 		}
 		if (state == LMS_UART_STATE_DATA &&
 		    *(const volatile int8_t *)&ext->mode != mode) {
@@ -298,8 +303,21 @@ ER ev3lx_touch_sensor_is_pressed(sensor_port_t port, bool *p_pressed)
 
 	if (ercd != E_OK)
 		return ercd;
-	*p_pressed = *(const volatile uint16_t *)&analog_shm->in_pin6[port] > TOUCH_PRESSED_RAW;
-	return E_OK;
+	/*
+	 * The touch sensor is an EV3 analog device (InConn INPUT_DUMB) whose switch drives pin 6.
+	 * Before detection has run (d_analog starts it 2 s after loading) and on an empty port the
+	 * connection is NONE: pin 6 is read live all the same, and an empty port's pin 6 is low,
+	 * so an unplugged sensor reads as not pressed, never as a frozen value.  Any other device
+	 * detected on the port is E_OBJ.
+	 */
+	switch (*(const volatile int8_t *)&analog_shm->in_conn[port]) {
+	case LMS_CONN_INPUT_DUMB:
+	case LMS_CONN_NONE:
+		*p_pressed = *(const volatile uint16_t *)&analog_shm->in_pin6[port] > TOUCH_PRESSED_RAW;
+		return E_OK;
+	default:
+		return E_OBJ;
+	}
 }
 
 ER ev3lx_color_sensor_get_color(sensor_port_t port, colorid_t *p_color)
