@@ -13,8 +13,8 @@
  * GPIOs per port; a quadrature-like tacho (an interrupt pin counted on both
  * edges plus a direction pin); edge times stamped from TIMER64P3.
  *
- * What applications see behaves as LEGO's driver does (measured on the same
- * byte streams and motors):
+ * What applications see behaves as LEGO's lms2012 d_pwm.c (mindboards/
+ * ev3sources) does, measured on the same byte streams and simulated motors:
  *  - A command re-issued while running (a control loop sending STEP_SYNC,
  *    SPEED, POWER, STEP_/TIME_SPEED every few ms) changes the target and
  *    nothing else: the regulator keeps its accumulated power, a ramp resumes

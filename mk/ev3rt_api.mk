@@ -8,7 +8,7 @@ EV3RT_NOT_YET_CALLS := lcd__ev3_lcd_draw_string lcd__ev3_image_load speaker__ev3
 .PHONY: ev3rt-link-check
 ev3rt-link-check: $(LIB_host)
 	@mkdir -p $(BUILD)/host/ev3rt_link
-	$(Q)$(CC_host) -std=c11 $(COMMON_INC) $(WARN) $(CFLAGS_host) $(KERNEL_DEFS) \
+	$(Q)$(call compile,host,tests/ev3rt_link/not_yet_app.c) \
 		-c tests/ev3rt_link/not_yet_app.c -o $(BUILD)/host/ev3rt_link/not_yet_app.o
 	$(Q)if $(CC_host) -o $(BUILD)/host/ev3rt_link/not_yet_app $(BUILD)/host/ev3rt_link/not_yet_app.o \
 		$(LIB_host) -lm > $(BUILD)/host/ev3rt_link/link.log 2>&1; then \

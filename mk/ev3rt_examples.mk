@@ -20,8 +20,8 @@ $(call ev3rt_app,$(1),$(2),examples/$(1)/app.cfg,examples/$(1)/app.c)
 $(BUILD)/$(2)/obj/tests/examples/test_$(1).o: tests/examples/test_$(1).c $(BUILD)/$(2)/ev3rt/$(1)/$(1).o
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(2) $$<
-	$(Q)$$(CC_$(2)) $$(call src_flags,$$<) $$(WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) -MMD -MP \
-		-c $$< -o $$@.main.o
+	$(Q)$$(CC_$(2)) $$(call src_flags,$$<) $$(WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+		-MMD -MP -MF $$(@:.o=.d) -MT $$@ -c $$< -o $$@.main.o
 	$(Q)$$(CC_$(2)) -r -nostdlib -o $$@ $$@.main.o $(BUILD)/$(2)/ev3rt/$(1)/$(1).o
 endef
 $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_rules,$(e),$(c)))))
@@ -46,3 +46,18 @@ $(eval $(call ev3rt_app,$(EV3RT_RUN_NAME),host,$(APP)/app.cfg,$(EV3RT_RUN_SRCS),
 .PHONY: ev3rt-app
 ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)
 endif
+
+# `make ev3sim-run-check` (in make test): `ev3sim run` builds an app directory
+# and runs it, ending with its summary line.
+.PHONY: ev3sim-run-check
+ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
+	+$(Q)out=$$($(BUILD)/host/ev3sim run examples/blink --seconds 3 --click back:1500ms --quiet) || \
+		{ echo "ev3sim-run-check: FAILED: ev3sim run examples/blink exited $$?"; exit 1; }; \
+	summary=$$(printf '%s\n' "$$out" | tail -n 1); \
+	case "$$summary" in \
+	"app=blink robot=bare seconds=3 seed=1 "*" warnings=0 errors=0 bugs=0 sim_speed="*) \
+		echo "ev3sim-run-check: $$summary";; \
+	*) echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1;; \
+	esac
+
+TEST_SUITE_EXTRA += ev3sim-run-check

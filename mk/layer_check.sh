@@ -9,7 +9,9 @@
 #      code outside a host/ directory never names rtos_stub's host interface;
 #      only hacks include another layer's .c file (the verbatim driver);
 #   2. every undefined symbol of an object in OBJDIR (one per configuration)
-#      that another layer's object defines is an edge the first layer may use.
+#      that another layer's object defines is an edge the first layer may use;
+#      inside host_sim, an object of host_sim/src/<sublayer>/ uses only its own
+#      sublayer and those before it in SUBLAYERS_host_sim.
 # Prints each violation and exits 1 if there is any.
 set -u
 export LC_ALL=C
@@ -31,19 +33,41 @@ for l in $LAYERS; do
 	for d in ${!v:-}; do hdr_dirs+=("$d"); done
 done
 
-# The file an #include names, or nothing for a system header.
+# Normalizes a relative path ("a/b/../c" -> "a/c") into $norm.
+normalize() {
+	local IFS=/ part out=()
+	for part in $1; do
+		case $part in
+		'' | .) ;;
+		..) [ ${#out[@]} -gt 0 ] && unset 'out[${#out[@]}-1]' ;;
+		*) out+=("$part") ;;
+		esac
+	done
+	norm="${out[*]}"
+}
+
+# The file an #include names into $target, or "" for a system header.
+declare -A found
 resolve() {  # resolve INCLUDING_FILE NAME QUOTED
-	local dir
-	if [ "$3" = 1 ] && [ -f "$(dirname "$1")/$2" ]; then
-		realpath -m --relative-to=. "$(dirname "$1")/$2"
+	local dir key
+	target=""
+	if [ "$3" = 1 ] && [ -f "${1%/*}/$2" ]; then
+		normalize "${1%/*}/$2"
+		target=$norm
+		return
+	fi
+	key=$2
+	if [ -n "${found[$key]+set}" ]; then
+		target=${found[$key]}
 		return
 	fi
 	for dir in "${hdr_dirs[@]}"; do
 		if [ -f "$dir/$2" ]; then
-			echo "$dir/$2"
-			return
+			target="$dir/$2"
+			break
 		fi
 	done
+	found[$key]=$target
 }
 
 # ---- 1. include edges ----
@@ -60,10 +84,10 @@ for l in $LAYERS; do
 			else
 				continue
 			fi
-			target=$(resolve "$f" "$name" "$quoted")
+			resolve "$f" "$name" "$quoted"
 			[ -n "$target" ] || continue
 			nincludes=$((nincludes + 1))
-			to=$(layer_of "$target")
+			to=${target%%/*}
 			if ! may_use "$l" "$to"; then
 				violation "$f:$line: $l includes $target ($to is not a layer $l may use)"
 				continue
@@ -89,18 +113,35 @@ for objdir in "$@"; do
 	[ -d "$objdir" ] || { violation "no objects in $objdir (build first)"; continue; }
 	defs=$(mktemp)
 	undefs=$(mktemp)
-	while IFS= read -r o; do
-		rel=${o#"$objdir"/}
-		nm --defined-only -g "$o" 2>/dev/null | awk -v l="$(layer_of "$rel")" -v o="$rel" \
-			'NF >= 3 && $2 !~ /[wWvV]/ { print $3, l, o }' >> "$defs"
-		nm -u "$o" 2>/dev/null | awk -v l="$(layer_of "$rel")" -v o="$rel" '{ print $NF, l, o }' >> "$undefs"
-	done < <(find "$objdir" -name '*.o' | sort)
+	# "symbol layer object" lines, one nm run each over every object of the configuration
+	(cd "$objdir" && find . -name '*.o' -print0 | sort -z | xargs -0 -r nm -A --defined-only -g 2>/dev/null) |
+		awk '{ split($1, p, ":"); o = substr(p[1], 3); split(o, d, "/");
+		       if (NF >= 3 && $(NF-1) !~ /^[wWvV]$/) print $NF, d[1], o }' > "$defs"
+	(cd "$objdir" && find . -name '*.o' -print0 | sort -z | xargs -0 -r nm -A -u 2>/dev/null) |
+		awk '{ split($1, p, ":"); o = substr(p[1], 3); split(o, d, "/"); print $NF, d[1], o }' > "$undefs"
 	# symbol user-layer user-object defining-layer defining-object, one line per cross-layer use
 	while read -r sym from user to def; do
 		nedges=$((nedges + 1))
 		may_use "$from" "$to" || violation "$user uses $sym of $def ($to is not a layer $from may use)"
 	done < <(sort -k1,1 "$defs" | join -1 1 -2 1 -o 2.1,2.2,2.3,1.2,1.3 - <(sort -k1,1 "$undefs") |
 		 awk '$2 != $4')
+	# host_sim's sublayers: symbol user-object defining-object within host_sim
+	while read -r sym user def; do
+		u=${user#host_sim/src/}; u=${u%%/*}
+		d=${def#host_sim/src/}; d=${d%%/*}
+		[ "$u" = "$d" ] && continue
+		nedges=$((nedges + 1))
+		ui=-1; di=-1; i=0
+		for s in ${SUBLAYERS_host_sim:-}; do
+			[ "$s" = "$u" ] && ui=$i
+			[ "$s" = "$d" ] && di=$i
+			i=$((i + 1))
+		done
+		if [ "$ui" -lt 0 ] || [ "$di" -lt 0 ] || [ "$di" -gt "$ui" ]; then
+			violation "$user uses $sym of $def (host_sim's $u may not use its $d)"
+		fi
+	done < <(sort -k1,1 "$defs" | join -1 1 -2 1 -o 2.1,2.3,1.3 - <(sort -k1,1 "$undefs") |
+		 awk '$2 ~ /^host_sim\/src\// && $3 ~ /^host_sim\/src\//')
 	rm -f "$defs" "$undefs"
 done
 

@@ -18,29 +18,43 @@ HDR_hacks        := hacks
 HDR_api          := api
 HDR_host_sim     := host_sim/include
 HDR_ev3sim       := ev3sim/include
+HDR_cfg          := cfg
+HDR_examples     :=
 HDR_tests        := tests/lib
 
 # Which layers each layer may use (include or link).  hacks sees the drivers it
-# includes verbatim; api sees the hacks' wrapper headers, whose user-space ABI
-# headers live with the drivers, and its configuration includes the drivers'
-# (ev3_drivers_cfg); drivers see linux_compat's Linux headers only (checked in
-# mk/layer_check.sh); target code never sees host_sim or tests.
+# includes verbatim; api uses the hacks' wrapper headers and its configuration
+# includes the drivers' (ev3_drivers_cfg); drivers see linux_compat's Linux
+# headers only (checked in mk/layer_check.sh); target code never sees host_sim
+# or tests.  LAYER_PATH_<layer>: header directories on a layer's include path
+# only for what the headers it may include include in turn (the wrapper
+# headers' user-space ABI headers live with the drivers): a direct include
+# from there is still a violation.
 LAYER_EDGES_rtos_stub    :=
 LAYER_EDGES_linux_compat := rtos_stub
 LAYER_EDGES_ev3_drivers  := linux_compat
 LAYER_EDGES_hacks        := ev3_drivers linux_compat rtos_stub
-LAYER_EDGES_api          := hacks ev3_drivers rtos_stub
+LAYER_EDGES_api          := hacks rtos_stub
+LAYER_PATH_api           := ev3_drivers
 LAYER_EDGES_host_sim     := rtos_stub
-LAYER_EDGES_am1808       := api hacks ev3_drivers linux_compat rtos_stub
+LAYER_EDGES_am1808       := api hacks linux_compat rtos_stub
+LAYER_PATH_am1808        := ev3_drivers
 LAYER_EDGES_ev3sim       := api hacks ev3_drivers linux_compat rtos_stub host_sim
+LAYER_EDGES_cfg          :=
+LAYER_EDGES_examples     := api rtos_stub
 LAYER_EDGES_bench        := api hacks ev3_drivers linux_compat rtos_stub host_sim
-LAYER_EDGES_tests        := api hacks ev3_drivers linux_compat rtos_stub host_sim ev3sim
+LAYER_EDGES_tests        := api hacks ev3_drivers linux_compat rtos_stub host_sim ev3sim examples cfg
 
-LAYERS := rtos_stub linux_compat ev3_drivers hacks api host_sim am1808 ev3sim bench tests
+LAYERS := rtos_stub linux_compat ev3_drivers hacks api host_sim am1808 ev3sim cfg examples bench tests
+
+# host_sim's own layers, lowest first (host_sim/src/<sublayer>/): an object
+# may use only the symbols of its own sublayer and those below it, so no SoC
+# model calls a board function and nothing below reaches up.
+SUBLAYERS_host_sim := core soc ev3 harness bench
 
 # The layer of a path: its top directory.
 LAYER_OF = $(firstword $(subst /, ,$(1)))
 
 # -I flags of a layer: its own headers, then those of the layers it may use
 # (Linux headers come with LINUX_INC for the code in LINUX_DIRS).
-layer_inc = $(addprefix -I,$(HDR_$(1)) $(foreach l,$(LAYER_EDGES_$(1)),$(if $(filter linux_compat,$(l)),,$(HDR_$(l)))))
+layer_inc = $(addprefix -I,$(HDR_$(1)) $(foreach l,$(LAYER_EDGES_$(1)) $(LAYER_PATH_$(1)),$(if $(filter linux_compat,$(l)),,$(HDR_$(l)))))

@@ -38,20 +38,20 @@ static ER check_motor(motor_port_t port, unsigned type_mask)
 #define ANY_MOTOR       ((1U << MEDIUM_MOTOR) | (1U << LARGE_MOTOR) | (1U << UNREGULATED_MOTOR))
 #define REGULATED_MOTOR ((1U << MEDIUM_MOTOR) | (1U << LARGE_MOTOR))
 
-/* A command may only come from a task (it may wait in the driver). */
+/* A command is a service call that may wait in the driver. */
 static ER check_command(motor_port_t port, unsigned type_mask)
 {
-	return sns_ctx() ? E_CTX : check_motor(port, type_mask);
+	ER ercd = api_may_wait();
+
+	return ercd != E_OK ? ercd : check_motor(port, type_mask);
 }
 
-/* A reading of size bytes into p. */
-static ER check_reading(motor_port_t port, unsigned type_mask, const void *p, SIZE size)
+/* A reading of the shared memory (the out-pointer is checked after this). */
+static ER check_reading(motor_port_t port, unsigned type_mask)
 {
-	ER ercd = check_motor(port, type_mask);
+	ER ercd = api_may_read();
 
-	if (ercd == E_OK && !api_can_write(p, size))
-		ercd = E_MACV;
-	return ercd;
+	return ercd != E_OK ? ercd : check_motor(port, type_mask);
 }
 
 /* d_pwm's device type for an API motor type. */
@@ -80,8 +80,9 @@ ER ev3lx_motor_config(motor_port_t port, motor_type_t type)
 	motor_type_t old;
 	ER ercd;
 
-	if (sns_ctx())
-		return E_CTX;
+	ercd = api_may_wait();
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)port >= TNUM_MOTOR_PORT)
 		return E_ID;
 	if ((unsigned)type >= TNUM_MOTOR_TYPE)
@@ -112,10 +113,15 @@ ER ev3lx_motor_config(motor_port_t port, motor_type_t type)
 
 ER ev3lx_motor_get_type(motor_port_t port, motor_type_t *p_type)
 {
+	ER ercd = api_may_read();
+
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)port >= TNUM_MOTOR_PORT)
 		return E_ID;
-	if (!api_can_write(p_type, sizeof(*p_type)))
-		return E_MACV;
+	ercd = API_CHECK_OUT(p_type);
+	if (ercd != E_OK)
+		return ercd;
 	*p_type = motor_type[port];
 	return E_OK;
 }
@@ -151,8 +157,10 @@ ER ev3lx_motor_set_power(motor_port_t port, int power)
 
 ER ev3lx_motor_get_speed(motor_port_t port, int *p_speed)
 {
-	ER ercd = check_reading(port, ANY_MOTOR, p_speed, sizeof(*p_speed));
+	ER ercd = check_reading(port, ANY_MOTOR);
 
+	if (ercd == E_OK)
+		ercd = API_CHECK_OUT(p_speed);
 	if (ercd != E_OK)
 		return ercd;
 	*p_speed = (int)motor_data[port].speed;	/* signed: -100..100 */
@@ -175,8 +183,10 @@ ER ev3lx_motor_stop(motor_port_t port, bool brake)
 
 ER ev3lx_motor_get_counts(motor_port_t port, int32_t *p_counts)
 {
-	ER ercd = check_reading(port, ANY_MOTOR, p_counts, sizeof(*p_counts));
+	ER ercd = check_reading(port, ANY_MOTOR);
 
+	if (ercd == E_OK)
+		ercd = API_CHECK_OUT(p_counts);
 	if (ercd != E_OK)
 		return ercd;
 	*p_counts = motor_data[port].tacho_sensor;
@@ -209,8 +219,10 @@ static void put_s32(uint8_t *p, int32_t v)
 ER ev3lx_motor_is_busy(motor_port_t port, bool *p_busy)
 {
 	ER_UINT busy;
-	ER ercd = check_reading(port, ANY_MOTOR, p_busy, sizeof(*p_busy));
+	ER ercd = check_command(port, ANY_MOTOR);	/* a read() of d_pwm: a service call */
 
+	if (ercd == E_OK)
+		ercd = API_CHECK_OUT(p_busy);
 	if (ercd != E_OK)
 		return ercd;
 	busy = pwm_busy();
@@ -309,7 +321,8 @@ ER ev3lx_motor_steer(motor_port_t left, motor_port_t right, int speed, int turn)
 
 ER ev3lx_motor_sync(motor_port_t left, motor_port_t right, int speed, int turn, int degrees)
 {
-	if (degrees <= 0 || degrees > 10000000)
+	/* at speed 0 the pair would never cover the distance: the call could never finish */
+	if (degrees <= 0 || degrees > 10000000 || speed == 0)
 		return E_PAR;
 	return sync_pair(left, right, speed, turn, degrees);
 }

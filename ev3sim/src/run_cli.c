@@ -221,8 +221,7 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 		fprintf(stderr, "ev3sim run: cannot write %s\n", csv_path);
 		return EV3SIM_EXIT_FAIL;
 	}
-	if (quiet)
-		ev3sim_quiet_console();
+	o.quiet = quiet;
 	if (ev3sim_run(&o, app, &r, err, sizeof(err)) != E_OK) {
 		fprintf(stderr, "ev3sim run: %s\n", err);
 		status = EV3SIM_EXIT_FAIL;

@@ -18,8 +18,10 @@
 #define CPSR_IRQ_MASK	0x80U
 #define CPSR_FIQ_MASK	0x40U
 
-/* Saves the CPSR and masks IRQ and FIQ, as Linux's ARMv5 arch_local_irq_save
- * does (SIL_LOC_INT's saved state is private to each TOPPERS target port). */
+/* Saves the CPSR and masks interrupts with mrs/orr/msr, as Linux's ARMv5
+ * arch_local_irq_save does; FIQ is masked too, as SIL_LOC_INT masks every
+ * interrupt.  (SIL_LOC_INT's saved state is private to each TOPPERS target
+ * port, so it cannot be carried in flags.) */
 static inline unsigned long irq_mask_save(void)
 {
 	unsigned long cpsr, masked;

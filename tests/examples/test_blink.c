@@ -39,5 +39,22 @@ int main(void)
 	is_int(ex_count("blink: ", "ticks"), 8, "REPORT_CYC reported when started and every second (7), then the end");
 	is_int(ex_count("blink: ", "(paused)"), 2, "twice while paused (3 s and 4 s)");
 	is_int(r.warnings + r.errors + r.bugs, 0, "no warnings, errors or bugs");
+
+	/* the runner's command line (what `ev3sim run APP_DIR` executes) */
+	{
+		char *good[] = { "run_blink", "--seconds", "3", "--click", "back:1500ms", "--quiet", NULL };
+		char *bad_robot[] = { "run_blink", "--robot", "segway", NULL };
+		char *bad_click[] = { "run_blink", "--click", "middle:1s", NULL };
+		char *bad_port[] = { "run_blink", "--in5", "gyro", NULL };
+		char *no_value[] = { "run_blink", "--seconds", NULL };
+		char *bad_fault[] = { "run_blink", "--fault", "gyro-noise", NULL };
+
+		is_int(ev3sim_run_main(6, good, "blink", &ev3rt_app_cfg), 0, "a run from the command line: status 0");
+		is_int(ev3sim_run_main(3, bad_robot, "blink", &ev3rt_app_cfg), 2, "--robot segway: status 2");
+		is_int(ev3sim_run_main(3, bad_click, "blink", &ev3rt_app_cfg), 2, "--click middle:1s: status 2");
+		is_int(ev3sim_run_main(3, bad_port, "blink", &ev3rt_app_cfg), 2, "--in5: status 2");
+		is_int(ev3sim_run_main(2, no_value, "blink", &ev3rt_app_cfg), 2, "--seconds without a value: status 2");
+		is_int(ev3sim_run_main(3, bad_fault, "blink", &ev3rt_app_cfg), 2, "--fault gyro-noise (no value): status 2");
+	}
 	return tap_done();
 }

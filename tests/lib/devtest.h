@@ -12,6 +12,7 @@
 #include "host_sim/board.h"
 #include "host_sim/clock.h"
 #include "host_sim/gpio.h"
+#include "host_sim/syscfg.h"
 #include "host_sim/psc.h"
 #include "host_sim/scenario.h"
 #include "host_sim/devices/ev3_brick.h"
@@ -41,31 +42,31 @@ static inline void wr16(uint32_t phys, uint16_t v)
 /* GPIO register block of a pin (DaVinci layout: pairs of banks). */
 static inline uint32_t gpio_pair(unsigned pin)
 {
-	return HS_GPIO_BASE + 0x10U + 0x28U * (pin / 32U);
+	return HS_GPIO_BASE + HS_GPIO_PAIR_OFFSET(pin);
 }
 
 static inline uint32_t gpio_bit(unsigned pin)
 {
-	return 1U << (pin % 32U);
+	return HS_GPIO_PAIR_BIT(pin);
 }
 
 /* Drives a GPIO as an output at level (SET/CLR_DATA first, then DIR). */
 static inline void gpio_out(unsigned pin, int level)
 {
-	wr32(gpio_pair(pin) + (level ? 0x08U : 0x0CU), gpio_bit(pin));
-	wr32(gpio_pair(pin), rd32(gpio_pair(pin)) & ~gpio_bit(pin));
+	wr32(gpio_pair(pin) + (level ? HS_GPIO_SET_DATA : HS_GPIO_CLR_DATA), gpio_bit(pin));
+	wr32(gpio_pair(pin) + HS_GPIO_DIR, rd32(gpio_pair(pin) + HS_GPIO_DIR) & ~gpio_bit(pin));
 }
 
 /* Floats a GPIO (DIR = input). */
 static inline void gpio_float(unsigned pin)
 {
-	wr32(gpio_pair(pin), rd32(gpio_pair(pin)) | gpio_bit(pin));
+	wr32(gpio_pair(pin) + HS_GPIO_DIR, rd32(gpio_pair(pin) + HS_GPIO_DIR) | gpio_bit(pin));
 }
 
 /* IN_DATA level of a pin. */
 static inline int gpio_in(unsigned pin)
 {
-	return (rd32(gpio_pair(pin) + 0x10U) & gpio_bit(pin)) != 0;
+	return (rd32(gpio_pair(pin) + HS_GPIO_IN_DATA) & gpio_bit(pin)) != 0;
 }
 
 /* An empty application: the models are driven from the test itself. */
@@ -88,11 +89,11 @@ static inline void devtest_pwm_setup(void)
 {
 	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_EHRPWM), HS_PSC_ENABLE);
 	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_ECAP), HS_PSC_ENABLE);
-	wr32(HS_SYSCFG0_BASE + 0x38, 0x83E70B13U);
-	wr32(HS_SYSCFG0_BASE + 0x3C, 0x95A4F1E0U);
-	wr32(HS_SYSCFG0_BASE + 0x180, rd32(HS_SYSCFG0_BASE + 0x180) | (1U << 12));
-	wr32(HS_SYSCFG0_BASE + 0x38, 0);
-	wr32(HS_SYSCFG0_BASE + 0x3C, 0);
+	wr32(HS_SYSCFG0_BASE + HS_SYSCFG0_KICK0, HS_KICK0_UNLOCK);
+	wr32(HS_SYSCFG0_BASE + HS_SYSCFG0_KICK1, HS_KICK1_UNLOCK);
+	wr32(HS_SYSCFG0_BASE + HS_SYSCFG0_CFGCHIP(1), rd32(HS_SYSCFG0_BASE + HS_SYSCFG0_CFGCHIP(1)) | HS_CFGCHIP1_TBCLKSYNC);
+	wr32(HS_SYSCFG0_BASE + HS_SYSCFG0_KICK0, 0);
+	wr32(HS_SYSCFG0_BASE + HS_SYSCFG0_KICK1, 0);
 	wr16(HS_EHRPWM1_BASE + 0x00, 0x0030);   /* TBCTL: up-count, /1 /1 */
 	wr16(HS_EHRPWM1_BASE + 0x0A, 9999);     /* TBPRD */
 	wr16(HS_EHRPWM1_BASE + 0x0E, 0x0000);   /* CMPCTL: shadowed, load at zero */

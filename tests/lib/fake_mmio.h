@@ -16,6 +16,7 @@
 #include <stdint.h>
 #include <string.h>
 #include "rtos_host.h"
+#include "host_sim/gpio.h"
 
 #define FAKE_DEV_PHYS		0x01f0d000UL
 #define FAKE_BLOCK_SIZE		0x1000U
@@ -102,10 +103,10 @@ static inline bool fake_claims(const volatile void *addr, void *ctx)
 /* Bank pair and register of a GPIO block offset, or -1 outside the bank pairs. */
 static inline int fake_gpio_reg(uint32_t off, uint32_t *reg)
 {
-	if (off < 0x10 || off >= 0x10 + 5 * 0x28)
+	if (off < HS_GPIO_PAIR_OFFSET(0) || off >= HS_GPIO_PAIR_OFFSET(0) + HS_GPIO_PAIRS * HS_GPIO_PAIR_STRIDE)
 		return -1;
-	*reg = (off - 0x10) % 0x28;
-	return (int)((off - 0x10) / 0x28);
+	*reg = (off - HS_GPIO_PAIR_OFFSET(0)) % HS_GPIO_PAIR_STRIDE;
+	return (int)((off - HS_GPIO_PAIR_OFFSET(0)) / HS_GPIO_PAIR_STRIDE);
 }
 
 static inline uint32_t fake_read(const volatile void *addr, unsigned width, void *ctx)
@@ -207,8 +208,8 @@ static inline uint32_t fake_gpio_peek(uint32_t off)
 static inline void fake_gpio_edge(unsigned pin, bool rising)
 {
 	unsigned pair = pin / 32, bank = pin / 16;
-	uint32_t bit = 1U << (pin % 32);
-	uint32_t stat_off = 0x10 + pair * 0x28 + FG_STAT;
+	uint32_t bit = HS_GPIO_PAIR_BIT(pin);
+	uint32_t stat_off = HS_GPIO_PAIR_OFFSET(pin) + FG_STAT;
 
 	if (rising)
 		fake.gpio_in[pair] |= bit;
@@ -217,8 +218,8 @@ static inline void fake_gpio_edge(unsigned pin, bool rising)
 	if (!((rising ? fake.rising[pair] : fake.falling[pair]) & bit))
 		return;
 	fake_plain_write(FAKE_GPIO, stat_off, 4, fake_plain_read(FAKE_GPIO, stat_off, 4) | bit);
-	if (fake_plain_read(FAKE_GPIO, 0x08, 4) & (1U << bank))
-		rtos_host_irq_raise(42U + bank);
+	if (fake_plain_read(FAKE_GPIO, HS_GPIO_BINTEN, 4) & (1U << bank))
+		rtos_host_irq_raise(HS_GPIO_BANK_INTNO(bank));
 }
 
 /* Number of logged writes to a block offset, and the last value written. */

@@ -58,6 +58,7 @@ struct ev3sim_run_opts {
 	unsigned npushes;
 	const char *trace_path;     /* VCD, NULL: none */
 	FILE *csv;                  /* the robot's state every 10 ms, NULL: none */
+	bool quiet;                 /* the console shows warnings and worse only */
 	/* every syslog line of the run ("WARNING: text"), NULL: none */
 	void (*log_sink)(const char *line, void *ctx);
 	void *log_ctx;

@@ -6,7 +6,7 @@
  * Each physics step (a host event every EV3SIM_TRIBOT_STEP_NS) turns the
  * wheels' shaft angle changes into the robot's motion over the mat
  * (differential drive, no slip), hands the motors their share of the robot's
- * mass and rolling resistance (ev3_motor_set_load) and sets the scene of the
+ * mass and rolling resistance (hs_motor_set_load) and sets the scene of the
  * colour sensor looking down in front of the axle: reflected light, colour
  * and raw RGB of the spot it sees.
  *

@@ -1,5 +1,5 @@
 /*
- * ev3_brick.c — the EV3 ports: what is plugged in, the electrical level of
+ * brick.c — the EV3 ports: what is plugged in, the electrical level of
  * each pin, the links between UART sensors and their UARTs, the battery,
  * the ADC's analog sources, and seeded fault injection.
  *
@@ -208,10 +208,10 @@ ER ev3_set_light(unsigned port, unsigned pct)
 
 static void deliver_to_uart(struct in_port *p, uint8_t byte, uint32_t baud)
 {
-	struct ev3_uart *u = ev3_uart_of_port(p->index);
+	struct hs_uart *u = ev3_input_uart(p->index);
 
 	if (u)
-		ev3_uart_rx_byte(u, byte, baud);
+		hs_uart_rx_byte(u, byte, baud);
 }
 
 /* Sensor -> UART, through the fault filters. */
@@ -238,12 +238,12 @@ static void link_deliver(void *ctx, uint8_t byte, uint32_t baud)
 static void link_line(void *ctx, bool high)
 {
 	struct in_port *p = ctx;
-	struct ev3_uart *u = ev3_uart_of_port(p->index);
+	struct hs_uart *u = ev3_input_uart(p->index);
 
 	p->line_high = high;
 	input_apply_pins(p);
 	if (u)
-		ev3_uart_rx_line(u, high);
+		hs_uart_rx_line(u, high);
 }
 
 /* UART -> sensor: only through the port's TX buffer, enabled by driving its GPIO low. */
@@ -275,7 +275,7 @@ static void peer_tx_break(void *ctx, bool active)
 
 static void input_clear(struct in_port *p)
 {
-	struct ev3_uart *u = ev3_uart_of_port(p->index);
+	struct hs_uart *u = ev3_input_uart(p->index);
 
 	hs_event_cancel(&p->bounce_ev);
 	if (p->sensor) {
@@ -283,8 +283,8 @@ static void input_clear(struct in_port *p)
 		p->sensor = NULL;
 	}
 	if (u) {
-		ev3_uart_set_peer(u, NULL);
-		ev3_uart_rx_line(u, true);
+		hs_uart_set_peer(u, NULL);
+		hs_uart_rx_line(u, true);
 	}
 	p->kind = EV3_INPUT_NONE;
 	p->pressed = p->contact = false;
@@ -317,8 +317,8 @@ ER ev3_attach_uart_sensor(unsigned port, uint8_t type, const struct uart_sensor_
 	struct in_port *p;
 	struct uart_sensor_options o = { 0 };
 	struct uart_sensor_link link;
-	struct ev3_uart_peer peer;
-	struct ev3_uart *u;
+	struct hs_uart_peer peer;
+	struct hs_uart *u;
 	static const char *const names[EV3_INPUT_PORTS] = { "in1.sensor", "in2.sensor", "in3.sensor", "in4.sensor" };
 
 	if (!brick.ready)
@@ -339,10 +339,10 @@ ER ev3_attach_uart_sensor(unsigned port, uint8_t type, const struct uart_sensor_
 		return E_NOMEM;
 	p->kind = EV3_INPUT_UART;
 	p->plugged = true;
-	u = ev3_uart_of_port(port);
+	u = ev3_input_uart(port);
 	if (u) {
-		peer = (struct ev3_uart_peer){ peer_tx_byte, peer_tx_break, p };
-		ev3_uart_set_peer(u, &peer);
+		peer = (struct hs_uart_peer){ peer_tx_byte, peer_tx_break, p };
+		hs_uart_set_peer(u, &peer);
 	}
 	uart_sensor_power(p->sensor, true);
 	return E_OK;

@@ -1,5 +1,5 @@
 /*
- * ev3_motor.c — EV3 large/medium motor: DC motor physics at the output
+ * motor.c — EV3 large/medium motor: DC motor physics at the output
  * shaft, H-bridge, quadrature tacho edges computed analytically, pin-5 ID.
  *
  * Parameters (docs/host-sim-devices.md has the discussion):

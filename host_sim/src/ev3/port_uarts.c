@@ -5,12 +5,12 @@
  */
 #include "host_sim/devices/ev3_ports.h"
 
-static struct ev3_uart *port_uarts[EV3_INPUT_PORTS];
+static struct hs_uart *port_uarts[EV3_INPUT_PORTS];
 
 /* Creates the UART of input port (0..3). */
 static ER port_uart_create(unsigned port, void **ctx)
 {
-	struct ev3_uart *u;
+	struct hs_uart *u;
 	ER er = hs_uart_create(&ev3_port_uart[port], &u);
 
 	if (er != E_OK)
@@ -23,7 +23,7 @@ static ER port_uart_create(unsigned port, void **ctx)
 /* Frees the UART of a port (ctx: its slot in port_uarts). */
 static void port_uart_destroy(void *ctx)
 {
-	struct ev3_uart **slot = ctx;
+	struct hs_uart **slot = ctx;
 
 	hs_uart_destroy(*slot);
 	*slot = NULL;
@@ -54,7 +54,7 @@ const struct hs_device ev3_uart0_device = { "UART0", uart0_create, NULL, port_ua
 const struct hs_device ev3_suart_in3_device = { "SUART_IN3", suart3_create, NULL, port_uart_destroy };
 const struct hs_device ev3_suart_in4_device = { "SUART_IN4", suart4_create, NULL, port_uart_destroy };
 
-struct ev3_uart *ev3_uart_of_port(unsigned port)
+struct hs_uart *ev3_input_uart(unsigned port)
 {
 	return port < EV3_INPUT_PORTS ? port_uarts[port] : NULL;
 }

@@ -1,5 +1,5 @@
 /*
- * ev3_ports.c — the EV3 (EP2) port wiring tables (the pin tables of LEGO's d_pwm.c and d_analog.c).
+ * ports.c — the EV3 (EP2) port wiring tables (the pin tables of LEGO's d_pwm.c and d_analog.c).
  */
 #include "host_sim/psc.h"
 #include "host_sim/devices/ev3_ports.h"

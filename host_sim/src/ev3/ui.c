@@ -1,5 +1,5 @@
 /*
- * ev3_ui.c — the brick's six buttons and two bicolour LEDs on their GPIO
+ * ui.c — the brick's six buttons and two bicolour LEDs on their GPIO
  * pins (ev3_ui.h).
  *
  * A button is a contact from its pin to 3.3 V with a pull-down: released

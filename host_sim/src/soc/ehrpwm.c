@@ -272,7 +272,7 @@ static void ehrpwm_rebase(struct ehrpwm *e)
 /* Watcher: TBCLKSYNC starts or stops the time base. */
 static void ehrpwm_syscfg_changed(void *ctx, uint32_t offset, uint32_t old, uint32_t now)
 {
-	if (offset == 0x180U && ((old ^ now) & HS_CFGCHIP1_TBCLKSYNC))
+	if (offset == HS_SYSCFG0_CFGCHIP(1) && ((old ^ now) & HS_CFGCHIP1_TBCLKSYNC))
 		ehrpwm_rebase(ctx);
 }
 

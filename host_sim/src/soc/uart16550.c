@@ -36,7 +36,7 @@ enum {
 #define PWREMU_UTRST (1U << 14)
 #define FIFO_SIZE  16U
 
-struct ev3_uart {
+struct hs_uart {
 	const struct hs_uart_cfg *cfg;
 	struct hs_region *r;
 	uint8_t fcr;                /* FCR is write-only: its state lives here */
@@ -56,26 +56,26 @@ struct ev3_uart {
 	bool line_high;
 	bool break_sent;
 	bool irq;
-	struct ev3_uart_peer peer;
-	struct ev3_uart_stats stats;
+	struct hs_uart_peer peer;
+	struct hs_uart_stats stats;
 };
 
 
 /* ---- helpers ---- */
 
-static bool fifo_mode(const struct ev3_uart *u)
+static bool fifo_mode(const struct hs_uart *u)
 {
 	return u->fcr & 1U;
 }
 
 /* RX FIFO depth in the current mode. */
-static unsigned rx_capacity(const struct ev3_uart *u)
+static unsigned rx_capacity(const struct hs_uart *u)
 {
 	return fifo_mode(u) ? FIFO_SIZE : 1U;
 }
 
 /* RX trigger level. */
-static unsigned rx_trigger(const struct ev3_uart *u)
+static unsigned rx_trigger(const struct hs_uart *u)
 {
 	static const unsigned levels[4] = { 1, 4, 8, 14 };
 
@@ -83,19 +83,19 @@ static unsigned rx_trigger(const struct ev3_uart *u)
 }
 
 /* Baud divisor (DLH:DLL). */
-static uint32_t divisor(const struct ev3_uart *u)
+static uint32_t divisor(const struct hs_uart *u)
 {
 	return u->dll | (u->dlh << 8);
 }
 
 /* 16x or 13x per MDR. */
-static unsigned oversampling(const struct ev3_uart *u)
+static unsigned oversampling(const struct hs_uart *u)
 {
 	return (u->mdr & 1U) ? 13U : 16U;
 }
 
 /* Bits per character: start, data, parity, stop. */
-static unsigned char_bits(const struct ev3_uart *u)
+static unsigned char_bits(const struct hs_uart *u)
 {
 	uint32_t lcr = u->lcr;
 	unsigned data = 5U + (lcr & 3U);
@@ -104,7 +104,7 @@ static unsigned char_bits(const struct ev3_uart *u)
 }
 
 /* Nanoseconds of n bit times at the current divisor (0 if no clock). */
-static uint64_t bits_ns(const struct ev3_uart *u, unsigned n)
+static uint64_t bits_ns(const struct hs_uart *u, unsigned n)
 {
 	uint32_t div = divisor(u);
 
@@ -112,7 +112,7 @@ static uint64_t bits_ns(const struct ev3_uart *u, unsigned n)
 }
 
 /* Current baud. */
-uint32_t ev3_uart_baud(const struct ev3_uart *u)
+uint32_t hs_uart_baud(const struct hs_uart *u)
 {
 	uint32_t div = divisor(u);
 
@@ -123,38 +123,38 @@ uint32_t ev3_uart_baud(const struct ev3_uart *u)
 }
 
 /* Receiver out of reset. */
-static bool rx_enabled(const struct ev3_uart *u)
+static bool rx_enabled(const struct hs_uart *u)
 {
 	return u->pwremu & PWREMU_URRST;
 }
 
 /* Transmitter out of reset. */
-static bool tx_enabled(const struct ev3_uart *u)
+static bool tx_enabled(const struct hs_uart *u)
 {
 	return u->pwremu & PWREMU_UTRST;
 }
 
 /* The interrupt identification now (IIR bits 3:0). */
-static unsigned iir_id(const struct ev3_uart *u)
+static unsigned iir_id(const struct hs_uart *u)
 {
 	uint32_t ier = u->ier;
 	bool rx_error = u->overrun || (u->rx_count && u->rx_err[u->rx_head]);
 
 	if ((ier & IER_ELSI) && rx_error)
-		return 0x6U;
+		return HS_UART_IIR_LINE_STATUS;
 	if ((ier & IER_ERBI) && u->rx_count >= rx_trigger(u))
-		return 0x4U;
+		return HS_UART_IIR_RX_DATA;
 	if ((ier & IER_ERBI) && u->timeout_int && u->rx_count)
-		return 0xCU;
+		return HS_UART_IIR_RX_TIMEOUT;
 	if ((ier & IER_ETBEI) && u->thre_int)
-		return 0x2U;
-	return 0x1U;
+		return HS_UART_IIR_THR_EMPTY;
+	return HS_UART_IIR_NONE;
 }
 
 /* Drives the interrupt request line from the current sources. */
-static void irq_update(struct ev3_uart *u)
+static void irq_update(struct hs_uart *u)
 {
-	bool level = iir_id(u) != 0x1U;
+	bool level = iir_id(u) != HS_UART_IIR_NONE;
 
 	if (level != u->irq) {
 		u->irq = level;
@@ -168,7 +168,7 @@ static void irq_update(struct ev3_uart *u)
  * moves it instead of cancelling and re-scheduling on every byte. */
 static void timeout_due(void *arg)
 {
-	struct ev3_uart *u = arg;
+	struct hs_uart *u = arg;
 	uint64_t due = u->last_rx_activity + bits_ns(u, 4U * char_bits(u));
 
 	u->timeout_ev = 0;
@@ -183,7 +183,7 @@ static void timeout_due(void *arg)
 }
 
 /* Notes RX activity (a byte in or out of the FIFO) for the character timeout. */
-static void rx_activity(struct ev3_uart *u)
+static void rx_activity(struct hs_uart *u)
 {
 	u->last_rx_activity = hs_now();
 	u->timeout_int = false;
@@ -192,7 +192,7 @@ static void rx_activity(struct ev3_uart *u)
 }
 
 /* A received character enters the FIFO, or overruns. */
-static void rx_push(struct ev3_uart *u, uint8_t byte, uint8_t err)
+static void rx_push(struct hs_uart *u, uint8_t byte, uint8_t err)
 {
 	if (!rx_enabled(u)) {
 		u->stats.rx_in_reset++;
@@ -215,13 +215,13 @@ static void rx_push(struct ev3_uart *u, uint8_t byte, uint8_t err)
 }
 
 /* A byte from the line at the sender's baud. */
-void ev3_uart_rx_byte(struct ev3_uart *u, uint8_t byte, uint32_t baud)
+void hs_uart_rx_byte(struct hs_uart *u, uint8_t byte, uint32_t baud)
 {
 	uint32_t mine;
 
 	if (!u || (u->mcr & MCR_LOOP))
 		return;
-	mine = ev3_uart_baud(u);
+	mine = hs_uart_baud(u);
 	if (!mine || baud < mine - mine / 25U || baud > mine + mine / 25U) {
 		/* sampled at the wrong rate: the receiver assembles other bits and misses the stop bit */
 		u->stats.framing_errors++;
@@ -234,7 +234,7 @@ void ev3_uart_rx_byte(struct ev3_uart *u, uint8_t byte, uint32_t baud)
 /* Event: the line has been low a character time. */
 static void break_due(void *arg)
 {
-	struct ev3_uart *u = arg;
+	struct hs_uart *u = arg;
 
 	u->break_ev = 0;
 	u->stats.breaks++;
@@ -242,7 +242,7 @@ static void break_due(void *arg)
 }
 
 /* RX line level: low for a whole character is one break character. */
-void ev3_uart_rx_line(struct ev3_uart *u, bool high)
+void hs_uart_rx_line(struct hs_uart *u, bool high)
 {
 	if (!u || high == u->line_high)
 		return;
@@ -254,14 +254,14 @@ void ev3_uart_rx_line(struct ev3_uart *u, bool high)
 
 /* ---- transmitter ---- */
 
-static void tx_start(struct ev3_uart *u);
+static void tx_start(struct hs_uart *u);
 
 /* Event: the shift register is empty; the byte reaches the far end. */
 static void tx_done(void *arg)
 {
-	struct ev3_uart *u = arg;
+	struct hs_uart *u = arg;
 	uint8_t b = u->tsr;
-	uint32_t baud = ev3_uart_baud(u);
+	uint32_t baud = hs_uart_baud(u);
 
 	u->tx_ev = 0;
 	u->tsr_busy = false;
@@ -275,7 +275,7 @@ static void tx_done(void *arg)
 }
 
 /* Moves the next FIFO byte into the shift register if it is free. */
-static void tx_start(struct ev3_uart *u)
+static void tx_start(struct hs_uart *u)
 {
 	uint64_t ns;
 
@@ -297,7 +297,7 @@ static void tx_start(struct ev3_uart *u)
 
 static void read_rbr(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB) {
 		*value = u->dll;
@@ -317,7 +317,7 @@ static void read_rbr(void *ctx, const struct hs_access *a, uint32_t *value)
 /* THR write: queue a byte (DLL with DLAB). */
 static void write_thr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB) {
 		hs_reg_set(u->r, DLL, written & 0xFFU);
@@ -344,7 +344,7 @@ static void write_thr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* IER read (DLH with DLAB). */
 static void read_ier(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB)
 		*value = u->dlh;
@@ -353,7 +353,7 @@ static void read_ier(void *ctx, const struct hs_access *a, uint32_t *value)
 /* IER write (DLH with DLAB). */
 static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB) {
 		hs_reg_set(u->r, IER, old);
@@ -373,11 +373,11 @@ static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* IIR read; clears a THRE interrupt it reports. */
 static void read_iir(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 	unsigned id = iir_id(u);
 
-	*value = id | (fifo_mode(u) ? 0xC0U : 0U);
-	if (id == 0x2U) {           /* reading IIR clears a THRE interrupt */
+	*value = id | (fifo_mode(u) ? HS_UART_IIR_FIFOS_ON : 0U);
+	if (id == HS_UART_IIR_THR_EMPTY) {   /* reading IIR clears a THRE interrupt */
 		u->thre_int = false;
 		irq_update(u);
 	}
@@ -386,7 +386,7 @@ static void read_iir(void *ctx, const struct hs_access *a, uint32_t *value)
 /* FCR write: FIFO enable, clears, trigger. */
 static void write_fcr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	u->fcr = (uint8_t)(written & 0xC9U);
 	if (written & 0x02U) {      /* RXCLR */
@@ -402,7 +402,7 @@ static void write_fcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* LCR write: break control to the far end. */
 static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 	bool brk = nv & LCR_BC;
 
 	u->lcr = nv;
@@ -416,7 +416,7 @@ static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* LSR read: status now; error bits clear. */
 static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 	uint32_t v = 0;
 	bool any_err = false;
 
@@ -442,7 +442,7 @@ static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
 /* DLL/DLH write: new baud. */
 static void write_div(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (a->offset == DLL)
 		u->dll = nv;
@@ -454,7 +454,7 @@ static void write_div(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* MCR/MDR writes (cached). */
 static void write_mcr_mdr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (a->offset == MCR)
 		u->mcr = nv;
@@ -465,7 +465,7 @@ static void write_mcr_mdr(void *ctx, const struct hs_access *a, uint32_t old, ui
 /* PWREMU_MGMT: reset bits flush receiver/transmitter. */
 static void write_pwremu(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	u->pwremu = nv;
 	if (!(nv & PWREMU_URRST)) {
@@ -514,9 +514,9 @@ static const struct hs_reg uart_regs[] = {
 
 /* ---- life cycle ---- */
 
-ER hs_uart_create(const struct hs_uart_cfg *cfg, struct ev3_uart **out)
+ER hs_uart_create(const struct hs_uart_cfg *cfg, struct hs_uart **out)
 {
-	struct ev3_uart *u = calloc(1, sizeof(*u));
+	struct hs_uart *u = calloc(1, sizeof(*u));
 	const struct hs_board_cfg *bc = hs_board_config();
 
 	if (!u)
@@ -540,7 +540,7 @@ ER hs_uart_create(const struct hs_uart_cfg *cfg, struct ev3_uart **out)
 	return E_OK;
 }
 
-void hs_uart_destroy(struct ev3_uart *u)
+void hs_uart_destroy(struct hs_uart *u)
 {
 	if (!u)
 		return;
@@ -551,7 +551,7 @@ void hs_uart_destroy(struct ev3_uart *u)
 }
 
 /* Connects the far end. */
-void ev3_uart_set_peer(struct ev3_uart *u, const struct ev3_uart_peer *peer)
+void hs_uart_set_peer(struct hs_uart *u, const struct hs_uart_peer *peer)
 {
 	if (peer)
 		u->peer = *peer;
@@ -560,7 +560,7 @@ void ev3_uart_set_peer(struct ev3_uart *u, const struct ev3_uart_peer *peer)
 }
 
 /* UART counters. */
-const struct ev3_uart_stats *ev3_uart_get_stats(const struct ev3_uart *u)
+const struct hs_uart_stats *hs_uart_get_stats(const struct hs_uart *u)
 {
 	return &u->stats;
 }

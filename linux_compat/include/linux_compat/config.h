@@ -50,10 +50,11 @@ void lx_compat_terminate(intptr_t exinf);
 /* The worker task's body: module inits, then the workqueues (and the unload at shutdown). */
 void lx_worker_task(intptr_t exinf);
 
-/* AM1808: the firmware's start-up passes the boot command line before the
- * kernel starts, as a boot loader passes Linux's; its "module.param=value"
- * words set module parameters (e.g. "d_uart.port3_base=0x01d0c000").  On the
- * host the simulated board passes it (rtos_host_set_boot_args). */
+/* The boot command line, passed before the kernel starts as a boot loader
+ * passes Linux's (the string must stay valid): its "module.param=value" words
+ * set module parameters before the modules' init (e.g.
+ * "d_uart.port3_base=0x01d0c000").  AM1808: the firmware's start-up calls it;
+ * host: the simulated board sets it (this is rtos_host_set_boot_args). */
 void lx_compat_set_boot_args(const char *args);
 
 #endif /* _LINUX_COMPAT_CONFIG_H */

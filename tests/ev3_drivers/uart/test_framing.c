@@ -23,10 +23,10 @@ static uint32_t baud = 2400;
 /* The sensor sends n bytes (in FIFO-sized bursts the driver drains between). */
 static void send(const uint8_t *b, size_t n)
 {
-	struct ev3_uart *u = ev3_uart_of_port(PORT);
+	struct hs_uart *u = ev3_input_uart(PORT);
 
 	for (size_t i = 0; i < n; i++) {
-		ev3_uart_rx_byte(u, b[i], baud);
+		hs_uart_rx_byte(u, b[i], baud);
 		if (i % 8 == 7)
 			dly_tsk(1);
 	}

@@ -64,7 +64,7 @@ static void run(uint64_t seed, const char *vcd, struct outcome *o)
 	ev3_fault_uart_counts(0, &o->flipped, &o->dropped, &o->duplicated);
 	o->glitches = hs_motor_glitches(ev3_output_motor(0));
 	o->bytes = h.n;
-	o->framing = ev3_uart_get_stats(ev3_uart_of_port(0))->framing_errors;
+	o->framing = hs_uart_get_stats(ev3_input_uart(0))->framing_errors;
 	hs_sim_shutdown();
 }
 

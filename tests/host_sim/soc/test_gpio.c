@@ -18,18 +18,18 @@
 #include "host_sim/trace.h"
 
 #define GPIO       0x01E26000U
-#define BINTEN     (GPIO + 0x08)
-#define PAIR(n)    (GPIO + 0x10 + 0x28 * (n))
-#define DIR        0x00
-#define OUT_DATA   0x04
-#define SET_DATA   0x08
-#define CLR_DATA   0x0C
-#define IN_DATA    0x10
-#define SET_RIS    0x14
-#define CLR_RIS    0x18
-#define SET_FAL    0x1C
-#define CLR_FAL    0x20
-#define INTSTAT    0x24
+#define BINTEN     (GPIO + HS_GPIO_BINTEN)
+#define PAIR(n)    (GPIO + HS_GPIO_PAIR_OFFSET(32U * (n)))
+#define DIR        HS_GPIO_DIR
+#define OUT_DATA   HS_GPIO_OUT_DATA
+#define SET_DATA   HS_GPIO_SET_DATA
+#define CLR_DATA   HS_GPIO_CLR_DATA
+#define IN_DATA    HS_GPIO_IN_DATA
+#define SET_RIS    HS_GPIO_SET_RIS_TRIG
+#define CLR_RIS    HS_GPIO_CLR_RIS_TRIG
+#define SET_FAL    HS_GPIO_SET_FAL_TRIG
+#define CLR_FAL    HS_GPIO_CLR_FAL_TRIG
+#define INTSTAT    HS_GPIO_INTSTAT
 #define AINTC      0xFFFEE000U
 
 #define TACHO      HS_GPIO(5, 11)     /* bank 5: pair 2, bit 27 */

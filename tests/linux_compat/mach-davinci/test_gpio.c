@@ -14,8 +14,8 @@
 #include <linux/irq.h>
 #include <linux_compat/context.h>
 
-#define PAIR_REG(pin, reg)	(0x10U + ((pin) / 32U) * 0x28U + (reg))
-#define PIN_BIT(pin)		(1U << ((pin) % 32U))
+#define PAIR_REG(pin, reg)	(HS_GPIO_PAIR_OFFSET(pin) + (reg))
+#define PIN_BIT(pin)		HS_GPIO_PAIR_BIT(pin)
 
 /* Pins: three in bank 5 (GP5_8, GP5_11, GP5_13), one in bank 4 sharing bank 5's registers. */
 #define PIN_A	GPIO_TO_PIN(5, 8)

@@ -63,7 +63,7 @@ extern const struct hs_device ev3_suart_in3_device;
 extern const struct hs_device ev3_suart_in4_device;
 
 /* The UART behind input port (0..3), or NULL if its device is not on the board. */
-struct ev3_uart *ev3_uart_of_port(unsigned port);
+struct hs_uart *ev3_input_uart(unsigned port);
 
 /* Stand-in UARTs for the PRU soft UARTs of ports 3 and 4 (reserved range
  * after the McBSP FIFO registers in the AM1808 memory map). */

@@ -16,12 +16,12 @@
 #include "host_sim/syscfg.h"
 
 #define GPIO       0x01E26000U
-#define PAIR(n)    (GPIO + 0x10 + 0x28 * (n))
+#define PAIR(n)    (GPIO + HS_GPIO_PAIR_OFFSET(32U * (n)))
 #define SYSCFG0    0x01C14000U
 #define KICK0R     (SYSCFG0 + 0x38)
 #define KICK1R     (SYSCFG0 + 0x3C)
 #define PINMUX(n)  (SYSCFG0 + 0x120 + 4 * (n))
-#define CFGCHIP1   (SYSCFG0 + 0x180)
+#define CFGCHIP1   (SYSCFG0 + HS_SYSCFG0_CFGCHIP(1))
 #define PSC1       0x01E27000U
 #define MDCTL(n)   (PSC1 + 0xA00 + 4 * (n))
 #define MDSTAT(n)  (PSC1 + 0x800 + 4 * (n))
@@ -100,7 +100,7 @@ int main(void)
 	ok(hs_syscfg_watch(sys_watch, NULL) > 0 && hs_psc_watch(HS_PSC1_MODULE(HS_LPSC1_EHRPWM), psc_watch, NULL) > 0,
 	   "watchers registered");
 	wr(CFGCHIP1, rd(CFGCHIP1) | HS_CFGCHIP1_TBCLKSYNC);
-	ok(hs_syscfg_tbclksync() && sys_log.n == 1 && sys_log.offset == 0x180 && sys_log.now == HS_CFGCHIP1_TBCLKSYNC,
+	ok(hs_syscfg_tbclksync() && sys_log.n == 1 && sys_log.offset == HS_SYSCFG0_CFGCHIP(1) && sys_log.now == HS_CFGCHIP1_TBCLKSYNC,
 	   "TBCLKSYNC set: the SYSCFG watcher sees CFGCHIP1 change");
 	wr(MDCTL(17), 3);
 	wr(PTCMD, 1);
