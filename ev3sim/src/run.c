@@ -391,7 +391,10 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	r->wall_s = ev3sim_wall_seconds() - wall0;
 	hs_sim_run_for(DRAIN_NS);
 	rtos_host_trace_set_sink(NULL, NULL);
-	hs_sim_shutdown();
+	if (hs_sim_shutdown() != E_OK) {
+		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
+		return E_SYS;
+	}
 	return E_OK;
 }
 
