@@ -432,7 +432,10 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	(void)iact_tsk(POWER_OFF_TSKID);
 	hs_sim_run_for(DRAIN_NS);
 	rtos_host_trace_set_sink(NULL, NULL);
-	hs_sim_shutdown();
+	if (hs_sim_shutdown() != E_OK) {
+		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
+		return E_SYS;
+	}
 	return E_OK;
 }
 
