@@ -10,6 +10,7 @@
 #include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/ev3_ui.h"
 #include "host_sim/devices/uart_sensor.h"
+#include "ev3sim/brick_io.h"
 #include "ev3sim/balance_run.h"
 #include "ev3sim/run.h"
 #include "ev3sim/tribot.h"
@@ -59,8 +60,9 @@ static const struct rtos_task_cfg power_off_tasks[] = {
 	{ POWER_OFF_TSKID, TA_NULL, 0, power_off_task, TMIN_TPRI, POWER_OFF_STACK, TDOM_KERNEL,
 	  "ev3sim power-off" },
 };
-/* The run's configuration: the power-off task and the app. */
-static const struct rtos_cfg *run_includes[2];
+/* The run's configuration: the power-off task, the app and the SD card and
+ * serial port (brick_io.h). */
+static const struct rtos_cfg *run_includes[3] = { NULL, &brick_io_cfg, NULL };
 static const struct rtos_cfg run_cfg = {
 	.name = "ev3sim_run",
 	.tasks = RTOS_TABLE(power_off_tasks),
@@ -381,12 +383,15 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		return E_SYS;
 	}
 	run_includes[0] = app;
+	if (brick_io_setup(o->sd_dir, o->serial_path, err, errlen) != E_OK)
+		return E_PAR;
 	memset(&run, 0, sizeof(run));
 	run.o = o;
 	run.r = r;
 	wall0 = ev3sim_wall_seconds();
 	if (hs_sim_boot(&scn) != E_OK) {
 		snprintf(err, errlen, "boot failed: %s", rtos_host_boot_error());
+		brick_io_teardown();
 		return E_SYS;
 	}
 	rtos_host_trace_set_sink(trace_sink, NULL);
@@ -405,6 +410,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		hs_sim_run_for(DRAIN_NS);
 		rtos_host_trace_set_sink(NULL, NULL);
 		hs_sim_shutdown();
+		brick_io_teardown();
 		return ercd == E_PAR ? E_PAR : E_SYS;
 	}
 	csv_header(o);
@@ -432,7 +438,9 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	(void)iact_tsk(POWER_OFF_TSKID);
 	hs_sim_run_for(DRAIN_NS);
 	rtos_host_trace_set_sink(NULL, NULL);
-	if (hs_sim_shutdown() != E_OK) {
+	ercd = hs_sim_shutdown();
+	brick_io_teardown();
+	if (ercd != E_OK) {
 		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
 		return E_SYS;
 	}

@@ -45,6 +45,11 @@ static const char run_usage[] =
 	"  --push T:NM          gyroboy: pitch torque NM (N m) for 100 ms at T; may repeat\n"
 	"  --fault SPEC         inject a fault (as ev3sim balance --help lists; uart faults go to\n"
 	"                       the first UART sensor, times from power-on); may repeat\n"
+	"  --sd DIR             the SD card: ev3_memfile_load and ev3_sdcard_* see DIR (and\n"
+	"                       nothing outside it)\n"
+	"  --serial PATH        the serial port (EV3_SERIAL_DEFAULT, EV3_SERIAL_UART): a file\n"
+	"                       receives what the app writes; a pseudo-terminal or FIFO\n"
+	"                       carries both directions\n"
 	"  --trace FILE.vcd     host_sim's signal trace\n"
 	"  --csv FILE           the robot's state every 10 ms\n"
 	"  --quiet              the console shows warnings and worse only\n"
@@ -163,6 +168,14 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		if (!ev3sim_can_create("run", v))	/* checked before the run, not after it */
 			return EV3SIM_EXIT_FAIL;
 		o->trace_path = v;
+	} else if (strcmp(name, "--sd") == 0) {
+		struct stat st;
+
+		if (stat(v, &st) != 0 || !S_ISDIR(st.st_mode))
+			return usage("--sd: '%s' is not a directory", v);
+		o->sd_dir = v;
+	} else if (strcmp(name, "--serial") == 0) {
+		o->serial_path = v;
 	} else if (strcmp(name, "--csv") == 0) {
 		*csv_path = v;
 	} else {

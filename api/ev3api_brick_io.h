@@ -1,0 +1,98 @@
+/*
+ * ev3api_brick_io.h — the extended service calls behind the API's file and
+ * serial groups (ev3api_fs.h): the SD card's files and directories and the
+ * serial ports' byte streams.  Not for applications: the platform provides
+ * them (ev3sim: a host directory and a host file or pseudo-terminal,
+ * ev3sim/brick_io.h); where nothing provides them cal_svc returns E_RSFN and
+ * the API reports E_NOSPT.
+ *
+ * Paths are absolute or relative to the card's root ("/ev3rt/res/a.wav");
+ * a provider confines them to the card (a ".." above the root is E_PAR).
+ * Every call checks its pointers with prb_mem against the caller's domain.
+ */
+#ifndef EV3API_BRICK_IO_H
+#define EV3API_BRICK_IO_H
+
+#include <stdint.h>
+#include "kernel.h"
+#include "ev3api_fs.h"
+
+#define BRICK_IO_FN_FIRST       112
+#define BRICK_IO_FN_FILE_SIZE   112  /* (const char *path): the file's size; E_NOEXS none, E_OBJ a directory */
+#define BRICK_IO_FN_FILE_READ   113  /* (path, uint_t offset, void *buf, uint_t len): returns bytes read */
+#define BRICK_IO_FN_DIR_OPEN    114  /* (const char *path): a directory ID 1..BRICK_IO_MAX_DIRS; E_NOMEM none free */
+#define BRICK_IO_FN_DIR_READ    115  /* (ID, fileinfo_t *out): the next entry; E_NOEXS at the end, E_ID bad ID */
+#define BRICK_IO_FN_DIR_CLOSE   116  /* (ID): E_ID if not open */
+#define BRICK_IO_FN_SERIAL_WRITE 117 /* (serial_port_t, const void *buf, uint_t len): bytes taken, 0 full; len 0: E_OBJ unless connected */
+#define BRICK_IO_FN_SERIAL_READ 118  /* (serial_port_t, void *buf, uint_t len): returns bytes, 0 none yet, E_OBJ at end */
+#define BRICK_IO_FN_LAST        127  /* the range reserved for the brick's storage and serial ports */
+
+#define BRICK_IO_MAX_DIRS       8U   /* directories open at once */
+#define BRICK_IO_MAX_PATH       (TMAX_FILENAME_LEN + 1)   /* bytes of a path with its NUL */
+#define BRICK_IO_MAX_XFER       4096U                     /* bytes per read or write call */
+
+/*
+ * Copies the caller's path into out (BRICK_IO_MAX_PATH bytes), checking that
+ * the calling task may read every byte of it: E_MACV for NULL or unreadable
+ * memory, E_PAR for an empty path or one longer than TMAX_FILENAME_LEN.
+ * Used on both sides of the calls: a provider cannot trust its caller.
+ */
+static inline ER brick_io_copy_path(const char *path, char *out)
+{
+	uint_t i;
+
+	if (path == NULL)
+		return E_MACV;
+	/* one probe covers the common case; near the end of a region, byte by byte */
+	if (prb_mem(path, BRICK_IO_MAX_PATH, TSK_SELF, TPM_READ) != E_OK) {
+		for (i = 0; i < BRICK_IO_MAX_PATH; i++) {
+			if (prb_mem(path + i, 1, TSK_SELF, TPM_READ) != E_OK)
+				return E_MACV;
+			if (path[i] == '\0')
+				break;
+		}
+	}
+	for (i = 0; i < BRICK_IO_MAX_PATH && path[i] != '\0'; i++)
+		out[i] = path[i];
+	if (i == 0 || i == BRICK_IO_MAX_PATH)
+		return E_PAR;
+	out[i] = '\0';
+	return E_OK;
+}
+
+static inline ER_UINT brick_io_file_size(const char *path)
+{
+	return cal_svc(BRICK_IO_FN_FILE_SIZE, (intptr_t)path, 0, 0, 0, 0);
+}
+
+static inline ER_UINT brick_io_file_read(const char *path, uint_t offset, void *buf, uint_t len)
+{
+	return cal_svc(BRICK_IO_FN_FILE_READ, (intptr_t)path, (intptr_t)offset, (intptr_t)buf, (intptr_t)len, 0);
+}
+
+static inline ER_ID brick_io_dir_open(const char *path)
+{
+	return (ER_ID)cal_svc(BRICK_IO_FN_DIR_OPEN, (intptr_t)path, 0, 0, 0, 0);
+}
+
+static inline ER brick_io_dir_read(ID dirid, fileinfo_t *out)
+{
+	return (ER)cal_svc(BRICK_IO_FN_DIR_READ, (intptr_t)dirid, (intptr_t)out, 0, 0, 0);
+}
+
+static inline ER brick_io_dir_close(ID dirid)
+{
+	return (ER)cal_svc(BRICK_IO_FN_DIR_CLOSE, (intptr_t)dirid, 0, 0, 0, 0);
+}
+
+static inline ER_UINT brick_io_serial_write(serial_port_t port, const void *buf, uint_t len)
+{
+	return cal_svc(BRICK_IO_FN_SERIAL_WRITE, (intptr_t)port, (intptr_t)buf, (intptr_t)len, 0, 0);
+}
+
+static inline ER_UINT brick_io_serial_read(serial_port_t port, void *buf, uint_t len)
+{
+	return cal_svc(BRICK_IO_FN_SERIAL_READ, (intptr_t)port, (intptr_t)buf, (intptr_t)len, 0, 0);
+}
+
+#endif /* EV3API_BRICK_IO_H */

@@ -1,0 +1,203 @@
+/*
+ * ev3rt_fs.c — EV3RT's file and serial groups (ev3api_fs.h): files and
+ * directories of the SD card and stdio streams on the serial ports, over the
+ * platform's storage and serial service calls (ev3api_brick_io.h).
+ *
+ * Data crosses the service calls through buffers on the calling task's stack
+ * (its domain may always pass those), so a memfile's heap buffer or libc's
+ * stream buffers never need to be in the caller's domain.
+ */
+#define _GNU_SOURCE     /* fopencookie (glibc and newlib) */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "ev3api.h"
+#include "ev3api_brick_io.h"
+#include "api_internal.h"
+
+#define CHUNK 512U      /* bytes per service call through the stack */
+
+/* Service calls nobody provides (the AM1808 link provider has no SD card or
+ * serial port model yet): E_NOSPT, as for any unsupported feature. */
+static ER provided(ER ercd)
+{
+	return ercd == E_RSFN ? E_NOSPT : ercd;
+}
+
+/* ---- files ---- */
+
+ER ev3_memfile_load(const char *path, memfile_t *p_memfile)
+{
+	char name[BRICK_IO_MAX_PATH], chunk[CHUNK];
+	ER_UINT size, got;
+	uint8_t *buffer;
+	ER ercd;
+
+	if ((ercd = api_may_wait()) != E_OK || (ercd = API_CHECK_OUT(p_memfile)) != E_OK)
+		return ercd;
+	p_memfile->buffer = NULL;
+	p_memfile->filesz = p_memfile->buffersz = 0;
+	if ((ercd = brick_io_copy_path(path, name)) != E_OK)
+		return ercd;
+	size = brick_io_file_size(name);
+	if (size < 0) {
+		syslog(LOG_ERROR, "ev3_memfile_load: cannot open '%s' (%d)", name, (int)provided((ER)size));
+		return provided((ER)size);
+	}
+	/* malloc(0) may return NULL: an empty file still gets a buffer */
+	if ((buffer = malloc(size > 0 ? (size_t)size : 1U)) == NULL) {
+		syslog(LOG_ERROR, "ev3_memfile_load: out of memory for '%s' (%u bytes)", name, (unsigned)size);
+		return E_NOMEM;
+	}
+	for (uint_t at = 0; at < (uint_t)size; at += (uint_t)got) {
+		uint_t want = (uint_t)size - at < CHUNK ? (uint_t)size - at : CHUNK;
+
+		got = brick_io_file_read(name, at, chunk, want);
+		if (got <= 0) {     /* the file shrank or vanished under us */
+			free(buffer);
+			syslog(LOG_ERROR, "ev3_memfile_load: reading '%s' failed at %u", name, at);
+			return got < 0 ? provided((ER)got) : E_OBJ;
+		}
+		memcpy(buffer + at, chunk, (size_t)got);
+	}
+	p_memfile->buffer = buffer;
+	p_memfile->filesz = p_memfile->buffersz = (uint32_t)size;
+	return E_OK;
+}
+
+ER ev3_memfile_free(memfile_t *p_memfile)
+{
+	ER ercd;
+
+	if ((ercd = API_CHECK_OUT(p_memfile)) != E_OK)
+		return ercd;
+	free(p_memfile->buffer);
+	p_memfile->buffer = NULL;
+	p_memfile->filesz = p_memfile->buffersz = 0;
+	return E_OK;
+}
+
+/* ---- directories ---- */
+
+ER_ID ev3_sdcard_opendir(const char *path)
+{
+	char name[BRICK_IO_MAX_PATH];
+	ER ercd;
+
+	if ((ercd = api_may_wait()) != E_OK || (ercd = brick_io_copy_path(path, name)) != E_OK)
+		return ercd;
+	return provided(brick_io_dir_open(name));
+}
+
+ER ev3_sdcard_readdir(ID dirid, fileinfo_t *p_fileinfo)
+{
+	ER ercd;
+
+	if ((ercd = api_may_wait()) != E_OK || (ercd = API_CHECK_OUT(p_fileinfo)) != E_OK)
+		return ercd;
+	return provided(brick_io_dir_read(dirid, p_fileinfo));
+}
+
+ER ev3_sdcard_closedir(ID dirid)
+{
+	ER ercd;
+
+	if ((ercd = api_may_wait()) != E_OK)
+		return ercd;
+	return provided(brick_io_dir_close(dirid));
+}
+
+/* ---- serial ports ---- */
+
+static ssize_t serial_write(void *cookie, const char *buf, size_t len)
+{
+	serial_port_t port = (serial_port_t)(intptr_t)cookie;
+	char chunk[CHUNK];
+	size_t done = 0;
+
+	if (api_may_wait() != E_OK)
+		return -1;
+	while (done < len) {
+		uint_t n = len - done < CHUNK ? (uint_t)(len - done) : CHUNK;
+		ER_UINT put;
+
+		memcpy(chunk, buf + done, n);
+		put = brick_io_serial_write(port, chunk, n);
+		if (put < 0)
+			return done > 0 ? (ssize_t)done : -1;
+		if (put == 0)       /* the far end is not taking bytes yet */
+			dly_tsk(1);
+		done += (size_t)put;
+	}
+	return (ssize_t)done;
+}
+
+/* Waits (1 ms at a time) until the port has bytes; 0 at the far end's end. */
+static ssize_t serial_read(void *cookie, char *buf, size_t len)
+{
+	serial_port_t port = (serial_port_t)(intptr_t)cookie;
+	char chunk[CHUNK];
+	uint_t n = len < CHUNK ? (uint_t)len : CHUNK;
+
+	if (api_may_wait() != E_OK)
+		return -1;
+	for (;;) {
+		ER_UINT got = brick_io_serial_read(port, chunk, n);
+
+		if (got > 0) {
+			memcpy(buf, chunk, (size_t)got);
+			return (ssize_t)got;
+		}
+		if (got == E_OBJ)
+			return 0;
+		if (got < 0)
+			return -1;
+		dly_tsk(1);
+	}
+}
+
+static FILE *serial_files[EV3_SERIAL_USB_CDC + 1];
+
+/* Open once, the same stream ever after (as EV3RT does); unbuffered, so
+ * every fprintf reaches the port when it returns. */
+FILE *ev3_serial_open_file(serial_port_t port)
+{
+	static const cookie_io_functions_t io = { .read = serial_read, .write = serial_write };
+	FILE *f;
+
+	if ((unsigned)port > EV3_SERIAL_USB_CDC) {
+		api_warn("ev3_serial_open_file", (int)port, E_ID);
+		return NULL;
+	}
+	if (port == EV3_SERIAL_BT || port == EV3_SERIAL_USB_CDC) {
+		syslog(LOG_WARNING, "ev3_serial_open_file: %s is not provided by ev3lx (no %s stack)",
+		       port == EV3_SERIAL_BT ? "Bluetooth SPP" : "USB CDC",
+		       port == EV3_SERIAL_BT ? "Bluetooth" : "USB device");
+		return NULL;
+	}
+	if (serial_files[port] != NULL)
+		return serial_files[port];
+	/* a zero-length write asks whether the platform provides the port */
+	if (brick_io_serial_write(port, NULL, 0) < 0) {
+		syslog(LOG_WARNING, "ev3_serial_open_file: port %d is not connected", (int)port);
+		return NULL;
+	}
+	f = fopencookie((void *)(intptr_t)port, "r+", io);
+	if (f == NULL) {
+		api_warn("ev3_serial_open_file", (int)port, E_NOMEM);
+		return NULL;
+	}
+	setvbuf(f, NULL, _IONBF, 0);
+	serial_files[port] = f;
+	return f;
+}
+
+bool_t ev3_bluetooth_is_connected(void)
+{
+	return false;
+}
+
+bool_t ev3_usb_cdc_is_connected(void)
+{
+	return false;
+}

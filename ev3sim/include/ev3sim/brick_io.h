@@ -1,0 +1,31 @@
+/*
+ * brick_io.h — the simulated brick's SD card and serial port: the provider
+ * of the API's storage and serial service calls (ev3api_brick_io.h).  Host
+ * only.
+ *
+ * The SD card is a host directory: every path is resolved inside it (".."
+ * never climbs above it, a symbolic link leading out of it is refused with
+ * E_PAR).  The serial port (EV3_SERIAL_DEFAULT and EV3_SERIAL_UART, one
+ * line) is a host path: a regular file receives what the brick writes
+ * (reading it finds its end at once); a pseudo-terminal, FIFO or other
+ * character device carries both directions, reads never blocking the
+ * simulation.  Without a card or a port the calls return E_OBJ.
+ */
+#ifndef EV3SIM_BRICK_IO_H
+#define EV3SIM_BRICK_IO_H
+
+#include "kernel.h"
+#include "rtos_cfg.h"
+
+/* The DEF_SVC rows (INCLUDE it in the configuration). */
+extern const struct rtos_cfg brick_io_cfg;
+
+/* Before boot: the card's directory (NULL: no card) and the serial port's
+ * path (NULL: not connected).  E_OBJ (and a message in err) if either cannot
+ * be opened.  Replaces an earlier setup. */
+ER brick_io_setup(const char *sd_dir, const char *serial_path, char *err, size_t errlen);
+
+/* Closes what brick_io_setup opened (directories the app left open too). */
+void brick_io_teardown(void);
+
+#endif /* EV3SIM_BRICK_IO_H */

@@ -1,0 +1,326 @@
+/*
+ * brick_io.c — the SD card as a host directory and the serial port as a host
+ * file or terminal, behind the API's storage and serial service calls
+ * (brick_io.h, ev3api_brick_io.h).
+ */
+#define _XOPEN_SOURCE 700
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+#include "ev3api_brick_io.h"
+#include "ev3sim/brick_io.h"
+
+static struct {
+	char *root;                         /* realpath of the card, NULL: none */
+	DIR *dirs[BRICK_IO_MAX_DIRS];
+	char *dir_paths[BRICK_IO_MAX_DIRS]; /* host paths of the open directories */
+	int serial_fd;                      /* -1: not connected */
+	bool serial_is_file;                /* a regular file: output only */
+} io = { .serial_fd = -1 };
+
+void brick_io_teardown(void)
+{
+	for (uint_t i = 0; i < BRICK_IO_MAX_DIRS; i++) {
+		if (io.dirs[i] != NULL)
+			closedir(io.dirs[i]);
+		free(io.dir_paths[i]);
+		io.dirs[i] = NULL;
+		io.dir_paths[i] = NULL;
+	}
+	free(io.root);
+	io.root = NULL;
+	if (io.serial_fd >= 0)
+		close(io.serial_fd);
+	io.serial_fd = -1;
+}
+
+ER brick_io_setup(const char *sd_dir, const char *serial_path, char *err, size_t errlen)
+{
+	struct stat st;
+
+	brick_io_teardown();
+	if (sd_dir != NULL) {
+		io.root = realpath(sd_dir, NULL);
+		if (io.root == NULL || stat(io.root, &st) != 0 || !S_ISDIR(st.st_mode)) {
+			snprintf(err, errlen, "--sd %s: not a directory", sd_dir);
+			brick_io_teardown();
+			return E_OBJ;
+		}
+	}
+	if (serial_path != NULL) {
+		bool exists = stat(serial_path, &st) == 0;
+
+		io.serial_is_file = !exists || S_ISREG(st.st_mode);
+		io.serial_fd = open(serial_path, io.serial_is_file ? O_WRONLY | O_CREAT | O_TRUNC :
+				    O_RDWR | O_NOCTTY | O_NONBLOCK, 0644);
+		if (io.serial_fd < 0) {
+			snprintf(err, errlen, "--serial %s: %s", serial_path, strerror(errno));
+			brick_io_teardown();
+			return E_OBJ;
+		}
+	}
+	return E_OK;
+}
+
+/*
+ * The host path of the card's path (absolute or relative to the root),
+ * malloc'd: E_OBJ without a card, E_PAR for a ".." above the root or a path
+ * leading out of the card through a symbolic link, E_NOEXS if nothing is
+ * there, E_NOMEM.
+ */
+static ER resolve(const char *path, char **out)
+{
+	size_t rootlen, len;
+	char *joined, *real;
+
+	if (io.root == NULL)
+		return E_OBJ;
+	rootlen = len = strlen(io.root);
+	if ((joined = malloc(rootlen + strlen(path) + 2)) == NULL)
+		return E_NOMEM;
+	memcpy(joined, io.root, rootlen + 1);
+	/* lexically, component by component: "." stays, ".." pops but never the root */
+	for (const char *p = path; *p != '\0';) {
+		size_t n = strcspn(p, "/");
+
+		if (n == 2 && p[0] == '.' && p[1] == '.') {
+			if (len == rootlen) {
+				free(joined);
+				return E_PAR;
+			}
+			while (joined[len - 1] != '/')
+				len--;
+			joined[--len] = '\0';
+		} else if (n > 0 && !(n == 1 && p[0] == '.')) {
+			joined[len++] = '/';
+			memcpy(joined + len, p, n);
+			len += n;
+			joined[len] = '\0';
+		}
+		p += n + (p[n] == '/');
+	}
+	real = realpath(joined, NULL);
+	free(joined);
+	if (real == NULL)
+		return errno == ENOMEM ? E_NOMEM : E_NOEXS;
+	if (strncmp(real, io.root, rootlen) != 0 || (real[rootlen] != '/' && real[rootlen] != '\0')) {
+		free(real);
+		return E_PAR;
+	}
+	*out = real;
+	return E_OK;
+}
+
+/* The caller's path, resolved; the common head of the file and directory calls. */
+static ER caller_path(intptr_t p_path, char **host)
+{
+	char name[BRICK_IO_MAX_PATH];
+	ER ercd;
+
+	if (sns_ctx())
+		return E_CTX;
+	if ((ercd = brick_io_copy_path((const char *)p_path, name)) != E_OK)
+		return ercd;
+	return resolve(name, host);
+}
+
+static ER_UINT svc_file_size(intptr_t p_path, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
+{
+	struct stat st;
+	char *host;
+	ER ercd;
+
+	(void)p2; (void)p3; (void)p4; (void)p5; (void)cdmid;
+	if ((ercd = caller_path(p_path, &host)) != E_OK)
+		return ercd;
+	ercd = stat(host, &st) != 0 ? E_NOEXS : !S_ISREG(st.st_mode) ? E_OBJ :
+	       st.st_size > INT32_MAX ? E_NOMEM : (ER)st.st_size;
+	free(host);
+	return ercd;
+}
+
+static ER_UINT svc_file_read(intptr_t p_path, intptr_t offset, intptr_t p_buf, intptr_t p_len, intptr_t p5,
+			     ID cdmid)
+{
+	uint_t len = (uint_t)p_len;
+	ssize_t got;
+	char *host;
+	ER ercd;
+	int fd;
+
+	(void)p5; (void)cdmid;
+	if ((ercd = caller_path(p_path, &host)) != E_OK)
+		return ercd;
+	if (offset < 0 || p_len <= 0 || len > BRICK_IO_MAX_XFER)
+		ercd = E_PAR;
+	else if ((void *)p_buf == NULL || prb_mem((void *)p_buf, len, TSK_SELF, TPM_WRITE) != E_OK)
+		ercd = E_MACV;
+	else if ((fd = open(host, O_RDONLY)) < 0)
+		ercd = E_NOEXS;
+	else {
+		got = pread(fd, (void *)p_buf, len, (off_t)offset);
+		close(fd);
+		ercd = got < 0 ? E_OBJ : (ER)got;
+	}
+	free(host);
+	return ercd;
+}
+
+static ER_UINT svc_dir_open(intptr_t p_path, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
+{
+	char *host;
+	ER ercd;
+	uint_t i;
+
+	(void)p2; (void)p3; (void)p4; (void)p5; (void)cdmid;
+	if ((ercd = caller_path(p_path, &host)) != E_OK)
+		return ercd;
+	for (i = 0; i < BRICK_IO_MAX_DIRS && io.dirs[i] != NULL; i++)
+		;
+	if (i == BRICK_IO_MAX_DIRS) {
+		free(host);
+		return E_NOMEM;
+	}
+	if ((io.dirs[i] = opendir(host)) == NULL) {
+		ercd = errno == ENOTDIR ? E_OBJ : E_NOEXS;
+		free(host);
+		return ercd;
+	}
+	io.dir_paths[i] = host;
+	return (ER)(i + 1);
+}
+
+/* A FAT directory entry's date and time (what EV3RT's card reports) of t, UTC. */
+static void fat_time(time_t t, uint16_t *date, uint16_t *hms)
+{
+	struct tm tm;
+
+	if (gmtime_r(&t, &tm) == NULL || tm.tm_year < 80) {
+		*date = (0 << 9) | (1 << 5) | 1;    /* 1980-01-01, FAT's epoch */
+		*hms = 0;
+		return;
+	}
+	*date = (uint16_t)(((tm.tm_year - 80) << 9) | ((tm.tm_mon + 1) << 5) | tm.tm_mday);
+	*hms = (uint16_t)((tm.tm_hour << 11) | (tm.tm_min << 5) | (tm.tm_sec / 2));
+}
+
+static ER_UINT svc_dir_read(intptr_t dirid, intptr_t p_info, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
+{
+	fileinfo_t *info = (fileinfo_t *)p_info;
+	struct dirent *e;
+	struct stat st;
+	char *full;
+	DIR *d;
+
+	(void)p3; (void)p4; (void)p5; (void)cdmid;
+	if (sns_ctx())
+		return E_CTX;
+	if (dirid < 1 || dirid > (intptr_t)BRICK_IO_MAX_DIRS || (d = io.dirs[dirid - 1]) == NULL)
+		return E_ID;
+	if (info == NULL || prb_mem(info, sizeof(*info), TSK_SELF, TPM_WRITE) != E_OK)
+		return E_MACV;
+	do {
+		errno = 0;
+		if ((e = readdir(d)) == NULL)
+			return errno != 0 ? E_OBJ : E_NOEXS;
+	} while (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0);
+	if ((full = malloc(strlen(io.dir_paths[dirid - 1]) + strlen(e->d_name) + 2)) == NULL)
+		return E_NOMEM;
+	sprintf(full, "%s/%s", io.dir_paths[dirid - 1], e->d_name);
+	memset(info, 0, sizeof(*info));
+	if (stat(full, &st) == 0) {
+		info->size = S_ISREG(st.st_mode) && st.st_size <= UINT32_MAX ? (uint32_t)st.st_size : 0;
+		fat_time(st.st_mtime, &info->date, &info->time);
+		info->is_dir = S_ISDIR(st.st_mode);
+		info->is_readonly = (st.st_mode & S_IWUSR) == 0;
+	}
+	info->is_hidden = e->d_name[0] == '.';
+	snprintf(info->name, sizeof(info->name), "%s", e->d_name);
+	free(full);
+	return E_OK;
+}
+
+static ER_UINT svc_dir_close(intptr_t dirid, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
+{
+	(void)p2; (void)p3; (void)p4; (void)p5; (void)cdmid;
+	if (sns_ctx())
+		return E_CTX;
+	if (dirid < 1 || dirid > (intptr_t)BRICK_IO_MAX_DIRS || io.dirs[dirid - 1] == NULL)
+		return E_ID;
+	closedir(io.dirs[dirid - 1]);
+	free(io.dir_paths[dirid - 1]);
+	io.dirs[dirid - 1] = NULL;
+	io.dir_paths[dirid - 1] = NULL;
+	return E_OK;
+}
+
+/* The head of both directions: context, port, length and buffer. */
+static ER serial_check(intptr_t port, intptr_t p_buf, intptr_t p_len, MODE access)
+{
+	if (sns_ctx())
+		return E_CTX;
+	if (port != EV3_SERIAL_DEFAULT && port != EV3_SERIAL_UART)
+		return E_ID;
+	if (p_len < 0 || p_len > (intptr_t)BRICK_IO_MAX_XFER)
+		return E_PAR;
+	if (io.serial_fd < 0)
+		return E_OBJ;
+	if (p_len > 0 && ((void *)p_buf == NULL || prb_mem((void *)p_buf, (SIZE)p_len, TSK_SELF, access) != E_OK))
+		return E_MACV;
+	return E_OK;
+}
+
+static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, intptr_t p4, intptr_t p5,
+				ID cdmid)
+{
+	ssize_t put;
+	ER ercd;
+
+	(void)p4; (void)p5; (void)cdmid;
+	if ((ercd = serial_check(port, p_buf, p_len, TPM_READ)) != E_OK || p_len == 0)
+		return ercd;
+	put = write(io.serial_fd, (const void *)p_buf, (size_t)p_len);
+	if (put < 0)
+		return errno == EAGAIN || errno == EWOULDBLOCK ? 0 : E_OBJ;
+	return (ER_UINT)put;
+}
+
+static ER_UINT svc_serial_read(intptr_t port, intptr_t p_buf, intptr_t p_len, intptr_t p4, intptr_t p5,
+			       ID cdmid)
+{
+	ssize_t got;
+	ER ercd;
+
+	(void)p4; (void)p5; (void)cdmid;
+	if ((ercd = serial_check(port, p_buf, p_len, TPM_WRITE)) != E_OK || p_len == 0)
+		return ercd;
+	if (io.serial_is_file)
+		return E_OBJ;       /* an output file: the far end says nothing */
+	got = read(io.serial_fd, (void *)p_buf, (size_t)p_len);
+	if (got < 0)
+		return errno == EAGAIN || errno == EWOULDBLOCK ? 0 : E_OBJ;
+	return got == 0 ? E_OBJ : (ER_UINT)got;
+}
+
+static const struct rtos_svc_cfg brick_io_svcs[] = {
+	{ BRICK_IO_FN_FILE_SIZE, svc_file_size, 1024 },
+	{ BRICK_IO_FN_FILE_READ, svc_file_read, 1024 },
+	{ BRICK_IO_FN_DIR_OPEN, svc_dir_open, 1024 },
+	{ BRICK_IO_FN_DIR_READ, svc_dir_read, 1024 },
+	{ BRICK_IO_FN_DIR_CLOSE, svc_dir_close, 1024 },
+	{ BRICK_IO_FN_SERIAL_WRITE, svc_serial_write, 1024 },
+	{ BRICK_IO_FN_SERIAL_READ, svc_serial_read, 1024 },
+};
+
+const struct rtos_cfg brick_io_cfg = {
+	.name = "brick_io",
+	.svcs = RTOS_TABLE(brick_io_svcs),
+};
