@@ -31,35 +31,6 @@
 #define BRICK_IO_MAX_PATH       (TMAX_FILENAME_LEN + 1)   /* bytes of a path with its NUL */
 #define BRICK_IO_MAX_XFER       4096U                     /* bytes per read or write call */
 
-/*
- * Copies the caller's path into out (BRICK_IO_MAX_PATH bytes), checking that
- * the calling task may read every byte of it: E_MACV for NULL or unreadable
- * memory, E_PAR for an empty path or one longer than TMAX_FILENAME_LEN.
- * Used on both sides of the calls: a provider cannot trust its caller.
- */
-static inline ER brick_io_copy_path(const char *path, char *out)
-{
-	uint_t i;
-
-	if (path == NULL)
-		return E_MACV;
-	/* one probe covers the common case; near the end of a region, byte by byte */
-	if (prb_mem(path, BRICK_IO_MAX_PATH, TSK_SELF, TPM_READ) != E_OK) {
-		for (i = 0; i < BRICK_IO_MAX_PATH; i++) {
-			if (prb_mem(path + i, 1, TSK_SELF, TPM_READ) != E_OK)
-				return E_MACV;
-			if (path[i] == '\0')
-				break;
-		}
-	}
-	for (i = 0; i < BRICK_IO_MAX_PATH && path[i] != '\0'; i++)
-		out[i] = path[i];
-	if (i == 0 || i == BRICK_IO_MAX_PATH)
-		return E_PAR;
-	out[i] = '\0';
-	return E_OK;
-}
-
 static inline ER_UINT brick_io_file_size(const char *path)
 {
 	return cal_svc(BRICK_IO_FN_FILE_SIZE, (intptr_t)path, 0, 0, 0, 0);

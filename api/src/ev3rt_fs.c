@@ -24,6 +24,25 @@ static ER provided(ER ercd)
 	return ercd == E_RSFN ? E_NOSPT : ercd;
 }
 
+/*
+ * Copies the app's path to the stack for the service call: E_MACV for NULL,
+ * E_PAR for an empty path or one longer than TMAX_FILENAME_LEN.  The API runs
+ * in the app's domain and reads the path as EV3RT's fopen would; the service
+ * checks the copy against the domain.
+ */
+static ER copy_path(const char *path, char *out)
+{
+	size_t n;
+
+	if (path == NULL)
+		return E_MACV;
+	n = strnlen(path, BRICK_IO_MAX_PATH);
+	if (n == 0 || n == BRICK_IO_MAX_PATH)
+		return E_PAR;
+	memcpy(out, path, n + 1);
+	return E_OK;
+}
+
 /* ---- files ---- */
 
 ER ev3_memfile_load(const char *path, memfile_t *p_memfile)
@@ -37,7 +56,7 @@ ER ev3_memfile_load(const char *path, memfile_t *p_memfile)
 		return ercd;
 	p_memfile->buffer = NULL;
 	p_memfile->filesz = p_memfile->buffersz = 0;
-	if ((ercd = brick_io_copy_path(path, name)) != E_OK)
+	if ((ercd = copy_path(path, name)) != E_OK)
 		return ercd;
 	size = brick_io_file_size(name);
 	if (size < 0) {
@@ -84,7 +103,7 @@ ER_ID ev3_sdcard_opendir(const char *path)
 	char name[BRICK_IO_MAX_PATH];
 	ER ercd;
 
-	if ((ercd = api_may_wait()) != E_OK || (ercd = brick_io_copy_path(path, name)) != E_OK)
+	if ((ercd = api_may_wait()) != E_OK || (ercd = copy_path(path, name)) != E_OK)
 		return ercd;
 	return provided(brick_io_dir_open(name));
 }
@@ -175,8 +194,10 @@ FILE *ev3_serial_open_file(serial_port_t port)
 		       port == EV3_SERIAL_BT ? "Bluetooth" : "USB device");
 		return NULL;
 	}
-	if (serial_files[port] != NULL)
+	if (serial_files[port] != NULL) {
+		clearerr(serial_files[port]);   /* an end seen earlier is not the end now */
 		return serial_files[port];
+	}
 	/* a zero-length write asks whether the platform provides the port */
 	if (brick_io_serial_write(port, NULL, 0) < 0) {
 		syslog(LOG_WARNING, "ev3_serial_open_file: port %d is not connected", (int)port);

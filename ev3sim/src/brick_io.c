@@ -71,6 +71,35 @@ ER brick_io_setup(const char *sd_dir, const char *serial_path, char *err, size_t
 }
 
 /*
+ * Copies the caller's path into out (BRICK_IO_MAX_PATH bytes), checking that
+ * the calling task may read every byte of it: E_MACV for NULL or unreadable
+ * memory, E_PAR for an empty path or one longer than TMAX_FILENAME_LEN.
+ * A provider cannot trust its caller (an app may make the call itself).
+ */
+static ER copy_caller_path(const char *path, char *out)
+{
+	uint_t i;
+
+	if (path == NULL)
+		return E_MACV;
+	/* one probe covers the common case; near the end of a region, byte by byte */
+	if (prb_mem(path, BRICK_IO_MAX_PATH, TSK_SELF, TPM_READ) != E_OK) {
+		for (i = 0; i < BRICK_IO_MAX_PATH; i++) {
+			if (prb_mem(path + i, 1, TSK_SELF, TPM_READ) != E_OK)
+				return E_MACV;
+			if (path[i] == '\0')
+				break;
+		}
+	}
+	for (i = 0; i < BRICK_IO_MAX_PATH && path[i] != '\0'; i++)
+		out[i] = path[i];
+	if (i == 0 || i == BRICK_IO_MAX_PATH)
+		return E_PAR;
+	out[i] = '\0';
+	return E_OK;
+}
+
+/*
  * The host path of the card's path (absolute or relative to the root),
  * malloc'd: E_OBJ without a card, E_PAR for a ".." above the root or a path
  * leading out of the card through a symbolic link, E_NOEXS if nothing is
@@ -127,7 +156,7 @@ static ER caller_path(intptr_t p_path, char **host)
 
 	if (sns_ctx())
 		return E_CTX;
-	if ((ercd = brick_io_copy_path((const char *)p_path, name)) != E_OK)
+	if ((ercd = copy_caller_path((const char *)p_path, name)) != E_OK)
 		return ercd;
 	return resolve(name, host);
 }

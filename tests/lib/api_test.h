@@ -21,6 +21,14 @@
 
 static void (*at_body)(void);
 static bool at_done;
+static const struct rtos_cfg *at_includes[3] = { &ev3api_cfg, NULL, NULL };
+
+/* A configuration the next at_run includes besides the API's (a platform
+ * service, e.g. ev3sim's SD card and serial port). */
+static inline void at_include(const struct rtos_cfg *extra)
+{
+	at_includes[1] = extra;
+}
 
 static void at_task(intptr_t exinf)
 {
@@ -37,9 +45,8 @@ static inline bool at_run(void (*attach)(void), void (*body)(void), uint64_t see
 	static const struct rtos_task_cfg task = {
 		AT_TASK_ID, TA_ACT, 0, at_task, 8, AT_STACK, AT_DOMAIN, "app",
 	};
-	static const struct rtos_cfg *const includes[] = { &ev3api_cfg, NULL };
 	static const struct rtos_cfg cfg = {
-		.name = "api_test", .tasks = &task, .ntasks = 1, .includes = includes,
+		.name = "api_test", .tasks = &task, .ntasks = 1, .includes = at_includes,
 	};
 	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
 	struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = seed };
