@@ -194,14 +194,14 @@ FILE *ev3_serial_open_file(serial_port_t port)
 		       port == EV3_SERIAL_BT ? "Bluetooth" : "USB device");
 		return NULL;
 	}
-	if (serial_files[port] != NULL) {
-		clearerr(serial_files[port]);   /* an end seen earlier is not the end now */
-		return serial_files[port];
-	}
 	/* a zero-length write asks whether the platform provides the port */
 	if (brick_io_serial_write(port, NULL, 0) < 0) {
 		syslog(LOG_WARNING, "ev3_serial_open_file: port %d is not connected", (int)port);
 		return NULL;
+	}
+	if (serial_files[port] != NULL) {
+		clearerr(serial_files[port]);   /* an end seen earlier is not the end now */
+		return serial_files[port];
 	}
 	f = fopencookie((void *)(intptr_t)port, "r+", io);
 	if (f == NULL) {

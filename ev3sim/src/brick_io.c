@@ -4,6 +4,7 @@
  * (brick_io.h, ev3api_brick_io.h).
  */
 #define _XOPEN_SOURCE 700
+#define _FILE_OFFSET_BITS 64   /* 32-bit hosts (qemu-arm): 64-bit inodes and offsets from readdir and stat */
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -266,7 +267,7 @@ static ER_UINT svc_dir_read(intptr_t dirid, intptr_t p_info, intptr_t p3, intptr
 	sprintf(full, "%s/%s", io.dir_paths[dirid - 1], e->d_name);
 	memset(info, 0, sizeof(*info));
 	if (stat(full, &st) == 0) {
-		info->size = S_ISREG(st.st_mode) && st.st_size <= UINT32_MAX ? (uint32_t)st.st_size : 0;
+		info->size = S_ISREG(st.st_mode) && (uint64_t)st.st_size <= UINT32_MAX ? (uint32_t)st.st_size : 0;
 		fat_time(st.st_mtime, &info->date, &info->time);
 		info->is_dir = S_ISDIR(st.st_mode);
 		info->is_readonly = (st.st_mode & S_IWUSR) == 0;
