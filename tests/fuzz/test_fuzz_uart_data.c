@@ -108,7 +108,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		const struct lms_uart_port_ext *x = &shm->ext.port[PORT];
 
 		fprintf(stderr, "fuzz: no valid frame served within %u ms of a %zu-byte input "
-			"(state %u, flags %#x, mode %d, data mode %d, frames %u)\n", RESYNC_FRAMES * 10,
+			"(state %u, flags %#x, mode %d, data mode %d, frames %u)\n", (unsigned)RESYNC_FRAMES * 10U,
 			size, x->state, x->flags, x->mode, x->data_mode, (unsigned)x->frames);
 		abort();
 	}
