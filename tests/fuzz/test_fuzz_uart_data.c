@@ -19,7 +19,7 @@
 #define FUZZ_NAME "uart_data"
 #define PORT 0
 #define DATA_BAUD 57600U
-#define RESYNC_FRAMES 40	/* the longest message's 35 bytes, each a stall, and some */
+#define RESYNC_FRAMES 40U	/* the longest message's 35 bytes, each a stall, and some */
 
 static const struct lms_uart_shm *shm;
 
@@ -108,7 +108,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		const struct lms_uart_port_ext *x = &shm->ext.port[PORT];
 
 		fprintf(stderr, "fuzz: no valid frame served within %u ms of a %zu-byte input "
-			"(state %u, flags %#x, mode %d, data mode %d, frames %u)\n", (unsigned)RESYNC_FRAMES * 10U,
+			"(state %u, flags %#x, mode %d, data mode %d, frames %u)\n", RESYNC_FRAMES * 10,
 			size, x->state, x->flags, x->mode, x->data_mode, (unsigned)x->frames);
 		abort();
 	}
