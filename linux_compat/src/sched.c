@@ -11,6 +11,7 @@
 #include <linux_compat/clock.h>
 #include <linux_compat/context.h>
 #include <linux_compat/report.h>
+#include <linux_compat/workqueue.h>
 #include <kernel.h>
 #include <rtos_cfg.h>
 #include <sil.h>
@@ -164,6 +165,8 @@ int lx_waiter_sleep(struct lx_waiter *w, uint64_t deadline_ns)
 	uint64_t now;
 	ER er;
 
+	while (!w->woken && lx_worker_serve_before_init_sleep())
+		;
 	for (;;) {
 		if (w->woken)
 			return 0;
