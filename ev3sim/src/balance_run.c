@@ -100,9 +100,9 @@ static ER plug_in(const struct ev3sim_balance_opts *o, char *err, size_t errlen)
 		else if (o->faults[i].target == EV3SIM_FAULT_GYRO_DRIFT)
 			gyro.gyro_drift_dps = o->faults[i].value;
 	}
-	ercd = ev3_attach_motor(LEFT_PORT, EV3_MOTOR_LARGE, NULL);
+	ercd = ev3_attach_motor(LEFT_PORT, HS_MOTOR_LARGE, NULL);
 	if (ercd == E_OK)
-		ercd = ev3_attach_motor(RIGHT_PORT, EV3_MOTOR_LARGE, NULL);
+		ercd = ev3_attach_motor(RIGHT_PORT, HS_MOTOR_LARGE, NULL);
 	if (ercd == E_OK)
 		ercd = ev3_attach_uart_sensor(GYRO_PORT, UART_SENSOR_TYPE_GYRO, &gyro);
 	if (ercd != E_OK) {
@@ -231,14 +231,17 @@ void ev3sim_balance_summary(const struct ev3sim_balance_opts *o,
 		 "fell_at_s=%s max_tilt_deg=%.2f rms_tilt_deg=%.3f max_travel_cm=%.1f "
 		 "deadline_misses=%u balance_runs=%u max_start_delay_us=%llu "
 		 "logger_lines=%u logger_skipped=%u log_bytes=%llu logger_spin_ms=%llu "
-		 "api_errors=%u bugs=%u sim_speed=%.0fx",
+		 "gyro_frames=%u gyro_check_errors=%u gyro_size_errors=%u gyro_resyncs=%u "
+		 "gyro_reconnects=%u api_errors=%u bugs=%u sim_speed=%.0fx",
 		 r->fell ? "fell" : "upright", r->seconds, (unsigned long long)o->seed,
 		 o->app.balancer ? "on" : "off", o->app.logger_hz,
 		 o->app.logger_above ? "above" : "below", fell_at, r->max_tilt_deg, r->rms_tilt_deg,
 		 r->max_travel_cm, r->app.deadline_misses, r->app.runs,
 		 (unsigned long long)(r->app.max_start_delay_ns / 1000U), r->app.logger_lines,
 		 r->app.logger_skipped, (unsigned long long)r->log_bytes,
-		 (unsigned long long)r->log_spin_ms, r->app.api_errors, r->bugs,
+		 (unsigned long long)r->log_spin_ms, r->app.gyro_frames, r->app.gyro_check_errors,
+		 r->app.gyro_size_errors, r->app.gyro_resyncs, r->app.gyro_reconnects,
+		 r->app.api_errors, r->bugs,
 		 r->wall_s > 0 ? r->sim_virtual_s / r->wall_s : 0.0);
 }
 

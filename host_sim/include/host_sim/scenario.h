@@ -21,6 +21,7 @@
 #include "rtos_host.h"
 #include "host_sim/board.h"
 #include "host_sim/clock.h"
+#include "host_sim/rng.h"
 
 struct hs_scenario {
 	const struct rtos_cfg *rtos;         /* the application's configuration (required) */
@@ -62,18 +63,5 @@ uint64_t hs_sim_seed(void);
  * failed expectation in err (the script runs to its end).
  */
 ER hs_sim_script(const char *text, char *err, size_t errlen);
-
-/* Deterministic PRNG: xoshiro256** seeded through splitmix64. */
-struct hs_rng { uint64_t s[4]; };
-void hs_rng_seed(struct hs_rng *rng, uint64_t seed);
-/* A stream for a named model, derived from the scenario seed and name. */
-void hs_rng_stream(struct hs_rng *rng, const char *name);
-uint64_t hs_rng_next(struct hs_rng *rng);
-/* Uniform in [0, n) (n > 0), without modulo bias. */
-uint32_t hs_rng_below(struct hs_rng *rng, uint32_t n);
-/* Uniform in [0, 1). */
-double hs_rng_unit(struct hs_rng *rng);
-/* Normally distributed, mean 0, standard deviation 1. */
-double hs_rng_gauss(struct hs_rng *rng);
 
 #endif /* HOST_SIM_SCENARIO_H */
