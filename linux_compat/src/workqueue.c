@@ -228,18 +228,6 @@ bool lx_workqueue_run_one(void)
 	return true;
 }
 
-/*
- * Module inits run in the worker: one that queues work and sleeps until it is
- * done would wait for itself.  While the inits run, a sleep in the worker
- * first serves the queued work in place; true if it ran one.
- */
-bool lx_worker_serve_before_init_sleep(void)
-{
-	if (READ_ONCE(wq.ready) || !lx_in_worker())
-		return false;
-	return run_one();
-}
-
 /* True while the instance seq of work is queued or running. */
 static bool instance_alive(const struct work_struct *work, u64 seq)
 {

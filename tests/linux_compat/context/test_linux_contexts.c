@@ -7,7 +7,7 @@
  * not at the next tick.
  */
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
+#include "lx_core_test.h"
 #include <linux/kernel.h>
 #include <linux/hrtimer.h>
 #include <linux/timer.h>
@@ -146,7 +146,7 @@ int main(void)
 	is_int(tl_del_ret, 1, "del_timer_sync of another (pending) timer from a timer callback dequeues it");
 	is_int((int)tl_bugs, 0, "...and is not reported");
 	ok(waiter_ran_at_unlock, "complete() under spin_lock_irqsave: the waiter ran at the unlock");
-	ok(waiter_ran && waiter_woke_at - completed_at < (s64)TIC_NS,
+	ok(waiter_ran && waiter_woke_at - completed_at < (s64)hrtimer_resolution,
 	   "...within the same tick (woke %lld ns after complete)", (long long)(waiter_woke_at - completed_at));
 	return tap_done();
 }

@@ -6,7 +6,7 @@
  */
 #define KBUILD_MODNAME "initwait"
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
+#include "lx_core_test.h"
 #include <linux/module.h>
 #include <linux/init.h>
 #include <linux/workqueue.h>

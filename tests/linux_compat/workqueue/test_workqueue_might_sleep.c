@@ -5,7 +5,7 @@
  * the work is idle and they would not have waited.
  */
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
+#include "lx_core_test.h"
 #include <linux/workqueue.h>
 #include <linux/spinlock.h>
 #include <linux/delay.h>
