@@ -106,7 +106,7 @@ int __kfifo_to_user(struct __kfifo *fifo, void __user *to, unsigned long len, un
 	unsigned int done = 0, n;
 
 	while (done < len) {
-		n = __kfifo_out_peek(fifo, chunk, (unsigned int)min(len - done, sizeof(chunk)));
+		n = __kfifo_out_peek(fifo, chunk, (unsigned int)min_t(unsigned long, len - done, sizeof(chunk)));
 		if (n == 0)
 			break;
 		if (copy_to_user((unsigned char __user *)to + done, chunk, n)) {
@@ -128,7 +128,7 @@ int __kfifo_from_user(struct __kfifo *fifo, const void __user *from, unsigned lo
 
 	while (done < len) {
 		avail = fifo->mask + 1 - (fifo->in - READ_ONCE(fifo->out));
-		n = (unsigned int)min3(len - done, sizeof(chunk), (unsigned long)avail);
+		n = (unsigned int)min3(len - done, (unsigned long)sizeof(chunk), (unsigned long)avail);
 		if (n == 0)
 			break;
 		if (copy_from_user(chunk, (const unsigned char __user *)from + done, n)) {
