@@ -25,7 +25,7 @@
  *
  * Like EV3RT's, this header includes one header per group.  A group ev3lx
  * does not provide yet is declared with EV3RT's signatures but marked
- * EV3API_NOT_YET: an app using it compiles, and its link fails naming the
+ * EV3API_NOT_YET (ev3api_not_yet.h): an app using it compiles, and its link fails naming the
  * missing call (never a stub that silently does nothing).
  *
  * docs/api.md has every function and its errors; docs/ev3rt-apps.md how an
@@ -40,14 +40,6 @@
 #include "kernel.h"
 #include "t_syslog.h"
 #include "rtos_cfg.h"
-
-/*
- * A call of a group ev3lx does not provide yet: bound to a symbol no library
- * defines, so the linker reports e.g.
- *   undefined reference to `ev3lx_not_yet_supported__lcd__ev3_lcd_draw_string'
- * A group that becomes available drops the mark from its declarations.
- */
-#define EV3API_NOT_YET(group, name) __asm__("ev3lx_not_yet_supported__" #group "__" #name)
 
 #include "ev3api_motor.h"
 #include "ev3api_sensor.h"

@@ -6,6 +6,7 @@
 #ifndef EV3API_BATTERY_H
 #define EV3API_BATTERY_H
 
+#include "ev3api_not_yet.h"
 int ev3_battery_current_mA(void) EV3API_NOT_YET(battery, ev3_battery_current_mA);
 int ev3_battery_voltage_mV(void) EV3API_NOT_YET(battery, ev3_battery_voltage_mV);
 

@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "kernel.h"
+#include "ev3api_not_yet.h"
 
 #define TMAX_FILENAME_LEN 255
 

@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include "kernel.h"
 #include "ev3api_fs.h"
+#include "ev3api_not_yet.h"
 
 #define EV3_LCD_WIDTH   178
 #define EV3_LCD_HEIGHT  128

@@ -8,6 +8,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include "kernel.h"
+#include "ev3api_not_yet.h"
 
 typedef enum {
 	EV3_PORT_1 = 0, EV3_PORT_2 = 1, EV3_PORT_3 = 2, EV3_PORT_4 = 3,

@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include "kernel.h"
 #include "ev3api_fs.h"
+#include "ev3api_not_yet.h"
 
 /* duration_ms of a tone or file that plays until ev3_speaker_stop */
 #define SOUND_MANUAL_STOP (-1)

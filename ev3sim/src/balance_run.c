@@ -22,8 +22,7 @@
 
 static struct recorder {
 	struct ev3sim_balance_result *res;
-	bool record;
-	size_t cap;
+	FILE *out;
 	double sum_sq;
 	uint64_t samples;
 	double wheel0;
@@ -51,29 +50,11 @@ static void observe(const struct ev3sim_robot_sample *s, void *ctx)
 	travel = fabs(s->wheel_deg - rec.wheel0) * PI / 180.0 * ev3sim_gyro_boy.wheel_radius_m * 100.0;
 	if (travel > res->max_travel_cm)
 		res->max_travel_cm = travel;
-	if (!rec.record)
-		return;
-	if (res->nrows == rec.cap) {
-		size_t cap = rec.cap ? rec.cap * 2 : 4096;
-		struct ev3sim_series_row *rows = realloc(res->rows, cap * sizeof(*rows));
-
-		if (rows == NULL) {
-			rec.record = false;     /* out of memory: keep the statistics only */
-			return;
-		}
-		res->rows = rows;
-		rec.cap = cap;
-	}
-	res->rows[res->nrows++] = (struct ev3sim_series_row){
-		.t_s = ((double)s->t_ns - (double)EV3SIM_RELEASE_NS) * 1e-9,
-		.tilt_deg = s->tilt_deg,
-		.tilt_rate_dps = s->tilt_rate_dps,
-		.wheel_deg = s->wheel_deg - rec.wheel0,
-		.tilt_est_deg = app->tilt_est_deg,
-		.power = app->power,
-		.duty_a = s->duty_a * 100.0,
-		.duty_d = s->duty_d * 100.0,
-	};
+	if (rec.out)	/* streamed: an hour at 1 kHz is 3.6 million rows, never held in memory */
+		fprintf(rec.out, "%.3f,%.4f,%.3f,%.3f,%.4f,%d,%.2f,%.2f\n",
+			((double)s->t_ns - (double)EV3SIM_RELEASE_NS) * 1e-9, s->tilt_deg, s->tilt_rate_dps,
+			s->wheel_deg - rec.wheel0, app->tilt_est_deg, app->power, s->duty_a * 100.0,
+			s->duty_d * 100.0);
 }
 
 /* Draws the progress bar on stderr. */
@@ -157,7 +138,9 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 	}
 	robot.npushes = o->npushes;
 	robot.start_tilt_deg = o->start_tilt_deg;
-	rec = (struct recorder){ .res = res, .record = o->record };
+	rec = (struct recorder){ .res = res, .out = o->series_out };
+	if (rec.out)
+		fputs(EV3SIM_SERIES_HEADER, rec.out);
 	res->seconds = o->seconds;
 	scn.seed = o->seed;
 	scn.vcd_path = o->trace_path;
@@ -198,25 +181,19 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 	res->fell = ev3sim_robot_fallen(&fell_ns);
 	res->fell_at_s = res->fell ? ((double)fell_ns - (double)EV3SIM_RELEASE_NS) * 1e-9 : 0.0;
 	res->rms_tilt_deg = rec.samples ? sqrt(rec.sum_sq / (double)rec.samples) : 0.0;
+	res->wall_s = ev3sim_wall_seconds() - wall0;
+	res->sim_virtual_s = rtos_host_now() * 1e-9;
+	/* let the application's tasks finish their work (the logger its last line) before the
+	 * summary's counts are taken and the drivers unload */
+	ev3sim_balance_stop();
+	hs_sim_run_for(DRAIN_NS);
 	res->app = *ev3sim_balance_stats();
 	log = serial_log_get_stats();
 	res->log_bytes = log->bytes;
 	res->log_spin_ms = log->spin_ns / 1000000U;
 	res->bugs = rtos_host_bug_count();
-	res->wall_s = ev3sim_wall_seconds() - wall0;
-	res->sim_virtual_s = rtos_host_now() * 1e-9;
-	/* let the application's tasks finish their work before the drivers unload */
-	ev3sim_balance_stop();
-	hs_sim_run_for(DRAIN_NS);
-	hs_sim_shutdown();
+	res->trace_failed = hs_sim_shutdown() != E_OK;
 	return E_OK;
-}
-
-void ev3sim_balance_result_free(struct ev3sim_balance_result *res)
-{
-	free(res->rows);
-	res->rows = NULL;
-	res->nrows = 0;
 }
 
 void ev3sim_balance_summary(const struct ev3sim_balance_opts *o,
@@ -243,16 +220,4 @@ void ev3sim_balance_summary(const struct ev3sim_balance_opts *o,
 		 r->app.gyro_size_errors, r->app.gyro_resyncs, r->app.gyro_reconnects,
 		 r->app.api_errors, r->bugs,
 		 r->wall_s > 0 ? r->sim_virtual_s / r->wall_s : 0.0);
-}
-
-int ev3sim_write_csv(const struct ev3sim_balance_result *r, FILE *out)
-{
-	fprintf(out, "t_s,tilt_deg,tilt_rate_dps,wheel_deg,tilt_est_deg,power_pct,duty_a_pct,duty_d_pct\n");
-	for (size_t i = 0; i < r->nrows; i++) {
-		const struct ev3sim_series_row *w = &r->rows[i];
-
-		fprintf(out, "%.3f,%.4f,%.3f,%.3f,%.4f,%d,%.2f,%.2f\n", w->t_s, w->tilt_deg,
-			w->tilt_rate_dps, w->wheel_deg, w->tilt_est_deg, w->power, w->duty_a, w->duty_d);
-	}
-	return ferror(out) ? -1 : 0;
 }

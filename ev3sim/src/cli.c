@@ -5,10 +5,13 @@
  * --seconds=30).  Every bad option or value is named in a message on stderr
  * and exits with status 2; --help prints the command's usage and exits 0.
  */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "ev3sim/apps.h"
 #include "ev3sim/balance_run.h"
 #include "ev3sim/cli.h"
@@ -157,6 +160,15 @@ static bool is(const struct args *a, const char *name)
 	return strcmp(a->name, name) == 0;
 }
 
+/* --help or -h; a value given to it (--help=1) is a usage error (*status). */
+static bool is_help(const struct args *a, int *status)
+{
+	if (!is(a, "--help") && !is(a, "-h"))
+		return false;
+	*status = a->inline_value ? usage_error(a, "%s takes no value", a->name) : EV3SIM_EXIT_OK;
+	return true;
+}
+
 /* Parses a seconds value in (0, max]. */
 static bool parse_seconds(const char *s, double *out)
 {
@@ -183,6 +195,8 @@ static int shared_option(struct args *a, const char *v, double *seconds, uint64_
 		if (!ev3sim_parse_uint(v, UINT64_MAX, seed))
 			return usage_error(a, "--seed: bad value '%s' (an unsigned integer)", v);
 	} else if (is(a, "--trace")) {
+		if (!ev3sim_can_create(a->cmd, v))	/* checked before the run, not after it */
+			return EV3SIM_EXIT_FAIL;
 		*trace_path = v;
 	} else if (every_ms != NULL && is(a, "--every")) {
 		uint64_t ms;
@@ -207,8 +221,20 @@ static FILE *open_out(const char *cmd, const char *path)
 	FILE *f = fopen(path, "w");
 
 	if (f == NULL)
-		fprintf(stderr, "ev3sim %s: cannot write %s\n", cmd, path);
+		fprintf(stderr, "ev3sim %s: cannot write %s: %s\n", cmd, path, strerror(errno));
 	return f;
+}
+
+/* Closes an output; false (and says so) if any of it could not be written. */
+static bool close_out(const char *cmd, FILE *f, const char *path)
+{
+	bool ok = !ferror(f);
+
+	if (fclose(f) != 0)
+		ok = false;
+	if (!ok)
+		fprintf(stderr, "ev3sim %s: cannot write %s completely\n", cmd, path);
+	return ok;
 }
 
 /* What `balance`'s options set: the run's options and the outputs asked for. */
@@ -372,14 +398,15 @@ static int cmd_balance(struct args *a)
 	struct ev3sim_balance_opts o;
 	struct ev3sim_balance_result r;
 	const struct balance_option *opt;
-	const char *csv, *plot, *log_path, *v = NULL;
-	char err[256], line[1024];
-	int status = EV3SIM_EXIT_OK, st;
+	const char *csv, *plot, *log_path, *series_path, *v = NULL;
+	char err[256], line[1024], series_tmp[] = "/tmp/ev3sim-series-XXXXXX";
+	int status = EV3SIM_EXIT_OK, st, fd;
 
 	while (next_option(a)) {
-		if (is(a, "--help") || is(a, "-h")) {
-			fputs(balance_usage, stdout);
-			return EV3SIM_EXIT_OK;
+		if (is_help(a, &st)) {
+			if (st == EV3SIM_EXIT_OK)
+				fputs(balance_usage, stdout);
+			return st;
 		}
 		if (strncmp(a->name, "--", 2) != 0)
 			return usage_error(a, "unexpected argument '%s'", a->name);
@@ -407,43 +434,63 @@ static int cmd_balance(struct args *a)
 			"(install gnuplot-nox: make deps)\n");
 		return EV3SIM_EXIT_FAIL;
 	}
-	if (log_path && (o.log_out = open_out(a->cmd, log_path)) == NULL)
+	/* every output is opened or created before the run: a path that cannot be written is
+	 * refused now; the series streams to the CSV (or, for a plot alone, a temporary file) */
+	if (plot && !ev3sim_can_create(a->cmd, plot))
 		return EV3SIM_EXIT_FAIL;
-	o.record = csv != NULL || plot != NULL;
+	series_path = csv;
+	if (csv && (o.series_out = open_out(a->cmd, csv)) == NULL)
+		return EV3SIM_EXIT_FAIL;
+	if (!csv && plot) {
+		fd = mkstemp(series_tmp);
+		if (fd < 0 || (o.series_out = fdopen(fd, "w")) == NULL) {
+			fprintf(stderr, "ev3sim balance: cannot create a temporary file: %s\n", strerror(errno));
+			if (fd >= 0)
+				close(fd);
+			return EV3SIM_EXIT_FAIL;
+		}
+		series_path = series_tmp;
+	}
+	if (log_path && (o.log_out = open_out(a->cmd, log_path)) == NULL) {
+		if (o.series_out)
+			fclose(o.series_out);
+		return EV3SIM_EXIT_FAIL;
+	}
 	if (ev3sim_balance_run(&o, &r, err, sizeof(err)) != E_OK) {
 		fprintf(stderr, "ev3sim balance: %s\n", err);
 		if (o.log_out)
 			fclose(o.log_out);
+		if (o.series_out)
+			fclose(o.series_out);
+		if (series_path == series_tmp)
+			unlink(series_tmp);
 		return EV3SIM_EXIT_FAIL;
 	}
-	if (o.log_out && fclose(o.log_out) != 0) {
-		fprintf(stderr, "ev3sim balance: cannot write %s\n", log_path);
+	if (o.log_out && !close_out(a->cmd, o.log_out, log_path))
+		status = EV3SIM_EXIT_FAIL;
+	if (o.series_out && !close_out(a->cmd, o.series_out, series_path))
+		status = EV3SIM_EXIT_FAIL;
+	if (r.trace_failed) {
+		fprintf(stderr, "ev3sim balance: cannot write %s completely\n", o.trace_path);
 		status = EV3SIM_EXIT_FAIL;
 	}
-	if (csv) {
-		FILE *f = open_out(a->cmd, csv);
-
-		if (f == NULL || ev3sim_write_csv(&r, f) != 0 || fclose(f) != 0) {
-			if (f)
-				fprintf(stderr, "ev3sim balance: cannot write %s\n", csv);
-			status = EV3SIM_EXIT_FAIL;
-		}
-	}
-	if (plot) {
+	if (plot && status == EV3SIM_EXIT_OK) {
 		char title[160];
 
 		snprintf(title, sizeof(title), "ev3sim balance: %s, seed %llu, logger %u Hz (%s the balancer)%s",
 			 r.fell ? "fell" : "upright", (unsigned long long)o.seed, o.app.logger_hz,
 			 o.app.logger_above ? "above" : "below", o.app.balancer ? "" : ", no balancer");
-		if (ev3sim_plot(&r, title, plot, err, sizeof(err)) != 0) {
+		if (ev3sim_plot(series_path, title, plot, err, sizeof(err)) != 0) {
 			fprintf(stderr, "ev3sim balance: %s\n", err);
 			status = EV3SIM_EXIT_FAIL;
 		}
 	}
+	if (series_path == series_tmp)
+		unlink(series_tmp);
 	ev3sim_balance_summary(&o, &r, line, sizeof(line));
 	printf("%s\n", line);
-	fflush(stdout);
-	ev3sim_balance_result_free(&r);
+	if (fflush(stdout) != 0 || ferror(stdout))
+		status = EV3SIM_EXIT_FAIL;
 	return status;
 }
 
@@ -458,9 +505,10 @@ static int cmd_motor(struct args *a)
 	int st;
 
 	while (next_option(a)) {
-		if (is(a, "--help") || is(a, "-h")) {
-			fputs(motor_usage, stdout);
-			return EV3SIM_EXIT_OK;
+		if (is_help(a, &st)) {
+			if (st == EV3SIM_EXIT_OK)
+				fputs(motor_usage, stdout);
+			return st;
 		} else if (strncmp(a->name, "--", 2) != 0) {
 			return usage_error(a, "unexpected argument '%s'", a->name);
 		} else if ((v = value(a)) == NULL) {
@@ -510,9 +558,10 @@ static int cmd_sensors(struct args *a)
 
 	ev3sim_sensors_defaults(&o);
 	while (next_option(a)) {
-		if (is(a, "--help") || is(a, "-h")) {
-			fputs(sensors_usage, stdout);
-			return EV3SIM_EXIT_OK;
+		if (is_help(a, &st)) {
+			if (st == EV3SIM_EXIT_OK)
+				fputs(sensors_usage, stdout);
+			return st;
 		} else if (strncmp(a->name, "--", 2) != 0) {
 			return usage_error(a, "unexpected argument '%s'", a->name);
 		} else if ((v = value(a)) == NULL) {

@@ -127,7 +127,10 @@ ER ev3sim_motor_app(const struct ev3sim_motor_opts *o, FILE *out, char *err, siz
 		o->power_mode ? "power" : "speed", o->value, o->seconds, (long)run.counts, run.speed,
 		run.counts / o->seconds, run.api_errors, rtos_host_bug_count(),
 		wall > 0 ? rtos_host_now() * 1e-9 / wall : 0.0);
-	hs_sim_shutdown();
+	if (hs_sim_shutdown() != E_OK) {
+		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
+		return E_SYS;
+	}
 	if (!run.done) {
 		snprintf(err, errlen, "the application did not finish");
 		return E_SYS;

@@ -42,6 +42,31 @@ static struct {
 	struct { void *base, *copy; SIZE size; } region[MAX_IMAGE_REGIONS];
 } image;
 
+/*
+ * Before the brick powers down, the app ends as EV3RT's loader ends one: its
+ * cyclic handlers stop and its tasks are terminated (ter_tsk), by a task of
+ * the highest priority in the kernel domain.  Only then do the drivers unload
+ * (ATT_TER), so no app task still polls their shared memory.  Its ID is the
+ * first below the API's button task (EV3_BUTTON_TSKID) and linux_compat's
+ * worker (TNUM_TSKID).
+ */
+#define POWER_OFF_TSKID  (TNUM_TSKID - 2)
+#define POWER_OFF_STACK  (16 * 1024)
+
+static void power_off_task(intptr_t exinf);
+
+static const struct rtos_task_cfg power_off_tasks[] = {
+	{ POWER_OFF_TSKID, TA_NULL, 0, power_off_task, TMIN_TPRI, POWER_OFF_STACK, TDOM_KERNEL,
+	  "ev3sim power-off" },
+};
+/* The run's configuration: the power-off task and the app. */
+static const struct rtos_cfg *run_includes[2];
+static const struct rtos_cfg run_cfg = {
+	.name = "ev3sim_run",
+	.tasks = RTOS_TABLE(power_off_tasks),
+	.includes = run_includes,
+};
+
 static struct {
 	const struct ev3sim_run_opts *o;
 	struct ev3sim_run_result *r;
@@ -137,6 +162,18 @@ static ER load_image(const struct rtos_cfg *app)
 	}
 	image.app = app;
 	return E_OK;
+}
+
+/* Stops the app's cyclic handlers and terminates its tasks. */
+static void power_off_task(intptr_t exinf)
+{
+	const struct rtos_cfg *app = run_includes[0];
+
+	(void)exinf;
+	for (uint_t i = 0; i < app->ncycs; i++)
+		(void)stp_cyc(app->cycs[i].cycid);
+	for (uint_t i = 0; i < app->ntasks; i++)
+		(void)ter_tsk(app->tasks[i].tskid);     /* E_OBJ for a dormant one */
 }
 
 /* Syslog lines of the run: counted and handed to the sink. */
@@ -320,7 +357,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	      struct ev3sim_run_result *r, char *err, size_t errlen)
 {
 	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
-	struct hs_scenario scn = { .rtos = app, .board = &board, .seed = o->seed,
+	struct hs_scenario scn = { .rtos = &run_cfg, .board = &board, .seed = o->seed,
 				   .vcd_path = o->trace_path };
 	uint64_t end;
 	double wall0;
@@ -343,6 +380,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		snprintf(err, errlen, "out of memory for the app's image");
 		return E_SYS;
 	}
+	run_includes[0] = app;
 	memset(&run, 0, sizeof(run));
 	run.o = o;
 	run.r = r;
@@ -363,6 +401,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		snprintf(err, errlen, "the %s's devices are not all plugged in (%d)",
 			 ev3sim_robot_name(o->robot), (int)ercd);
 	if (ercd != E_OK) {
+		(void)iact_tsk(POWER_OFF_TSKID);
+		hs_sim_run_for(DRAIN_NS);
 		rtos_host_trace_set_sink(NULL, NULL);
 		hs_sim_shutdown();
 		return ercd == E_PAR ? E_PAR : E_SYS;
@@ -389,9 +429,13 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	r->seconds = rtos_host_now() * 1e-9;
 	r->bugs = rtos_host_bug_count();
 	r->wall_s = ev3sim_wall_seconds() - wall0;
+	(void)iact_tsk(POWER_OFF_TSKID);
 	hs_sim_run_for(DRAIN_NS);
 	rtos_host_trace_set_sink(NULL, NULL);
-	hs_sim_shutdown();
+	if (hs_sim_shutdown() != E_OK) {
+		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
+		return E_SYS;
+	}
 	return E_OK;
 }
 

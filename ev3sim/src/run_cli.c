@@ -160,6 +160,8 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 			return usage("--fault: %s", err);
 		o->nfaults++;
 	} else if (strcmp(name, "--trace") == 0) {
+		if (!ev3sim_can_create("run", v))	/* checked before the run, not after it */
+			return EV3SIM_EXIT_FAIL;
 		o->trace_path = v;
 	} else if (strcmp(name, "--csv") == 0) {
 		*csv_path = v;

@@ -367,7 +367,10 @@ ER ev3sim_sensors_app(const struct ev3sim_sensors_opts *o, FILE *out, char *err,
 		conn_name(run.out_conn[1]), out_names[o->out[2]], conn_name(run.out_conn[2]),
 		out_names[o->out[3]], conn_name(run.out_conn[3]), run.rows, run.api_errors,
 		rtos_host_bug_count(), wall > 0 ? rtos_host_now() * 1e-9 / wall : 0.0);
-	hs_sim_shutdown();
+	if (hs_sim_shutdown() != E_OK) {
+		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
+		return E_SYS;
+	}
 	if (!run.done) {
 		snprintf(err, errlen, "the application did not finish");
 		return E_SYS;

@@ -34,15 +34,17 @@ struct hs_scenario {
 };
 
 /* hs_board_init + traces + rtos_host_boot + hs_board_start.  Returns E_OK or
- * the first error (the board is shut down again on error). */
+ * the first error (the board is shut down again on error); E_SYS with errno
+ * if a trace file cannot be created. */
 ER hs_sim_boot(const struct hs_scenario *scn);
 /* Runs the system for ns / until absolute t_ns of virtual time. */
 void hs_sim_run_for(uint64_t ns);
 void hs_sim_run_until(uint64_t t_ns);
 /* Injects fn(arg) at absolute virtual time t_ns (in the hardware's context). */
 hs_event_t hs_sim_at(uint64_t t_ns, rtos_host_event_fn fn, void *arg);
-/* rtos_host_shutdown + hs_board_shutdown (closes the trace files). */
-void hs_sim_shutdown(void);
+/* rtos_host_shutdown + hs_board_shutdown (closes the trace files).  E_OK, or
+ * E_SYS if a trace file could not be written completely (a full disk). */
+ER hs_sim_shutdown(void);
 /* The scenario seed (0 without a scenario). */
 uint64_t hs_sim_seed(void);
 

@@ -30,15 +30,14 @@ ER hs_sim_boot(const struct hs_scenario *scn)
 	er = hs_board_init(scn->board);
 	if (er != E_OK)
 		return er;
-	if (scn->vcd_path && hs_trace_open_vcd(scn->vcd_path) != 0) {
-		rtos_host_bug("host_sim", "hs_sim_boot: cannot write %s: %s", scn->vcd_path, strerror(errno));
+	/* an output file that cannot be written is the user's error, not a bug: E_SYS with errno */
+	if ((scn->vcd_path && hs_trace_open_vcd(scn->vcd_path) != 0) ||
+	    (scn->csv_path && hs_trace_open_csv(scn->csv_path) != 0)) {
+		int saved = errno;
+
 		hs_board_shutdown();
-		return E_PAR;
-	}
-	if (scn->csv_path && hs_trace_open_csv(scn->csv_path) != 0) {
-		rtos_host_bug("host_sim", "hs_sim_boot: cannot write %s: %s", scn->csv_path, strerror(errno));
-		hs_board_shutdown();
-		return E_PAR;
+		errno = saved;
+		return E_SYS;
 	}
 	if (scn->reglog_filter)
 		hs_trace_reglog(scn->reglog_filter, scn->reglog);
@@ -73,13 +72,17 @@ hs_event_t hs_sim_at(uint64_t t_ns, rtos_host_event_fn fn, void *arg)
 	return hs_event_at(t_ns, fn, arg);
 }
 
-void hs_sim_shutdown(void)
+ER hs_sim_shutdown(void)
 {
+	ER written;
+
 	if (sim.booted)
 		rtos_host_shutdown();
+	written = hs_trace_close() == 0 ? E_OK : E_SYS;
 	hs_board_shutdown();
 	memset(&sim, 0, sizeof(sim));
 	hs_rng_set_base_seed(0);
+	return written;
 }
 
 uint64_t hs_sim_seed(void)

@@ -83,7 +83,8 @@ void ready_rotate(PRI pri)
 static void switch_from_task(bool dying)
 {
 	struct tcb *from = runtsk;
-	struct tcb *to = schedtsk;
+	/* after ext_ker from a handler, the CPU goes back to the harness for good */
+	struct tcb *to = kernel_exited ? NULL : schedtsk;
 	struct coroutine *to_co;
 
 	if (to == from && !dying)
@@ -116,7 +117,7 @@ void task_switch(void)
 /* Switches tasks if the current task context may and should be preempted. */
 void dispatch_if_needed(void)
 {
-	if (schedtsk != runtsk && cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && !cpu.locked &&
+	if ((schedtsk != runtsk || kernel_exited) && cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && !cpu.locked &&
 	    !cpu.dsp_disabled && cpu.sil_lock == 0 && cpu.irq_defer == 0)
 		switch_from_task(false);
 }

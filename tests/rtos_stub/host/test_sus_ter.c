@@ -122,6 +122,24 @@ static void late(intptr_t x)
 	late_runs++;
 }
 
+/* A task that keeps making service calls while a handler ends the kernel. */
+static int busy_after;
+static ER handler_ext_ker = E_SYS;
+
+static void busy(intptr_t x)
+{
+	for (;;) {
+		if (rtos_host_exited())
+			busy_after++;
+		dly_tsk(1);
+	}
+}
+
+static void ender_cyc(intptr_t x)
+{
+	handler_ext_ker = ext_ker();
+}
+
 static void ter_routine(intptr_t x)
 {
 	ter_runs++;
@@ -149,11 +167,17 @@ static const struct rtos_cfg end_cfg = {
 	.name = "ext_ker", .tasks = RTOS_TABLE(end_tasks), .ters = RTOS_TABLE(end_ters),
 };
 
+static const struct rtos_task_cfg busy_tasks[] = { { 1, TA_ACT, 0, busy, 5, 1024, TDOM_KERNEL, "busy" } };
+static const struct rtos_cyc_cfg end_cycs[] = { { 1, TA_STA | TA_PHS, 0, ender_cyc, 5, 5, "ender" } };
+static const struct rtos_cfg cyc_end_cfg = {
+	.name = "ext_ker-cyc", .tasks = RTOS_TABLE(busy_tasks), .cycs = RTOS_TABLE(end_cycs),
+};
+
 int main(void)
 {
 	uint64_t t;
 
-	tap_plan(17);
+	tap_plan(19);
 	rt_log_reset();
 	is_int(rtos_host_boot(&cfg), E_OK, "boot");
 	rtos_host_run_for(300 * MS);
@@ -184,5 +208,12 @@ int main(void)
 	   "after ext_ker nothing runs and time stands still");
 	rtos_host_shutdown();
 	ok(ter_runs == 1 && ended_ctx, "shutdown still runs the ATT_TER routines");
+
+	rtos_host_boot(&cyc_end_cfg);
+	rtos_host_run_for(20 * MS);
+	is_int(handler_ext_ker, E_OK, "ext_ker from a cyclic handler returns E_OK");
+	ok(rtos_host_exited() && busy_after == 0 && rtos_host_now() <= 6 * MS,
+	   "and the system stops there: no task runs after it (t=%llu ns)", (unsigned long long)rtos_host_now());
+	rtos_host_shutdown();
 	return tap_done();
 }
