@@ -49,9 +49,11 @@ recorded_hash() {
 proof_failures=0
 # Checks driver $1 in every configuration: P_MOD (0, or n/a if unproven) and P_CELLS.
 prove_unmodified() {
-	local drv=$1 src c h cells="" bad=0
+	local drv=$1 hack=${2:-} src c h cells="" bad=0
 	src=$(hash_of "$drv")
 	for c in "${configs[@]}"; do
+		# a driver whose hack file is a test is not in the firmware library
+		case $c:$hack in am1808:tests/*) continue ;; esac
 		h=$(recorded_hash "$c" "$drv")
 		if [ "$h" = "$src" ]; then cells+="$c:ok "
 		elif [ "$h" = "-" ]; then cells+="$c:MISSING "; bad=1
@@ -83,7 +85,7 @@ mapfile -t tests < <(expand tests)
 total_reused=0; total_glue=0; rows=(); module_glue=()
 for m in "${modules[@]}"; do
 	if [ "$m" = custom ]; then
-		r_files=("${reused[@]}"); g_files=("${glue[@]}")
+		r_files=("${reused[@]}"); g_files=("${glue[@]}"); hack=${glue[0]:-}
 		drivers=(); for f in "${reused[@]}"; do case $f in *.c) drivers+=("$f") ;; esac; done
 	else
 		hack=${m% *}; drv=${m#* }
@@ -95,7 +97,7 @@ for m in "${modules[@]}"; do
 	fi
 	modified=0; src_h=""; proof=""
 	for d in "${drivers[@]}"; do
-		prove_unmodified "$d"
+		prove_unmodified "$d" "${hack:-}"
 		[ "$P_MOD" = 0 ] || modified="n/a"
 		src_h+="$(hash_of "$d" | cut -c1-16) "; proof+="$P_CELLS; "
 	done
