@@ -57,6 +57,7 @@ $(2)/obj/%.o: %.c
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(1) $$<
 	$(Q)$$(call compile,$(1),$$<) -MMD -MP -c $$< -o $$@
+	$$(call record_driver_hashes,$$@,$$<)
 endef
 
 # Quiet build lines ("CC host path"); make V=1 shows the full commands.

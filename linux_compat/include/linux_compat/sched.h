@@ -33,9 +33,10 @@ struct lx_waitlist {
 /* The calling task's ID (TSK_NONE in non-task context). */
 ID lx_current_tskid(void);
 
-/* Wakes task tskid from any context (deferred to the next tick with the CPU/interrupts locked). */
+/* Wakes task tskid from any context (with the CPU/interrupts locked: deferred
+ * until linux_compat unmasks them, or the next tick for a raw CPU lock). */
 void lx_wake_task(ID tskid);
-/* Delivers wakeups deferred while locked (called by the tick ISR). */
+/* Delivers wakeups deferred while locked (the tick ISR; the irqrestore paths). */
 void lx_deferred_wakeups_run(void);
 /* Forgets deferred wakeups and bottom-half state (boot). */
 void lx_sched_reset(void);
