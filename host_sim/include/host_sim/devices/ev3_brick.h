@@ -8,7 +8,7 @@
  *   struct hs_board_cfg board = { .devices = ev3_board_devices };
  *   struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 7 };
  *   hs_sim_boot(&scn);
- *   ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);              port A
+ *   ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);              port A
  *   ev3_attach_uart_sensor(0, UART_SENSOR_TYPE_GYRO, NULL);  port 1
  */
 #ifndef HOST_SIM_DEVICES_EV3_BRICK_H
@@ -26,10 +26,15 @@
  * UARTs, the ports, the brick buttons and LEDs of ev3_ui.h), NULL-terminated,
  * for hs_board_cfg.devices. */
 extern const struct hs_device *const ev3_board_devices[];
+/* The ports' model (input pins, sensor links, motors, faults), one of them. */
+extern const struct hs_device ev3_ports_device;
 
-/* Battery voltage in mV (default 9000); motors and the ADC follow it. */
+/* Battery voltage in mV (default EV3_BATTERY_MV_DEFAULT); motors and the ADC follow it. */
+#define EV3_BATTERY_MV_DEFAULT	9000U
 uint32_t ev3_battery_mv(void);
 void ev3_set_battery_mv(uint32_t mv);
+/* Records the voltage without telling anyone (the ports model does the telling). */
+void ev3_battery_store(uint32_t mv);
 
 /* ---- input ports (0..3 = ports 1..4) ---- */
 
@@ -73,10 +78,10 @@ uint32_t ev3_input_pin_mv(unsigned port, unsigned pin);
 /* ---- output ports (0..3 = A..D) ---- */
 
 /* Plugs a motor into an output port; E_ID, E_PAR, E_OBJ as above. */
-ER ev3_attach_motor(unsigned port, enum ev3_motor_kind kind, const struct ev3_motor_options *opt);
+ER ev3_attach_motor(unsigned port, enum hs_motor_kind kind, const struct hs_motor_options *opt);
 ER ev3_detach_output(unsigned port);
 /* The motor on the port, or NULL. */
-struct ev3_motor *ev3_output_motor(unsigned port);
+struct hs_motor *ev3_output_motor(unsigned port);
 /* Voltage of output pin 5 in mV now. */
 uint32_t ev3_output_pin5_mv(unsigned port);
 

@@ -1,0 +1,805 @@
+/*
+ * space.c — the simulated register space: regions, declaration tables,
+ * CPU-visible windows, and the one access path every register access takes
+ * (accessors through rtos_stub's MMIO handler, trapped pointer accesses
+ * through trap.c).  Host only.
+ */
+#define _GNU_SOURCE
+#include <errno.h>
+#include <inttypes.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include "rtos_host.h"
+#include "host_sim/regs.h"
+#include "space_internal.h"
+#include "core_parts.h"
+
+#define HS_PAGE          4096U
+#define HS_SPACE_PAGES   512U      /* 2 MiB of window space */
+#define HS_MAX_REGIONS   64U
+#define HS_NO_ELEM       (-1)
+
+/* One register, or one element of a register array: what the access path
+ * reads (its name, for reports and the log, is in the region's names). */
+struct hs_elem {
+	uint32_t *value;        /* stored value: own slot or the alias target's */
+	hs_before_read_fn before_read;
+	hs_after_write_fn after_write;
+	uint32_t mask;          /* effective mask (width bits if declared 0) */
+	uint32_t offset;
+	uint16_t index;
+	uint8_t width;          /* natural width */
+	uint8_t widths;         /* allowed widths (HS_Wn bits) */
+	uint8_t ok_widths;      /* widths an access may use without a report (none if reserved) */
+	uint8_t kind;           /* enum hs_reg_kind */
+	const struct hs_reg *reg;
+};
+
+#define HS_ELEM_NAME 32U        /* "CMR[3]" */
+
+struct hs_region {
+	struct hs_region_cfg cfg;
+	unsigned first_page;    /* in the window space */
+	const bool *power_live;   /* the power module is on (HS_NO_PSC: always) */
+	struct hs_elem *elems;
+	char (*names)[HS_ELEM_NAME];   /* one per element */
+	unsigned nelems;
+	uint32_t *values;       /* one per element */
+	/* Byte offset -> element, for offsets below map_len (the end of the last
+	 * register: beyond it there is none, and the maps stay small and cached). */
+	uint32_t map_len;
+	int16_t *rd_map;        /* element readable there, or HS_NO_ELEM */
+	int16_t *wr_map;        /* element writable there */
+	int16_t *any_map;       /* element starting there in either direction */
+	bool logged;            /* named by the register-log filter */
+};
+
+static struct {
+	uint8_t *base;                              /* window space (PROT_NONE) */
+	struct hs_region *page_owner[HS_SPACE_PAGES];
+	struct hs_region *regions[HS_MAX_REGIONS];
+	unsigned nregions;
+	struct hs_region *last;                     /* last region hit: drivers mostly stay in one */
+	unsigned next_page;
+	uint32_t access_ns;
+	char *log_filter;
+	FILE *log_out;
+	bool logging;
+} space;
+
+static const struct hs_power_controller *power_ctl;
+
+void hs_set_power_controller(const struct hs_power_controller *pc)
+{
+	power_ctl = pc;
+}
+
+/* Where a region's power module keeps its live flag. */
+static const bool *power_live_flag(unsigned power)
+{
+	static const bool always = true, never = false;
+
+	if (power == HS_NO_PSC)
+		return &always;
+	return power_ctl != NULL ? power_ctl->live_flag(power) : &never;
+}
+
+static const char *const kind_names[] = {
+	[HS_RSVD] = "reserved", [HS_RW] = "read-write", [HS_RO] = "read-only",
+	[HS_WO] = "write-only", [HS_W1S] = "write-1-to-set", [HS_W1C] = "write-1-to-clear",
+	[HS_COR] = "clear-on-read",
+};
+
+/* Bit for an access width (1, 2, 4 -> HS_W8, HS_W16, HS_W32); 0 for others. */
+static unsigned width_bit(unsigned width)
+{
+	return width == 1U ? HS_W8 : width == 2U ? HS_W16 : width == 4U ? HS_W32 : 0U;
+}
+
+/* All-ones mask of width bytes. */
+static uint32_t width_mask(unsigned width)
+{
+	return width >= 4U ? 0xFFFFFFFFU : (1U << (8U * width)) - 1U;
+}
+
+static bool kind_readable(enum hs_reg_kind k)
+{
+	return k != HS_WO;
+}
+
+static bool kind_writable(enum hs_reg_kind k)
+{
+	return k != HS_RO && k != HS_COR;
+}
+
+/* Reserves the window space. */
+int hs_space_init(uint32_t access_ns)
+{
+	void *p;
+
+	if (space.base)
+		return 0;
+	p = mmap(NULL, (size_t)HS_SPACE_PAGES * HS_PAGE, PROT_NONE,
+		 MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+	if (p == MAP_FAILED)
+		return -1;
+	space.base = p;
+	space.next_page = 0;
+	space.nregions = 0;
+	space.access_ns = access_ns;
+	memset(space.page_owner, 0, sizeof(space.page_owner));
+	return 0;
+}
+
+/* Frees one region's tables. */
+static void region_free(struct hs_region *r)
+{
+	free(r->elems);
+	free(r->names);
+	free(r->values);
+	free(r->rd_map);
+	free(r->wr_map);
+	free(r->any_map);
+	free(r);
+}
+
+/* Frees every region and the window space. */
+void hs_space_fini(void)
+{
+	for (unsigned i = 0; i < space.nregions; i++)
+		region_free(space.regions[i]);
+	space.nregions = 0;
+	space.last = NULL;
+	if (space.base)
+		munmap(space.base, (size_t)HS_SPACE_PAGES * HS_PAGE);
+	space.base = NULL;
+	memset(space.page_owner, 0, sizeof(space.page_owner));
+	hs_space_set_reglog(NULL, NULL);
+}
+
+bool hs_space_claims(uintptr_t addr)
+{
+	uintptr_t b = (uintptr_t)space.base;
+
+	return space.base && addr >= b && addr - b < (uintptr_t)HS_SPACE_PAGES * HS_PAGE;
+}
+
+void hs_space_bounds(uintptr_t *start, uintptr_t *len)
+{
+	*start = (uintptr_t)space.base;
+	*len = space.base ? (uintptr_t)HS_SPACE_PAGES * HS_PAGE : 0;
+}
+
+uintptr_t hs_space_to_phys(uintptr_t addr)
+{
+	uintptr_t rel;
+	struct hs_region *r;
+
+	if (!hs_space_claims(addr))
+		return 0;
+	rel = addr - (uintptr_t)space.base;
+	r = space.page_owner[rel / HS_PAGE];
+	if (!r)
+		return 0;
+	return r->cfg.phys + (rel - (uintptr_t)r->first_page * HS_PAGE);
+}
+
+/* Region containing physical address phys, or NULL. */
+static struct hs_region *region_at(uintptr_t phys)
+{
+	struct hs_region *last = space.last;
+
+	if (last && phys >= last->cfg.phys && phys - last->cfg.phys < last->cfg.size)
+		return last;
+	for (unsigned i = 0; i < space.nregions; i++) {
+		struct hs_region *r = space.regions[i];
+
+		if (phys >= r->cfg.phys && phys - r->cfg.phys < r->cfg.size) {
+			space.last = r;
+			return r;
+		}
+	}
+	return NULL;
+}
+
+struct hs_region *hs_region_find(uintptr_t phys)
+{
+	return region_at(phys);
+}
+
+struct hs_region *hs_region_by_name(const char *name)
+{
+	for (unsigned i = 0; i < space.nregions; i++)
+		if (strcmp(space.regions[i]->cfg.name, name) == 0)
+			return space.regions[i];
+	return NULL;
+}
+
+const char *hs_region_name(const struct hs_region *r)
+{
+	return r ? r->cfg.name : "(none)";
+}
+
+uintptr_t hs_region_phys(const struct hs_region *r)
+{
+	return r ? r->cfg.phys : 0;
+}
+
+void *hs_region_ctx(const struct hs_region *r)
+{
+	return r ? r->cfg.ctx : NULL;
+}
+
+volatile void *hs_region_window(uintptr_t phys)
+{
+	struct hs_region *r = region_at(phys);
+
+	if (!r)
+		return NULL;
+	return space.base + (size_t)r->first_page * HS_PAGE + (phys - r->cfg.phys);
+}
+
+/* Declaration check failure: reports and returns false. */
+static bool decl_bug(const struct hs_region_cfg *cfg, const struct hs_reg *reg, const char *why)
+{
+	rtos_host_bug("host_sim", "region %s: register %s: %s", cfg->name ? cfg->name : "(unnamed)",
+		      reg && reg->name ? reg->name : "(table)", why);
+	return false;
+}
+
+/* Marks the bytes of element e in map; false if another element is there. */
+static bool map_elem(int16_t *map, const struct hs_region *r, const struct hs_elem *e, int16_t idx)
+{
+	for (unsigned b = 0; b < e->width; b++) {
+		uint32_t off = e->offset + b;
+		/* Only the start byte maps to the element; the other bytes are claimed
+		 * with a marker so overlaps are found and mid-register accesses rejected. */
+		int16_t want = b == 0 ? idx : (int16_t)(-2 - idx);
+
+		if (map[off] != HS_NO_ELEM)
+			return false;
+		map[off] = want;
+	}
+	(void)r;
+	return true;
+}
+
+/* Builds the flattened element table of a region; false after a bug report. */
+static bool region_build(struct hs_region *r)
+{
+	const struct hs_region_cfg *cfg = &r->cfg;
+	unsigned n = 0;
+
+	for (unsigned i = 0; i < cfg->nregs; i++)
+		n += cfg->regs[i].count ? cfg->regs[i].count : 1U;
+	if (n > 30000U)
+		return decl_bug(cfg, NULL, "too many registers");
+	r->map_len = 0;
+	for (unsigned i = 0; i < cfg->nregs; i++) {
+		const struct hs_reg *reg = &cfg->regs[i];
+		uint64_t width = reg->width ? reg->width : 4U;
+		uint64_t count = reg->count ? reg->count : 1U;
+		uint64_t end = (uint64_t)reg->offset + (count - 1U) * (reg->stride ? reg->stride : width) + width;
+
+		if (end > r->map_len)
+			r->map_len = end < cfg->size ? (uint32_t)end : cfg->size;
+	}
+	r->elems = calloc(n ? n : 1, sizeof(*r->elems));
+	r->names = calloc(n ? n : 1, sizeof(*r->names));
+	r->values = calloc(n ? n : 1, sizeof(*r->values));
+	r->rd_map = malloc((r->map_len ? r->map_len : 1U) * sizeof(int16_t));
+	r->wr_map = malloc((r->map_len ? r->map_len : 1U) * sizeof(int16_t));
+	r->any_map = malloc((r->map_len ? r->map_len : 1U) * sizeof(int16_t));
+	if (!r->elems || !r->names || !r->values || !r->rd_map || !r->wr_map || !r->any_map)
+		return decl_bug(cfg, NULL, "out of memory");
+	for (uint32_t i = 0; i < r->map_len; i++)
+		r->rd_map[i] = r->wr_map[i] = HS_NO_ELEM;
+
+	n = 0;
+	for (unsigned i = 0; i < cfg->nregs; i++) {
+		const struct hs_reg *reg = &cfg->regs[i];
+		unsigned width = reg->width ? reg->width : 4U;
+		unsigned count = reg->count ? reg->count : 1U;
+		unsigned stride = reg->stride ? reg->stride : width;
+
+		if (!reg->name)
+			return decl_bug(cfg, reg, "no name");
+		if (!width_bit(width))
+			return decl_bug(cfg, reg, "width must be 1, 2 or 4");
+		if (reg->offset % width)
+			return decl_bug(cfg, reg, "offset not aligned to its width");
+		if ((reg->widths & ~(HS_W8 | HS_W16 | HS_W32)) || (reg->widths & ~((width_bit(width) << 1) - 1U)))
+			return decl_bug(cfg, reg, "allowed widths wider than the register");
+		if ((unsigned)reg->kind > HS_COR)
+			return decl_bug(cfg, reg, "unknown kind");
+		if ((uint64_t)reg->offset + (uint64_t)(count - 1U) * stride + width > cfg->size)
+			return decl_bug(cfg, reg, "beyond the region's size");
+		if (stride < width)
+			return decl_bug(cfg, reg, "stride smaller than width");
+		for (unsigned k = 0; k < count; k++, n++) {
+			struct hs_elem *e = &r->elems[n];
+
+			e->reg = reg;
+			e->before_read = reg->before_read;
+			e->after_write = reg->after_write;
+			e->kind = (uint8_t)reg->kind;
+			e->index = (uint16_t)k;
+			e->width = (uint8_t)width;
+			e->widths = (uint8_t)(reg->widths | width_bit(width));
+			e->ok_widths = reg->kind == HS_RSVD ? 0U : e->widths;
+			e->offset = reg->offset + k * stride;
+			e->mask = (reg->mask ? reg->mask : 0xFFFFFFFFU) & width_mask(width);
+			e->value = &r->values[n];
+			r->values[n] = reg->reset & width_mask(width);
+			if (reg->count)
+				snprintf(r->names[n], sizeof(r->names[n]), "%s[%u]", reg->name, k);
+			else
+				snprintf(r->names[n], sizeof(r->names[n]), "%s", reg->name);
+			if (kind_readable(reg->kind) && !map_elem(r->rd_map, r, e, (int16_t)n))
+				return decl_bug(cfg, reg, "overlaps another readable register");
+			if (kind_writable(reg->kind) && !map_elem(r->wr_map, r, e, (int16_t)n))
+				return decl_bug(cfg, reg, "overlaps another writable register");
+		}
+	}
+	r->nelems = n;
+
+	/* Resolve aliases: the element shares the stored value of the target's element. */
+	for (unsigned i = 0; i < r->nelems; i++) {
+		struct hs_elem *e = &r->elems[i];
+		const struct hs_elem *t = NULL;
+		unsigned tcount = 0;
+
+		if (!e->reg->alias)
+			continue;
+		for (unsigned j = 0; j < r->nelems; j++) {
+			if (strcmp(r->elems[j].reg->name, e->reg->alias) == 0 && !r->elems[j].reg->alias) {
+				if (!t || r->elems[j].index == e->index)
+					t = &r->elems[j];
+				tcount = r->elems[j].reg->count ? r->elems[j].reg->count : 1U;
+			}
+		}
+		if (!t)
+			return decl_bug(cfg, e->reg, "alias names no (non-alias) register of the region");
+		if (tcount != 1U && t->index != e->index)
+			return decl_bug(cfg, e->reg, "alias has a different element count");
+		e->value = t->value;
+	}
+	for (uint32_t off = 0; off < r->map_len; off++)
+		r->any_map[off] = r->rd_map[off] >= 0 ? r->rd_map[off] : r->wr_map[off] >= 0 ? r->wr_map[off] : HS_NO_ELEM;
+	return true;
+}
+
+struct hs_region *hs_region_add(const struct hs_region_cfg *cfg)
+{
+	struct hs_region *r;
+	unsigned pages;
+
+	if (!space.base) {
+		rtos_host_bug("host_sim", "hs_region_add(%s) without a board (call hs_board_init first)",
+			      cfg && cfg->name ? cfg->name : "?");
+		return NULL;
+	}
+	if (!cfg || !cfg->name || !cfg->regs || !cfg->size || cfg->size % HS_PAGE || cfg->phys % HS_PAGE) {
+		rtos_host_bug("host_sim", "hs_region_add: bad configuration %s (name, table, page-aligned base and size required)",
+			      cfg && cfg->name ? cfg->name : "(unnamed)");
+		return NULL;
+	}
+	for (unsigned i = 0; i < space.nregions; i++) {
+		const struct hs_region *o = space.regions[i];
+
+		if (cfg->phys < o->cfg.phys + o->cfg.size && o->cfg.phys < cfg->phys + cfg->size) {
+			rtos_host_bug("host_sim", "region %s at 0x%08" PRIxPTR " overlaps region %s",
+				      cfg->name, cfg->phys, o->cfg.name);
+			return NULL;
+		}
+		if (strcmp(o->cfg.name, cfg->name) == 0) {
+			rtos_host_bug("host_sim", "region name %s used twice", cfg->name);
+			return NULL;
+		}
+	}
+	pages = cfg->size / HS_PAGE;
+	if (space.nregions == HS_MAX_REGIONS || space.next_page + pages > HS_SPACE_PAGES) {
+		rtos_host_bug("host_sim", "region %s: no room left in the window space", cfg->name);
+		return NULL;
+	}
+	r = calloc(1, sizeof(*r));
+	if (!r) {
+		rtos_host_bug("host_sim", "region %s: out of memory", cfg->name);
+		return NULL;
+	}
+	r->cfg = *cfg;
+	r->power_live = power_live_flag(cfg->power);
+	if (!region_build(r)) {
+		region_free(r);
+		return NULL;
+	}
+	r->first_page = space.next_page;
+	for (unsigned p = 0; p < pages; p++)
+		space.page_owner[r->first_page + p] = r;
+	space.next_page += pages;
+	space.regions[space.nregions++] = r;
+	hs_space_set_reglog(space.log_filter, space.log_out);
+	return r;
+}
+
+/* Name of element e of region r ("CMR[3]"). */
+static const char *elem_name(const struct hs_region *r, const struct hs_elem *e)
+{
+	return r->names[e - r->elems];
+}
+
+/* Element starting at offset for reading (or writing); NULL if none. */
+static inline struct hs_elem *elem_at(const struct hs_region *r, uint32_t offset, bool write)
+{
+	int16_t i;
+
+	if (offset >= r->map_len)
+		return NULL;
+	i = write ? r->wr_map[offset] : r->rd_map[offset];
+	return i >= 0 ? &r->elems[i] : NULL;
+}
+
+/* Element at offset in either direction (the readable one first), for the
+ * model-side accessors; NULL after a bug report. */
+static inline struct hs_elem *elem_any(const struct hs_region *r, uint32_t offset, const char *what)
+{
+	int16_t i;
+
+	if (r && offset < r->map_len && (i = r->any_map[offset]) >= 0)
+		return &r->elems[i];
+	if (!r)
+		rtos_host_bug("host_sim", "%s: NULL region", what);
+	else
+		rtos_host_bug("host_sim", "%s: no register at %s+0x%03" PRIx32, what, r->cfg.name, offset);
+	return NULL;
+}
+
+uint32_t hs_reg_get(const struct hs_region *r, uint32_t offset)
+{
+	struct hs_elem *e = elem_any(r, offset, "hs_reg_get");
+
+	return e ? *e->value : 0U;
+}
+
+void hs_reg_set(struct hs_region *r, uint32_t offset, uint32_t value)
+{
+	struct hs_elem *e = elem_any(r, offset, "hs_reg_set");
+
+	if (e)
+		*e->value = value & width_mask(e->width);
+}
+
+void hs_reg_update(struct hs_region *r, uint32_t offset, uint32_t clear, uint32_t set)
+{
+	struct hs_elem *e = elem_any(r, offset, "hs_reg_update");
+
+	if (e)
+		*e->value = ((*e->value & ~clear) | set) & width_mask(e->width);
+}
+
+uint32_t *hs_reg_value_ptr(struct hs_region *r, uint32_t offset)
+{
+	struct hs_elem *e = elem_any(r, offset, "hs_reg_value_ptr");
+
+	return e ? e->value : NULL;
+}
+
+void hs_region_reset(struct hs_region *r)
+{
+	for (unsigned i = 0; r && i < r->nelems; i++)
+		r->values[i] = r->elems[i].reg->reset & width_mask(r->elems[i].width);
+}
+
+/* ---- The access path ---- */
+
+/* Writes one register-log line if the region is logged. */
+static void reglog(const struct hs_region *r, const struct hs_elem *e, uintptr_t phys,
+		   bool write, unsigned width, uint32_t value)
+{
+	char line[160];
+
+	if (!space.logging || !r->logged)
+		return;
+	snprintf(line, sizeof(line), "%c%u %s.%s @0x%08" PRIxPTR " = 0x%0*" PRIx32,
+		 write ? 'W' : 'R', width, r->cfg.name, e ? elem_name(r, e) : "?", phys,
+		 (int)(2U * width), value);
+	if (space.log_out)
+		fprintf(space.log_out, "%" PRIu64 " %s\n", rtos_host_now(), line);
+	else
+		rtos_host_trace("mmio", "%s", line);
+}
+
+/* The access path compares an element's allowed widths with the access width itself. */
+_Static_assert(HS_W8 == 1U && HS_W16 == 2U && HS_W32 == 4U, "HS_Wn bits are the widths in bytes");
+
+/* Reports a CPU access to no region, or to one whose PSC module is not enabled. */
+static void region_bug(const struct hs_region *r, uintptr_t phys, unsigned width, bool write, uint32_t value)
+{
+	char val[32] = "";
+
+	if (write)
+		snprintf(val, sizeof(val), " of 0x%0*" PRIx32, (int)(2U * width), value);
+	if (!r) {
+		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": no modelled device there",
+			      write ? "write" : "read", width, val, phys);
+		return;
+	}
+	rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR " (%s+0x%03" PRIxPTR ")"
+		      ": %s is not powered (PSC%u module %u is %s, not Enable)",
+		      write ? "write" : "read", width, val, phys,
+		      r->cfg.name, phys - r->cfg.phys, r->cfg.name,
+		      (r->cfg.power >> 8) - 1U, r->cfg.power & 0xFFU,
+		      power_ctl != NULL ? power_ctl->state_name(r->cfg.power) : "absent");
+}
+
+/* Reports a CPU access at offset off of r that found no usable element e
+ * (none in that direction, a width it does not allow, or reserved). */
+static void elem_bug(const struct hs_region *r, const struct hs_elem *e, uint32_t off, unsigned width,
+		     bool write, uint32_t value)
+{
+	uintptr_t phys = r->cfg.phys + off;
+	const struct hs_elem *other;
+	char val[32] = "";
+
+	if (write)
+		snprintf(val, sizeof(val), " of 0x%0*" PRIx32, (int)(2U * width), value);
+	if (!e) {
+		other = elem_at(r, off, !write);
+		if (other)
+			rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is %s",
+				      write ? "write" : "read", width, val, phys, r->cfg.name, elem_name(r, other),
+				      kind_names[other->kind]);
+		else
+			rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR " (%s+0x%03" PRIx32
+				      "): no register there", write ? "write" : "read", width, val, phys,
+				      r->cfg.name, off);
+	} else if (!(e->widths & width)) {
+		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is a %u-byte register",
+			      write ? "write" : "read", width, val, phys, r->cfg.name, elem_name(r, e), e->width);
+	} else {
+		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is reserved",
+			      write ? "write" : "read", width, val, phys, r->cfg.name, elem_name(r, e));
+	}
+}
+
+/* Spends the per-access CPU time (events and interrupts may run meanwhile). */
+static inline void access_cost(void)
+{
+	if (space.access_ns)
+		rtos_host_consume(space.access_ns);
+}
+
+/* One CPU read of width bytes (1, 2 or 4) at offset off of r: checked, hooked,
+ * logged, and it costs the access time; 0 after a bug report. */
+static inline __attribute__((always_inline)) uint32_t region_read(struct hs_region *r, uint32_t off, unsigned width)
+{
+	struct hs_elem *e;
+	uint32_t v = 0;
+
+	if (!*r->power_live) {
+		region_bug(r, r->cfg.phys + off, width, false, 0);
+	} else if ((e = elem_at(r, off, false)) == NULL || !(e->ok_widths & width)) {
+		elem_bug(r, e, off, width, false, 0);
+	} else {
+		if (e->before_read) {
+			struct hs_access a = { e->reg, e->index, e->offset, width, false };
+
+			e->before_read(r->cfg.ctx, &a, e->value);
+		}
+		v = *e->value & width_mask(width);
+		if (e->kind == HS_COR)
+			*e->value &= ~e->mask;
+		if (r->logged)
+			reglog(r, e, r->cfg.phys + off, false, width, v);
+	}
+	access_cost();
+	return v;
+}
+
+/* One CPU write of width bytes (1, 2 or 4; value already masked to it) at
+ * offset off of r: checked, applied with the register's kind, logged, hooked,
+ * and it costs the access time. */
+static inline __attribute__((always_inline)) void region_write(struct hs_region *r, uint32_t off, unsigned width,
+								uint32_t value)
+{
+	struct hs_elem *e;
+
+	if (!*r->power_live) {
+		region_bug(r, r->cfg.phys + off, width, true, value);
+	} else if ((e = elem_at(r, off, true)) == NULL || !(e->ok_widths & width)) {
+		elem_bug(r, e, off, width, true, value);
+	} else {
+		uint32_t old = *e->value;
+		uint32_t bits = e->mask & width_mask(width);
+		uint32_t nv;
+
+		switch (e->kind) {
+		case HS_W1S:
+			nv = old | (value & bits);
+			break;
+		case HS_W1C:
+			nv = old & ~(value & bits);
+			break;
+		default:        /* HS_RW, HS_WO */
+			nv = (old & ~bits) | (value & bits);
+			break;
+		}
+		*e->value = nv;
+		if (r->logged)
+			reglog(r, e, r->cfg.phys + off, true, width, value);
+		if (e->after_write) {
+			struct hs_access a = { e->reg, e->index, e->offset, width, true };
+
+			e->after_write(r->cfg.ctx, &a, old, nv, value);
+		}
+	}
+	access_cost();
+}
+
+uint32_t hs_cpu_read(uintptr_t phys, unsigned width)
+{
+	struct hs_region *r;
+
+	if (!width_bit(width)) {
+		rtos_host_bug("host_sim", "read of %u bytes at 0x%08" PRIxPTR ": unsupported width", width, phys);
+		return 0;
+	}
+	r = region_at(phys);
+	if (r)
+		return region_read(r, (uint32_t)(phys - r->cfg.phys), width);
+	region_bug(NULL, phys, width, false, 0);
+	access_cost();
+	return 0;
+}
+
+void hs_cpu_write(uintptr_t phys, unsigned width, uint32_t value)
+{
+	struct hs_region *r;
+
+	if (!width_bit(width)) {
+		rtos_host_bug("host_sim", "write of %u bytes at 0x%08" PRIxPTR ": unsupported width", width, phys);
+		return;
+	}
+	value &= width_mask(width);
+	r = region_at(phys);
+	if (r) {
+		region_write(r, (uint32_t)(phys - r->cfg.phys), width, value);
+		return;
+	}
+	region_bug(NULL, phys, width, true, value);
+	access_cost();
+}
+
+void hs_access_stall_until(uint64_t t_ns)
+{
+	uint64_t now = rtos_host_now();
+
+	if (t_ns > now)
+		rtos_host_consume(t_ns - now);
+}
+
+/* ---- rtos_stub's MMIO handler ---- */
+
+static bool mmio_claims(const volatile void *addr, void *ctx)
+{
+	(void)ctx;
+	return hs_space_claims((uintptr_t)addr);
+}
+
+/* The region whose window holds addr, and addr's offset in it; NULL outside every region. */
+static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
+{
+	uintptr_t rel = addr - (uintptr_t)space.base;
+	struct hs_region *r;
+
+	if (rel >= (uintptr_t)HS_SPACE_PAGES * HS_PAGE || (r = space.page_owner[rel / HS_PAGE]) == NULL)
+		return NULL;
+	*off = (uint32_t)(rel - (uintptr_t)r->first_page * HS_PAGE);
+	return r;
+}
+
+static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
+{
+	uint32_t off;
+	struct hs_region *r = window_region((uintptr_t)addr, &off);
+
+	(void)ctx;
+	if (!r) {
+		rtos_host_bug("host_sim", "read of %u bytes at window address %p: outside every region",
+			      width, (const void *)addr);
+		return 0;
+	}
+	if (!width_bit(width)) {
+		rtos_host_bug("host_sim", "read of %u bytes at 0x%08" PRIxPTR ": unsupported width", width,
+			      r->cfg.phys + off);
+		return 0;
+	}
+	return region_read(r, off, width);
+}
+
+static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+{
+	uint32_t off;
+	struct hs_region *r = window_region((uintptr_t)addr, &off);
+
+	(void)ctx;
+	if (!r) {
+		rtos_host_bug("host_sim", "write of %u bytes (0x%" PRIx32 ") at window address %p: outside every region",
+			      width, data, (void *)addr);
+		return;
+	}
+	if (!width_bit(width)) {
+		rtos_host_bug("host_sim", "write of %u bytes at 0x%08" PRIxPTR ": unsupported width", width,
+			      r->cfg.phys + off);
+		return;
+	}
+	region_write(r, off, width, data & width_mask(width));
+}
+
+static void *mmio_map(uintptr_t phys, SIZE size, void *ctx)
+{
+	struct hs_region *r = region_at(phys);
+
+	(void)ctx;
+	if (!r || size == 0 || size > r->cfg.size - (phys - r->cfg.phys)) {
+		rtos_host_trace("host_sim", "map 0x%08" PRIxPTR "+0x%zx: no modelled region covers it", phys, (size_t)size);
+		return NULL;
+	}
+	return (void *)(space.base + (size_t)r->first_page * HS_PAGE + (phys - r->cfg.phys));
+}
+
+static const struct rtos_host_mmio_ops space_mmio_ops = {
+	.claims = mmio_claims,
+	.read = mmio_read,
+	.write = mmio_write,
+	.map = mmio_map,
+	.ctx = NULL,
+};
+
+void hs_space_install_handler(void)
+{
+	rtos_host_set_mmio_handler(&space_mmio_ops);
+	rtos_host_set_mmio_window((uintptr_t)space.base, space.base ? (uintptr_t)HS_SPACE_PAGES * HS_PAGE : 0);
+}
+
+void hs_space_remove_handler(void)
+{
+	rtos_host_set_mmio_handler(NULL);
+}
+
+/* true if name is in the comma-separated filter ("*" matches all). */
+static bool filter_has(const char *filter, const char *name)
+{
+	size_t n = strlen(name);
+
+	if (strcmp(filter, "*") == 0)
+		return true;
+	for (const char *p = filter; *p;) {
+		const char *end = strchr(p, ',');
+		size_t len = end ? (size_t)(end - p) : strlen(p);
+
+		if (len == n && strncmp(p, name, n) == 0)
+			return true;
+		if (!end)
+			break;
+		p = end + 1;
+	}
+	return false;
+}
+
+void hs_space_set_reglog(const char *filter, FILE *out)
+{
+	if (filter != space.log_filter) {
+		char *copy = filter ? strdup(filter) : NULL;
+
+		free(space.log_filter);
+		space.log_filter = copy;
+	}
+	space.log_out = out;
+	space.logging = space.log_filter != NULL;
+	for (unsigned i = 0; i < space.nregions; i++)
+		space.regions[i]->logged = space.logging && filter_has(space.log_filter, space.regions[i]->cfg.name);
+}

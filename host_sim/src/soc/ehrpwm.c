@@ -1,0 +1,477 @@
+/*
+ * ehrpwm.c — eHRPWM1 (AM1808 TRM chapter "eHRPWM"), reduced to what a
+ * motor sees: the fraction of each period an output is low, recomputed
+ * whenever it can change (a register write that acts at once, or a shadow
+ * load at counter zero/period, which is an event at that exact instant).
+ * The counter is computed from the virtual clock.
+ */
+#include <stdlib.h>
+#include "rtos_host.h"
+#include "host_sim/clock.h"
+#include "host_sim/psc.h"
+#include "host_sim/regs.h"
+#include "host_sim/syscfg.h"
+#include "host_sim/trace.h"
+#include "host_sim/devices/pwm.h"
+#include "pwm_outputs.h"
+
+#define PWM_CLOCK_HZ HS_PLL1_SYSCLK2_HZ
+
+/* ---- action-qualifier simulation ---- */
+
+/* Action codes of AQCTL fields: 0 nothing, 1 clear, 2 set, 3 toggle. */
+static bool aq_apply(bool level, unsigned action)
+{
+	switch (action & 3U) {
+	case 1: return false;
+	case 2: return true;
+	case 3: return !level;
+	default: return level;
+	}
+}
+
+struct aq_event {
+	uint32_t pos;               /* TBCLK cycles from the period start */
+	uint8_t prio;               /* higher wins at equal positions (applied last) */
+	uint8_t action;
+};
+
+/* Sorts events by position, then priority (insertion sort: at most 6). */
+static void aq_sort(struct aq_event *ev, unsigned n)
+{
+	for (unsigned i = 1; i < n; i++)
+		for (unsigned j = i; j > 0 && (ev[j - 1].pos > ev[j].pos ||
+			(ev[j - 1].pos == ev[j].pos && ev[j - 1].prio > ev[j].prio)); j--) {
+			struct aq_event t = ev[j];
+
+			ev[j] = ev[j - 1];
+			ev[j - 1] = t;
+		}
+}
+
+/* Low fraction of an output over steady periods, starting from level, and
+ * the level at position pos of a period (for a stopped time base). */
+static double aq_low_fraction(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uint32_t cmpb,
+			      uint32_t aqctl, bool level, uint32_t pos, bool *level_at_pos)
+{
+	struct aq_event ev[6];
+	unsigned n = 0;
+	uint32_t len;
+	uint64_t low = 0;
+
+	/* AQCTL fields: ZRO 1:0, PRD 3:2, CAU 5:4, CAD 7:6, CBU 9:8, CBD 11:10 */
+	if (ctrmode == 0) {                 /* up: 0..PRD */
+		len = prd + 1U;
+		ev[n++] = (struct aq_event){ 0, 0, (uint8_t)(aqctl & 3U) };
+		ev[n++] = (struct aq_event){ prd, 1, (uint8_t)((aqctl >> 2) & 3U) };
+		if (cmpa <= prd)
+			ev[n++] = (struct aq_event){ cmpa, 2, (uint8_t)((aqctl >> 4) & 3U) };
+		if (cmpb <= prd)
+			ev[n++] = (struct aq_event){ cmpb, 3, (uint8_t)((aqctl >> 8) & 3U) };
+	} else if (ctrmode == 1) {          /* down: PRD..0 */
+		len = prd + 1U;
+		ev[n++] = (struct aq_event){ 0, 1, (uint8_t)((aqctl >> 2) & 3U) };
+		ev[n++] = (struct aq_event){ prd, 0, (uint8_t)(aqctl & 3U) };
+		if (cmpa <= prd)
+			ev[n++] = (struct aq_event){ prd - cmpa, 2, (uint8_t)((aqctl >> 6) & 3U) };
+		if (cmpb <= prd)
+			ev[n++] = (struct aq_event){ prd - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U) };
+	} else {                            /* up-down: 0..PRD..0 */
+		len = prd ? 2U * prd : 1U;
+		ev[n++] = (struct aq_event){ 0, 0, (uint8_t)(aqctl & 3U) };
+		ev[n++] = (struct aq_event){ prd, 1, (uint8_t)((aqctl >> 2) & 3U) };
+		if (cmpa < prd) {
+			ev[n++] = (struct aq_event){ cmpa, 2, (uint8_t)((aqctl >> 4) & 3U) };
+			if (cmpa)
+				ev[n++] = (struct aq_event){ len - cmpa, 2, (uint8_t)((aqctl >> 6) & 3U) };
+		}
+		if (cmpb < prd && n < 6) {
+			ev[n++] = (struct aq_event){ cmpb, 3, (uint8_t)((aqctl >> 8) & 3U) };
+			if (cmpb && n < 6)
+				ev[n++] = (struct aq_event){ len - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U) };
+		}
+	}
+	aq_sort(ev, n);
+	/* three periods: the first settles toggles, the last two are measured */
+	for (unsigned period = 0; period < 3; period++) {
+		for (unsigned i = 0; i < n; i++) {
+			uint32_t end = (i + 1 < n) ? ev[i + 1].pos : len;
+
+			level = aq_apply(level, ev[i].action);
+			if (period == 2 && level_at_pos && pos >= ev[i].pos && pos < end)
+				*level_at_pos = level;
+			if (period && !level)
+				low += end - ev[i].pos;
+		}
+	}
+	return (double)low / (2.0 * len);
+}
+
+/* ---- eHRPWM1 ---- */
+
+enum {
+	TBCTL = 0x00, TBSTS = 0x02, TBPHSHR = 0x04, TBPHS = 0x06, TBCNT = 0x08, TBPRD = 0x0A,
+	CMPCTL = 0x0E, CMPAHR = 0x10, CMPA = 0x12, CMPB = 0x14, AQCTLA = 0x16, AQCTLB = 0x18,
+	AQSFRC = 0x1A, AQCSFRC = 0x1C, DBCTL = 0x1E, DBRED = 0x20, DBFED = 0x22, TZSEL = 0x24,
+	TZCTL = 0x28, TZEINT = 0x2A, TZFLG = 0x2C, TZCLR = 0x2E, TZFRC = 0x30, ETSEL = 0x32,
+	ETPS = 0x34, ETFLG = 0x36, ETCLR = 0x38, ETFRC = 0x3A, PCCTL = 0x3C,
+};
+
+struct ehrpwm {
+	struct hs_region *r;
+	uint16_t prd, cmpa, cmpb;   /* active registers (the CPU sees the shadows) */
+	bool prd_pending, cmpa_pending, cmpb_pending;
+	bool running;
+	uint64_t t_ref;             /* counter was cnt_ref at t_ref */
+	uint32_t cnt_ref;
+	bool up;                    /* up-down mode: counting up at t_ref */
+	hs_event_t load_ev;
+	double low[2];              /* outputs A, B */
+	bool level[2];
+	int syscfg_watch;
+};
+
+/* Time-base clock for TBCTL dividers. */
+static uint64_t tbclk_hz(uint32_t tbctl)
+{
+	unsigned hsp = (tbctl >> 7) & 7U, clk = (tbctl >> 10) & 7U;
+
+	return PWM_CLOCK_HZ / ((hsp ? 2U * hsp : 1U) * (1U << clk));
+}
+
+/* TBCLK cycles of one counter period (0 while frozen). */
+static uint32_t tb_period_cycles(const struct ehrpwm *e, uint32_t tbctl)
+{
+	unsigned mode = tbctl & 3U;
+
+	if (mode == 3)
+		return 0;
+	return mode == 2 ? (e->prd ? 2U * e->prd : 1U) : e->prd + 1U;
+}
+
+/* Position in the period (TBCLK cycles from the period start) now. */
+static uint32_t tb_position(const struct ehrpwm *e)
+{
+	uint32_t tbctl = hs_reg_get(e->r, TBCTL);
+	uint32_t len = tb_period_cycles(e, tbctl);
+	uint64_t pos;
+
+	if (!len)
+		return 0;
+	pos = e->cnt_ref;
+	if (e->running)
+		pos += hs_ns_to_cycles(hs_now() - e->t_ref, tbclk_hz(tbctl));
+	return (uint32_t)(pos % len);
+}
+
+/* Counter value at a period position. */
+static uint32_t tb_counter(const struct ehrpwm *e, uint32_t pos)
+{
+	switch (hs_reg_get(e->r, TBCTL) & 3U) {
+	case 1: return e->prd - pos;
+	case 2: return pos <= e->prd ? pos : 2U * e->prd - pos;
+	default: return pos;
+	}
+}
+
+/* Recomputes both outputs; tells the motors if anything changed. */
+static void ehrpwm_update(struct ehrpwm *e)
+{
+	uint32_t tbctl = hs_reg_get(e->r, TBCTL), csfrc = hs_reg_get(e->r, AQCSFRC);
+	uint32_t pos = tb_position(e);
+	static const uint32_t aq[2] = { AQCTLA, AQCTLB };
+
+	for (int o = 0; o < 2; o++) {
+		unsigned force = (csfrc >> (2 * o)) & 3U;
+		double low;
+		bool lvl = e->level[o];
+
+		if (force == 1 || force == 2) {
+			lvl = force == 2;
+			low = lvl ? 0.0 : 1.0;
+		} else if (!e->running) {
+			if ((tbctl & 3U) != 3U)
+				(void)aq_low_fraction(tbctl & 3U, e->prd, e->cmpa, e->cmpb,
+						      hs_reg_get(e->r, aq[o]), lvl, pos, &lvl);
+			low = lvl ? 0.0 : 1.0;
+		} else {
+			low = aq_low_fraction(tbctl & 3U, e->prd, e->cmpa, e->cmpb,
+					      hs_reg_get(e->r, aq[o]), lvl, pos, &lvl);
+		}
+		e->level[o] = lvl;
+		if (low != e->low[o]) {
+			e->low[o] = low;
+			hs_pwm_output_changed(o ? HS_PWM_EHRPWM1_B : HS_PWM_EHRPWM1_A);
+		}
+	}
+}
+
+static void ehrpwm_schedule_load(struct ehrpwm *e);
+
+/* Event: counter at zero or period: shadow loads as CMPCTL/TBCTL say. */
+static void ehrpwm_load(void *arg)
+{
+	struct ehrpwm *e = arg;
+	uint32_t cmpctl = hs_reg_get(e->r, CMPCTL);
+	uint32_t pos = tb_position(e), cnt = tb_counter(e, pos);
+	bool at_zero = cnt == 0, at_prd = cnt == e->prd;
+	unsigned la = cmpctl & 3U, lb = (cmpctl >> 2) & 3U;
+
+	e->load_ev = 0;
+	if (e->prd_pending && at_zero) {
+		e->prd = (uint16_t)hs_reg_get(e->r, TBPRD);
+		e->prd_pending = false;
+	}
+	if (e->cmpa_pending && ((la == 0 && at_zero) || (la == 1 && at_prd) || (la == 2 && (at_zero || at_prd)))) {
+		e->cmpa = (uint16_t)hs_reg_get(e->r, CMPA);
+		e->cmpa_pending = false;
+	}
+	if (e->cmpb_pending && ((lb == 0 && at_zero) || (lb == 1 && at_prd) || (lb == 2 && (at_zero || at_prd)))) {
+		e->cmpb = (uint16_t)hs_reg_get(e->r, CMPB);
+		e->cmpb_pending = false;
+	}
+	hs_reg_update(e->r, CMPCTL, (e->cmpa_pending ? 0U : 1U << 8) | (e->cmpb_pending ? 0U : 1U << 9), 0);
+	ehrpwm_update(e);
+	ehrpwm_schedule_load(e);
+}
+
+/* Schedules the next counter-zero or period instant if a shadow is pending. */
+static void ehrpwm_schedule_load(struct ehrpwm *e)
+{
+	uint32_t tbctl = hs_reg_get(e->r, TBCTL);
+	uint32_t len = tb_period_cycles(e, tbctl), pos, next;
+
+	hs_event_cancel(&e->load_ev);
+	if (!e->running || !len || !(e->prd_pending || e->cmpa_pending || e->cmpb_pending))
+		return;
+	pos = tb_position(e);
+	/* zero and period sit at positions 0 (= len) and PRD in every counting mode */
+	next = pos < e->prd ? e->prd : len;
+	{
+		uint64_t hz = tbclk_hz(tbctl);
+		uint64_t elapsed = e->cnt_ref + hs_ns_to_cycles(hs_now() - e->t_ref, hz);
+
+		e->load_ev = hs_event_at(e->t_ref + hs_cycles_to_ns(elapsed - pos + next - e->cnt_ref, hz),
+					 ehrpwm_load, e);
+	}
+}
+
+/* Re-bases the counter at now and re-evaluates whether the time base runs. */
+static void ehrpwm_rebase(struct ehrpwm *e)
+{
+	uint32_t tbctl = hs_reg_get(e->r, TBCTL);
+	bool run = (tbctl & 3U) != 3U && hs_syscfg_tbclksync();
+
+	e->cnt_ref = tb_position(e);
+	e->t_ref = hs_now();
+	e->running = run;
+	ehrpwm_update(e);
+	ehrpwm_schedule_load(e);
+}
+
+/* Watcher: TBCLKSYNC starts or stops the time base. */
+static void ehrpwm_syscfg_changed(void *ctx, uint32_t offset, uint32_t old, uint32_t now)
+{
+	if (offset == HS_SYSCFG0_CFGCHIP(1) && ((old ^ now) & HS_CFGCHIP1_TBCLKSYNC))
+		ehrpwm_rebase(ctx);
+}
+
+/* TBCNT read: the counter now. */
+static void ehrpwm_read_tbcnt(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	struct ehrpwm *e = ctx;
+
+	*value = tb_counter(e, tb_position(e));
+}
+
+/* TBSTS read: counting direction now. */
+static void ehrpwm_read_tbsts(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	struct ehrpwm *e = ctx;
+	uint32_t tbctl = hs_reg_get(e->r, TBCTL), pos = tb_position(e);
+	bool up = (tbctl & 3U) == 0U || ((tbctl & 3U) == 2U && pos < e->prd);
+
+	*value = (*value & ~1U) | (up ? 1U : 0U);
+}
+
+/* Time-base writes: counter, period (shadowed), software sync. */
+static void ehrpwm_write_tb(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv,
+			   uint32_t written)
+{
+	struct ehrpwm *e = ctx;
+
+	switch (a->offset) {
+	case TBCTL:
+		if (nv & (1U << 6))     /* SWFSYNC: one-shot, reads back 0; loads TBPHS if PHSEN */
+			hs_reg_update(e->r, TBCTL, 1U << 6, 0);
+		if ((nv & (1U << 2)) && (nv & (1U << 6))) {
+			e->cnt_ref = hs_reg_get(e->r, TBPHS);
+			e->t_ref = hs_now();
+		}
+		break;
+	case TBCNT:
+		e->cnt_ref = nv;
+		e->t_ref = hs_now();
+		break;
+	case TBPRD:
+		if (hs_reg_get(e->r, TBCTL) & (1U << 3))
+			e->prd = (uint16_t)nv;
+		else
+			e->prd_pending = true;
+		break;
+	default:
+		break;
+	}
+	ehrpwm_rebase(e);
+}
+
+/* CMPA/CMPB/CMPCTL writes: shadow or immediate. */
+static void ehrpwm_write_cmp(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv,
+			    uint32_t written)
+{
+	struct ehrpwm *e = ctx;
+	uint32_t cmpctl = hs_reg_get(e->r, CMPCTL);
+
+	if (a->offset == CMPA) {
+		if (cmpctl & (1U << 4)) {
+			e->cmpa = (uint16_t)nv;
+		} else {
+			e->cmpa_pending = true;
+			hs_reg_update(e->r, CMPCTL, 0, 1U << 8);
+		}
+	} else if (a->offset == CMPB) {
+		if (cmpctl & (1U << 6)) {
+			e->cmpb = (uint16_t)nv;
+		} else {
+			e->cmpb_pending = true;
+			hs_reg_update(e->r, CMPCTL, 0, 1U << 9);
+		}
+	}
+	ehrpwm_update(e);
+	ehrpwm_schedule_load(e);
+}
+
+/* Action-qualifier writes and software forces. */
+static void ehrpwm_write_aq(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv,
+			   uint32_t written)
+{
+	struct ehrpwm *e = ctx;
+
+	if (a->offset == AQSFRC && (written & ((1U << 2) | (1U << 5)))) {
+		/* one-time software forces: OTSFA (bit 2) applies ACTSFA (1:0), OTSFB (bit 5) ACTSFB (4:3) */
+		if (written & (1U << 2))
+			e->level[0] = aq_apply(e->level[0], written & 3U);
+		if (written & (1U << 5))
+			e->level[1] = aq_apply(e->level[1], (written >> 3) & 3U);
+		hs_reg_update(e->r, AQSFRC, (1U << 2) | (1U << 5), 0);
+	}
+	ehrpwm_update(e);
+}
+
+/* Features the model does not implement: a write other than their reset state is loud. */
+static void ehrpwm_write_unmodelled(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv,
+				   uint32_t written)
+{
+	if (nv != 0 && a->offset != TZCLR && a->offset != ETCLR)
+		rtos_host_bug("host_sim", "EHRPWM1.%s = 0x%04x: dead band, chopper, trip zones and event "
+			      "triggers are not modelled", a->reg->name, (unsigned)nv);
+}
+
+static const struct hs_reg ehrpwm_regs[] = {
+	{ .name = "TBCTL", .offset = TBCTL, .width = 2, .kind = HS_RW, .reset = 0x0083,
+	  .after_write = ehrpwm_write_tb },
+	{ .name = "TBSTS", .offset = TBSTS, .width = 2, .kind = HS_W1C, .reset = 0x0001, .mask = 0x0006,
+	  .before_read = ehrpwm_read_tbsts },
+	{ .name = "TBPHSHR", .offset = TBPHSHR, .width = 2, .kind = HS_RW },
+	{ .name = "TBPHS", .offset = TBPHS, .width = 2, .kind = HS_RW },
+	{ .name = "TBCNT", .offset = TBCNT, .width = 2, .kind = HS_RW,
+	  .before_read = ehrpwm_read_tbcnt, .after_write = ehrpwm_write_tb },
+	{ .name = "TBPRD", .offset = TBPRD, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_tb },
+	{ .name = "CMPCTL", .offset = CMPCTL, .width = 2, .kind = HS_RW, .mask = 0x005F,
+	  .after_write = ehrpwm_write_cmp },
+	{ .name = "CMPAHR", .offset = CMPAHR, .width = 2, .kind = HS_RW },
+	{ .name = "CMPA", .offset = CMPA, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_cmp },
+	{ .name = "CMPB", .offset = CMPB, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_cmp },
+	{ .name = "AQCTLA", .offset = AQCTLA, .width = 2, .kind = HS_RW, .mask = 0x0FFF,
+	  .after_write = ehrpwm_write_aq },
+	{ .name = "AQCTLB", .offset = AQCTLB, .width = 2, .kind = HS_RW, .mask = 0x0FFF,
+	  .after_write = ehrpwm_write_aq },
+	{ .name = "AQSFRC", .offset = AQSFRC, .width = 2, .kind = HS_RW, .mask = 0x00FF,
+	  .after_write = ehrpwm_write_aq },
+	{ .name = "AQCSFRC", .offset = AQCSFRC, .width = 2, .kind = HS_RW, .mask = 0x000F,
+	  .after_write = ehrpwm_write_aq },
+	{ .name = "DBCTL", .offset = DBCTL, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_unmodelled },
+	{ .name = "DBRED", .offset = DBRED, .width = 2, .kind = HS_RW },
+	{ .name = "DBFED", .offset = DBFED, .width = 2, .kind = HS_RW },
+	{ .name = "TZSEL", .offset = TZSEL, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_unmodelled },
+	{ .name = "TZCTL", .offset = TZCTL, .width = 2, .kind = HS_RW },
+	{ .name = "TZEINT", .offset = TZEINT, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_unmodelled },
+	{ .name = "TZFLG", .offset = TZFLG, .width = 2, .kind = HS_RO },
+	{ .name = "TZCLR", .offset = TZCLR, .width = 2, .kind = HS_W1C, .alias = "TZFLG" },
+	{ .name = "TZFRC", .offset = TZFRC, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_unmodelled },
+	{ .name = "ETSEL", .offset = ETSEL, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_unmodelled },
+	{ .name = "ETPS", .offset = ETPS, .width = 2, .kind = HS_RW },
+	{ .name = "ETFLG", .offset = ETFLG, .width = 2, .kind = HS_RO },
+	{ .name = "ETCLR", .offset = ETCLR, .width = 2, .kind = HS_W1C, .alias = "ETFLG" },
+	{ .name = "ETFRC", .offset = ETFRC, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_unmodelled },
+	{ .name = "PCCTL", .offset = PCCTL, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_unmodelled },
+};
+
+/* Low fraction of output channel (0 = A, 1 = B). */
+static double ehrpwm_low_fraction(const void *ctx, unsigned channel)
+{
+	const struct ehrpwm *e = ctx;
+
+	return e->low[channel ? 1 : 0];
+}
+
+/* PWM frequency in Hz of both outputs (0 if stopped). */
+static double ehrpwm_frequency(const void *ctx, unsigned channel)
+{
+	const struct ehrpwm *e = ctx;
+	uint32_t tbctl;
+
+	(void)channel;
+	if (!e->running)
+		return 0;
+	tbctl = hs_reg_get(e->r, TBCTL);
+	return (double)tbclk_hz(tbctl) / tb_period_cycles(e, tbctl);
+}
+
+static const struct hs_pwm_source_ops ehrpwm_ops = { ehrpwm_low_fraction, ehrpwm_frequency };
+
+/* Creates the EHRPWM1 region and state. */
+static ER ehrpwm_create(const struct hs_board_cfg *cfg, void **ctx)
+{
+	struct ehrpwm *e = calloc(1, sizeof(*e));
+
+	if (!e)
+		return E_NOMEM;
+	e->r = hs_region_add(&(struct hs_region_cfg){ .name = "EHRPWM1", .phys = HS_EHRPWM1_BASE,
+		.size = 0x1000, .regs = ehrpwm_regs, .nregs = HS_ARRAY_SIZE(ehrpwm_regs),
+		.power = HS_PSC1_MODULE(HS_LPSC1_EHRPWM), .ctx = e });
+	if (!e->r) {
+		free(e);
+		return E_PAR;
+	}
+	e->low[0] = e->low[1] = 1.0;    /* outputs low after reset */
+	e->syscfg_watch = hs_syscfg_watch(ehrpwm_syscfg_changed, e);
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_A, &ehrpwm_ops, e, 0);
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_B, &ehrpwm_ops, e, 1);
+	*ctx = e;
+	return E_OK;
+}
+
+/* Frees EHRPWM1. */
+static void ehrpwm_destroy(void *ctx)
+{
+	struct ehrpwm *e = ctx;
+
+	hs_event_cancel(&e->load_ev);
+	hs_syscfg_unwatch(e->syscfg_watch);
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_A, NULL, NULL, 0);
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_B, NULL, NULL, 0);
+	free(e);
+}
+
+const struct hs_device hs_ehrpwm1_device = { "EHRPWM1", ehrpwm_create, NULL, ehrpwm_destroy };

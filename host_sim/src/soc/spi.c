@@ -1,0 +1,313 @@
+/*
+ * spi.c — SPI0 master transfers in virtual time (see spi_adc.h for the
+ * behaviour modelled), answered by whatever the board connects as the
+ * slave (hs_spi0_connect; on the EV3 the converter, ev3/adc.c).
+ */
+#include <stdlib.h>
+#include "rtos_host.h"
+#include "host_sim/clock.h"
+#include "host_sim/intc.h"
+#include "host_sim/psc.h"
+#include "host_sim/regs.h"
+#include "host_sim/devices/spi_adc.h"
+
+enum {
+	SPIGCR0 = 0x00, SPIGCR1 = 0x04, SPIINT0 = 0x08, SPILVL = 0x0C, SPIFLG = 0x10,
+	SPIPC0 = 0x14, SPIPC1 = 0x18, SPIPC2 = 0x1C, SPIPC3 = 0x20, SPIPC4 = 0x24, SPIPC5 = 0x28,
+	SPIDAT0 = 0x38, SPIDAT1 = 0x3C, SPIBUF = 0x40, SPIEMU = 0x44, SPIDELAY = 0x48,
+	SPIDEF = 0x4C, SPIFMT0 = 0x50, INTVEC0 = 0x60, INTVEC1 = 0x64,
+};
+
+#define SPI_CLOCK_HZ   HS_PLL0_SYSCLK2_HZ
+#define BUF_RXEMPTY    (1U << 31)
+#define BUF_RXOVR      (1U << 30)
+#define BUF_TXFULL     (1U << 29)
+#define FLG_OVRN       (1U << 6)
+#define FLG_RXINT      (1U << 8)
+#define FLG_TXINT      (1U << 9)
+#define INT0_RXINTENA  (1U << 8)
+#define INT0_OVRNINTENA (1U << 6)
+
+struct spi0 {
+	struct hs_region *r;
+	/* stored values of the registers every frame consults (hs_reg_value_ptr) */
+	uint32_t *gcr0, *gcr1, *int0, *flg, *dat1, *delay, *fmt[4];
+	/* the frame timing of the last format and delay seen (frame_ns depends on nothing else) */
+	bool timing_known;
+	uint32_t timing_fmt, timing_delay;
+	uint64_t timing_ns;
+	unsigned timing_bits;
+	bool busy, tx_full;
+	uint16_t tx_buf;            /* word waiting in the TX buffer */
+	unsigned tx_buf_fmt;
+	uint16_t shift_out;         /* what the slave shifts back in this frame */
+	unsigned shift_len;
+	uint64_t frame_end;
+	hs_event_t frame_ev;
+	uint32_t rx;                /* SPIBUF data and flags */
+	bool irq;
+	struct ev3_spi_stats stats;
+};
+
+static struct spi0 *spi;
+static struct hs_spi_peer slave;   /* what answers the frames (none: the line reads 0) */
+
+void hs_spi0_connect(const struct hs_spi_peer *peer)
+{
+	slave = peer != NULL ? *peer : (struct hs_spi_peer){ 0 };
+}
+
+/* Drives the SPI0 interrupt line from SPIFLG and SPIINT0. */
+static void spi_irq_update(struct spi0 *s)
+{
+	uint32_t flg = *s->flg, ena = *s->int0;
+	bool level = ((flg & FLG_RXINT) && (ena & INT0_RXINTENA)) ||
+		     ((flg & FLG_OVRN) && (ena & INT0_OVRNINTENA));
+
+	if (level != s->irq) {
+		s->irq = level;
+		hs_intc_set_level(EV3_SPI0_INTNO, level);
+	}
+}
+
+/* Frame length in ns for a data format. */
+static uint64_t frame_ns(struct spi0 *s, unsigned fmt, unsigned *bits)
+{
+	uint32_t f = *s->fmt[fmt];
+	uint32_t delay = *s->delay;
+	unsigned charlen = f & 0x1FU, prescale = (f >> 8) & 0xFFU;
+	/* chip-select setup (C2TDELAY) and hold (T2CDELAY) in module clocks */
+	uint64_t cs_cycles = ((delay >> 24) & 0xFFU) + ((delay >> 16) & 0xFFU) + 2U;
+
+	if (s->timing_known && f == s->timing_fmt && delay == s->timing_delay) {
+		*bits = s->timing_bits;
+		return s->timing_ns;
+	}
+	if (charlen < 2)
+		charlen = 16;
+	s->timing_known = true;
+	s->timing_fmt = f;
+	s->timing_delay = delay;
+	s->timing_bits = charlen;
+	s->timing_ns = hs_cycles_to_ns((uint64_t)charlen * (prescale + 1U) + cs_cycles, SPI_CLOCK_HZ);
+	*bits = charlen;
+	return s->timing_ns;
+}
+
+/* Sets and clears SPIFLG bits (hs_reg_update on the stored value; SPIFLG is 32 bits wide). */
+static void flg_update(struct spi0 *s, uint32_t clear, uint32_t set)
+{
+	*s->flg = (*s->flg & ~clear) | set;
+}
+
+static void frame_start(struct spi0 *s, uint16_t word, unsigned fmt);
+
+/* Event: a frame ends; SPIBUF gets the answer. */
+static void frame_done(void *arg)
+{
+	struct spi0 *s = arg;
+	uint32_t mask = s->shift_len >= 16 ? 0xFFFFU : (1U << s->shift_len) - 1U;
+
+	s->frame_ev = 0;
+	s->busy = false;
+	s->stats.transfers++;
+	if (!(s->rx & BUF_RXEMPTY)) {
+		s->rx |= BUF_RXOVR;
+		s->stats.rx_overruns++;
+		flg_update(s, 0, FLG_OVRN);
+	}
+	s->rx = (s->rx & BUF_RXOVR) | (s->shift_out & mask);
+	flg_update(s, 0, FLG_RXINT | FLG_TXINT);
+	if (s->tx_full) {
+		s->tx_full = false;
+		frame_start(s, s->tx_buf, s->tx_buf_fmt);
+	}
+	spi_irq_update(s);
+}
+
+/* Starts a frame now with the slave answering. */
+static void frame_start(struct spi0 *s, uint16_t word, unsigned fmt)
+{
+	uint64_t ns = frame_ns(s, fmt, &s->shift_len);
+
+	s->busy = true;
+	s->shift_out = slave.frame != NULL ? slave.frame(slave.ctx, word) : 0;
+	s->frame_end = hs_now() + ns;
+	s->frame_ev = hs_event_at(s->frame_end, frame_done, s);
+}
+
+/* A word written to SPIDAT0/1: transfer now, or park it in the TX buffer. */
+static void spi_send(struct spi0 *s, uint16_t word)
+{
+	uint32_t gcr1 = *s->gcr1;
+	unsigned fmt = (*s->dat1 >> 24) & 3U;
+
+	if (!(*s->gcr0 & 1U) || !(gcr1 & (1U << 24)) || (gcr1 & 3U) != 3U) {
+		rtos_host_bug("host_sim", "SPI0: word 0x%04x written with the module %s: no transfer",
+			      word, !(hs_reg_get(s->r, SPIGCR0) & 1U) ? "in reset (SPIGCR0.RESET=0)" :
+			      !(gcr1 & (1U << 24)) ? "disabled (SPIGCR1.ENABLE=0)" :
+			      "not master (SPIGCR1.MASTER/CLKMOD)");
+		return;
+	}
+	flg_update(s, FLG_TXINT, 0);
+	if (!s->busy) {
+		frame_start(s, word, fmt);
+	} else if (!s->tx_full) {
+		s->tx_full = true;
+		s->tx_buf = word;
+		s->tx_buf_fmt = fmt;
+	} else {
+		rtos_host_trace("SPI0", "word 0x%04x overwrites the full TX buffer", word);
+		s->tx_buf = word;
+	}
+}
+
+/* SPIDAT0/1 writes start a transfer. */
+static void write_dat(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+{
+	struct spi0 *s = ctx;
+
+	if (a->offset == SPIDAT0) {
+		/* SPIDAT0 and SPIDAT1 share the data half (SPIDAT1 is 32 bits wide) */
+		*s->dat1 = (*s->dat1 & ~0xFFFFU) | (nv & 0xFFFFU);
+	} else if (a->width == 1) {
+		return;                 /* a byte write to the control half does not start a transfer */
+	}
+	spi_send(s, (uint16_t)(nv & 0xFFFFU));
+}
+
+/* SPIBUF contents with the TXFULL flag. */
+static uint32_t buf_value(const struct spi0 *s)
+{
+	return s->rx | (s->tx_full ? BUF_TXFULL : 0U);
+}
+
+/* SPIBUF read: stall while in flight, then consume. */
+static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	struct spi0 *s = ctx;
+
+	/* a poll that would see "not yet": the CPU spins until the frame ends */
+	if (s->busy && ((s->rx & BUF_RXEMPTY) || s->tx_full)) {
+		s->stats.stalls++;
+		hs_access_stall_until(s->frame_end);
+	}
+	*value = buf_value(s);
+	s->rx = (s->rx | BUF_RXEMPTY) & ~BUF_RXOVR;
+	flg_update(s, FLG_RXINT, 0);
+	spi_irq_update(s);
+}
+
+/* SPIEMU read: SPIBUF without side effects. */
+static void read_emu(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	*value = buf_value(ctx) & 0xFFFFU;
+}
+
+/* SPIFLG read: TXINTFLG from the TX buffer. */
+static void read_flg(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	struct spi0 *s = ctx;
+
+	*value = (*value & ~FLG_TXINT) | (s->tx_full ? 0U : FLG_TXINT);
+}
+
+/* SPIFLG write-1-to-clear: re-evaluates the interrupt. */
+static void write_flg(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+{
+	spi_irq_update(ctx);
+}
+
+/* SPIGCR0: RESET = 0 resets the module. */
+static void write_gcr0(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+{
+	struct spi0 *s = ctx;
+
+	if (!(nv & 1U)) {           /* reset: abort, registers to reset values */
+		hs_event_cancel(&s->frame_ev);
+		s->busy = s->tx_full = false;
+		s->rx = BUF_RXEMPTY;
+		hs_region_reset(s->r);
+		spi_irq_update(s);
+	}
+}
+
+/* SPIINT0 write: re-evaluates the interrupt. */
+static void write_int0(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+{
+	spi_irq_update(ctx);
+}
+
+static const struct hs_reg spi_regs[] = {
+	{ .name = "SPIGCR0", .offset = SPIGCR0, .kind = HS_RW, .mask = 0x1, .after_write = write_gcr0 },
+	{ .name = "SPIGCR1", .offset = SPIGCR1, .kind = HS_RW, .mask = 0x01010303 },
+	{ .name = "SPIINT0", .offset = SPIINT0, .kind = HS_RW, .mask = 0x0101035F, .after_write = write_int0 },
+	{ .name = "SPILVL", .offset = SPILVL, .kind = HS_RW, .mask = 0x0000035F },
+	{ .name = "SPIFLG", .offset = SPIFLG, .kind = HS_W1C, .mask = 0x0000015F,
+	  .before_read = read_flg, .after_write = write_flg },
+	{ .name = "SPIPC", .offset = SPIPC0, .kind = HS_RW, .count = 6, .stride = 4, .mask = 0x01010F3F },
+	{ .name = "SPIDAT0", .offset = SPIDAT0, .widths = HS_W16 | HS_W32, .kind = HS_RW, .mask = 0xFFFF,
+	  .after_write = write_dat },
+	{ .name = "SPIDAT1", .offset = SPIDAT1, .widths = HS_W8 | HS_W16 | HS_W32, .kind = HS_RW,
+	  .mask = 0x17FFFFFF, .after_write = write_dat },
+	{ .name = "SPIBUF", .offset = SPIBUF, .widths = HS_W16 | HS_W32, .kind = HS_RO,
+	  .reset = BUF_RXEMPTY, .before_read = read_buf },
+	{ .name = "SPIEMU", .offset = SPIEMU, .kind = HS_RO, .before_read = read_emu },
+	{ .name = "SPIDELAY", .offset = SPIDELAY, .kind = HS_RW },
+	{ .name = "SPIDEF", .offset = SPIDEF, .kind = HS_RW, .mask = 0xFF, .reset = 0xFF },
+	{ .name = "SPIFMT", .offset = SPIFMT0, .kind = HS_RW, .count = 4, .stride = 4, .mask = 0x3F7FFF1F },
+	{ .name = "INTVEC0", .offset = INTVEC0, .kind = HS_RO },
+	{ .name = "INTVEC1", .offset = INTVEC1, .kind = HS_RO },
+};
+
+/* Creates the SPI0 region. */
+static ER spi_create(const struct hs_board_cfg *cfg, void **ctx)
+{
+	struct spi0 *s = calloc(1, sizeof(*s));
+
+	if (!s)
+		return E_NOMEM;
+	s->r = hs_region_add(&(struct hs_region_cfg){ .name = "SPI0", .phys = HS_SPI0_BASE, .size = 0x1000,
+		.regs = spi_regs, .nregs = HS_ARRAY_SIZE(spi_regs),
+		.power = HS_PSC0_MODULE(HS_LPSC0_SPI0), .ctx = s });
+	if (!s->r) {
+		free(s);
+		return E_PAR;
+	}
+	s->gcr0 = hs_reg_value_ptr(s->r, SPIGCR0);
+	s->gcr1 = hs_reg_value_ptr(s->r, SPIGCR1);
+	s->int0 = hs_reg_value_ptr(s->r, SPIINT0);
+	s->flg = hs_reg_value_ptr(s->r, SPIFLG);
+	s->dat1 = hs_reg_value_ptr(s->r, SPIDAT1);
+	s->delay = hs_reg_value_ptr(s->r, SPIDELAY);
+	for (unsigned i = 0; i < 4U; i++)
+		s->fmt[i] = hs_reg_value_ptr(s->r, SPIFMT0 + 4U * i);
+	s->rx = BUF_RXEMPTY;
+	/* Linux leaves SPI0 out of reset (EV3RT's driver had to take it out itself) */
+	if (!cfg || !cfg->cold_reset)
+		hs_reg_set(s->r, SPIGCR0, 1);
+	spi = s;
+	*ctx = s;
+	return E_OK;
+}
+
+/* Frees SPI0. */
+static void spi_destroy(void *ctx)
+{
+	struct spi0 *s = ctx;
+
+	hs_event_cancel(&s->frame_ev);
+	if (spi == s)
+		spi = NULL;
+	free(s);
+}
+
+const struct hs_device hs_spi0_device = { "SPI0", spi_create, NULL, spi_destroy };
+
+/* SPI0 counters. */
+const struct ev3_spi_stats *ev3_spi_get_stats(void)
+{
+	static const struct ev3_spi_stats none;
+
+	return spi ? &spi->stats : &none;
+}
