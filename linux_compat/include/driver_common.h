@@ -61,6 +61,7 @@
 #include <linux_compat/config.h>
 #include <linux_compat/irq.h>
 #include <linux_compat/heap.h>
+#include <linux_compat/modparam.h>
 
 #undef module_init
 #undef module_exit

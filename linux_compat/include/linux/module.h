@@ -38,7 +38,6 @@
 #include <linux/export.h>
 #include <linux/moduleparam.h>
 #include <linux/kernel.h>
-#include <t_stddef.h>
 
 enum module_state {
 	MODULE_STATE_UNFORMED,  /* linked, init not run yet */
