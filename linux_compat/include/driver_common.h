@@ -62,10 +62,6 @@
 #include <linux_compat/irq.h>
 #include <linux_compat/heap.h>
 #include <linux_compat/modparam.h>
-
-#undef module_init
-#undef module_exit
-#define module_init(fn)		__lx_module_init(fn)
-#define module_exit(fn)		__lx_module_exit(fn)
+#include <linux_compat/hack.h>
 
 #endif /* EV3LX_DRIVER_COMMON_H */

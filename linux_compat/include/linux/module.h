@@ -38,6 +38,7 @@
 #include <linux/export.h>
 #include <linux/moduleparam.h>
 #include <linux/kernel.h>
+#include <linux/errno.h>       /* as Linux's, through linux/err.h */
 
 enum module_state {
 	MODULE_STATE_UNFORMED,  /* linked, init not run yet */

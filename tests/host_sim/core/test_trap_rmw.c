@@ -25,11 +25,12 @@
 #define TDEV_PHYS   0x01E00000U
 #define ARITH_FLAGS 0x8D5U
 
+static const struct rtos_cfg cfg = { .name = "trap_rmw" };
+
+#if defined(__x86_64__)
 static const struct hs_reg tdev_regs[] = {
 	{ .name = "R32", .offset = 0x0, .kind = HS_RW, .widths = HS_W8 | HS_W16 },
 };
-
-static const struct rtos_cfg cfg = { .name = "trap_rmw" };
 
 static const uint32_t starts[] = { 0x00000000U, 0x00000001U, 0x7FFFFFFFU, 0x80000000U, 0xFFFFFFFFU, 0x12F0A55AU };
 static const uint32_t operands[] = { 0x00000000U, 0x00000001U, 0x0000001FU, 0x80000080U, 0xFFFFFFFFU, 0x00000F0FU };
@@ -56,7 +57,6 @@ struct outcome {
 		return o;								\
 	}
 
-#if defined(__x86_64__)
 FORM(or_rm_r,    uint32_t, "orl %k[r], %[m]")
 FORM(and_rm_i32, uint32_t, "andl $0xFFFF00FF, %[m]")
 FORM(xor_rm_i8,  uint32_t, "xorl $0x10, %[m]")
