@@ -12,6 +12,9 @@
 #include <linux_compat/hack.h>
 #include "lms_gpio_hack.h"
 
+/* The driver's own `#define pr_fmt` came first and is the one in effect. */
+_Static_assert(sizeof(pr_fmt("x")) == sizeof("lms_gpio: x"), "the driver's pr_fmt is in effect");
+
 int lms_gpio_load(void)
 {
 	return lms_gpio_driver_init();
