@@ -172,6 +172,8 @@ ER ev3_button_set_on_clicked(button_t button, ev3_button_handler_t handler, intp
 #define EV3_BUTTON_TASK_STACK     (16 * 1024)
 #endif
 
+#include "ev3api_battery.h"
+
 /* ---- Configuration ---- */
 
 /* What an application INCLUDEs: linux_compat, the four drivers' service calls,

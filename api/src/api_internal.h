@@ -20,6 +20,7 @@ static inline bool api_can_write(const void *p, SIZE size)
 void api_motor_boot(void);
 void api_sensor_boot(void);
 void api_brick_boot(void);
+void api_battery_boot(void);
 
 /* The button task's body (CRE_TSK EV3_BUTTON_TSKID in config.c): runs click handlers. */
 void api_button_task(intptr_t exinf);

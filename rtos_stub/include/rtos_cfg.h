@@ -23,7 +23,7 @@
 #define TNUM_FLGID   16
 #define TNUM_CYCID   16
 #define TNUM_ALMID   16
-#define TNUM_FNCD    64     /* extended service calls: function codes 1..TNUM_FNCD */
+#define TNUM_FNCD    128    /* extended service calls: function codes 1..TNUM_FNCD */
 #define TNUM_DOMID   4      /* user protection domains 1..TNUM_DOMID */
 #define TMAX_INTNO   127U   /* interrupt numbers 0..TMAX_INTNO (AINTC system interrupts) */
 
