@@ -23,7 +23,7 @@ include mk/deps.mk
 include mk/config.mk
 include $(sort $(wildcard */module.mk))
 include mk/rules.mk
-include $(filter-out mk/deps.mk mk/config.mk mk/rules.mk,$(sort $(wildcard mk/*.mk)))
+include $(filter-out mk/deps.mk mk/config.mk mk/layers.mk mk/rules.mk,$(sort $(wildcard mk/*.mk)))
 
 .PHONY: all test clean main-job
 all: deps-check host-all am1808

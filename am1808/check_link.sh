@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# check_link.sh BUILD_DIR — the AM1808 link check (issue 8).
+# check_link.sh BUILD_DIR — the AM1808 link check.
 #  1. The provider defines exactly the service calls the target headers declare.
 #  2. libev3lx.a has no reference to host-only symbols (rtos_host_*, sil_host_*, hs_*).
 #  3. The whole library (--whole-archive) links against the provider with zero

@@ -28,6 +28,9 @@ ER_UINT can_wup(ID tskid) { (void)tskid; return E_NOSPT; }
 ER rel_wai(ID tskid) { (void)tskid; return E_NOSPT; }
 ER irel_wai(ID tskid) { (void)tskid; return E_NOSPT; }
 ER dly_tsk(RELTIM dlytim) { (void)dlytim; return E_NOSPT; }
+ER sus_tsk(ID tskid) { (void)tskid; return E_NOSPT; }
+ER rsm_tsk(ID tskid) { (void)tskid; return E_NOSPT; }
+ER ter_tsk(ID tskid) { (void)tskid; return E_NOSPT; }
 
 ER sig_sem(ID semid) { (void)semid; return E_NOSPT; }
 ER isig_sem(ID semid) { (void)semid; return E_NOSPT; }
@@ -44,6 +47,37 @@ ER pol_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn)
 { (void)flgid; (void)waiptn; (void)wfmode; (void)p_flgptn; return E_NOSPT; }
 ER twai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn, TMO tmout)
 { (void)flgid; (void)waiptn; (void)wfmode; (void)p_flgptn; (void)tmout; return E_NOSPT; }
+
+ER snd_dtq(ID dtqid, intptr_t data) { (void)dtqid; (void)data; return E_NOSPT; }
+ER psnd_dtq(ID dtqid, intptr_t data) { (void)dtqid; (void)data; return E_NOSPT; }
+ER ipsnd_dtq(ID dtqid, intptr_t data) { (void)dtqid; (void)data; return E_NOSPT; }
+ER tsnd_dtq(ID dtqid, intptr_t data, TMO tmout) { (void)dtqid; (void)data; (void)tmout; return E_NOSPT; }
+ER fsnd_dtq(ID dtqid, intptr_t data) { (void)dtqid; (void)data; return E_NOSPT; }
+ER ifsnd_dtq(ID dtqid, intptr_t data) { (void)dtqid; (void)data; return E_NOSPT; }
+ER rcv_dtq(ID dtqid, intptr_t *p_data) { (void)dtqid; (void)p_data; return E_NOSPT; }
+ER prcv_dtq(ID dtqid, intptr_t *p_data) { (void)dtqid; (void)p_data; return E_NOSPT; }
+ER trcv_dtq(ID dtqid, intptr_t *p_data, TMO tmout) { (void)dtqid; (void)p_data; (void)tmout; return E_NOSPT; }
+ER ini_dtq(ID dtqid) { (void)dtqid; return E_NOSPT; }
+ER ref_dtq(ID dtqid, T_RDTQ *pk_rdtq) { (void)dtqid; (void)pk_rdtq; return E_NOSPT; }
+
+ER snd_pdq(ID pdqid, intptr_t data, PRI datapri) { (void)pdqid; (void)data; (void)datapri; return E_NOSPT; }
+ER psnd_pdq(ID pdqid, intptr_t data, PRI datapri) { (void)pdqid; (void)data; (void)datapri; return E_NOSPT; }
+ER ipsnd_pdq(ID pdqid, intptr_t data, PRI datapri) { (void)pdqid; (void)data; (void)datapri; return E_NOSPT; }
+ER tsnd_pdq(ID pdqid, intptr_t data, PRI datapri, TMO tmout)
+{ (void)pdqid; (void)data; (void)datapri; (void)tmout; return E_NOSPT; }
+ER rcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri) { (void)pdqid; (void)p_data; (void)p_datapri; return E_NOSPT; }
+ER prcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri) { (void)pdqid; (void)p_data; (void)p_datapri; return E_NOSPT; }
+ER trcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri, TMO tmout)
+{ (void)pdqid; (void)p_data; (void)p_datapri; (void)tmout; return E_NOSPT; }
+ER ini_pdq(ID pdqid) { (void)pdqid; return E_NOSPT; }
+ER ref_pdq(ID pdqid, T_RPDQ *pk_rpdq) { (void)pdqid; (void)pk_rpdq; return E_NOSPT; }
+
+ER loc_mtx(ID mtxid) { (void)mtxid; return E_NOSPT; }
+ER ploc_mtx(ID mtxid) { (void)mtxid; return E_NOSPT; }
+ER tloc_mtx(ID mtxid, TMO tmout) { (void)mtxid; (void)tmout; return E_NOSPT; }
+ER unl_mtx(ID mtxid) { (void)mtxid; return E_NOSPT; }
+ER ini_mtx(ID mtxid) { (void)mtxid; return E_NOSPT; }
+ER ref_mtx(ID mtxid, T_RMTX *pk_rmtx) { (void)mtxid; (void)pk_rmtx; return E_NOSPT; }
 
 ER get_tim(SYSTIM *p_systim) { (void)p_systim; return E_NOSPT; }
 ER get_utm(SYSUTM *p_sysutm) { (void)p_sysutm; return E_NOSPT; }
@@ -66,6 +100,7 @@ bool_t sns_ctx(void) { return FALSE; }
 bool_t sns_loc(void) { return FALSE; }
 bool_t sns_dsp(void) { return FALSE; }
 bool_t sns_dpn(void) { return FALSE; }
+ER ext_ker(void) { for (;;) { } }
 
 ER dis_int(INTNO intno) { (void)intno; return E_NOSPT; }
 ER ena_int(INTNO intno) { (void)intno; return E_NOSPT; }

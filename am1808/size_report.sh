@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# size_report.sh BUILD_DIR — text/data/bss per component of libev3lx.a (issue 8).
+# size_report.sh BUILD_DIR — text/data/bss per component of libev3lx.a.
 # Each symbol is attributed to the source file it is defined in (nm -l, from the
 # objects' debug info), so a hack object splits into the driver it includes and
 # the hack's own glue.  .rodata counts as text, as arm-none-eabi-size does.

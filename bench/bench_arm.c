@@ -53,13 +53,13 @@ static void body(void)
 
 	bench_window_open();
 	for (unsigned i = 0; i < n_calls; i++)
-		if (ev3_motor_set_speed(BENCH_MOTOR_PORT, bench_speed_for(i)) != E_OK)
+		if (ev3lx_motor_set_speed(BENCH_MOTOR_PORT, bench_speed_for(i)) != E_OK)
 			set_speed_errors++;
 	bench_window_close();
 
 	bench_window_open();
 	for (unsigned i = 0; i < n_calls; i++)
-		if (ev3_uart_sensor_get_raw(BENCH_SENSOR_PORT, raw, sizeof(raw)) != E_OK)
+		if (ev3lx_uart_sensor_get_raw(BENCH_SENSOR_PORT, raw, sizeof(raw)) != E_OK)
 			get_raw_errors++;
 	bench_window_close();
 
@@ -88,8 +88,8 @@ int main(int argc, char **argv)
 			(int)prepare_result);
 		return 1;
 	}
-	printf("phase ev3_motor_set_speed %u %u\n", n_calls, set_speed_errors);
-	printf("phase ev3_uart_sensor_get_raw %u %u\n", n_calls, get_raw_errors);
+	printf("phase ev3lx_motor_set_speed %u %u\n", n_calls, set_speed_errors);
+	printf("phase ev3lx_uart_sensor_get_raw %u %u\n", n_calls, get_raw_errors);
 	printf("phase tick %u 0\n", tick_ms);
 	return set_speed_errors || get_raw_errors ? 1 : 0;
 }

@@ -32,12 +32,12 @@ bool bench_brick_run(enum bench_brick_kind kind, void (*body)(void), uint64_t se
  * DATA, so the measured calls take their fast paths.  E_OK or the first error. */
 ER bench_brick_prepare(void);
 
-/* The speed for the i-th measured ev3_motor_set_speed: it alternates
+/* The speed for the i-th measured ev3lx_motor_set_speed: it alternates
  * between two forward speeds, so every call changes the regulator's target
  * without reversing the motor. */
 int bench_speed_for(unsigned i);
 
-/* The bytes ev3_motor_set_speed hands the driver for a speed (d_pwm's
+/* The bytes ev3lx_motor_set_speed hands the driver for a speed (d_pwm's
  * OUTPUT_SPEED command: opcode, port mask, value); *len gets their count. */
 void bench_speed_command(int speed, uint8_t *cmd, unsigned *len);
 

@@ -4,7 +4,7 @@
  *   bench_host [calls [virtual_s]]     defaults: 10000 calls, 10 virtual seconds
  *
  * 1. From the application task on the simulated brick (bench_brick.h):
- *    ev3_motor_set_speed and ev3_uart_sensor_get_raw (sensor streaming, so
+ *    ev3lx_motor_set_speed and ev3lx_uart_sensor_get_raw (sensor streaming, so
  *    the fast path), calls times each, clock_gettime(CLOCK_MONOTONIC) around
  *    each call; then, in the same task, write() of the same command bytes to
  *    /dev/null, calls times (a real system call each).  Virtual time does not
@@ -47,8 +47,8 @@ struct call_stats {
 
 static unsigned n_calls = DEFAULT_CALLS;
 static double virtual_s = DEFAULT_VIRTUAL_S;
-static struct call_stats st_speed = { .name = "ev3_motor_set_speed" };
-static struct call_stats st_raw = { .name = "ev3_uart_sensor_get_raw" };
+static struct call_stats st_speed = { .name = "ev3lx_motor_set_speed" };
+static struct call_stats st_raw = { .name = "ev3lx_uart_sensor_get_raw" };
 static struct call_stats st_write = { .name = "write_dev_null" };
 static struct call_stats st_clock = { .name = "clock_gettime_pair" };
 static ER prepare_result = E_SYS;
@@ -119,7 +119,7 @@ static void measure_set_speed(struct call_stats *st)
 	for (unsigned i = 0; i < n_calls; i++) {
 		int speed = bench_speed_for(i);
 		uint64_t v0 = rtos_host_now(), t0 = now_ns(CLOCK_MONOTONIC);
-		ER ercd = ev3_motor_set_speed(BENCH_MOTOR_PORT, speed);
+		ER ercd = ev3lx_motor_set_speed(BENCH_MOTOR_PORT, speed);
 		uint64_t t1 = now_ns(CLOCK_MONOTONIC);
 
 		account(st, t1 - t0, rtos_host_now() != v0, ercd != E_OK);
@@ -132,7 +132,7 @@ static void measure_get_raw(struct call_stats *st)
 
 	for (unsigned i = 0; i < n_calls; i++) {
 		uint64_t v0 = rtos_host_now(), t0 = now_ns(CLOCK_MONOTONIC);
-		ER ercd = ev3_uart_sensor_get_raw(BENCH_SENSOR_PORT, raw, sizeof(raw));
+		ER ercd = ev3lx_uart_sensor_get_raw(BENCH_SENSOR_PORT, raw, sizeof(raw));
 		uint64_t t1 = now_ns(CLOCK_MONOTONIC);
 
 		account(st, t1 - t0, rtos_host_now() != v0, ercd != E_OK);

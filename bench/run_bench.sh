@@ -44,7 +44,7 @@ count_arm() {
 	local fifo=$out/qemu.fifo counter_pid arm_status
 	echo "bench ($mode): ARMv5 ($(basename "$(dirname "$(dirname "$arm_bin")")")): $arm_calls calls each, $tick_ms ms of ticks under qemu-arm -cpu arm926 ..." >&2
 	mkfifo "$fifo"
-	"$counter" -r "$(pwd)" "$arm_bin.syms" -m ev3_motor_set_speed -m ev3_uart_sensor_get_raw -m lx_tick_isr \
+	"$counter" -r "$(pwd)" "$arm_bin.syms" -m ev3lx_motor_set_speed -m ev3lx_uart_sensor_get_raw -m lx_tick_isr \
 		-w bench_window_open bench_window_close < "$fifo" > "$result" &
 	counter_pid=$!
 	"${preload[@]}" qemu-arm -cpu arm926 "${qemu_flags[@]}" -d $qemu_log -D "$fifo" \
@@ -59,8 +59,8 @@ count_arm() {
 	fi
 	wait $counter_pid || fail "insn_count"
 	rm -f "$fifo"
-	grep -q "^phase ev3_motor_set_speed $arm_calls 0$" "$run_log" &&
-		grep -q "^phase ev3_uart_sensor_get_raw $arm_calls 0$" "$run_log" ||
+	grep -q "^phase ev3lx_motor_set_speed $arm_calls 0$" "$run_log" &&
+		grep -q "^phase ev3lx_uart_sensor_get_raw $arm_calls 0$" "$run_log" ||
 		fail "$arm_bin: a measured call failed (see $run_log)"
 }
 qemu_log="in_asm,exec,nochain"
@@ -85,7 +85,7 @@ FILENAME ~ /\/arm(_prod)?\.txt$/ && $1 == "call" { k = $2 b; an[k] = $3; araw[k]
 FILENAME ~ /\/arm(_prod)?\.txt$/ && $1 == "log" { windows[b] = $5 }
 END {
 	print "section,measure,value,unit,paper,target,status"
-	s = "ev3_motor_set_speed"; r = "ev3_uart_sensor_get_raw"; w = "write_dev_null"
+	s = "ev3lx_motor_set_speed"; r = "ev3lx_uart_sensor_get_raw"; w = "write_dev_null"
 	row("host", s " avg", havg[s], "ns", 4540, "", "")
 	row("host", s " max", hmax[s], "ns", 40000, "", "")
 	row("host", s " median", hmed[s], "ns", "", "", "")
@@ -107,8 +107,8 @@ END {
 	row("host", "clock_gettime pair", havg["clock_gettime_pair"], "ns", "", "", "")
 	row("host", "calls", hn[s] + hn[r], "calls", "", "", "")
 	row("host", "slow-path calls", hslow[s] + hslow[r], "calls", "", "", "")
-	split("ev3_motor_set_speed:150 ev3_uart_sensor_get_raw:100 lx_tick_isr:300", t, " ")
-	paper_cycles["ev3_motor_set_speed"] = 1362; paper_cycles["ev3_uart_sensor_get_raw"] = 1665
+	split("ev3lx_motor_set_speed:150 ev3lx_uart_sensor_get_raw:100 lx_tick_isr:300", t, " ")
+	paper_cycles["ev3lx_motor_set_speed"] = 1362; paper_cycles["ev3lx_uart_sensor_get_raw"] = 1665
 	for (pass = 1; pass <= 2; pass++) {
 		b = pass == 1 ? "" : " production"; sec = pass == 1 ? "arm" : "arm-prod"
 		for (i = 1; i <= 3; i++) {
@@ -144,8 +144,8 @@ check() { awk -F, -v m="$1" -v want="$2" '$2 == m { found = 1; if ($3 != want) {
 check "calls" $((2 * calls))
 check "slow-path calls" 0
 for b in "" " production"; do
-	check "ev3_motor_set_speed$b calls" $arm_calls
-	check "ev3_uart_sensor_get_raw$b calls" $arm_calls
+	check "ev3lx_motor_set_speed$b calls" $arm_calls
+	check "ev3lx_uart_sensor_get_raw$b calls" $arm_calls
 	check "windows$b" 3
 	awk -F, -v m="tick$b calls" '$2 == m && $3 + 0 < 1 { exit 1 }' "$out/bench.csv" || fail "no tick was counted$b"
 done
@@ -167,20 +167,20 @@ FILENAME ~ /breakdown(_prod)?\.csv$/ && $1 == "class" && $3 != "sim" { cls[k] = 
 FILENAME ~ /breakdown(_prod)?\.csv$/ && $1 == "libc" && $4 >= 1 { lib[k] = lib[k] sprintf(" %s %.0f", $3, $4) }
 FILENAME ~ /breakdown(_prod)?\.csv$/ && $1 == "fn" { nfn[k]++; fname[k, nfn[k]] = $3; fcls[k, nfn[k]] = $4; feq[k, nfn[k]] = $6 }
 END {
-	s = "ev3_motor_set_speed"; r = "ev3_uart_sensor_get_raw"
+	s = "ev3lx_motor_set_speed"; r = "ev3lx_uart_sensor_get_raw"
 	printf "\n== ev3lx bench (%s: %d host calls each, %d ARMv5 calls each, %d ms of ticks, %s brick) ==\n", mode, calls, arm_calls, tick_ms, brick
 	printf "Paper: EV3RT on the EV3 (AM1808, ARM926 at 300 MHz), and LEGO firmware Linux write().\n\n"
 	fmt = "%-48s %-24s %-24s %-10s %s\n"
 	printf fmt, "measure", "ev3lx", "paper", "target", "status"
 	printf "1. host: from an application task on the simulated brick (x86-64, CLOCK_MONOTONIC, best of 3 rounds)\n"
-	printf fmt, "  ev3_motor_set_speed avg / max", sprintf("%.0f / %.0f ns", v(s " avg"), v(s " max")), "4.54 / 40 us", "", ""
+	printf fmt, "  ev3lx_motor_set_speed avg / max", sprintf("%.0f / %.0f ns", v(s " avg"), v(s " max")), "4.54 / 40 us", "", ""
 	printf fmt, "    median / p99", sprintf("%.0f / %.0f ns", v(s " median"), v(s " p99")), "", "", ""
-	printf fmt, "  ev3_uart_sensor_get_raw avg / max", sprintf("%.0f / %.0f ns", v(r " avg"), v(r " max")), "5.55 / 33 us", "", ""
+	printf fmt, "  ev3lx_uart_sensor_get_raw avg / max", sprintf("%.0f / %.0f ns", v(r " avg"), v(r " max")), "5.55 / 33 us", "", ""
 	printf fmt, "    median / p99", sprintf("%.0f / %.0f ns", v(r " median"), v(r " p99")), "", "", ""
 	printf fmt, "  write() to /dev/null avg / max", sprintf("%.0f / %.0f ns", v("write() avg"), v("write() max")), "596 / 3424 us (brick)", "", ""
 	printf fmt, "    median / p99", sprintf("%.0f / %.0f ns", v("write() median"), v("write() p99")), "", "", ""
-	printf fmt, "  write() / ev3_motor_set_speed (avg; median)", sprintf("%sx; %sx", v("write()/" s), v("write()/" s " medians")), "131x", ">= 20x", st("write()/" s)
-	printf fmt, "  write() / ev3_uart_sensor_get_raw", sprintf("%sx; %sx", v("write()/" r), v("write()/" r " medians")), "107x", ">= 20x", st("write()/" r)
+	printf fmt, "  write() / ev3lx_motor_set_speed (avg; median)", sprintf("%sx; %sx", v("write()/" s), v("write()/" s " medians")), "131x", ">= 20x", st("write()/" s)
+	printf fmt, "  write() / ev3lx_uart_sensor_get_raw", sprintf("%sx; %sx", v("write()/" r), v("write()/" r " medians")), "107x", ">= 20x", st("write()/" r)
 	printf fmt, "  (clock_gettime pair, included above)", sprintf("%.0f ns", v("clock_gettime pair")), "", "", ""
 	printf fmt, "  calls that took a slow path", v("slow-path calls"), "", "", ""
 	printf "2. ARMv5 instructions per call under qemu-arm -cpu arm926 (target-equivalent; raw)\n"
@@ -198,7 +198,7 @@ END {
 	printf fmt, "  devices only (ev3_bench_full_brick)", sprintf("%.0fx (%.0fx per CPU s)", v("host_sim devices (ev3_bench_full_brick)"), v("host_sim devices per CPU second")), "", ">= 500x", st("host_sim devices (ev3_bench_full_brick)")
 	printf fmt, "  full stack: drivers, 4 motors, 4 sensors", sprintf("%.0fx (%.0fx per CPU s)", v("full stack (drivers + 4 motors + 4 sensors)"), v("full stack per CPU second")), "", ">= 500x", st("full stack (drivers + 4 motors + 4 sensors)")
 	printf "\nWhere the ARMv5 instructions go (target-equivalent per call, by layer; top functions):\n"
-	split("ev3_motor_set_speed ev3_uart_sensor_get_raw lx_tick_isr", m, " ")
+	split("ev3lx_motor_set_speed ev3lx_uart_sensor_get_raw lx_tick_isr", m, " ")
 	for (i = 1; i <= 6; i++) {
 		f = m[i > 3 ? i - 3 : i] (i > 3 ? " production" : "")
 		if (i == 1 || i == 4)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # check_totals.sh OUTDIR — the report's totals equal cloc's own SUM lines for the
-# same file lists (issue 9): the report adds nothing of its own to cloc's counts.
+# same file lists: the report adds nothing of its own to cloc's counts.
 set -euo pipefail
 out=$1
 cloc_sum() {

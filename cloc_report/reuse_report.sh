@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# reuse_report.sh — reused versus written lines, counted by cloc (issue 9).
+# reuse_report.sh — reused versus written lines, counted by cloc.
 #
 #   reuse_report.sh OUTDIR                      ev3lx's own modules (one per ev3_drivers/d_*.c)
 #   reuse_report.sh OUTDIR REUSED GLUE [SHIM]   any port: dirs or files, space-separated

@@ -13,6 +13,30 @@
  * GPIOs per port; a quadrature-like tacho (an interrupt pin counted on both
  * edges plus a direction pin); edge times stamped from TIMER64P3.
  *
+ * What applications see behaves as LEGO's lms2012 d_pwm.c (mindboards/
+ * ev3sources) does, measured on the same byte streams and simulated motors:
+ *  - A command re-issued while running (a control loop sending STEP_SYNC,
+ *    SPEED, POWER, STEP_/TIME_SPEED every few ms) changes the target and
+ *    nothing else: the regulator keeps its accumulated power, a ramp resumes
+ *    where the port runs, the same sync pair runs on (its slave keeping its
+ *    lag, even when the turn changes sign), so the motors run at the speed a
+ *    single command gives.  A command naming one motor of a pair floats both.
+ *  - A step command slows down over its last counts (3/4 of a count per unit
+ *    of speed, 15..60) to speed 3 and stops on its end without overshoot,
+ *    then holds it if braking (a 90-count step at speed 30 is busy ~630 ms);
+ *    a braking time command slows down over its last 100 ms (<= 3 degrees
+ *    past where time runs out).
+ *  - MOTORDATA TachoCounts counts from the start of the current command: 0
+ *    while unlimited, back to 0 when a limited command ends (its busy bits
+ *    clear) and from the stop after OUTPUT_STOP; TachoSensor is cumulative
+ *    (cleared by CLR_COUNT and SET_TYPE only).
+ *  - OUTPUT_STOP with brake holds the stop position with LEGO's proportional
+ *    term: settled within 250 ms, a count or so back from the overshoot, and
+ *    it stays put; only a load displacing the shaft by more than 3 counts
+ *    starts an integral that brings it back.
+ *  - MOTORDATA Speed is the measured speed, except after OUTPUT_STOP: the
+ *    commanded 0 from the next 2 ms tick until the port is driven again.
+ *
  * Concurrency: one spinlock guards all port state.  The tacho interrupt and
  * the 2 ms control hrtimer run with interrupts off and take it plainly;
  * write() takes it with interrupts saved, for a few dozen instructions.
@@ -120,13 +144,17 @@
 #define POWER_MAX          10000   /* internal power: user power x 100 */
 #define FAST_SPEED         35      /* above this the tacho DIR pin is not trusted */
 #define BRAKE_HOLD_GAIN    400     /* hold power per count of displacement */
-#define HOLD_DEADBAND      1       /* counts around the held position left to the short brake */
+#define HOLD_LOAD_COUNTS   4       /* a hold this far off is under load: the integral works */
 #define HOLD_I_GAIN        10      /* hold power per accumulated count-tick */
 #define HOLD_I_MAX         (POWER_MAX / HOLD_I_GAIN)
-#define HOLD_I_SPEED       3       /* the integral only grows while the shaft is (nearly) still */
+#define HOLD_STILL_TICKS   25      /* the integral only grows once no edge came for 50 ms */
 #define PROGRAM_STOP_BRAKE_MS 100
 #define RAMP_FLOOR_SPEED   5       /* a ramp never asks for less, or a step ramp would stall */
 #define RAMP_FLOOR_POWER   10
+#define APPROACH_COUNTS_MIN 15     /* a step slows down over its last counts: 3/4 per unit */
+#define APPROACH_COUNTS_MAX 60     /* of speed (30 at speed 40), at least 15, at most 60, */
+#define APPROACH_SPEED     3       /* and arrives at this speed, slow enough not to overshoot */
+#define APPROACH_MS        100     /* a braking time command slows down over its last 100 ms */
 #define PID_SCALE          100     /* fixed point of the PID accumulators */
 #define SYNC_POSITION_GAIN 2       /* slave speed per count it is off its share */
 #define SYNC_LAG_FREE      2       /* counts a slave may lag before the master waits */
@@ -184,6 +212,7 @@ struct pwm_profile {          /* a limited command */
 	bool brake;
 	bool regulated;
 	s8 peak;              /* target of the constant phase, polarity applied */
+	u32 ramp_in;          /* how far into its ramp up the command started (counts or ms) */
 	u32 up, flat, down;   /* phase lengths in counts or ms; all 0 = forever */
 	s32 origin;           /* position at the start */
 	ktime_t start;
@@ -206,9 +235,13 @@ struct pwm_port {
 	struct pwm_profile profile;
 	int partner;          /* the other port of a sync pair, or -1 */
 	s32 sync_factor;      /* slave: its counts per 100 master counts, signed */
+	s32 sync_carry;       /* slave: hundredths of a count it owes from earlier commands */
+	s32 setpoint;         /* speed (or user power) the control loop last asked for */
 
 	s32 hold_pos;         /* BRAKED: position to hold */
-	s32 hold_i;           /* BRAKED: integral of the displacement beyond the dead band */
+	s32 hold_i;           /* BRAKED: integral of the displacement, once a load showed */
+	s32 hold_seen;        /* BRAKED: the position at the last tick ... */
+	u16 hold_still;       /* ... and for how many ticks it has not changed */
 	ktime_t brake_until;  /* BRAKE_TIMED */
 
 	s32 power;            /* applied power, -POWER_MAX..POWER_MAX */
@@ -225,6 +258,7 @@ struct pwm_port {
 
 	/* derived in the control tick */
 	s8 speed;
+	bool stopped;         /* OUTPUT_STOP until driven again: MOTORDATA shows speed 0 */
 	s32 command_origin;   /* TachoCounts reference */
 	s32 sensor_origin;    /* TachoSensor reference */
 
@@ -353,10 +387,13 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 	spin_lock(&pwm_lock);
 	/*
 	 * Above speed 35 the DIR pin may have moved on by the time it is read, so
-	 * the last direction is kept - but only while this edge came quickly too:
-	 * the averaged speed lags a fast reversal, the edge interval does not.
+	 * the last direction is kept - but only while the port drives that way
+	 * (braking or reversing, the shaft may turn back right after an edge and
+	 * cross it again quickly) and this edge came quickly too: the averaged
+	 * speed lags a fast reversal, the edge interval does not.
 	 */
-	if (p->last_dir && abs(p->speed) > FAST_SPEED && p->stamp_valid &&
+	if (p->last_dir && p->power * p->last_dir > 0 && abs(p->speed) > FAST_SPEED &&
+	    p->stamp_valid &&
 	    ((stamp - p->stamps[(p->stamp_head + STAMP_RING - 1) % STAMP_RING]) & STAMP_MASK) *
 	    FAST_SPEED < counts_per_pulse(p))
 		dir = p->last_dir;
@@ -420,12 +457,17 @@ static u16 power_to_duty(const struct pwm_port *p, s32 power, bool regulated)
 	return mag > PWM_PERIOD ? PWM_PERIOD : mag;
 }
 
-/* Drives a port with a signed power. */
+/*
+ * Drives a port with a signed power.  The bridge shorts the windings in the
+ * off phase of each PWM period, so a small power mostly brakes; a regulated
+ * zero therefore brakes too (a regulator slowing down must not let go), an
+ * unregulated zero coasts.
+ */
 static void port_drive_power(struct pwm_port *p, s32 power, bool regulated)
 {
 	p->power = power;
 	if (power == 0)
-		port_output(p, DRIVE_COAST, 0);
+		port_output(p, regulated ? DRIVE_BRAKE : DRIVE_COAST, regulated ? PWM_PERIOD : 0);
 	else
 		port_output(p, power > 0 ? DRIVE_FORWARD : DRIVE_REVERSE,
 			    power_to_duty(p, power, regulated));
@@ -468,23 +510,29 @@ static s32 pid_step(struct pwm_port *p, s32 target)
 }
 
 /*
- * Holds hold_pos.  Within one count of it the windings are shorted (a dead
- * band, so that a shaft at rest never hunts across an edge); beyond, it is
- * driven back by LEGO's proportional term plus an integral that builds up
- * while a load keeps it displaced (standing still) and stays applied once it
- * is back.
+ * Holds hold_pos with LEGO's proportional term (the windings shorted when the
+ * shaft is on it).  A free shaft settles within a count or two of the point,
+ * so an integral only starts when a load keeps the shaft further off (and
+ * still); from then on it integrates the whole displacement, bringing the
+ * loaded shaft back to the point and unwinding when the load lets go.
+ * Without a load nothing integrates and the shaft stays where the
+ * proportional term left it.
  */
 static void brake_hold(struct pwm_port *p)
 {
 	s32 err = p->position - p->hold_pos;
-	s32 outside = err > HOLD_DEADBAND ? err - HOLD_DEADBAND :
-		      err < -HOLD_DEADBAND ? err + HOLD_DEADBAND : 0;
 	s32 power;
 
-	/* Only a standing displacement is a load: integrating the overshoot would swing back. */
-	if (abs(p->speed) <= HOLD_I_SPEED)
-		p->hold_i = clamp(p->hold_i + outside, -HOLD_I_MAX, HOLD_I_MAX);
-	power = clamp(-BRAKE_HOLD_GAIN * outside - HOLD_I_GAIN * p->hold_i, -POWER_MAX, POWER_MAX);
+	if (p->position != p->hold_seen) {
+		p->hold_seen = p->position;
+		p->hold_still = 0;
+	} else if (p->hold_still < HOLD_STILL_TICKS) {
+		p->hold_still++;
+	}
+	/* Still means no edge for a while (the measured speed reads 0 at every turn-around too). */
+	if (p->hold_still >= HOLD_STILL_TICKS && (p->hold_i || abs(err) > HOLD_LOAD_COUNTS))
+		p->hold_i = clamp(p->hold_i + err, -HOLD_I_MAX, HOLD_I_MAX);
+	power = clamp(-BRAKE_HOLD_GAIN * err - HOLD_I_GAIN * p->hold_i, -POWER_MAX, POWER_MAX);
 	p->power = 0;
 	if (power == 0)
 		port_output(p, DRIVE_BRAKE, PWM_PERIOD);
@@ -518,35 +566,78 @@ static u32 profile_progress(const struct pwm_profile *pr, const struct pwm_port 
 	return moved > 0 ? moved : 0;
 }
 
-/* Target (signed) of a limited command at a progress, or false when it is done. */
-static bool profile_target(const struct pwm_profile *pr, u32 progress, s32 *target)
+/*
+ * Counts (or ms, for a braking time command) before its end over which a
+ * regulated limited command slows down, so that it arrives slowly enough to
+ * stop on its end instead of overshooting it; 0 for none.
+ */
+static u32 approach_span(const struct pwm_profile *pr)
 {
-	u32 mag = abs(pr->peak);
+	if (!pr->regulated)
+		return 0;
+	if (pr->by_time)
+		return pr->brake ? APPROACH_MS : 0;
+	return clamp_t(u32, abs(pr->peak) * 3 / 4, APPROACH_COUNTS_MIN, APPROACH_COUNTS_MAX);
+}
+
+/*
+ * Target (signed) of a limited command at a progress, or false when it is
+ * done: the ramp up from the speed (power) the command found, the constant
+ * phase, the ramp down, and the approach to the end (*approaching set):
+ * the speed falls in proportion to what is left, to APPROACH_SPEED.
+ */
+static bool profile_target(const struct pwm_profile *pr, u32 progress, s32 *target,
+			   bool *approaching)
+{
+	u32 peak = abs(pr->peak), mag = peak;
 	u32 total = pr->up + pr->flat + pr->down;
 	u32 floor = min_t(u32, mag, pr->regulated ? RAMP_FLOOR_SPEED : RAMP_FLOOR_POWER);
+	u32 near = approach_span(pr), left;
 
+	*approaching = false;
 	if (total == 0) {
 		*target = pr->peak;
 		return true;
 	}
 	if (progress >= total)
 		return false;
+	left = total - progress;
 	if (progress < pr->up)
-		mag = max(scale_fraction(mag, progress, pr->up), floor);
+		mag = max(scale_fraction(mag, min(progress + pr->ramp_in, pr->up), pr->up), floor);
 	else if (progress >= pr->up + pr->flat)
-		mag = max(scale_fraction(mag, total - progress, pr->down), floor);
+		mag = max(scale_fraction(mag, left, pr->down), floor);
+	*approaching = left < near && mag > APPROACH_SPEED;
+	if (*approaching)
+		mag = min_t(u32, mag, max_t(u32, scale_fraction(peak, left, near), APPROACH_SPEED));
 	*target = pr->peak < 0 ? -(s32)mag : (s32)mag;
 	return true;
+}
+
+/*
+ * Approaching the end, each step down of the target cuts the regulator's
+ * power in proportion at once (the power a speed needs is about proportional
+ * to it): the incremental PID alone would take tens of ms to let go, and
+ * the motor would run past the end.
+ */
+static void approach_cut(struct pwm_port *p, s32 target)
+{
+	s32 was = abs(p->setpoint);
+
+	if (target * p->setpoint > 0 && abs(target) < was)
+		p->pid_power = p->pid_power / was * abs(target);
 }
 
 /* Ends a port's command: hold at hold_pos or coast, and clear its busy bits. */
 static void port_finish(struct pwm_port *p, int port, bool brake, s32 hold_pos)
 {
 	p->partner = -1;
+	p->setpoint = 0;
+	p->command_origin = p->position;    /* TachoCounts counts from here */
 	if (brake) {
 		p->state = STATE_BRAKED;
 		p->hold_pos = hold_pos;
 		p->hold_i = 0;
+		p->hold_still = 0;
 		brake_hold(p);
 	} else {
 		p->state = STATE_IDLE;
@@ -562,18 +653,35 @@ static void limited_tick(struct pwm_port *p, int port, ktime_t now)
 {
 	struct pwm_profile *pr = &p->profile;
 	s32 target, end;
+	bool approaching;
 
-	if (!profile_target(pr, profile_progress(pr, p, now), &target)) {
+	if (!profile_target(pr, profile_progress(pr, p, now), &target, &approaching)) {
 		end = pr->origin + (pr->peak < 0 ? -(s32)(pr->up + pr->flat + pr->down)
 						 : (s32)(pr->up + pr->flat + pr->down));
 		/* A step command holds exactly its end position, not where momentum took it. */
 		port_finish(p, port, pr->brake, pr->by_time ? p->position : end);
 		return;
 	}
+	if (approaching)
+		approach_cut(p, target);
+	p->setpoint = target;
 	if (pr->regulated && p->tacho)
 		port_drive_power(p, pid_step(p, target), true);
 	else
 		port_drive_power(p, target * (POWER_MAX / 100), false);
+}
+
+/*
+ * Hundredths of a count a sync master's slave is behind the share of the
+ * master's travel it should have made (kept in hundredths so that a pair
+ * re-issued every millisecond loses nothing to rounding).
+ */
+static s32 sync_slave_lag100(const struct pwm_port *m)
+{
+	const struct pwm_port *s = &ports[m->partner];
+
+	return (s->profile.origin - s->position) * 100 + s->sync_carry +
+	       (m->position - m->profile.origin) * s->sync_factor;
 }
 
 /* Runs one tick of a sync pair from its master: both motors, the ratio, the end. */
@@ -581,18 +689,24 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 {
 	struct pwm_port *s = &ports[m->partner];
 	struct pwm_profile *pr = &m->profile;
-	s32 target, moved, expected, err, lag, slave_target, master_target;
-	bool brake = pr->brake;
+	s32 target, end, err, lag, slave_target, master_target;
+	bool brake = pr->brake, approaching;
 
-	if (!profile_target(pr, profile_progress(pr, m, now), &target)) {
-		port_finish(s, m->partner, brake, s->position);
-		port_finish(m, port, brake, m->position);
+	if (!profile_target(pr, profile_progress(pr, m, now), &target, &approaching)) {
+		/* A step pair holds its end positions, a timed one where time ran out. */
+		if (pr->by_time) {
+			port_finish(s, m->partner, brake, s->position);
+			port_finish(m, port, brake, m->position);
+			return;
+		}
+		end = pr->peak < 0 ? -(s32)pr->flat : (s32)pr->flat;
+		port_finish(s, m->partner, brake, s->profile.origin +
+			    (s->sync_carry + end * s->sync_factor) / 100);
+		port_finish(m, port, brake, pr->origin + end);
 		return;
 	}
 	/* The slave keeps its position at factor/100 of the master's travel. */
-	moved = m->position - pr->origin;
-	expected = s->profile.origin + moved * s->sync_factor / 100;
-	err = expected - s->position;
+	err = sync_slave_lag100(m) / 100;
 	slave_target = clamp(target * s->sync_factor / 100 + err * SYNC_POSITION_GAIN,
 			     -SPEED_MAX, SPEED_MAX);
 	/* A lagging slave slows the master down so the pair keeps its shape. */
@@ -603,20 +717,35 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 
 		master_target = target > 0 ? max(target - slow, 0) : min(target + slow, 0);
 	}
+	if (approaching) {
+		approach_cut(m, master_target);
+		approach_cut(s, slave_target);
+	}
 	port_drive_power(m, pid_step(m, master_target), true);
+	m->setpoint = master_target;
 	if (s->sync_factor == 0) {
-		s->hold_pos = s->profile.origin;
+		s->hold_pos = s->profile.origin + s->sync_carry / 100;
 		brake_hold(s);
+		s->setpoint = 0;
 	} else {
 		port_drive_power(s, pid_step(s, slave_target), true);
+		s->setpoint = slave_target;
 	}
 }
 
-/* Publishes a port's counters into the shared MOTORDATA (TachoCounts 0 while unlimited). */
-static void publish(const struct pwm_port *p, struct lms_motor_data *md, bool counting)
+/*
+ * Publishes a port's counters into the shared MOTORDATA: TachoCounts from the
+ * start of the current command (0 while unlimited), Speed as measured except
+ * after a STOP, where it is the commanded 0; TachoSensor cumulative.
+ */
+static void publish(struct pwm_port *p, struct lms_motor_data *md)
 {
-	WRITE_ONCE(md->tacho_counts, counting ? p->position - p->command_origin : 0);
-	WRITE_ONCE(md->speed, p->speed);
+	bool unlimited = p->state == STATE_UNREG || p->state == STATE_REG;
+
+	if (p->state != STATE_IDLE && p->state != STATE_BRAKED)
+		p->stopped = false;
+	WRITE_ONCE(md->tacho_counts, unlimited ? 0 : p->position - p->command_origin);
+	WRITE_ONCE(md->speed, p->stopped ? 0 : p->speed);
 	WRITE_ONCE(md->tacho_sensor, p->position - p->sensor_origin);
 }
 
@@ -639,9 +768,11 @@ static enum hrtimer_restart control_tick(struct hrtimer *timer)
 		case STATE_IDLE:
 			break;
 		case STATE_UNREG:
+			p->setpoint = p->target;
 			port_drive_power(p, p->target * (POWER_MAX / 100), false);
 			break;
 		case STATE_REG:
+			p->setpoint = p->target;
 			if (p->tacho)
 				port_drive_power(p, pid_step(p, p->target), true);
 			else
@@ -665,7 +796,7 @@ static enum hrtimer_restart control_tick(struct hrtimer *timer)
 			}
 			break;
 		}
-		publish(p, &motor_data[i], p->state != STATE_UNREG && p->state != STATE_REG);
+		publish(p, &motor_data[i]);
 	}
 	spin_unlock(&pwm_lock);
 	return HRTIMER_RESTART;
@@ -683,6 +814,39 @@ static enum hrtimer_restart control_tick(struct hrtimer *timer)
 static bool valid_nos(u8 nos)
 {
 	return nos != 0 && !(nos & ~LMS_PWM_PORT_MASK);
+}
+
+/* True while the speed regulator drives the port (its PID state is live). */
+static bool regulating(const struct pwm_port *p)
+{
+	return p->state == STATE_REG || p->state == STATE_SYNC_MASTER ||
+	       (p->state == STATE_SYNC_SLAVE && p->sync_factor != 0) ||
+	       (p->state == STATE_LIMITED && p->profile.regulated);
+}
+
+/*
+ * Where a new limited command enters its ramp up: as far in as the port
+ * already runs, so that a command re-issued while running carries on
+ * instead of starting again from rest.  The same ramp re-issued resumes
+ * exactly; otherwise the ramp is entered at the magnitude (speed, or user
+ * power) the port runs at in its direction, rounded up.
+ */
+static u32 ramp_entry(const struct pwm_port *p, const struct pwm_profile *next, ktime_t now)
+{
+	const struct pwm_profile *prev = &p->profile;
+	s32 peak = next->peak, v;
+
+	if (next->up == 0 || peak == 0)
+		return 0;
+	if (p->state == STATE_LIMITED && prev->by_time == next->by_time &&
+	    prev->regulated == next->regulated && prev->peak == peak && prev->up == next->up)
+		return min(prev->ramp_in + profile_progress(prev, p, now), next->up);
+	v = next->regulated ? max_t(s32, p->speed * peak, p->setpoint * peak)
+			    : p->power / (POWER_MAX / SPEED_MAX) * peak;
+	v = clamp_t(s32, v / abs(peak), 0, abs(peak));
+	if (next->up > U32_MAX / SPEED_MAX)
+		return scale_fraction(next->up, v, abs(peak));
+	return DIV_ROUND_UP(next->up * v, abs(peak));
 }
 
 /* Coasts a port and drops whatever it was doing, including its busy bits. */
@@ -783,6 +947,7 @@ static int cmd_stop(const u8 *b)
 			continue;
 		sync_dissolve(p);
 		port_finish(p, i, brake, p->position);
+		p->stopped = true;
 	}
 	spin_unlock_irqrestore(&pwm_lock, flags);
 	return 0;
@@ -966,6 +1131,7 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 			get_s32(b + LMS_PWM_STEP_OFF_STEP3) };
 	u8 nos = b[LMS_PWM_STEP_OFF_NOS];
 	u8 brake = b[LMS_PWM_STEP_OFF_BRAKE];
+	struct pwm_profile next;
 	unsigned long flags;
 	ktime_t now;
 	int i;
@@ -989,20 +1155,18 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 		if (!(nos & BIT(i)))
 			continue;
 		sync_dissolve(p);
-		pr->by_time = by_time;
-		pr->brake = brake;
-		pr->regulated = regulated;
-		pr->peak = value * p->polarity;
-		pr->up = step[0];
-		pr->flat = step[1];
-		pr->down = step[2];
+		/* A new command changes the target; the regulator keeps what it has learnt. */
+		if (!regulated || !regulating(p))
+			pid_reset(p);
+		next = (struct pwm_profile){
+			.by_time = by_time, .brake = brake, .regulated = regulated,
+			.peak = value * p->polarity, .up = step[0], .flat = step[1], .down = step[2],
+		};
+		next.ramp_in = ramp_entry(p, &next, now);
+		*pr = next;
 		pr->origin = p->position;
 		pr->start = now;
 		p->command_origin = p->position;
-		if (p->state != STATE_LIMITED) {
-			pid_reset(p);
-			p->pid_power = 0;
-		}
 		/* A step command with no power would never arrive: it is done at once. */
 		if (!by_time && value == 0 && step[0] + step[1] + step[2] != 0) {
 			port_finish(p, i, brake, p->position);
@@ -1033,6 +1197,7 @@ static int cmd_sync(const u8 *b, bool by_time)
 	s32 step = get_s32(b + LMS_PWM_SYNC_OFF_STEP);
 	u8 brake = b[LMS_PWM_SYNC_OFF_BRAKE];
 	int first, second, mi, si, ratio;
+	s32 lag;
 	struct pwm_port *m, *s;
 	unsigned long flags;
 	ktime_t now;
@@ -1053,23 +1218,38 @@ static int cmd_sync(const u8 *b, bool by_time)
 	spin_lock_irqsave(&pwm_lock, flags);
 	m = &ports[mi];
 	s = &ports[si];
-	sync_dissolve(m);
-	sync_dissolve(s);
+	/*
+	 * The same pair again (a steering loop re-issues it all the time) runs
+	 * on: the regulators keep their state and, if the master stays master,
+	 * the slave the lag it has.  Any other pair is dissolved first.
+	 */
+	if (m->partner == si) {
+		lag = m->state == STATE_SYNC_MASTER ? sync_slave_lag100(m) : 0;
+	} else {
+		sync_dissolve(m);
+		sync_dissolve(s);
+		lag = 0;
+		m->hold_i = 0;
+		s->hold_i = 0;
+		s->hold_still = 0;
+	}
+	if (!regulating(m))
+		pid_reset(m);
+	if (!regulating(s))
+		pid_reset(s);
 	m->profile = (struct pwm_profile){
 		.by_time = by_time, .brake = brake, .regulated = true,
 		.peak = speed * m->polarity, .flat = step, .origin = m->position, .start = now,
 	};
 	s->profile = m->profile;
 	s->profile.origin = s->position;
+	s->sync_carry = lag;
 	/* Ratio in the motors' own frames: polarities enter through the factor. */
 	s->sync_factor = ratio * s->polarity * m->polarity;
 	m->partner = si;
 	s->partner = mi;
 	m->command_origin = m->position;
 	s->command_origin = s->position;
-	pid_reset(m);
-	pid_reset(s);
-	s->hold_i = 0;
 	m->state = STATE_SYNC_MASTER;
 	s->state = STATE_SYNC_SLAVE;
 	ready_status |= nos;

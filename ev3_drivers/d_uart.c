@@ -724,6 +724,12 @@ static bool uart_rx_info(struct sensor_port *p)
 		return true;
 	}
 	len = msg_length(msg[0]);
+	if (len > sizeof(msg)) {
+		uart_rx_consume(p, 1);
+		port_ext(p)->size_errors++;
+		uart_handshake_failed(p);
+		return true;
+	}
 	if (!uart_rx_peek(p, msg, len))
 		return false;
 	if (msg[len - 1] != msg_check(msg, len - 1)) {
@@ -754,14 +760,19 @@ static void uart_send_select(struct sensor_port *p)
 	port_ext(p)->selects++;
 }
 
-/* A bad check byte: one error per loss of sync, however many bytes it takes to resync. */
-static void uart_bad_frame(struct sensor_port *p)
+/*
+ * A frame that cannot be valid (bad check byte, impossible size): one error per loss of sync,
+ * however many bytes it takes to find the next valid frame.  True when this frame lost the
+ * sync, so that the caller counts its cause once.
+ */
+static bool uart_bad_frame(struct sensor_port *p)
 {
 	if (p->resyncing)
-		return;
+		return false;
 	p->resyncing = true;
-	port_ext(p)->check_errors++;
+	port_ext(p)->resyncs++;
 	uart_count_error(p);
+	return true;
 }
 
 /* A valid DATA frame of @mode: store it if it is what user space asked for. */
@@ -808,11 +819,19 @@ static bool uart_rx_data(struct sensor_port *p)
 		return true;
 	}
 	len = msg_length(msg[0]);
+	if (len > sizeof(msg)) {
+		/* size codes 6 and 7 (64, 128 bytes): no valid message is that long */
+		uart_rx_consume(p, 1);
+		if (uart_bad_frame(p))
+			port_ext(p)->size_errors++;
+		return true;
+	}
 	if (!uart_rx_peek(p, msg, len))
 		return false;
 	if (msg[len - 1] != msg_check(msg, len - 1) && !uart_check_exempt(p, msg[0])) {
 		uart_rx_consume(p, 1);
-		uart_bad_frame(p);
+		if (uart_bad_frame(p))
+			port_ext(p)->check_errors++;
 		return true;
 	}
 	uart_rx_consume(p, len);
@@ -839,10 +858,12 @@ static bool uart_rx_terminal(struct sensor_port *p)
 static void uart_rx_timeout(struct sensor_port *p)
 {
 	uart_rx_consume(p, 1);
-	if (p->state == LMS_UART_STATE_DATA)
-		uart_bad_frame(p);
-	else if (p->state == LMS_UART_STATE_INFO)
+	if (p->state == LMS_UART_STATE_DATA) {
+		if (uart_bad_frame(p))
+			port_ext(p)->check_errors++;
+	} else if (p->state == LMS_UART_STATE_INFO) {
 		uart_handshake_failed(p);
+	}
 }
 
 /* Parses the received bytes (bounded) according to the port's state. */

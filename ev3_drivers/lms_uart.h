@@ -152,6 +152,8 @@ struct lms_uart_port_ext {
 	uint32_t reconnects;		/* handshakes restarted after errors, unplug or silence */
 	uint32_t handshake_errors;	/* handshakes abandoned (bad INFO, bad check, bad ACK) */
 	uint32_t selects;		/* SELECT commands sent */
+	uint32_t size_errors;		/* headers announcing more than the longest valid message */
+	uint32_t resyncs;		/* losses of frame sync in DATA (each ends at the next valid frame) */
 };
 
 struct lms_uart_ext {

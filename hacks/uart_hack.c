@@ -19,9 +19,6 @@
 #pragma pop_macro("module_exit")
 
 #include "uart_hack.h"
-#ifdef EV3LX_HOST
-#include "host_sim/devices/ev3_ports.h"
-#endif
 
 static struct file *uart_file;		/* /dev/lms_uart, opened at the first call */
 static const struct lms_uart_shm *uart_map;
@@ -179,25 +176,12 @@ static ER_UINT svc_uart_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
 	return E_OK;
 }
 
-/* ATT_INI: forget the previous boot's file; on the host, ports 3/4 get host_sim's stand-ins. */
+/* ATT_INI: forget the previous boot's file.  Which UARTs serve ports 3 and 4
+ * is the board's to say: it passes d_uart.port3_* / port4_* as boot arguments. */
 static void uart_hack_boot(intptr_t exinf)
 {
 	uart_file = NULL;
 	uart_map = NULL;
-#ifdef EV3LX_HOST
-	{
-		static const char *const names[] = { "port3_base", "port3_irq", "port4_base", "port4_irq" };
-		const unsigned long values[] = { EV3_SUART_PORT3_BASE, EV3_SUART_PORT3_INTNO,
-						 EV3_SUART_PORT4_BASE, EV3_SUART_PORT4_INTNO };
-		char text[16];
-		unsigned int i;
-
-		for (i = 0; i < ARRAY_SIZE(names); i++) {
-			snprintf(text, sizeof(text), "%#lx", values[i]);
-			lx_module_param_set(KBUILD_MODNAME, names[i], text);
-		}
-	}
-#endif
 }
 
 static const struct rtos_svc_cfg uart_svcs[] = {

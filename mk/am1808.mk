@@ -1,4 +1,4 @@
-# The AM1808 target (issue 8): libev3lx.a built with arm-none-eabi-gcc for the
+# The AM1808 target: libev3lx.a built with arm-none-eabi-gcc for the
 # ARM926EJ-S, a link-check firmware image against the HRP2 service calls, a
 # U-Boot uImage, and a size report.  Components append target sources to
 # AM1808_SRCS (host-only code stays out).
@@ -14,21 +14,12 @@ CFLAGS_am1808 := -mcpu=arm926ej-s -marm -Os -g -ffreestanding -ffunction-section
 AM1808        := $(BUILD)/am1808
 AM1808_OBJS   := $(patsubst %.c,$(AM1808)/obj/%.o,$(AM1808_SRCS))
 AM1808_LIB    := $(AM1808)/libev3lx.a
-# Every rtos_stub target header must compile alone.
-AM1808_HDR_CHECKS := $(patsubst %.h,$(AM1808)/hdrcheck/%.o,$(filter-out %/rtos_host.h,$(wildcard rtos_stub/include/*.h)))
 FW_OBJS := $(AM1808)/startup.o $(AM1808)/fw_main.o $(AM1808)/hrp2_link_provider.o \
 	$(AM1808)/newlib_glue.o
 # Reproducible image: the time stamp is the last commit's (or 0 outside git).
 SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null || echo 0)
 
-$(AM1808)/obj/%.o: %.c
-	@mkdir -p $(@D)
-	$(quiet) CC am1808 $<
-	$(Q)$(CC_am1808) $(call src_flags,$<) $(call warn_flags,$<) $(CFLAGS_am1808) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
-
-$(AM1808)/hdrcheck/%.o: %.h
-	@mkdir -p $(@D)
-	$(Q)$(CC_am1808) -std=c11 $(COMMON_INC) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -x c -c $< -o $@
+$(eval $(call obj_rule,am1808,$(AM1808)))
 
 $(AM1808_LIB): $(AM1808_OBJS)
 	@mkdir -p $(@D)
@@ -42,7 +33,8 @@ $(AM1808)/startup.o: am1808/startup.S
 
 $(AM1808)/%.o: am1808/%.c
 	@mkdir -p $(@D)
-	$(CC_am1808) -std=c11 $(COMMON_INC) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -c $< -o $@
+	$(quiet) CC am1808 $<
+	$(Q)$(call compile,am1808,$<) -MMD -MP -c $< -o $@
 
 # The firmware image: startup, the library's KEEP'd tables and what fw_main reaches.
 $(AM1808)/ev3lx.elf: $(FW_OBJS) $(AM1808_LIB) am1808/ev3lx.ld
@@ -58,7 +50,7 @@ $(AM1808)/uImage: $(AM1808)/ev3lx.bin
 		-a 0xC0008000 -e 0xC0008000 -n "ev3lx" -d $< $@ > /dev/null
 
 .PHONY: am1808 am1808-link-check am1808-uimage-check size
-am1808: deps-check $(AM1808_HDR_CHECKS) $(AM1808_LIB) $(AM1808)/uImage
+am1808: deps-check $(AM1808_LIB) $(AM1808)/uImage
 	@echo "am1808: $(AM1808_LIB) ($(words $(AM1808_OBJS)) objects), $(AM1808)/uImage"
 
 am1808-link-check: $(FW_OBJS) $(AM1808_LIB)

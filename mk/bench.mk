@@ -20,11 +20,10 @@ BENCH_PROD_LX_SRCS  := $(foreach s,$(HOST_SRCS),$(if $(call is_linux_src,$(s)),$
 BENCH_PROD_LIB_OBJS := $(patsubst %.c,$(BENCH_PROD)/obj/%.o,$(BENCH_PROD_LX_SRCS)) \
 	$(patsubst %.c,$(BUILD)/arm926-test/obj/%.o,$(filter-out $(BENCH_PROD_LX_SRCS),$(HOST_SRCS)))
 
-$(BENCH_PROD)/obj/%.o: %.c
-	@mkdir -p $(@D)
-	$(quiet) CC bench-prod $<
-	$(Q)$(CC_arm926-test) $(call src_flags,$<) $(call warn_flags,$<) $(CFLAGS_arm926-test) \
-		$(LX_DEBUG_OFF) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
+# The production variant is a configuration of its own, compiled by the one recipe.
+CC_arm926-bench-prod     := $(CC_arm926-test)
+CFLAGS_arm926-bench-prod := $(CFLAGS_arm926-test) $(LX_DEBUG_OFF)
+$(eval $(call obj_rule,arm926-bench-prod,$(BENCH_PROD)))
 
 $(BENCH_PROD_LIB): $(BENCH_PROD_LIB_OBJS)
 	@mkdir -p $(@D)

@@ -13,7 +13,9 @@ WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes 
 # linux_compat/include and use gnu11 (typeof, statement expressions).
 LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers
 
-COMMON_INC := -Irtos_stub/include -Ihost_sim/include -Iapi -Itests -Iev3_drivers -Ihacks
+# Layers and their include directories.
+include mk/layers.mk
+
 # Linux code is held to kbuild W=1: -Wextra without -Wmissing-field-initializers
 # (LEGO fills struct miscdevice positionally: { minor, name, fops }).
 LINUX_INC  := -D__KERNEL__ -Wno-missing-field-initializers -Ilinux_compat/include -Ilinux_compat/mach-davinci/include
@@ -39,11 +41,23 @@ CFLAGS_arm926-test := -O2 -g -DEV3LX_HOST=1 -mcpu=arm926ej-s -marm
 LDFLAGS_arm926-test := -static
 RUN_arm926-test    := qemu-arm -cpu arm926 -L /usr/arm-linux-gnueabi
 
-# std and include path for one source file
+# std and include path for one source file: its layer's include directories (mk/layers.mk)
 is_linux_src = $(filter $(addsuffix /%,$(LINUX_DIRS)),$(1))
-src_flags = $(if $(call is_linux_src,$(1)),-std=gnu11 $(LINUX_INC),-std=c11) $(COMMON_INC)
+src_flags = $(if $(call is_linux_src,$(1)),-std=gnu11 $(LINUX_INC),-std=c11) $(call layer_inc,$(call LAYER_OF,$(1)))
 # warnings for one source file: kernel code keeps GNU void-pointer arithmetic, as kbuild's W=1 does
 warn_flags = $(if $(call is_linux_src,$(1)),$(filter-out -Wpointer-arith,$(WARN)),$(WARN))
+
+# The one compile command of configuration $(1) for source (or header) $(2):
+# every object, firmware file and header check is compiled through it.
+compile = $(CC_$(1)) $(call src_flags,$(2)) $(call warn_flags,$(2)) $(CFLAGS_$(1)) $(KERNEL_DEFS)
+
+# The object rule of configuration $(1) for the objects under $(2)/obj.
+define obj_rule
+$(2)/obj/%.o: %.c
+	@mkdir -p $$(@D)
+	$$(quiet) CC $(1) $$<
+	$(Q)$$(call compile,$(1),$$<) -MMD -MP -c $$< -o $$@
+endef
 
 # Quiet build lines ("CC host path"); make V=1 shows the full commands.
 ifeq ($(V),1)

@@ -1,35 +1,10 @@
-# linux_compat checks beyond the tests (both are in `make test`):
+# linux_compat checks beyond the tests (in `make test`; linux_compat's headers
+# are checked by `make header-check`, mk/header_check.mk):
 #
-# `make linux-headers-check`: every header under linux_compat/include, in a
-#   generated translation unit that includes it twice (include guard), compiles
-#   on its own with host gcc and with arm-none-eabi-gcc, warnings as errors.
 # `make scratch-kbuild-check`: the scratch driver written against Linux headers
 #   only (tests/linux_compat/scratch/scratch_drv.c, which tests run on ev3lx)
 #   builds unchanged as an out-of-tree module against Debian's 6.1
 #   linux-headers with W=1 and sparse (C=2), without a warning (as kbuild-check).
-
-LXH_DIRS     := linux_compat/include linux_compat/mach-davinci/include
-LXH_HEADERS  := $(sort $(foreach d,$(LXH_DIRS),$(patsubst $(d)/%,%,$(shell find $(d) -name '*.h' 2>/dev/null))))
-LXH_OUT      := $(BUILD)/linux-headers-check
-LXH_OBJS     := $(foreach h,$(LXH_HEADERS),$(LXH_OUT)/host/$(h:.h=.o) $(LXH_OUT)/am1808/$(h:.h=.o))
-
-$(LXH_OUT)/src/%.c:
-	@mkdir -p $(@D)
-	@printf '#include <%s>\n#include <%s>\n' '$*.h' '$*.h' > $@
-
-$(LXH_OUT)/host/%.o: $(LXH_OUT)/src/%.c
-	@mkdir -p $(@D)
-	@$(CC_host) -std=gnu11 $(LINUX_INC) $(COMMON_INC) $(WARN) $(CFLAGS_host) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
-
-$(LXH_OUT)/am1808/%.o: $(LXH_OUT)/src/%.c
-	@mkdir -p $(@D)
-	@$(CC_am1808) -std=gnu11 $(LINUX_INC) $(COMMON_INC) $(WARN) $(CFLAGS_am1808) $(KERNEL_DEFS) -MMD -MP -c $< -o $@
--include $(LXH_OBJS:.o=.d)
-
-.PRECIOUS: $(LXH_OUT)/src/%.c
-.PHONY: linux-headers-check
-linux-headers-check: $(LXH_OBJS)
-	@echo "linux-headers-check: $(words $(LXH_HEADERS)) headers compile alone (twice included) for host and AM1808"
 
 SCRATCH_DIR        := tests/linux_compat/scratch
 SCRATCH_KBUILD_OUT := $(BUILD)/kbuild-scratch
@@ -48,4 +23,4 @@ scratch-kbuild-check: deps-check
 		cat $(SCRATCH_KBUILD_OUT)/build.log; echo "scratch-kbuild-check: FAILED"; exit 1; fi; \
 	echo "scratch-kbuild-check: built $(SCRATCH_KBUILD_OUT)/scratch_drv.ko, clean (no warnings)"
 
-TEST_SUITE_EXTRA += linux-headers-check scratch-kbuild-check
+TEST_SUITE_EXTRA += scratch-kbuild-check

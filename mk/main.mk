@@ -1,5 +1,5 @@
-# The main job `make` runs after building: the paper's experiment on the host
-# (issue 10).  ev3sim balances the simulated gyro boy for 30 virtual seconds
+# The main job `make` runs after building: the paper's experiment on the host.
+# ev3sim balances the simulated gyro boy for 30 virtual seconds
 # (two pushes, at 10 s and 20 s, so the plot shows it recovering) while a
 # 1 kHz logger writes the gyro to the serial log, writes the plot, the series
 # and the log to build/ev3sim/, then `make report` counts reused versus

@@ -2,7 +2,7 @@
 #
 # Components append to:
 #   HOST_SRCS      sources of libev3lx.a in every host configuration
-#   TEST_SUPPORT_SRCS  sources linked into every test (tests/support/)
+#   TEST_SUPPORT_SRCS  sources linked into every test (tests/lib/, with its headers)
 #   HOST_PROGRAMS  programs built in build/host/ (each NAME with NAME_SRCS)
 # Tests are every tests/**/test_*.c: one TAP program each, linked against
 # the library; build/<config>/tests/<path>/test_x.t mirrors the source tree.
@@ -16,10 +16,7 @@ SUPPORT_OBJS_$(1) := $$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$$(TEST_SUPPORT_SRCS)
 LIB_$(1)       := $(BUILD)/$(1)/libev3lx.a
 TESTS_$(1)     := $$(patsubst %.c,$(BUILD)/$(1)/%.t,$$(TEST_SRCS))
 
-$(BUILD)/$(1)/obj/%.o: %.c
-	@mkdir -p $$(@D)
-	$$(quiet) CC $(1) $$<
-	$(Q)$$(CC_$(1)) $$(call src_flags,$$<) $$(call warn_flags,$$<) $$(CFLAGS_$(1)) $(KERNEL_DEFS) -MMD -MP -c $$< -o $$@
+$(call obj_rule,$(1),$(BUILD)/$(1))
 
 $$(LIB_$(1)): $$(OBJS_$(1))
 	@mkdir -p $$(@D)

@@ -5,16 +5,50 @@
 #define EV3API_INTERNAL_H
 
 #include <stdbool.h>
+#include <stdint.h>
 #include "kernel.h"
 
-/* Whether the caller may write size bytes at p: not NULL and, from a task,
- * inside its protection domain (prb_mem).  Handlers run in the kernel domain. */
-static inline bool api_can_write(const void *p, SIZE size)
+/*
+ * The API's context rules (docs/api.md, "Context"), checked before a call does
+ * anything: a call that makes a service call or may wait needs a task with the
+ * CPU unlocked and dispatching enabled; a reading of the drivers' shared memory
+ * works anywhere except in a task with the CPU locked (where TOPPERS offers no
+ * prb_mem to check the caller's buffer).  Either way: E_CTX otherwise.
+ */
+static inline ER api_may_wait(void)
+{
+	return sns_ctx() || sns_loc() || sns_dsp() ? E_CTX : E_OK;
+}
+
+static inline ER api_may_read(void)
+{
+	return !sns_ctx() && sns_loc() ? E_CTX : E_OK;
+}
+
+/*
+ * Whether the caller may write size bytes at p, an object aligned to align:
+ * E_MACV for NULL or, from a task, memory outside its protection domain
+ * (prb_mem; handlers run in the kernel domain); E_PAR if p is misaligned (the
+ * ARM926 would store to the wrong address, not fault).
+ */
+static inline ER api_check_out(const void *p, SIZE size, SIZE align)
 {
 	if (p == NULL)
-		return false;
-	return sns_ctx() || prb_mem(p, size, TSK_SELF, TPM_WRITE) == E_OK;
+		return E_MACV;
+	if ((uintptr_t)p & (align - 1U))
+		return E_PAR;
+	if (!sns_ctx() && prb_mem(p, size, TSK_SELF, TPM_WRITE) != E_OK)
+		return E_MACV;
+	return E_OK;
 }
+
+/* api_check_out for the object p points to. */
+#define API_CHECK_OUT(p) api_check_out((p), sizeof(*(p)), __alignof__(*(p)))
+
+/* EV3RT's convention for a call that cannot return its error (a getter, or
+ * a value corrected instead of refused): a warning through syslog naming the
+ * call, the port or value, and the error. */
+void api_warn(const char *call, int arg, ER ercd);
 
 /* Forget everything of a previous boot (ATT_INI of ev3api_cfg, in config.c). */
 void api_motor_boot(void);

@@ -31,7 +31,7 @@ static const uint8_t pattern_of[TNUM_LED_COLOR] = {
 };
 
 struct click_handler {
-	ev3_button_handler_t handler;
+	ISR handler;
 	intptr_t exinf;
 };
 
@@ -45,23 +45,34 @@ void api_brick_boot(void)
 	ui_shm = NULL;
 }
 
-ER ev3_led_set_color(ledcolor_t color)
+ER ev3lx_led_set_color(ledcolor_t color)
 {
+	ER ercd = api_may_wait();
+
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)color >= TNUM_LED_COLOR)
 		return E_PAR;
 	return ui_svc_led(pattern_of[color]);
 }
 
-ER ev3_button_is_pressed(button_t button, bool *p_pressed)
+ER ev3lx_button_is_pressed(button_t button, bool *p_pressed)
 {
+	ER ercd = api_may_read();
+
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)button >= TNUM_BUTTON)
 		return E_ID;
-	if (!api_can_write(p_pressed, sizeof(*p_pressed)))
-		return E_MACV;
+	ercd = API_CHECK_OUT(p_pressed);
+	if (ercd != E_OK)
+		return ercd;
 	if (ui_shm == NULL) {
 		const struct lms_ui *map = NULL;
-		ER ercd = ui_svc_map(&map);
 
+		ercd = api_may_wait();	/* the first reading maps the memory: a service call */
+		if (ercd == E_OK)
+			ercd = ui_svc_map(&map);
 		if (ercd != E_OK)
 			return ercd;
 		ui_shm = map;
@@ -70,15 +81,16 @@ ER ev3_button_is_pressed(button_t button, bool *p_pressed)
 	return E_OK;
 }
 
-ER ev3_button_set_on_clicked(button_t button, ev3_button_handler_t handler, intptr_t exinf)
+ER ev3lx_button_set_on_clicked(button_t button, ISR handler, intptr_t exinf)
 {
 	struct click_handler *h;
 	ER ercd;
 
+	ercd = api_may_wait();
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)button >= TNUM_BUTTON)
 		return E_ID;
-	if (sns_ctx())
-		return E_CTX;
 	h = &click_handlers[ui_index_of[button]];
 	ercd = wai_sem(EV3_BUTTON_SEMID);
 	if (ercd != E_OK)

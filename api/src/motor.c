@@ -2,7 +2,7 @@
  * motor.c — the EV3 motor API over d_pwm's extended service calls.
  *
  * Commands go to d_pwm through pwm_hack's service calls (one call per API
- * call: the hot path of ev3_motor_set_speed is one cal_svc carrying the
+ * call: the hot path of ev3lx_motor_set_speed is one cal_svc carrying the
  * OUTPUT_SPEED and OUTPUT_START commands).  Counts and speed are read from
  * the MOTORDATA array d_pwm publishes (its /dev/lms_motor mapping), which the
  * driver refreshes every 2 ms.
@@ -12,7 +12,7 @@
 #include "api_internal.h"
 #include "pwm_hack.h"
 
-/* What each output port was configured as (NONE_MOTOR until ev3_motor_config). */
+/* What each output port was configured as (NONE_MOTOR until ev3lx_motor_config). */
 static motor_type_t motor_type[TNUM_MOTOR_PORT];
 /* d_pwm's MOTORDATA[4], mapped at the first configuration. */
 static const volatile struct lms_motor_data *motor_data;
@@ -38,20 +38,20 @@ static ER check_motor(motor_port_t port, unsigned type_mask)
 #define ANY_MOTOR       ((1U << MEDIUM_MOTOR) | (1U << LARGE_MOTOR) | (1U << UNREGULATED_MOTOR))
 #define REGULATED_MOTOR ((1U << MEDIUM_MOTOR) | (1U << LARGE_MOTOR))
 
-/* A command may only come from a task (it may wait in the driver). */
+/* A command is a service call that may wait in the driver. */
 static ER check_command(motor_port_t port, unsigned type_mask)
 {
-	return sns_ctx() ? E_CTX : check_motor(port, type_mask);
+	ER ercd = api_may_wait();
+
+	return ercd != E_OK ? ercd : check_motor(port, type_mask);
 }
 
-/* A reading of size bytes into p. */
-static ER check_reading(motor_port_t port, unsigned type_mask, const void *p, SIZE size)
+/* A reading of the shared memory (the out-pointer is checked after this). */
+static ER check_reading(motor_port_t port, unsigned type_mask)
 {
-	ER ercd = check_motor(port, type_mask);
+	ER ercd = api_may_read();
 
-	if (ercd == E_OK && !api_can_write(p, size))
-		ercd = E_MACV;
-	return ercd;
+	return ercd != E_OK ? ercd : check_motor(port, type_mask);
 }
 
 /* d_pwm's device type for an API motor type. */
@@ -74,14 +74,15 @@ void api_motor_boot(void)
 	motor_data = NULL;
 }
 
-ER ev3_motor_config(motor_port_t port, motor_type_t type)
+ER ev3lx_motor_config(motor_port_t port, motor_type_t type)
 {
 	uint8_t cmd[5];
 	motor_type_t old;
 	ER ercd;
 
-	if (sns_ctx())
-		return E_CTX;
+	ercd = api_may_wait();
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)port >= TNUM_MOTOR_PORT)
 		return E_ID;
 	if ((unsigned)type >= TNUM_MOTOR_TYPE)
@@ -110,12 +111,17 @@ ER ev3_motor_config(motor_port_t port, motor_type_t type)
 	return pwm_command(cmd, 2);
 }
 
-ER ev3_motor_get_type(motor_port_t port, motor_type_t *p_type)
+ER ev3lx_motor_get_type(motor_port_t port, motor_type_t *p_type)
 {
+	ER ercd = api_may_read();
+
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)port >= TNUM_MOTOR_PORT)
 		return E_ID;
-	if (!api_can_write(p_type, sizeof(*p_type)))
-		return E_MACV;
+	ercd = API_CHECK_OUT(p_type);
+	if (ercd != E_OK)
+		return ercd;
 	*p_type = motor_type[port];
 	return E_OK;
 }
@@ -139,27 +145,29 @@ static ER run_motor(motor_port_t port, uint8_t opcode, int value, unsigned type_
 	return pwm_command2(set, sizeof(set), start, sizeof(start));
 }
 
-ER ev3_motor_set_speed(motor_port_t port, int speed)
+ER ev3lx_motor_set_speed(motor_port_t port, int speed)
 {
 	return run_motor(port, LMS_PWM_OUTPUT_SPEED, speed, REGULATED_MOTOR);
 }
 
-ER ev3_motor_set_power(motor_port_t port, int power)
+ER ev3lx_motor_set_power(motor_port_t port, int power)
 {
 	return run_motor(port, LMS_PWM_OUTPUT_POWER, power, ANY_MOTOR);
 }
 
-ER ev3_motor_get_speed(motor_port_t port, int *p_speed)
+ER ev3lx_motor_get_speed(motor_port_t port, int *p_speed)
 {
-	ER ercd = check_reading(port, ANY_MOTOR, p_speed, sizeof(*p_speed));
+	ER ercd = check_reading(port, ANY_MOTOR);
 
+	if (ercd == E_OK)
+		ercd = API_CHECK_OUT(p_speed);
 	if (ercd != E_OK)
 		return ercd;
 	*p_speed = (int)motor_data[port].speed;	/* signed: -100..100 */
 	return E_OK;
 }
 
-ER ev3_motor_stop(motor_port_t port, bool brake)
+ER ev3lx_motor_stop(motor_port_t port, bool brake)
 {
 	uint8_t cmd[3];
 	ER ercd;
@@ -173,17 +181,19 @@ ER ev3_motor_stop(motor_port_t port, bool brake)
 	return pwm_command(cmd, sizeof(cmd));
 }
 
-ER ev3_motor_get_counts(motor_port_t port, int32_t *p_counts)
+ER ev3lx_motor_get_counts(motor_port_t port, int32_t *p_counts)
 {
-	ER ercd = check_reading(port, ANY_MOTOR, p_counts, sizeof(*p_counts));
+	ER ercd = check_reading(port, ANY_MOTOR);
 
+	if (ercd == E_OK)
+		ercd = API_CHECK_OUT(p_counts);
 	if (ercd != E_OK)
 		return ercd;
 	*p_counts = motor_data[port].tacho_sensor;
 	return E_OK;
 }
 
-ER ev3_motor_reset_counts(motor_port_t port)
+ER ev3lx_motor_reset_counts(motor_port_t port)
 {
 	uint8_t cmd[2];
 	ER ercd;
@@ -206,11 +216,13 @@ static void put_s32(uint8_t *p, int32_t v)
 	p[3] = (uint8_t)(u >> 24);
 }
 
-ER ev3_motor_is_busy(motor_port_t port, bool *p_busy)
+ER ev3lx_motor_is_busy(motor_port_t port, bool *p_busy)
 {
 	ER_UINT busy;
-	ER ercd = check_reading(port, ANY_MOTOR, p_busy, sizeof(*p_busy));
+	ER ercd = check_command(port, ANY_MOTOR);	/* a read() of d_pwm: a service call */
 
+	if (ercd == E_OK)
+		ercd = API_CHECK_OUT(p_busy);
 	if (ercd != E_OK)
 		return ercd;
 	busy = pwm_busy();
@@ -243,11 +255,11 @@ static RELTIM rotate_timeout_ms(int degrees, int speed)
 	uint32_t deg = (uint32_t)(degrees < 0 ? -degrees : degrees);
 	uint32_t spd = (uint32_t)(speed < 0 ? -speed : speed);
 
-	/* cppcheck-suppress zerodivcond ; speed is never 0: ev3_motor_rotate answers E_PAR first */
-	return (RELTIM)(1000U + deg * 40U / spd);
+	/* cppcheck-suppress zerodivcond ; speed is never 0: ev3lx_motor_rotate answers E_PAR first */
+	return (RELTIM)(1000U + deg * 400U / spd);
 }
 
-ER ev3_motor_rotate(motor_port_t port, int degrees, int speed, bool blocking)
+ER ev3lx_motor_rotate(motor_port_t port, int degrees, int speed, bool blocking)
 {
 	uint8_t cmd[LMS_PWM_STEP_LEN];
 	ER ercd;
@@ -297,18 +309,20 @@ static ER sync_pair(motor_port_t left, motor_port_t right, int speed, int turn, 
 	cmd[LMS_PWM_SYNC_OFF_TURN] = (uint8_t)(uint16_t)(int16_t)turn;
 	cmd[LMS_PWM_SYNC_OFF_TURN + 1] = (uint8_t)((uint16_t)(int16_t)turn >> 8);
 	put_s32(&cmd[LMS_PWM_SYNC_OFF_STEP], degrees);
-	cmd[LMS_PWM_SYNC_OFF_BRAKE] = 1;
+	/* a limited run ends braked; an endless one runs until the next command */
+	cmd[LMS_PWM_SYNC_OFF_BRAKE] = degrees != 0 ? 1U : 0U;
 	return pwm_command(cmd, sizeof(cmd));
 }
 
-ER ev3_motor_steer(motor_port_t left, motor_port_t right, int speed, int turn)
+ER ev3lx_motor_steer(motor_port_t left, motor_port_t right, int speed, int turn)
 {
 	return sync_pair(left, right, speed, turn, 0);
 }
 
-ER ev3_motor_sync(motor_port_t left, motor_port_t right, int speed, int turn, int degrees)
+ER ev3lx_motor_sync(motor_port_t left, motor_port_t right, int speed, int turn, int degrees)
 {
-	if (degrees <= 0 || degrees > 10000000)
+	/* at speed 0 the pair would never cover the distance: the call could never finish */
+	if (degrees <= 0 || degrees > 10000000 || speed == 0)
 		return E_PAR;
 	return sync_pair(left, right, speed, turn, degrees);
 }

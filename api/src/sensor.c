@@ -35,8 +35,25 @@
 enum {
 	COLOR_MODE_REFLECT = 0, COLOR_MODE_AMBIENT = 1, COLOR_MODE_COLOR = 2, COLOR_MODE_RGB_RAW = 4,
 	US_MODE_DIST_CM = 0,
-	GYRO_MODE_ANGLE = 0, GYRO_MODE_RATE = 1,
-	IR_MODE_PROX = 0,
+	US_MODE_LISTEN = 2,
+	GYRO_MODE_ANGLE = 0, GYRO_MODE_RATE = 1, GYRO_MODE_CAL = 4,
+	IR_MODE_PROX = 0, IR_MODE_SEEK = 1, IR_MODE_REMOTE = 2,
+};
+
+/*
+ * IR-REMOTE reports per channel a code of the buttons held (LEGO's EV3
+ * infrared sensor documentation): 0 none, 1..4 one of red up, red down,
+ * blue up, blue down, 5..8 a red with a blue button, 9 the beacon button,
+ * 10 both red, 11 both blue.  The API gives them as bit masks.
+ */
+static const uint8_t remote_buttons_of[] = {
+	[0] = 0,
+	[1] = IR_RED_UP_BUTTON, [2] = IR_RED_DOWN_BUTTON,
+	[3] = IR_BLUE_UP_BUTTON, [4] = IR_BLUE_DOWN_BUTTON,
+	[5] = IR_RED_UP_BUTTON | IR_BLUE_UP_BUTTON, [6] = IR_RED_UP_BUTTON | IR_BLUE_DOWN_BUTTON,
+	[7] = IR_RED_DOWN_BUTTON | IR_BLUE_UP_BUTTON, [8] = IR_RED_DOWN_BUTTON | IR_BLUE_DOWN_BUTTON,
+	[9] = IR_BEACON_BUTTON,
+	[10] = IR_RED_UP_BUTTON | IR_RED_DOWN_BUTTON, [11] = IR_BLUE_UP_BUTTON | IR_BLUE_DOWN_BUTTON,
 };
 
 static sensor_type_t sensor_type[TNUM_SENSOR_PORT];
@@ -84,17 +101,19 @@ void api_sensor_boot(void)
 	analog_shm = NULL;
 }
 
-ER ev3_sensor_config(sensor_port_t port, sensor_type_t type)
+ER ev3lx_sensor_config(sensor_port_t port, sensor_type_t type)
 {
 	sensor_type_t old;
-	ER ercd;
+	ER ercd = api_may_wait();
 
-	if (sns_ctx())
-		return E_CTX;
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)port >= TNUM_SENSOR_PORT)
 		return E_ID;
 	if ((unsigned)type >= TNUM_SENSOR_TYPE)
 		return E_PAR;
+	if (type == HT_NXT_ACCEL_SENSOR || type == HT_NXT_COLOR_SENSOR || type == NXT_TEMP_SENSOR)
+		return E_NOSPT;	/* I2C sensors: no driver yet */
 	ercd = map_shared_memory();
 	if (ercd != E_OK)
 		return ercd;
@@ -114,26 +133,34 @@ ER ev3_sensor_config(sensor_port_t port, sensor_type_t type)
 	return E_OK;
 }
 
-ER ev3_sensor_get_type(sensor_port_t port, sensor_type_t *p_type)
+ER ev3lx_sensor_get_type(sensor_port_t port, sensor_type_t *p_type)
 {
+	ER ercd = api_may_read();
+
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)port >= TNUM_SENSOR_PORT)
 		return E_ID;
-	if (!api_can_write(p_type, sizeof(*p_type)))
-		return E_MACV;
+	ercd = API_CHECK_OUT(p_type);
+	if (ercd != E_OK)
+		return ercd;
 	*p_type = sensor_type[port];
 	return E_OK;
 }
 
-/* E_OK if port is valid, configured as type, and out may take size bytes. */
-static ER check_sensor(sensor_port_t port, sensor_type_t type, const void *out, SIZE size)
+/* E_OK if a reading may be made here, port is valid and configured as type, and out
+ * (out_check: its API_CHECK_OUT) may take the value. */
+static ER check_sensor(sensor_port_t port, sensor_type_t type, ER out_check)
 {
+	ER ercd = api_may_read();
+
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)port >= TNUM_SENSOR_PORT)
 		return E_ID;
 	if (sensor_type[port] != type)
 		return E_OBJ;
-	if (!api_can_write(out, size))
-		return E_MACV;
-	return E_OK;
+	return out_check;
 }
 
 /*
@@ -147,9 +174,10 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 	int expected = lms_type_of(sensor_type[port]);
 	RELTIM waited = 0, limit = START_TIMEOUT_MS;
 	bool in_data = false;
+	ER ercd = api_may_wait();
 
-	if (sns_ctx())
-		return E_CTX;
+	if (ercd != E_OK)
+		return ercd;
 	for (;;) {
 		uint8_t state = *(const volatile uint8_t *)&ext->state;
 		int8_t status = *(const volatile int8_t *)&uart_shm->lms.status[port];
@@ -166,11 +194,15 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 			in_data = true;
 			waited = 0;
 			limit = MODE_TIMEOUT_MS;
+		} else if (state != LMS_UART_STATE_DATA && in_data) {
+			/* the sensor reconnects: a whole handshake's bound again */
+			in_data = false;
+			waited = 0;
+			limit = START_TIMEOUT_MS;
 		}
 		if (state == LMS_UART_STATE_DATA &&
 		    *(const volatile int8_t *)&ext->mode != mode) {
-			ER ercd = uart_svc_set_mode((uint_t)port, (uint_t)mode);
-
+			ercd = uart_svc_set_mode((uint_t)port, (uint_t)mode);
 			if (ercd != E_OK)
 				return ercd;
 		}
@@ -186,11 +218,13 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 	}
 }
 
-/* Copies size bytes of the newest sample of mode into out (fast path first). */
-static ER read_uart(sensor_port_t port, sensor_type_t type, int mode, void *out, SIZE size)
+/* Copies size bytes of the newest sample of mode into out (fast path first); out_check is
+ * the API_CHECK_OUT of the caller's pointer the value goes to. */
+static ER read_uart(sensor_port_t port, sensor_type_t type, int mode, void *out, SIZE size,
+		    ER out_check)
 {
 	const int8_t *sample;
-	ER ercd = check_sensor(port, type, out, size);
+	ER ercd = check_sensor(port, type, out_check);
 
 	if (ercd != E_OK)
 		return ercd;
@@ -216,83 +250,103 @@ static ER read_s16(sensor_port_t port, sensor_type_t type, int mode, int16_t div
 	uint8_t raw[2];
 	ER ercd;
 
-	if (!api_can_write(out, sizeof(*out)))
-		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
-	ercd = read_uart(port, type, mode, raw, sizeof(raw));
+	ercd = read_uart(port, type, mode, raw, sizeof(raw), API_CHECK_OUT(out));
 	if (ercd == E_OK)
 		*out = (int16_t)(le16(raw) / divisor);
 	return ercd;
 }
 
-ER ev3_gyro_sensor_get_angle(sensor_port_t port, int16_t *p_angle)
+ER ev3lx_gyro_sensor_get_angle(sensor_port_t port, int16_t *p_angle)
 {
 	return read_s16(port, GYRO_SENSOR, GYRO_MODE_ANGLE, 1, p_angle);
 }
 
-ER ev3_gyro_sensor_get_rate(sensor_port_t port, int16_t *p_rate)
+ER ev3lx_gyro_sensor_get_rate(sensor_port_t port, int16_t *p_rate)
 {
 	return read_s16(port, GYRO_SENSOR, GYRO_MODE_RATE, 1, p_rate);
 }
 
-ER ev3_gyro_sensor_reset(sensor_port_t port)
+ER ev3lx_gyro_sensor_reset(sensor_port_t port)
 {
 	uint8_t raw[2];
 	ER ercd;
 
-	/* The gyro restarts its angle at 0 on a mode change: pass through RATE. */
-	ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_RATE, raw, sizeof(raw));
+	/* GYRO-CAL recalibrates; any mode change restarts the angle at 0. */
+	ercd = api_may_wait();
 	if (ercd == E_OK)
-		ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_ANGLE, raw, sizeof(raw));
+		ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_CAL, raw, sizeof(raw), E_OK);
+	if (ercd == E_OK)
+		ercd = read_uart(port, GYRO_SENSOR, GYRO_MODE_ANGLE, raw, sizeof(raw), E_OK);
 	return ercd;
 }
 
-ER ev3_ultrasonic_sensor_get_distance(sensor_port_t port, int16_t *p_cm)
+ER ev3lx_ultrasonic_sensor_get_distance(sensor_port_t port, int16_t *p_cm)
 {
 	/* the sensor reports tenths of a cm */
 	return read_s16(port, ULTRASONIC_SENSOR, US_MODE_DIST_CM, 10, p_cm);
 }
 
-ER ev3_touch_sensor_is_pressed(sensor_port_t port, bool *p_pressed)
-{
-	ER ercd = check_sensor(port, TOUCH_SENSOR, p_pressed, sizeof(*p_pressed));
-
-	if (ercd != E_OK)
-		return ercd;
-	*p_pressed = *(const volatile uint16_t *)&analog_shm->in_pin6[port] > TOUCH_PRESSED_RAW;
-	return E_OK;
-}
-
-ER ev3_color_sensor_get_color(sensor_port_t port, colorid_t *p_color)
+ER ev3lx_ultrasonic_sensor_listen(sensor_port_t port, bool *p_heard)
 {
 	uint8_t raw;
 	ER ercd;
 
-	if (!api_can_write(p_color, sizeof(*p_color)))
-		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
-	ercd = read_uart(port, COLOR_SENSOR, COLOR_MODE_COLOR, &raw, 1);
+	ercd = read_uart(port, ULTRASONIC_SENSOR, US_MODE_LISTEN, &raw, 1, API_CHECK_OUT(p_heard));
+	if (ercd == E_OK)
+		*p_heard = raw != 0;
+	return ercd;
+}
+
+ER ev3lx_touch_sensor_is_pressed(sensor_port_t port, bool *p_pressed)
+{
+	ER ercd = check_sensor(port, TOUCH_SENSOR, API_CHECK_OUT(p_pressed));
+
+	if (ercd != E_OK)
+		return ercd;
+	/*
+	 * The touch sensor is an EV3 analog device (InConn INPUT_DUMB) whose switch drives pin 6.
+	 * Before detection has run (d_analog starts it 2 s after loading) and on an empty port the
+	 * connection is NONE: pin 6 is read live all the same, and an empty port's pin 6 is low,
+	 * so an unplugged sensor reads as not pressed, never as a frozen value.  Any other device
+	 * detected on the port is E_OBJ.
+	 */
+	switch (*(const volatile int8_t *)&analog_shm->in_conn[port]) {
+	case LMS_CONN_INPUT_DUMB:
+	case LMS_CONN_NONE:
+		*p_pressed = *(const volatile uint16_t *)&analog_shm->in_pin6[port] > TOUCH_PRESSED_RAW;
+		return E_OK;
+	default:
+		return E_OBJ;
+	}
+}
+
+ER ev3lx_color_sensor_get_color(sensor_port_t port, colorid_t *p_color)
+{
+	uint8_t raw;
+	ER ercd;
+
+	ercd = read_uart(port, COLOR_SENSOR, COLOR_MODE_COLOR, &raw, 1, API_CHECK_OUT(p_color));
 	if (ercd == E_OK)
 		*p_color = raw < TNUM_COLOR ? (colorid_t)raw : COLOR_NONE;
 	return ercd;
 }
 
-ER ev3_color_sensor_get_reflect(sensor_port_t port, uint8_t *p_pct)
+ER ev3lx_color_sensor_get_reflect(sensor_port_t port, uint8_t *p_pct)
 {
-	return read_uart(port, COLOR_SENSOR, COLOR_MODE_REFLECT, p_pct, 1);
+	return read_uart(port, COLOR_SENSOR, COLOR_MODE_REFLECT, p_pct, 1, API_CHECK_OUT(p_pct));
 }
 
-ER ev3_color_sensor_get_ambient(sensor_port_t port, uint8_t *p_pct)
+ER ev3lx_color_sensor_get_ambient(sensor_port_t port, uint8_t *p_pct)
 {
-	return read_uart(port, COLOR_SENSOR, COLOR_MODE_AMBIENT, p_pct, 1);
+	return read_uart(port, COLOR_SENSOR, COLOR_MODE_AMBIENT, p_pct, 1, API_CHECK_OUT(p_pct));
 }
 
-ER ev3_color_sensor_get_rgb_raw(sensor_port_t port, rgb_raw_t *p_rgb)
+ER ev3lx_color_sensor_get_rgb_raw(sensor_port_t port, rgb_raw_t *p_rgb)
 {
 	uint8_t raw[6];
 	ER ercd;
 
-	if (!api_can_write(p_rgb, sizeof(*p_rgb)))
-		return (unsigned)port >= TNUM_SENSOR_PORT ? E_ID : E_MACV;
-	ercd = read_uart(port, COLOR_SENSOR, COLOR_MODE_RGB_RAW, raw, sizeof(raw));
+	ercd = read_uart(port, COLOR_SENSOR, COLOR_MODE_RGB_RAW, raw, sizeof(raw), API_CHECK_OUT(p_rgb));
 	if (ercd == E_OK) {
 		p_rgb->r = (uint16_t)le16(&raw[0]);
 		p_rgb->g = (uint16_t)le16(&raw[2]);
@@ -301,29 +355,61 @@ ER ev3_color_sensor_get_rgb_raw(sensor_port_t port, rgb_raw_t *p_rgb)
 	return ercd;
 }
 
-ER ev3_infrared_sensor_get_distance(sensor_port_t port, int8_t *p_pct)
+ER ev3lx_infrared_sensor_get_distance(sensor_port_t port, int8_t *p_pct)
 {
-	return read_uart(port, INFRARED_SENSOR, IR_MODE_PROX, p_pct, 1);
+	return read_uart(port, INFRARED_SENSOR, IR_MODE_PROX, p_pct, 1, API_CHECK_OUT(p_pct));
 }
 
-ER ev3_uart_sensor_get_raw(sensor_port_t port, void *buf, uint_t size)
+ER ev3lx_infrared_sensor_seek(sensor_port_t port, ir_seek_t *p_seek)
+{
+	int8_t raw[8];
+	ER ercd;
+
+	ercd = read_uart(port, INFRARED_SENSOR, IR_MODE_SEEK, raw, sizeof(raw), API_CHECK_OUT(p_seek));
+	if (ercd == E_OK) {
+		/* the sample is heading, distance of channel 1, then of 2, 3, 4 */
+		for (unsigned c = 0; c < 4; c++) {
+			p_seek->heading[c] = raw[2 * c];
+			p_seek->distance[c] = raw[2 * c + 1];
+		}
+	}
+	return ercd;
+}
+
+ER ev3lx_infrared_sensor_get_remote(sensor_port_t port, ir_remote_t *p_remote)
+{
+	uint8_t raw[4];
+	ER ercd;
+
+	ercd = read_uart(port, INFRARED_SENSOR, IR_MODE_REMOTE, raw, sizeof(raw), API_CHECK_OUT(p_remote));
+	if (ercd == E_OK) {
+		for (unsigned c = 0; c < 4; c++)
+			p_remote->channel[c] = raw[c] < sizeof(remote_buttons_of) ? remote_buttons_of[raw[c]] : 0U;
+	}
+	return ercd;
+}
+
+ER ev3lx_uart_sensor_get_raw(sensor_port_t port, void *buf, uint_t size)
 {
 	const int8_t *sample;
 	int mode;
+	ER ercd = api_may_read();
 
+	if (ercd != E_OK)
+		return ercd;
 	if ((unsigned)port >= TNUM_SENSOR_PORT)
 		return E_ID;
 	if (lms_type_of(sensor_type[port]) == 0)
 		return E_OBJ;
 	if (size == 0 || size > LMS_UART_DATA_SIZE)
 		return E_PAR;
-	if (!api_can_write(buf, size))
-		return E_MACV;
+	ercd = api_check_out(buf, size, 1);
+	if (ercd != E_OK)
+		return ercd;
 	mode = (int)*(const volatile int8_t *)&uart_shm->ext.port[port].mode;	/* signed: -1 is none */
 	sample = lms_uart_sample(uart_shm, (unsigned)port, mode);
 	if (sample == NULL) {
-		ER ercd = wait_sample(port, mode < 0 ? 0 : mode, &sample);
-
+		ercd = wait_sample(port, mode < 0 ? 0 : mode, &sample);
 		if (ercd != E_OK)
 			return ercd;
 	}

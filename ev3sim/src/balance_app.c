@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "ev3api.h"
+#include "uart_hack.h"
 #include "rtos_host.h"
 #include "ev3sim/apps.h"
 #include "ev3sim/balance_app.h"
@@ -50,6 +51,7 @@
 
 static struct ev3sim_balance_cfg app_cfg = { true, 1000, false };
 static struct ev3sim_balance_stats stats;
+static const struct lms_uart_shm *uart_link;   /* d_uart's shared memory, for its counters */
 
 /* Balance task state (only the balance task and the main task before the
  * cyclic starts touch it). */
@@ -128,9 +130,9 @@ static void balance_task(intptr_t exinf)
 		stats.late_starts++;
 		stats.deadline_misses++;
 	}
-	check(ev3_gyro_sensor_get_rate(GYRO_PORT, &rate));
-	check(ev3_motor_get_counts(LEFT_MOTOR, &count_l));
-	check(ev3_motor_get_counts(RIGHT_MOTOR, &count_r));
+	check(ev3lx_gyro_sensor_get_rate(GYRO_PORT, &rate));
+	check(ev3lx_motor_get_counts(LEFT_MOTOR, &count_l));
+	check(ev3lx_motor_get_counts(RIGHT_MOTOR, &count_r));
 
 	bal.offset += OFFSET_TRACKING * (rate - bal.offset);
 	bal.tilt_rate = rate - bal.offset;
@@ -148,8 +150,8 @@ static void balance_task(intptr_t exinf)
 	    K_WHEEL * (phi + bal.tilt) + K_WHEEL_RATE * (phi_rate + bal.tilt_rate);
 	power = (int)lround(u > 100.0 ? 100.0 : u < -100.0 ? -100.0 : u);
 	spend_cpu(BALANCE_COMPUTE_NS);
-	check(ev3_motor_set_power(LEFT_MOTOR, power));
-	check(ev3_motor_set_power(RIGHT_MOTOR, power));
+	check(ev3lx_motor_set_power(LEFT_MOTOR, power));
+	check(ev3lx_motor_set_power(RIGHT_MOTOR, power));
 
 	stats.power = power;
 	stats.tilt_est_deg = bal.tilt;
@@ -169,7 +171,7 @@ static void logger_task(intptr_t exinf)
 
 		if (slp_tsk() != E_OK)
 			continue;
-		(void)ev3_gyro_sensor_get_rate(GYRO_PORT, &rate);
+		(void)ev3lx_gyro_sensor_get_rate(GYRO_PORT, &rate);
 		len = snprintf(line, sizeof(line), "%lu,%d,%ld\r\n",
 			       (unsigned long)(rtos_host_now() / 1000000U), rate,
 			       lround(stats.tilt_est_deg * 100.0));
@@ -182,25 +184,28 @@ static void logger_task(intptr_t exinf)
 /* Main task: set up, calibrate while held, start the loops. */
 static void main_task(intptr_t exinf)
 {
+	const struct lms_uart_shm *map = NULL;   /* on the task's stack: the domain's memory */
 	int16_t rate = 0;
 	double sum = 0.0;
 
 	(void)exinf;
-	check(ev3_motor_config(LEFT_MOTOR, LARGE_MOTOR));
-	check(ev3_motor_config(RIGHT_MOTOR, LARGE_MOTOR));
-	check(ev3_sensor_config(GYRO_PORT, GYRO_SENSOR));
+	check(ev3lx_motor_config(LEFT_MOTOR, LARGE_MOTOR));
+	check(ev3lx_motor_config(RIGHT_MOTOR, LARGE_MOTOR));
+	check(ev3lx_sensor_config(GYRO_PORT, GYRO_SENSOR));
+	if (check(uart_svc_map(&map)) == E_OK)
+		uart_link = map;
 	/* the first read waits for the gyro's handshake */
-	if (check(ev3_gyro_sensor_get_rate(GYRO_PORT, &rate)) != E_OK)
+	if (check(ev3lx_gyro_sensor_get_rate(GYRO_PORT, &rate)) != E_OK)
 		return;
 	for (int i = 0; i < CALIBRATION_SAMPLES; i++) {
 		dly_tsk(CALIBRATION_GAP_MS);
-		check(ev3_gyro_sensor_get_rate(GYRO_PORT, &rate));
+		check(ev3lx_gyro_sensor_get_rate(GYRO_PORT, &rate));
 		sum += rate;
 	}
 	bal.offset = sum / CALIBRATION_SAMPLES;
 	stats.gyro_offset_dps = bal.offset;
-	check(ev3_motor_reset_counts(LEFT_MOTOR));
-	check(ev3_motor_reset_counts(RIGHT_MOTOR));
+	check(ev3lx_motor_reset_counts(LEFT_MOTOR));
+	check(ev3lx_motor_reset_counts(RIGHT_MOTOR));
 	stats.calibrated = true;
 	stats.calibrated_ns = rtos_host_now();
 	if (app_cfg.logger_hz > 0) {
@@ -231,6 +236,7 @@ static void app_boot(intptr_t exinf)
 	ev3sim_quiet_console();
 	memset(&stats, 0, sizeof(stats));
 	memset(&bal, 0, sizeof(bal));
+	uart_link = NULL;
 }
 
 static const struct rtos_ini_cfg app_inis[] = { { app_boot, 0 } };
@@ -261,5 +267,14 @@ void ev3sim_balance_stop(void)
 
 const struct ev3sim_balance_stats *ev3sim_balance_stats(void)
 {
+	if (uart_link) {
+		const struct lms_uart_port_ext *x = &uart_link->ext.port[GYRO_PORT];
+
+		stats.gyro_frames = x->frames;
+		stats.gyro_check_errors = x->check_errors;
+		stats.gyro_size_errors = x->size_errors;
+		stats.gyro_resyncs = x->resyncs;
+		stats.gyro_reconnects = x->reconnects;
+	}
 	return &stats;
 }

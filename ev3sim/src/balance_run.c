@@ -22,8 +22,7 @@
 
 static struct recorder {
 	struct ev3sim_balance_result *res;
-	bool record;
-	size_t cap;
+	FILE *out;
 	double sum_sq;
 	uint64_t samples;
 	double wheel0;
@@ -51,29 +50,11 @@ static void observe(const struct ev3sim_robot_sample *s, void *ctx)
 	travel = fabs(s->wheel_deg - rec.wheel0) * PI / 180.0 * ev3sim_gyro_boy.wheel_radius_m * 100.0;
 	if (travel > res->max_travel_cm)
 		res->max_travel_cm = travel;
-	if (!rec.record)
-		return;
-	if (res->nrows == rec.cap) {
-		size_t cap = rec.cap ? rec.cap * 2 : 4096;
-		struct ev3sim_series_row *rows = realloc(res->rows, cap * sizeof(*rows));
-
-		if (rows == NULL) {
-			rec.record = false;     /* out of memory: keep the statistics only */
-			return;
-		}
-		res->rows = rows;
-		rec.cap = cap;
-	}
-	res->rows[res->nrows++] = (struct ev3sim_series_row){
-		.t_s = ((double)s->t_ns - (double)EV3SIM_RELEASE_NS) * 1e-9,
-		.tilt_deg = s->tilt_deg,
-		.tilt_rate_dps = s->tilt_rate_dps,
-		.wheel_deg = s->wheel_deg - rec.wheel0,
-		.tilt_est_deg = app->tilt_est_deg,
-		.power = app->power,
-		.duty_a = s->duty_a * 100.0,
-		.duty_d = s->duty_d * 100.0,
-	};
+	if (rec.out)	/* streamed: an hour at 1 kHz is 3.6 million rows, never held in memory */
+		fprintf(rec.out, "%.3f,%.4f,%.3f,%.3f,%.4f,%d,%.2f,%.2f\n",
+			((double)s->t_ns - (double)EV3SIM_RELEASE_NS) * 1e-9, s->tilt_deg, s->tilt_rate_dps,
+			s->wheel_deg - rec.wheel0, app->tilt_est_deg, app->power, s->duty_a * 100.0,
+			s->duty_d * 100.0);
 }
 
 /* Draws the progress bar on stderr. */
@@ -100,9 +81,9 @@ static ER plug_in(const struct ev3sim_balance_opts *o, char *err, size_t errlen)
 		else if (o->faults[i].target == EV3SIM_FAULT_GYRO_DRIFT)
 			gyro.gyro_drift_dps = o->faults[i].value;
 	}
-	ercd = ev3_attach_motor(LEFT_PORT, EV3_MOTOR_LARGE, NULL);
+	ercd = ev3_attach_motor(LEFT_PORT, HS_MOTOR_LARGE, NULL);
 	if (ercd == E_OK)
-		ercd = ev3_attach_motor(RIGHT_PORT, EV3_MOTOR_LARGE, NULL);
+		ercd = ev3_attach_motor(RIGHT_PORT, HS_MOTOR_LARGE, NULL);
 	if (ercd == E_OK)
 		ercd = ev3_attach_uart_sensor(GYRO_PORT, UART_SENSOR_TYPE_GYRO, &gyro);
 	if (ercd != E_OK) {
@@ -157,7 +138,9 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 	}
 	robot.npushes = o->npushes;
 	robot.start_tilt_deg = o->start_tilt_deg;
-	rec = (struct recorder){ .res = res, .record = o->record };
+	rec = (struct recorder){ .res = res, .out = o->series_out };
+	if (rec.out)
+		fputs(EV3SIM_SERIES_HEADER, rec.out);
 	res->seconds = o->seconds;
 	scn.seed = o->seed;
 	scn.vcd_path = o->trace_path;
@@ -198,25 +181,19 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 	res->fell = ev3sim_robot_fallen(&fell_ns);
 	res->fell_at_s = res->fell ? ((double)fell_ns - (double)EV3SIM_RELEASE_NS) * 1e-9 : 0.0;
 	res->rms_tilt_deg = rec.samples ? sqrt(rec.sum_sq / (double)rec.samples) : 0.0;
+	res->wall_s = ev3sim_wall_seconds() - wall0;
+	res->sim_virtual_s = rtos_host_now() * 1e-9;
+	/* let the application's tasks finish their work (the logger its last line) before the
+	 * summary's counts are taken and the drivers unload */
+	ev3sim_balance_stop();
+	hs_sim_run_for(DRAIN_NS);
 	res->app = *ev3sim_balance_stats();
 	log = serial_log_get_stats();
 	res->log_bytes = log->bytes;
 	res->log_spin_ms = log->spin_ns / 1000000U;
 	res->bugs = rtos_host_bug_count();
-	res->wall_s = ev3sim_wall_seconds() - wall0;
-	res->sim_virtual_s = rtos_host_now() * 1e-9;
-	/* let the application's tasks finish their work before the drivers unload */
-	ev3sim_balance_stop();
-	hs_sim_run_for(DRAIN_NS);
-	hs_sim_shutdown();
+	res->trace_failed = hs_sim_shutdown() != E_OK;
 	return E_OK;
-}
-
-void ev3sim_balance_result_free(struct ev3sim_balance_result *res)
-{
-	free(res->rows);
-	res->rows = NULL;
-	res->nrows = 0;
 }
 
 void ev3sim_balance_summary(const struct ev3sim_balance_opts *o,
@@ -231,25 +208,16 @@ void ev3sim_balance_summary(const struct ev3sim_balance_opts *o,
 		 "fell_at_s=%s max_tilt_deg=%.2f rms_tilt_deg=%.3f max_travel_cm=%.1f "
 		 "deadline_misses=%u balance_runs=%u max_start_delay_us=%llu "
 		 "logger_lines=%u logger_skipped=%u log_bytes=%llu logger_spin_ms=%llu "
-		 "api_errors=%u bugs=%u sim_speed=%.0fx",
+		 "gyro_frames=%u gyro_check_errors=%u gyro_size_errors=%u gyro_resyncs=%u "
+		 "gyro_reconnects=%u api_errors=%u bugs=%u sim_speed=%.0fx",
 		 r->fell ? "fell" : "upright", r->seconds, (unsigned long long)o->seed,
 		 o->app.balancer ? "on" : "off", o->app.logger_hz,
 		 o->app.logger_above ? "above" : "below", fell_at, r->max_tilt_deg, r->rms_tilt_deg,
 		 r->max_travel_cm, r->app.deadline_misses, r->app.runs,
 		 (unsigned long long)(r->app.max_start_delay_ns / 1000U), r->app.logger_lines,
 		 r->app.logger_skipped, (unsigned long long)r->log_bytes,
-		 (unsigned long long)r->log_spin_ms, r->app.api_errors, r->bugs,
+		 (unsigned long long)r->log_spin_ms, r->app.gyro_frames, r->app.gyro_check_errors,
+		 r->app.gyro_size_errors, r->app.gyro_resyncs, r->app.gyro_reconnects,
+		 r->app.api_errors, r->bugs,
 		 r->wall_s > 0 ? r->sim_virtual_s / r->wall_s : 0.0);
-}
-
-int ev3sim_write_csv(const struct ev3sim_balance_result *r, FILE *out)
-{
-	fprintf(out, "t_s,tilt_deg,tilt_rate_dps,wheel_deg,tilt_est_deg,power_pct,duty_a_pct,duty_d_pct\n");
-	for (size_t i = 0; i < r->nrows; i++) {
-		const struct ev3sim_series_row *w = &r->rows[i];
-
-		fprintf(out, "%.3f,%.4f,%.3f,%.3f,%.4f,%d,%.2f,%.2f\n", w->t_s, w->tilt_deg,
-			w->tilt_rate_dps, w->wheel_deg, w->tilt_est_deg, w->power, w->duty_a, w->duty_d);
-	}
-	return ferror(out) ? -1 : 0;
 }

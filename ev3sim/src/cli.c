@@ -5,18 +5,26 @@
  * --seconds=30).  Every bad option or value is named in a message on stderr
  * and exits with status 2; --help prints the command's usage and exits 0.
  */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "ev3sim/apps.h"
 #include "ev3sim/balance_run.h"
 #include "ev3sim/cli.h"
 #include "ev3sim/parse.h"
 #include "ev3sim/plot.h"
+#include "ev3sim/run.h"
 #include "ev3sim/serial_log.h"
 
-#define MAX_PUSH_NM 5.0
+#define MAX_PUSH_NM		5.0       /* largest push torque, N m */
+#define MAX_START_TILT_DEG	30.0      /* tilt when let go, exclusive */
+#define MAX_GYRO_NOISE_DPS	1000.0
+#define MIN_LOG_BAUD		300U
+#define MAX_LOG_BAUD		4000000U
 
 static const char main_usage[] =
 	"usage: ev3sim COMMAND [options]      (ev3sim COMMAND --help for its options)\n"
@@ -28,7 +36,8 @@ static const char main_usage[] =
 	"commands:\n"
 	"  balance   the self-balancing robot (gyro boy) with a gyro logger\n"
 	"  motor     run one motor and print its speed and counts\n"
-	"  sensors   plug in sensors and motors, print what the drivers detect and live values\n";
+	"  sensors   plug in sensors and motors, print what the drivers detect and live values\n"
+	"  run       build an EV3RT application directory and run it in a robot\n";
 
 static const char balance_usage[] =
 	"usage: ev3sim balance [options]\n"
@@ -68,7 +77,7 @@ static const char balance_usage[] =
 static const char motor_usage[] =
 	"usage: ev3sim motor [options]\n"
 	"\n"
-	"Runs a motor through the EV3 API (ev3_motor_set_speed or _set_power), prints\n"
+	"Runs a motor through the EV3 API (ev3lx_motor_set_speed or _set_power), prints\n"
 	"time, measured speed and counts every --every ms, then a key=value summary.\n"
 	"\n"
 	"  --port P         output port A..D (default A)\n"
@@ -151,6 +160,15 @@ static bool is(const struct args *a, const char *name)
 	return strcmp(a->name, name) == 0;
 }
 
+/* --help or -h; a value given to it (--help=1) is a usage error (*status). */
+static bool is_help(const struct args *a, int *status)
+{
+	if (!is(a, "--help") && !is(a, "-h"))
+		return false;
+	*status = a->inline_value ? usage_error(a, "%s takes no value", a->name) : EV3SIM_EXIT_OK;
+	return true;
+}
+
 /* Parses a seconds value in (0, max]. */
 static bool parse_seconds(const char *s, double *out)
 {
@@ -177,6 +195,8 @@ static int shared_option(struct args *a, const char *v, double *seconds, uint64_
 		if (!ev3sim_parse_uint(v, UINT64_MAX, seed))
 			return usage_error(a, "--seed: bad value '%s' (an unsigned integer)", v);
 	} else if (is(a, "--trace")) {
+		if (!ev3sim_can_create(a->cmd, v))	/* checked before the run, not after it */
+			return EV3SIM_EXIT_FAIL;
 		*trace_path = v;
 	} else if (every_ms != NULL && is(a, "--every")) {
 		uint64_t ms;
@@ -201,148 +221,283 @@ static FILE *open_out(const char *cmd, const char *path)
 	FILE *f = fopen(path, "w");
 
 	if (f == NULL)
-		fprintf(stderr, "ev3sim %s: cannot write %s\n", cmd, path);
+		fprintf(stderr, "ev3sim %s: cannot write %s: %s\n", cmd, path, strerror(errno));
 	return f;
+}
+
+/* Closes an output; false (and says so) if any of it could not be written. */
+static bool close_out(const char *cmd, FILE *f, const char *path)
+{
+	bool ok = !ferror(f);
+
+	if (fclose(f) != 0)
+		ok = false;
+	if (!ok)
+		fprintf(stderr, "ev3sim %s: cannot write %s completely\n", cmd, path);
+	return ok;
+}
+
+/* What `balance`'s options set: the run's options and the outputs asked for. */
+struct balance_cli {
+	struct ev3sim_balance_opts o;
+	const char *csv, *plot, *log_path;
+	double gyro_noise;
+};
+
+/* One option of `balance`: its name, whether it takes a value, and what it
+ * does with it (v is NULL for a flag); EV3SIM_EXIT_OK or a usage error's status. */
+struct balance_option {
+	const char *name;
+	bool takes_value;
+	int (*apply)(struct args *a, const char *v, struct balance_cli *c);
+};
+
+static int opt_no_balancer(struct args *a, const char *v, struct balance_cli *c)
+{
+	c->o.app.balancer = false;
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_logger_prio_above(struct args *a, const char *v, struct balance_cli *c)
+{
+	c->o.app.logger_above = true;
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_no_progress(struct args *a, const char *v, struct balance_cli *c)
+{
+	c->o.progress = false;
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_shared(struct args *a, const char *v, struct balance_cli *c)
+{
+	return shared_option(a, v, &c->o.seconds, &c->o.seed, &c->o.trace_path, NULL);
+}
+
+static int opt_logger_hz(struct args *a, const char *v, struct balance_cli *c)
+{
+	uint64_t hz;
+
+	if (!ev3sim_parse_uint(v, EV3SIM_LOGGER_MAX_HZ, &hz))
+		return usage_error(a, "--logger-hz: bad value '%s' (0..1000)", v);
+	c->o.app.logger_hz = (unsigned)hz;
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_log_baud(struct args *a, const char *v, struct balance_cli *c)
+{
+	uint64_t baud;
+
+	if (!ev3sim_parse_uint(v, MAX_LOG_BAUD, &baud) || baud < MIN_LOG_BAUD)
+		return usage_error(a, "--log-baud: bad value '%s' (300..4000000)", v);
+	c->o.log_baud = (uint32_t)baud;
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_log(struct args *a, const char *v, struct balance_cli *c)
+{
+	c->log_path = v;
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_push(struct args *a, const char *v, struct balance_cli *c)
+{
+	const char *colon = strchr(v, ':');
+	char t[64];
+	double nm;
+
+	if (c->o.npushes == EV3SIM_MAX_PUSHES)
+		return usage_error(a, "--push: more than %s pushes", "16");
+	if (colon == NULL || (size_t)(colon - v) >= sizeof(t))
+		return usage_error(a, "--push: bad value '%s' (T:NM, e.g. 5s:0.2)", v);
+	memcpy(t, v, (size_t)(colon - v));
+	t[colon - v] = '\0';
+	if (!ev3sim_parse_time(t, &c->o.pushes[c->o.npushes].t_ns) ||
+	    !ev3sim_parse_double(colon + 1, &nm) || fabs(nm) > MAX_PUSH_NM)
+		return usage_error(a, "--push: bad value '%s' (T:NM, |NM| <= 5 N m)", v);
+	c->o.pushes[c->o.npushes++].torque_nm = nm;
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_tilt(struct args *a, const char *v, struct balance_cli *c)
+{
+	if (!ev3sim_parse_double(v, &c->o.start_tilt_deg) || fabs(c->o.start_tilt_deg) >= MAX_START_TILT_DEG)
+		return usage_error(a, "--tilt: bad value '%s' (|DEG| < 30)", v);
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_gyro_noise(struct args *a, const char *v, struct balance_cli *c)
+{
+	if (!ev3sim_parse_double(v, &c->gyro_noise) || c->gyro_noise < 0 || c->gyro_noise > MAX_GYRO_NOISE_DPS)
+		return usage_error(a, "--gyro-noise: bad value '%s' (0..1000 deg/s)", v);
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_fault(struct args *a, const char *v, struct balance_cli *c)
+{
+	char err[256];
+
+	/* one slot stays free for the default gyro noise */
+	if (c->o.nfaults == EV3SIM_MAX_FAULTS - 1)
+		return usage_error(a, "--fault: more than %s faults", "15");
+	if (!ev3sim_fault_parse(v, 1, &c->o.faults[c->o.nfaults], err, sizeof(err)))
+		return usage_error(a, "--fault: %s", err);
+	c->o.nfaults++;
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_csv(struct args *a, const char *v, struct balance_cli *c)
+{
+	c->csv = v;
+	return EV3SIM_EXIT_OK;
+}
+
+static int opt_plot(struct args *a, const char *v, struct balance_cli *c)
+{
+	if (!plain_path(v))
+		return usage_error(a, "--plot: bad path '%s'", v);
+	c->plot = v;
+	return EV3SIM_EXIT_OK;
+}
+
+static const struct balance_option balance_options[] = {
+	{ "--no-balancer",       false, opt_no_balancer },
+	{ "--logger-prio-above", false, opt_logger_prio_above },
+	{ "--no-progress",       false, opt_no_progress },
+	{ "--seconds",           true,  opt_shared },
+	{ "--seed",              true,  opt_shared },
+	{ "--trace",             true,  opt_shared },
+	{ "--logger-hz",         true,  opt_logger_hz },
+	{ "--log-baud",          true,  opt_log_baud },
+	{ "--log",               true,  opt_log },
+	{ "--push",              true,  opt_push },
+	{ "--tilt",              true,  opt_tilt },
+	{ "--gyro-noise",        true,  opt_gyro_noise },
+	{ "--fault",             true,  opt_fault },
+	{ "--csv",               true,  opt_csv },
+	{ "--plot",              true,  opt_plot },
+};
+
+/* The table row of the current option, or NULL. */
+static const struct balance_option *balance_option_of(const struct args *a)
+{
+	for (size_t i = 0; i < sizeof(balance_options) / sizeof(balance_options[0]); i++)
+		if (is(a, balance_options[i].name))
+			return &balance_options[i];
+	return NULL;
 }
 
 static int cmd_balance(struct args *a)
 {
-	struct ev3sim_balance_opts o = {
-		.seconds = 10.0, .seed = 1, .app = { .balancer = true, .logger_hz = 1000 },
-		.start_tilt_deg = 0.5, .progress = true,
+	struct balance_cli c = {
+		.o = { .seconds = 10.0, .seed = 1, .app = { .balancer = true, .logger_hz = 1000 },
+		       .start_tilt_deg = 0.5, .progress = true },
+		.gyro_noise = 0.3,
 	};
+	struct ev3sim_balance_opts o;
 	struct ev3sim_balance_result r;
-	const char *csv = NULL, *plot = NULL, *log_path = NULL, *v;
-	double gyro_noise = 0.3;
-	char err[256], line[1024];
-	int status = EV3SIM_EXIT_OK, st;
+	const struct balance_option *opt;
+	const char *csv, *plot, *log_path, *series_path, *v = NULL;
+	char err[256], line[1024], series_tmp[] = "/tmp/ev3sim-series-XXXXXX";
+	int status = EV3SIM_EXIT_OK, st, fd;
 
 	while (next_option(a)) {
-		if (is(a, "--help") || is(a, "-h")) {
-			fputs(balance_usage, stdout);
-			return EV3SIM_EXIT_OK;
-		} else if (is(a, "--no-balancer")) {
-			o.app.balancer = false;
-		} else if (is(a, "--logger-prio-above")) {
-			o.app.logger_above = true;
-		} else if (is(a, "--no-progress")) {
-			o.progress = false;
-		} else if (strncmp(a->name, "--", 2) != 0) {
-			return usage_error(a, "unexpected argument '%s'", a->name);
-		} else if ((v = value(a)) == NULL) {
-			if (is(a, "--seconds") || is(a, "--seed") || is(a, "--logger-hz") ||
-			    is(a, "--log-baud") || is(a, "--log") || is(a, "--push") || is(a, "--tilt") ||
-			    is(a, "--gyro-noise") || is(a, "--fault") || is(a, "--trace") ||
-			    is(a, "--csv") || is(a, "--plot"))
-				return usage_error(a, "%s needs a value", a->name);
-			return usage_error(a, "unknown option %s", a->name);
-		} else if ((st = shared_option(a, v, &o.seconds, &o.seed, &o.trace_path, NULL)) >= 0) {
-			if (st != EV3SIM_EXIT_OK)
-				return st;
-		} else if (is(a, "--logger-hz")) {
-			uint64_t hz;
-
-			if (!ev3sim_parse_uint(v, EV3SIM_LOGGER_MAX_HZ, &hz))
-				return usage_error(a, "--logger-hz: bad value '%s' (0..1000)", v);
-			o.app.logger_hz = (unsigned)hz;
-		} else if (is(a, "--log-baud")) {
-			uint64_t baud;
-
-			if (!ev3sim_parse_uint(v, 4000000, &baud) || baud < 300)
-				return usage_error(a, "--log-baud: bad value '%s' (300..4000000)", v);
-			o.log_baud = (uint32_t)baud;
-		} else if (is(a, "--log")) {
-			log_path = v;
-		} else if (is(a, "--push")) {
-			const char *colon = strchr(v, ':');
-			char t[64];
-			double nm;
-
-			if (o.npushes == EV3SIM_MAX_PUSHES)
-				return usage_error(a, "--push: more than %s pushes", "16");
-			if (colon == NULL || (size_t)(colon - v) >= sizeof(t))
-				return usage_error(a, "--push: bad value '%s' (T:NM, e.g. 5s:0.2)", v);
-			memcpy(t, v, (size_t)(colon - v));
-			t[colon - v] = '\0';
-			if (!ev3sim_parse_time(t, &o.pushes[o.npushes].t_ns) ||
-			    !ev3sim_parse_double(colon + 1, &nm) || fabs(nm) > MAX_PUSH_NM)
-				return usage_error(a, "--push: bad value '%s' (T:NM, |NM| <= 5 N m)", v);
-			o.pushes[o.npushes++].torque_nm = nm;
-		} else if (is(a, "--tilt")) {
-			if (!ev3sim_parse_double(v, &o.start_tilt_deg) || fabs(o.start_tilt_deg) >= 30.0)
-				return usage_error(a, "--tilt: bad value '%s' (|DEG| < 30)", v);
-		} else if (is(a, "--gyro-noise")) {
-			if (!ev3sim_parse_double(v, &gyro_noise) || gyro_noise < 0 || gyro_noise > 1000)
-				return usage_error(a, "--gyro-noise: bad value '%s' (0..1000 deg/s)", v);
-		} else if (is(a, "--fault")) {
-			if (o.nfaults == EV3SIM_MAX_FAULTS - 1)
-				return usage_error(a, "--fault: more than %s faults", "15");
-			if (!ev3sim_fault_parse(v, 1, &o.faults[o.nfaults], err, sizeof(err)))
-				return usage_error(a, "--fault: %s", err);
-			o.nfaults++;
-		} else if (is(a, "--csv")) {
-			csv = v;
-		} else if (is(a, "--plot")) {
-			if (!plain_path(v))
-				return usage_error(a, "--plot: bad path '%s'", v);
-			plot = v;
-		} else {
-			return usage_error(a, "unknown option %s", a->name);
+		if (is_help(a, &st)) {
+			if (st == EV3SIM_EXIT_OK)
+				fputs(balance_usage, stdout);
+			return st;
 		}
+		if (strncmp(a->name, "--", 2) != 0)
+			return usage_error(a, "unexpected argument '%s'", a->name);
+		opt = balance_option_of(a);
+		if (opt == NULL)
+			return usage_error(a, "unknown option %s", a->name);
+		if (!opt->takes_value && a->inline_value != NULL)
+			return usage_error(a, "%s takes no value", opt->name);
+		if (opt->takes_value && (v = value(a)) == NULL)
+			return usage_error(a, "%s needs a value", a->name);
+		st = opt->apply(a, opt->takes_value ? v : NULL, &c);
+		if (st != EV3SIM_EXIT_OK)
+			return st;
 	}
+	o = c.o;
+	csv = c.csv;
+	plot = c.plot;
+	log_path = c.log_path;
 	/* the default gyro noise goes first: a gyro-noise fault overrides it */
 	memmove(&o.faults[1], &o.faults[0], o.nfaults * sizeof(o.faults[0]));
-	o.faults[0] = (struct ev3sim_fault_spec){ .target = EV3SIM_FAULT_GYRO_NOISE, .value = gyro_noise };
+	o.faults[0] = (struct ev3sim_fault_spec){ .target = EV3SIM_FAULT_GYRO_NOISE, .value = c.gyro_noise };
 	o.nfaults++;
 	if (plot && !ev3sim_have_gnuplot()) {
 		fprintf(stderr, "ev3sim balance: --plot needs gnuplot, which is not installed "
 			"(install gnuplot-nox: make deps)\n");
 		return EV3SIM_EXIT_FAIL;
 	}
-	if (log_path && (o.log_out = open_out(a->cmd, log_path)) == NULL)
+	/* every output is opened or created before the run: a path that cannot be written is
+	 * refused now; the series streams to the CSV (or, for a plot alone, a temporary file) */
+	if (plot && !ev3sim_can_create(a->cmd, plot))
 		return EV3SIM_EXIT_FAIL;
-	o.record = csv != NULL || plot != NULL;
+	series_path = csv;
+	if (csv && (o.series_out = open_out(a->cmd, csv)) == NULL)
+		return EV3SIM_EXIT_FAIL;
+	if (!csv && plot) {
+		fd = mkstemp(series_tmp);
+		if (fd < 0 || (o.series_out = fdopen(fd, "w")) == NULL) {
+			fprintf(stderr, "ev3sim balance: cannot create a temporary file: %s\n", strerror(errno));
+			if (fd >= 0)
+				close(fd);
+			return EV3SIM_EXIT_FAIL;
+		}
+		series_path = series_tmp;
+	}
+	if (log_path && (o.log_out = open_out(a->cmd, log_path)) == NULL) {
+		if (o.series_out)
+			fclose(o.series_out);
+		return EV3SIM_EXIT_FAIL;
+	}
 	if (ev3sim_balance_run(&o, &r, err, sizeof(err)) != E_OK) {
 		fprintf(stderr, "ev3sim balance: %s\n", err);
 		if (o.log_out)
 			fclose(o.log_out);
+		if (o.series_out)
+			fclose(o.series_out);
+		if (series_path == series_tmp)
+			unlink(series_tmp);
 		return EV3SIM_EXIT_FAIL;
 	}
-	if (o.log_out && fclose(o.log_out) != 0) {
-		fprintf(stderr, "ev3sim balance: cannot write %s\n", log_path);
+	if (o.log_out && !close_out(a->cmd, o.log_out, log_path))
+		status = EV3SIM_EXIT_FAIL;
+	if (o.series_out && !close_out(a->cmd, o.series_out, series_path))
+		status = EV3SIM_EXIT_FAIL;
+	if (r.trace_failed) {
+		fprintf(stderr, "ev3sim balance: cannot write %s completely\n", o.trace_path);
 		status = EV3SIM_EXIT_FAIL;
 	}
-	if (csv) {
-		FILE *f = open_out(a->cmd, csv);
-
-		if (f == NULL || ev3sim_write_csv(&r, f) != 0 || fclose(f) != 0) {
-			if (f)
-				fprintf(stderr, "ev3sim balance: cannot write %s\n", csv);
-			status = EV3SIM_EXIT_FAIL;
-		}
-	}
-	if (plot) {
+	if (plot && status == EV3SIM_EXIT_OK) {
 		char title[160];
 
 		snprintf(title, sizeof(title), "ev3sim balance: %s, seed %llu, logger %u Hz (%s the balancer)%s",
 			 r.fell ? "fell" : "upright", (unsigned long long)o.seed, o.app.logger_hz,
 			 o.app.logger_above ? "above" : "below", o.app.balancer ? "" : ", no balancer");
-		if (ev3sim_plot(&r, title, plot, err, sizeof(err)) != 0) {
+		if (ev3sim_plot(series_path, title, plot, err, sizeof(err)) != 0) {
 			fprintf(stderr, "ev3sim balance: %s\n", err);
 			status = EV3SIM_EXIT_FAIL;
 		}
 	}
+	if (series_path == series_tmp)
+		unlink(series_tmp);
 	ev3sim_balance_summary(&o, &r, line, sizeof(line));
 	printf("%s\n", line);
-	fflush(stdout);
-	ev3sim_balance_result_free(&r);
+	if (fflush(stdout) != 0 || ferror(stdout))
+		status = EV3SIM_EXIT_FAIL;
 	return status;
 }
 
 static int cmd_motor(struct args *a)
 {
 	struct ev3sim_motor_opts o = {
-		.port = 0, .kind = EV3_MOTOR_LARGE, .value = 50, .seconds = 2.0, .every_ms = 100, .seed = 1,
+		.port = 0, .kind = HS_MOTOR_LARGE, .value = 50, .seconds = 2.0, .every_ms = 100, .seed = 1,
 	};
 	bool speed_given = false, power_given = false;
 	const char *v;
@@ -350,9 +505,10 @@ static int cmd_motor(struct args *a)
 	int st;
 
 	while (next_option(a)) {
-		if (is(a, "--help") || is(a, "-h")) {
-			fputs(motor_usage, stdout);
-			return EV3SIM_EXIT_OK;
+		if (is_help(a, &st)) {
+			if (st == EV3SIM_EXIT_OK)
+				fputs(motor_usage, stdout);
+			return st;
 		} else if (strncmp(a->name, "--", 2) != 0) {
 			return usage_error(a, "unexpected argument '%s'", a->name);
 		} else if ((v = value(a)) == NULL) {
@@ -362,9 +518,9 @@ static int cmd_motor(struct args *a)
 				return usage_error(a, "--port: bad value '%s' (A..D)", v);
 		} else if (is(a, "--kind")) {
 			if (strcmp(v, "large") == 0)
-				o.kind = EV3_MOTOR_LARGE;
+				o.kind = HS_MOTOR_LARGE;
 			else if (strcmp(v, "medium") == 0)
-				o.kind = EV3_MOTOR_MEDIUM;
+				o.kind = HS_MOTOR_MEDIUM;
 			else
 				return usage_error(a, "--kind: bad value '%s' (large or medium)", v);
 		} else if (is(a, "--speed") || is(a, "--power")) {
@@ -402,9 +558,10 @@ static int cmd_sensors(struct args *a)
 
 	ev3sim_sensors_defaults(&o);
 	while (next_option(a)) {
-		if (is(a, "--help") || is(a, "-h")) {
-			fputs(sensors_usage, stdout);
-			return EV3SIM_EXIT_OK;
+		if (is_help(a, &st)) {
+			if (st == EV3SIM_EXIT_OK)
+				fputs(sensors_usage, stdout);
+			return st;
 		} else if (strncmp(a->name, "--", 2) != 0) {
 			return usage_error(a, "unexpected argument '%s'", a->name);
 		} else if ((v = value(a)) == NULL) {
@@ -433,10 +590,16 @@ static int cmd_sensors(struct args *a)
 	return EV3SIM_EXIT_OK;
 }
 
+static int cmd_run(struct args *a)
+{
+	return ev3sim_run_command(a->argc - a->i, a->argv + a->i);
+}
+
 int ev3sim_main(int argc, char **argv)
 {
 	static const struct { const char *name; int (*run)(struct args *); } cmds[] = {
 		{ "balance", cmd_balance }, { "motor", cmd_motor }, { "sensors", cmd_sensors },
+		{ "run", cmd_run },
 	};
 	struct args a = { .argc = argc, .argv = argv, .i = 2 };
 

@@ -40,32 +40,32 @@ static void motor_task(intptr_t exinf)
 	int speed = 0;
 
 	(void)exinf;
-	check(ev3_motor_config(port, run.o.kind == EV3_MOTOR_MEDIUM ? MEDIUM_MOTOR : LARGE_MOTOR));
+	check(ev3lx_motor_config(port, run.o.kind == HS_MOTOR_MEDIUM ? MEDIUM_MOTOR : LARGE_MOTOR));
 	fprintf(run.out, "# motor %c (%s), %s %d for %g s\n# t_s  speed_pct  counts_deg\n",
-		'A' + run.o.port, run.o.kind == EV3_MOTOR_MEDIUM ? "medium" : "large",
+		'A' + run.o.port, run.o.kind == HS_MOTOR_MEDIUM ? "medium" : "large",
 		run.o.power_mode ? "power" : "speed", run.o.value, run.o.seconds);
 	get_tim(&t0);
 	if (run.o.power_mode)
-		check(ev3_motor_set_power(port, run.o.value));
+		check(ev3lx_motor_set_power(port, run.o.value));
 	else
-		check(ev3_motor_set_speed(port, run.o.value));
+		check(ev3lx_motor_set_speed(port, run.o.value));
 	for (uint64_t k = 1; k <= rows; k++) {
 		SYSTIM target = t0 + (SYSTIM)(k * run.o.every_ms);
 
 		get_tim(&now);
 		if (target > now)
 			dly_tsk((RELTIM)(target - now));
-		check(ev3_motor_get_speed(port, &speed));
-		check(ev3_motor_get_counts(port, &counts));
+		check(ev3lx_motor_get_speed(port, &speed));
+		check(ev3lx_motor_get_counts(port, &counts));
 		fprintf(run.out, "%7.3f  %4d  %8ld\n", (double)(k * run.o.every_ms) / 1000.0, speed,
 			(long)counts);
 	}
 	get_tim(&now);
 	if (now < t0 + (SYSTIM)(run.o.seconds * 1000.0))
 		dly_tsk((RELTIM)(t0 + (SYSTIM)(run.o.seconds * 1000.0) - now));
-	check(ev3_motor_get_speed(port, &speed));
-	check(ev3_motor_get_counts(port, &counts));
-	check(ev3_motor_stop(port, true));
+	check(ev3lx_motor_get_speed(port, &speed));
+	check(ev3lx_motor_get_counts(port, &counts));
+	check(ev3lx_motor_stop(port, true));
 	run.speed = speed;
 	run.counts = counts;
 	run.done = true;
@@ -98,7 +98,7 @@ ER ev3sim_motor_app(const struct ev3sim_motor_opts *o, FILE *out, char *err, siz
 
 	if (o->port > 3 || o->value < -100 || o->value > 100 || !(o->seconds > 0) ||
 	    o->seconds > 3600 || o->every_ms == 0 ||
-	    (o->kind != EV3_MOTOR_LARGE && o->kind != EV3_MOTOR_MEDIUM)) {
+	    (o->kind != HS_MOTOR_LARGE && o->kind != HS_MOTOR_MEDIUM)) {
 		snprintf(err, errlen, "bad motor options");
 		return E_PAR;
 	}
@@ -123,11 +123,14 @@ ER ev3sim_motor_app(const struct ev3sim_motor_opts *o, FILE *out, char *err, siz
 	wall = ev3sim_wall_seconds() - wall0;
 	fprintf(out, "port=%c kind=%s mode=%s value=%d seconds=%g counts=%ld final_speed_pct=%d "
 		"mean_speed_dps=%.1f api_errors=%u bugs=%u sim_speed=%.0fx\n",
-		'A' + o->port, o->kind == EV3_MOTOR_MEDIUM ? "medium" : "large",
+		'A' + o->port, o->kind == HS_MOTOR_MEDIUM ? "medium" : "large",
 		o->power_mode ? "power" : "speed", o->value, o->seconds, (long)run.counts, run.speed,
 		run.counts / o->seconds, run.api_errors, rtos_host_bug_count(),
 		wall > 0 ? rtos_host_now() * 1e-9 / wall : 0.0);
-	hs_sim_shutdown();
+	if (hs_sim_shutdown() != E_OK) {
+		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
+		return E_SYS;
+	}
 	if (!run.done) {
 		snprintf(err, errlen, "the application did not finish");
 		return E_SYS;

@@ -1,6 +1,7 @@
 /*
- * plot.c — the balance plot through gnuplot (plot.h).  The series goes to a
- * temporary data file; gnuplot reads a script from a pipe.
+ * plot.c — the balance plot through gnuplot (plot.h).  gnuplot reads the
+ * series' CSV file and a script from a pipe, and draws into a temporary file
+ * that is then copied to the output with every write checked.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -30,70 +31,87 @@ bool ev3sim_have_gnuplot(void)
 	return false;
 }
 
-/* Writes t, tilt, wheel, power, duty A, duty D, one row per 2 ms (enough for a PNG). */
-static int write_data(const struct ev3sim_balance_result *res, FILE *f)
+/* Copies the file at from to the path to, every write checked; 0 or -1 (errno). */
+static int copy_file(const char *from, const char *to)
 {
-	for (size_t i = 0; i < res->nrows; i += 2) {
-		const struct ev3sim_series_row *w = &res->rows[i];
+	char buf[8192];
+	FILE *in = fopen(from, "rb"), *out;
+	size_t n;
+	int status = 0;
 
-		fprintf(f, "%.3f %.4f %.3f %d %.2f %.2f\n", w->t_s, w->tilt_deg, w->wheel_deg, w->power,
-			w->duty_a, w->duty_d);
+	if (in == NULL)
+		return -1;
+	out = fopen(to, "wb");
+	if (out == NULL) {
+		fclose(in);
+		return -1;
 	}
-	return ferror(f) ? -1 : 0;
+	while ((n = fread(buf, 1, sizeof(buf), in)) > 0)
+		if (fwrite(buf, 1, n, out) != n)
+			status = -1;
+	if (ferror(in) || ferror(out))
+		status = -1;
+	fclose(in);
+	if (fclose(out) != 0)
+		status = -1;
+	return status;
 }
 
-int ev3sim_plot(const struct ev3sim_balance_result *res, const char *title, const char *png_path,
-		char *err, size_t errlen)
+int ev3sim_plot(const char *csv_path, const char *title, const char *png_path, char *err, size_t errlen)
 {
-	char data[] = "/tmp/ev3sim-plot-XXXXXX";
-	FILE *f, *gp;
+	char png[] = "/tmp/ev3sim-plot-XXXXXX";
+	FILE *gp;
 	int fd, status;
 
 	if (!ev3sim_have_gnuplot()) {
 		snprintf(err, errlen, "gnuplot not found on PATH (install gnuplot-nox: make deps)");
 		return -1;
 	}
-	fd = mkstemp(data);
-	if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
+	/* gnuplot draws into a temporary file: whatever happens, no PNG bytes reach a terminal,
+	 * and writing the real output is checked here */
+	fd = mkstemp(png);
+	if (fd < 0) {
 		snprintf(err, errlen, "cannot create a temporary file: %s", strerror(errno));
-		if (fd >= 0)
-			close(fd);
 		return -1;
 	}
-	if (write_data(res, f) != 0 || fclose(f) != 0) {
-		snprintf(err, errlen, "cannot write %s", data);
-		unlink(data);
-		return -1;
-	}
+	close(fd);
 	gp = popen("gnuplot", "w");
 	if (gp == NULL) {
 		snprintf(err, errlen, "cannot run gnuplot: %s", strerror(errno));
-		unlink(data);
+		unlink(png);
 		return -1;
 	}
+	/* the series' columns: EV3SIM_SERIES_HEADER; every other 1 ms row is enough for a PNG */
 	fprintf(gp,
 		"set terminal pngcairo size 1200,900 font 'sans,10'\n"
 		"set output '%s'\n"
-		"set datafile separator whitespace\n"
+		"set datafile separator ','\n"
 		"set multiplot layout 3,1 title '%s'\n"
 		"set grid\n"
 		"set lmargin 12\n"
 		"set ylabel 'tilt (deg)'\n"
-		"plot '%s' using 1:2 with lines lw 1.5 title 'body tilt'\n"
+		"plot '%s' every 2::1 using 1:2 with lines lw 1.5 title 'body tilt'\n"
 		"set ylabel 'wheel angle (deg)'\n"
-		"plot '%s' using 1:3 with lines lw 1.5 title 'wheel rotation'\n"
+		"plot '%s' every 2::1 using 1:4 with lines lw 1.5 title 'wheel rotation'\n"
 		"set ylabel 'motor power (%%)'\n"
 		"set xlabel 'time after release (s)'\n"
 		"set yrange [-105:105]\n"
-		"plot '%s' using 1:4 with steps title 'commanded power', "
-		"'' using 1:5 with lines title 'H-bridge A', '' using 1:6 with lines title 'H-bridge D'\n"
+		"plot '%s' every 2::1 using 1:6 with steps title 'commanded power', "
+		"'' every 2::1 using 1:7 with lines title 'H-bridge A', "
+		"'' every 2::1 using 1:8 with lines title 'H-bridge D'\n"
 		"unset multiplot\n",
-		png_path, title, data, data, data);
+		png, title, csv_path, csv_path, csv_path);
 	status = pclose(gp);
-	unlink(data);
 	if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-		snprintf(err, errlen, "gnuplot failed writing %s", png_path);
+		snprintf(err, errlen, "gnuplot failed drawing %s", png_path);
+		unlink(png);
 		return -1;
 	}
+	if (copy_file(png, png_path) != 0) {
+		snprintf(err, errlen, "cannot write %s: %s", png_path, strerror(errno ? errno : EIO));
+		unlink(png);
+		return -1;
+	}
+	unlink(png);
 	return 0;
 }

@@ -44,7 +44,7 @@ static struct robot {
 	bool running;
 	struct ev3sim_robot_cfg cfg;
 	const struct ev3sim_robot_params *p;
-	struct ev3_motor *motor[2];
+	struct hs_motor *motor[2];
 	struct hs_signal *speed_sig[2];
 	hs_event_t step_ev;
 	double psi, psi_dot;            /* rad, rad/s */
@@ -79,9 +79,9 @@ static double push_torque(uint64_t t)
 }
 
 /* Bridge drive of a motor as a signed fraction. */
-static double duty_of(struct ev3_motor *m)
+static double duty_of(struct hs_motor *m)
 {
-	struct hbridge_drive d = ev3_motor_drive(m);
+	struct hbridge_drive d = hs_motor_drive(m);
 
 	return d.fwd - d.rev;
 }
@@ -90,7 +90,7 @@ static double duty_of(struct ev3_motor *m)
 static void set_loads(double load, double inertia)
 {
 	for (int i = 0; i < 2; i++)
-		ev3_motor_set_load(rb.motor[i], load / 2.0, inertia / 2.0);
+		hs_motor_set_load(rb.motor[i], load / 2.0, inertia / 2.0);
 }
 
 /* The gyro measures the body's pitch rate. */
@@ -114,9 +114,9 @@ static void read_shafts(double *omega, double *phi)
 	*omega = 0.0;
 	*phi = 0.0;
 	for (int i = 0; i < 2; i++) {
-		ev3_motor_set_load(rb.motor[i], rb.load / 2.0, rb.inertia / 2.0);
+		hs_motor_set_load(rb.motor[i], rb.load / 2.0, rb.inertia / 2.0);
 		*omega += hs_signal_real(rb.speed_sig[i]) * DEG / 2.0;
-		*phi += ev3_motor_angle_deg(rb.motor[i]) * DEG / 2.0;
+		*phi += hs_motor_angle_deg(rb.motor[i]) * DEG / 2.0;
 	}
 }
 

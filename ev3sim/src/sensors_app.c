@@ -175,25 +175,25 @@ static void print_value(unsigned p)
 
 	switch (run.o.in[p]) {
 	case EV3SIM_IN_TOUCH:
-		if (check(ev3_touch_sensor_is_pressed(port, &pressed)) == E_OK)
+		if (check(ev3lx_touch_sensor_is_pressed(port, &pressed)) == E_OK)
 			fprintf(run.out, "  in%u pressed=%d", p + 1, pressed);
 		break;
 	case EV3SIM_IN_GYRO:
 		/* the angle only: reading the rate would switch modes, which restarts the angle */
-		if (check(ev3_gyro_sensor_get_angle(port, &a)) == E_OK)
+		if (check(ev3lx_gyro_sensor_get_angle(port, &a)) == E_OK)
 			fprintf(run.out, "  in%u angle=%d", p + 1, a);
 		break;
 	case EV3SIM_IN_COLOR:
-		if (check(ev3_color_sensor_get_reflect(port, &pct)) == E_OK &&
-		    check(ev3_color_sensor_get_color(port, &color)) == E_OK)
+		if (check(ev3lx_color_sensor_get_reflect(port, &pct)) == E_OK &&
+		    check(ev3lx_color_sensor_get_color(port, &color)) == E_OK)
 			fprintf(run.out, "  in%u reflect=%u color=%d", p + 1, pct, (int)color);
 		break;
 	case EV3SIM_IN_ULTRASONIC:
-		if (check(ev3_ultrasonic_sensor_get_distance(port, &a)) == E_OK)
+		if (check(ev3lx_ultrasonic_sensor_get_distance(port, &a)) == E_OK)
 			fprintf(run.out, "  in%u cm=%d", p + 1, a);
 		break;
 	case EV3SIM_IN_IR:
-		if (check(ev3_infrared_sensor_get_distance(port, &prox)) == E_OK)
+		if (check(ev3lx_infrared_sensor_get_distance(port, &prox)) == E_OK)
 			fprintf(run.out, "  in%u prox=%d", p + 1, prox);
 		break;
 	case EV3SIM_IN_NXT_TOUCH:
@@ -217,9 +217,9 @@ static void sensors_task(intptr_t exinf)
 	print_detection();
 	for (unsigned p = 0; p < 4; p++) {
 		if (api_type(run.o.in[p]) != NONE_SENSOR)
-			check(ev3_sensor_config((sensor_port_t)p, api_type(run.o.in[p])));
+			check(ev3lx_sensor_config((sensor_port_t)p, api_type(run.o.in[p])));
 		if (run.o.out[p] != EV3SIM_OUT_NONE)
-			check(ev3_motor_config((motor_port_t)p, run.o.out[p] == EV3SIM_OUT_MEDIUM ?
+			check(ev3lx_motor_config((motor_port_t)p, run.o.out[p] == EV3SIM_OUT_MEDIUM ?
 					       MEDIUM_MOTOR : LARGE_MOTOR));
 	}
 	/* the first read of a UART sensor waits for its handshake */
@@ -242,7 +242,7 @@ static void sensors_task(intptr_t exinf)
 			int32_t counts = 0;
 
 			if (run.o.out[p] != EV3SIM_OUT_NONE &&
-			    check(ev3_motor_get_counts((motor_port_t)p, &counts)) == E_OK)
+			    check(ev3lx_motor_get_counts((motor_port_t)p, &counts)) == E_OK)
 				fprintf(run.out, "  out%c counts=%ld", 'A' + p, (long)counts);
 		}
 		fputc('\n', run.out);
@@ -316,8 +316,8 @@ static ER plug_in(const struct ev3sim_sensors_opts *o)
 			break;
 		}
 		if (ercd == E_OK && o->out[p] != EV3SIM_OUT_NONE)
-			ercd = ev3_attach_motor(p, o->out[p] == EV3SIM_OUT_MEDIUM ? EV3_MOTOR_MEDIUM :
-						EV3_MOTOR_LARGE, NULL);
+			ercd = ev3_attach_motor(p, o->out[p] == EV3SIM_OUT_MEDIUM ? HS_MOTOR_MEDIUM :
+						HS_MOTOR_LARGE, NULL);
 	}
 	return ercd;
 }
@@ -367,7 +367,10 @@ ER ev3sim_sensors_app(const struct ev3sim_sensors_opts *o, FILE *out, char *err,
 		conn_name(run.out_conn[1]), out_names[o->out[2]], conn_name(run.out_conn[2]),
 		out_names[o->out[3]], conn_name(run.out_conn[3]), run.rows, run.api_errors,
 		rtos_host_bug_count(), wall > 0 ? rtos_host_now() * 1e-9 / wall : 0.0);
-	hs_sim_shutdown();
+	if (hs_sim_shutdown() != E_OK) {
+		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
+		return E_SYS;
+	}
 	if (!run.done) {
 		snprintf(err, errlen, "the application did not finish");
 		return E_SYS;

@@ -19,6 +19,7 @@
 #include <mach/gpio.h>
 #include <mach/hardware.h>
 #include <linux_compat/irq.h>
+#include <linux_compat/machine.h>
 #include <linux_compat/report.h>
 #include <kernel.h>
 #include <sil.h>

@@ -9,6 +9,7 @@
  */
 #include <rtos_cfg.h>
 #include <linux_compat/irq.h>
+#include <linux_compat/machine.h>
 
 /* NOLINTNEXTLINE(misc-redundant-expression): one value today, asserted so it stays one */
 _Static_assert(LX_IRQ_PRIORITY == INTPRI_TICK,

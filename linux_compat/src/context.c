@@ -18,10 +18,8 @@
 #include <linux_compat/context.h>
 #include <linux_compat/report.h>
 #include <kernel.h>
+#include <linux_compat/platform.h>
 #include <stdio.h>
-#if defined(EV3LX_HOST)
-#include <rtos_host.h>
-#endif
 
 #define LX_IRQ_NEST_MAX	16
 
@@ -303,12 +301,8 @@ bool lx_context_forbids_sleep(char *buf, unsigned int len)
 		append_reason(buf, len, item);
 	}
 	if (sns_ctx() && buf[0] == '\0') {
-#if defined(EV3LX_HOST)
-		snprintf(item, sizeof(item), "interrupt context (%s)", rtos_host_context_name());
+		lx_platform_describe_interrupt(item, sizeof(item));
 		append_reason(buf, len, item);
-#else
-		append_reason(buf, len, "interrupt context");
-#endif
 	}
 #if LX_DEBUG_ATOMIC_SLEEP
 	spin = sns_ctx() ? ctx.isr_spin : ctx.task_spin;

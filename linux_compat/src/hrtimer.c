@@ -18,7 +18,7 @@
 
 #define HRTIMER_MAGIC	0x68727469U    /* "hrti": set by hrtimer_init */
 
-const unsigned int hrtimer_resolution = (unsigned int)TIC_NS;
+const unsigned int hrtimer_resolution = (unsigned int)LX_TICK_NS;
 
 static struct {
 	struct list_head head;

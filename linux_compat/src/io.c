@@ -1,33 +1,19 @@
 /*
- * io.c — ioremap and the SYSCFG windows.
- *
- * Host: a physical register range is reachable only through the window the
- * installed MMIO handler (host_sim) returns for it, so that every access has
- * declared semantics; an unmodelled range maps to NULL.  AM1808: the MMU maps
- * the peripheral space flat, so the window is the physical address itself.
+ * io.c — ioremap and the I/O memory copies.  Where a physical register range
+ * is visible to the CPU is the target's business (lx_platform_io_window:
+ * src/host/io.c, src/am1808/io.c).
  */
 #include <linux/io.h>
 #include <linux/kernel.h>
-#include <linux/sizes.h>
-#include <mach/da8xx.h>
 #include <mach/hardware.h>
 #include <linux_compat/irq.h>
-#if defined(EV3LX_HOST)
-#include <rtos_host.h>
-#endif
-
-void __iomem *da8xx_syscfg0_base;
-void __iomem *da8xx_syscfg1_base;
+#include <linux_compat/platform.h>
 
 void __iomem *lx_io_map(phys_addr_t phys, size_t size)
 {
 	if (size == 0 || phys + size - 1 < phys)
 		return NULL;
-#if defined(EV3LX_HOST)
-	return (void __iomem *)rtos_host_map_io((uintptr_t)phys, (SIZE)size);
-#else
-	return (void __iomem *)(uintptr_t)phys;
-#endif
+	return (void __iomem *)lx_platform_io_window((uintptr_t)phys, size);
 }
 
 void __iomem *ioremap(phys_addr_t phys, size_t size)
@@ -77,10 +63,4 @@ void memset_io(volatile void __iomem *addr, int value, size_t count)
 
 	while (count--)
 		__raw_writeb((u8)value, dst++);
-}
-
-void lx_iomap_boot(void)
-{
-	da8xx_syscfg0_base = lx_io_map(DA8XX_SYSCFG0_BASE, SZ_4K);
-	da8xx_syscfg1_base = lx_io_map(DA8XX_SYSCFG1_BASE, SZ_4K);
 }

@@ -6,10 +6,11 @@
  * trigger type.  Handler records come from a fixed pool, so request_irq and
  * free_irq take bounded time and do not touch the kmalloc pool.
  *
- * The line is "unmasked" - ena_int for an AINTC line, the pin's edge
- * triggers for a GPIO pin IRQ (gpio.c) - exactly while it has a handler and
- * its disable depth is 0.  List changes happen with interrupts locked, RTOS
- * service calls (ena_int/dis_int) outside that lock, as TOPPERS requires.
+ * The IRQ is unmasked through its chip (struct lx_irq_chip; the machine
+ * says which chip serves which IRQ) exactly while it has a handler and its
+ * disable depth is 0.  List changes happen with interrupts locked, the
+ * chip's operations (which may make RTOS service calls) outside that lock,
+ * as TOPPERS requires.
  */
 #include <linux/interrupt.h>
 #include <linux/irq.h>
@@ -18,6 +19,7 @@
 #include <linux/string.h>
 #include <linux_compat/context.h>
 #include <linux_compat/irq.h>
+#include <linux_compat/machine.h>
 #include <linux_compat/report.h>
 #include <kernel.h>
 #include <sil.h>
@@ -38,58 +40,21 @@ struct lx_irq_desc {
 static struct lx_irq_desc irq_descs[NR_IRQS];
 static struct irqaction action_pool[LX_NR_IRQ_ACTIONS];
 
-#define LX_IRQ_CASE(intno, isr, exinf)	case intno:
-
-/* True if the AINTC line has the plain dispatcher as its ISR in linux_irq_cfg. */
-static bool aintc_line_requestable(unsigned int irq)
-{
-	if (irq >= IRQ_DA8XX_GPIO0 && irq <= IRQ_DA8XX_GPIO8)
-		return false;   /* bank lines: demultiplexed into pin IRQs */
-	switch (irq) {
-	LX_IRQ_LINES(LX_IRQ_CASE)
-		return true;
-	default:
-		return false;
-	}
-}
-
-static inline bool is_gpio_irq(unsigned int irq)
-{
-	return irq >= DAVINCI_N_AINTC_IRQ;
-}
-
 bool lx_irq_valid(unsigned int irq)
 {
-	if (irq >= NR_IRQS)
-		return false;
-	return is_gpio_irq(irq) || aintc_line_requestable(irq);
+	return irq < NR_IRQS && lx_mach_irq_chip(irq) != NULL;
 }
 
-/* Lets the line deliver: ena_int or the pin's triggers.  Returns 0 or -EINVAL. */
+/* Lets a valid irq deliver with its trigger type.  Returns 0 or -EINVAL. */
 static int line_unmask(unsigned int irq)
 {
-	ER ercd;
-
-	if (is_gpio_irq(irq)) {
-		lx_gpio_irq_unmask(irq - DAVINCI_N_AINTC_IRQ, irq_descs[irq].type);
-		return 0;
-	}
-	ercd = ena_int((INTNO)irq);
-	if (ercd != E_OK) {
-		pr_err("irq %u: ena_int failed (%d): is linux_irq_cfg in the RTOS configuration?\n",
-		       irq, ercd);
-		return -EINVAL;
-	}
-	return 0;
+	return lx_mach_irq_chip(irq)->irq_unmask(irq, irq_descs[irq].type);
 }
 
-/* Stops the line delivering. */
+/* Stops a valid irq delivering. */
 static void line_mask(unsigned int irq)
 {
-	if (is_gpio_irq(irq))
-		lx_gpio_irq_mask(irq - DAVINCI_N_AINTC_IRQ);
-	else
-		(void)dis_int((INTNO)irq);
+	lx_mach_irq_chip(irq)->irq_mask(irq);
 }
 
 bool lx_handle_irq(unsigned int irq)
@@ -149,11 +114,7 @@ static int check_type(unsigned int irq, unsigned int type)
 {
 	if (type & ~(unsigned int)IRQ_TYPE_SENSE_MASK)
 		return -EINVAL;
-	if (is_gpio_irq(irq))
-		return lx_gpio_irq_check_type(type);
-	if (type == IRQ_TYPE_NONE || type == IRQ_TYPE_LEVEL_HIGH || type == IRQ_TYPE_EDGE_RISING)
-		return 0;
-	return -EINVAL;
+	return lx_mach_irq_chip(irq)->irq_check_type(type);
 }
 
 int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
@@ -348,8 +309,8 @@ int irq_set_irq_type(unsigned int irq, unsigned int type)
 	desc->type = type;
 	live = desc->action && desc->depth == 0;
 	SIL_UNL_INT();
-	if (live && is_gpio_irq(irq))
-		lx_gpio_irq_unmask(irq - DAVINCI_N_AINTC_IRQ, type);
+	if (live)
+		return lx_mach_irq_chip(irq)->irq_unmask(irq, type);
 	return 0;
 }
 
@@ -384,8 +345,7 @@ void lx_io_boot(intptr_t exinf)
 {
 	(void)exinf;
 	irq_boot();
-	lx_iomap_boot();
-	lx_gpio_boot();
+	lx_mach_boot();
 	lx_resource_boot();
 	lx_devfs_boot();
 	lx_uaccess_boot();

@@ -11,6 +11,7 @@
 #include <linux/kernel.h>
 #include <linux/string.h>
 #include <linux/errno.h>
+#include <linux_compat/platform.h>
 #include <linux_compat/report.h>
 #include <stdio.h>
 #include <sil.h>
@@ -89,6 +90,41 @@ static void make_live(struct module *mod)
 	live_modules = mod;
 }
 
+/* Longest boot command line (Linux's COMMAND_LINE_SIZE on ARM). */
+#define BOOT_ARGS_MAX	1024
+
+/* The boot command line, split in place; charp parameters point into it, as
+ * into Linux's static_command_line, so it lives until the next boot. */
+static char boot_args[BOOT_ARGS_MAX];
+
+/* Sets the parameters the boot command line names ("module.param=value"
+ * words, blank-separated), as Linux does for built-in modules; other words
+ * are not for modules and are skipped. */
+static void apply_boot_args(const char *args)
+{
+	char *word, *dot, *eq, *next;
+
+	if (strlen(args) >= sizeof(boot_args)) {
+		pr_err("boot command line longer than %d bytes; ignored\n", BOOT_ARGS_MAX - 1);
+		return;
+	}
+	strcpy(boot_args, args);
+	for (word = boot_args; *word != '\0'; word = next) {
+		word += strspn(word, " \t");
+		next = word + strcspn(word, " \t");
+		if (*next != '\0')
+			*next++ = '\0';
+		dot = strchr(word, '.');
+		eq = strchr(word, '=');
+		if (dot == NULL || eq == NULL || dot > eq)
+			continue;
+		*dot = '\0';
+		*eq = '\0';
+		if (lx_module_param_set(word, dot + 1, eq + 1) == E_NOEXS)
+			pr_warn("%s: unknown parameter '%s' ignored\n", word, dot + 1);
+	}
+}
+
 /* Runs each module_init once in order; the number that failed. */
 int lx_modules_init(void)
 {
@@ -96,6 +132,8 @@ int lx_modules_init(void)
 	size_t i, n = initcall_count();
 	struct module *mod;
 	int failed = 0, ret;
+
+	apply_boot_args(lx_platform_boot_args());
 
 	while ((c = next_init(c)) != NULL) {
 		mod = c->module;

@@ -1,9 +1,10 @@
 /*
  * spinlock.c — interrupt masking (local_irq_*) and spin locks on one CPU.
  *
- * spin_lock_irqsave is SIL_LOC_INT and one bookkeeping call (interrupt-off
- * depth and preempt count, linux_compat/context.h); the lock word is checked
- * for recursion and free unlocks only with LX_DEBUG_SPINLOCK.
+ * spin_lock_irqsave masks interrupts (the CPSR I/F bits on the AM1808) and
+ * makes one bookkeeping call (interrupt-off depth and preempt count,
+ * linux_compat/context.h); the lock word is checked for recursion and free
+ * unlocks only with LX_DEBUG_SPINLOCK.
  */
 #include <linux/spinlock.h>
 #include <linux/kernel.h>
@@ -12,11 +13,41 @@
 #include <linux_compat/sched.h>
 #include <sil.h>
 
-/* The variable SIL_PRE_LOC declares differs per target; flags carry its value. */
 #if defined(EV3LX_AM1808)
-#define SIL_SAVED	sil_saved_cpsr_
+/* CPSR interrupt mask bits (ARM Architecture Reference Manual, ARMv5: I = IRQ, F = FIQ). */
+#define CPSR_IRQ_MASK	0x80U
+#define CPSR_FIQ_MASK	0x40U
+
+/* Saves the CPSR and masks interrupts with mrs/orr/msr, as Linux's ARMv5
+ * arch_local_irq_save does; FIQ is masked too, as SIL_LOC_INT masks every
+ * interrupt.  (SIL_LOC_INT's saved state is private to each TOPPERS target
+ * port, so it cannot be carried in flags.) */
+static inline unsigned long irq_mask_save(void)
+{
+	unsigned long cpsr, masked;
+
+	__asm__ volatile("mrs %0, cpsr" : "=r"(cpsr));
+	masked = cpsr | CPSR_IRQ_MASK | CPSR_FIQ_MASK;
+	__asm__ volatile("msr cpsr_c, %0" : : "r"(masked) : "memory", "cc");
+	return cpsr;
+}
+
+/* Restores the CPSR control byte irq_mask_save returned. */
+static inline void irq_mask_restore(unsigned long cpsr)
+{
+	__asm__ volatile("msr cpsr_c, %0" : : "r"(cpsr) : "memory", "cc");
+}
 #else
-#define SIL_SAVED	sil_saved_lock_
+/* Host: the host kernel's interrupt mask (sil.h's host target). */
+static inline unsigned long irq_mask_save(void)
+{
+	return sil_host_loc_int();
+}
+
+static inline void irq_mask_restore(unsigned long saved)
+{
+	sil_host_unl_int((uint_t)saved);
+}
 #endif
 
 static bool irq_disabled_by_disable;   /* local_irq_disable is in effect */
@@ -25,20 +56,17 @@ static unsigned long irq_disable_saved; /* state to return to at local_irq_enabl
 /* Masks all interrupts; returns the previous state. */
 unsigned long arch_local_irq_save(void)
 {
-	SIL_PRE_LOC;
+	unsigned long flags = irq_mask_save();
 
-	SIL_LOC_INT();
 	lx_irqs_off_enter();
-	return (unsigned long)SIL_SAVED;
+	return flags;
 }
 
 /* Returns to the interrupt state flags describes. */
 void arch_local_irq_restore(unsigned long flags)
 {
-	SIL_PRE_LOC = (__typeof__(SIL_SAVED))flags;
-
 	lx_irqs_off_exit();
-	SIL_UNL_INT();
+	irq_mask_restore(flags);
 }
 
 /* Masks interrupts until local_irq_enable (does not nest). */
@@ -142,22 +170,19 @@ int lx_spin_trylock(spinlock_t *lock)
 /* Interrupts masked, then the lock. */
 unsigned long lx_spin_lock_irqsave(spinlock_t *lock, const char *file, int line)
 {
-	SIL_PRE_LOC;
+	unsigned long flags = irq_mask_save();
 
-	SIL_LOC_INT();
 	lx_irqs_off_atomic_enter();
 	take(lock, file, line);
-	return (unsigned long)SIL_SAVED;
+	return flags;
 }
 
 /* The lock, then the interrupt state back. */
 void lx_spin_unlock_irqrestore(spinlock_t *lock, unsigned long flags, const char *file, int line)
 {
-	SIL_PRE_LOC = (__typeof__(SIL_SAVED))flags;
-
 	give(lock, file, line);
 	lx_irqs_off_atomic_exit();
-	SIL_UNL_INT();
+	irq_mask_restore(flags);
 }
 
 /* Interrupts masked (state kept in the lock), then the lock. */

@@ -1,5 +1,5 @@
 /*
- * workqueue.c — the kernel worker task and the one FIFO of work it serves.
+ * workqueue.c — the one FIFO of work the worker task serves (worker.c).
  *
  * A work item's identity while queued or running is its queueing sequence
  * number, so flushes wait for exactly the instance that was there when they
@@ -8,7 +8,6 @@
  */
 #include <linux/workqueue.h>
 #include <linux/kernel.h>
-#include <linux/module.h>
 #include <linux/string.h>
 #include <linux/wait.h>
 #include <linux_compat/config.h>
@@ -35,34 +34,18 @@ static struct {
 	u64 next_seq;                /* sequence numbers start at 1; 0 = none */
 	u64 running_seq;             /* the instance running now, or 0 */
 	const struct work_struct *running;
-	bool ready;                  /* module inits done */
-	bool unload_requested;       /* lx_worker_request_unload was called */
-	bool unloaded;               /* ...and the worker has run every module_exit */
 } wq;
 
 static DECLARE_WAIT_QUEUE_HEAD(flush_waiters);
-static DECLARE_WAIT_QUEUE_HEAD(unload_waiters);
 
-/* Forgets queued work, the pool and any unload request. */
+/* Forgets queued work, the pool and the worker's state. */
 void lx_workqueue_reset(void)
 {
 	memset(&wq, 0, sizeof(wq));
 	wq.next_seq = 1;
 	memset(wq_pool, 0, sizeof(wq_pool));
 	lx_init_waitqueue_head(&flush_waiters, "flush_waiters");
-	lx_init_waitqueue_head(&unload_waiters, "unload_waiters");
-}
-
-/* True in the worker task. */
-bool lx_in_worker(void)
-{
-	return lx_current_tskid() == LX_WORKER_TSKID;
-}
-
-/* True once module inits are done. */
-bool lx_worker_ready(void)
-{
-	return wq.ready;
+	lx_worker_reset();
 }
 
 /* Initialises work. */
@@ -209,7 +192,7 @@ bool cancel_work(struct work_struct *work)
  * is empty.  Nests (a flush inside a work runs others in place), so the
  * running state is saved and restored.
  */
-static bool run_one(void)
+bool lx_workqueue_run_one(void)
 {
 	struct work_struct *work;
 	const struct work_struct *outer_running;
@@ -264,7 +247,7 @@ static bool wait_instance(const struct work_struct *work, u64 seq, const char *w
 	}
 	/* The worker waits for itself: run the queue in place. */
 	while (instance_alive(work, seq)) {
-		if (READ_ONCE(wq.running_seq) == seq || !run_one()) {
+		if (READ_ONCE(wq.running_seq) == seq || !lx_workqueue_run_one()) {
 			lx_report("workqueue deadlock", file, line,
 				  "%s from the worker while that very work runs", what);
 			return false;
@@ -367,7 +350,7 @@ void lx_flush_workqueue_at(struct workqueue_struct *q, const char *file, int lin
 	while (older_work_alive(limit)) {
 		const struct work_struct *head = READ_ONCE(wq.head);
 
-		if (head == NULL || head->lx_seq > limit || !run_one()) {
+		if (head == NULL || head->lx_seq > limit || !lx_workqueue_run_one()) {
 			lx_report("workqueue deadlock", file, line,
 				  "flush_workqueue from the work item it would wait for");
 			return;
@@ -437,55 +420,4 @@ void destroy_workqueue(struct workqueue_struct *q)
 	flush_workqueue(q);
 	if (q >= wq_pool && q < wq_pool + LX_NR_WORKQUEUES)
 		q->in_use = false;
-}
-
-/* Asks the worker to unload every module (any context; the worker does it when it next runs). */
-void lx_worker_request_unload(void)
-{
-	WRITE_ONCE(wq.unload_requested, true);
-	lx_wake_task(LX_WORKER_TSKID);
-}
-
-/* True once the worker has run every module_exit after a request. */
-bool lx_worker_unloaded(void)
-{
-	return READ_ONCE(wq.unloaded);
-}
-
-/* Sleeps the calling task until the worker has unloaded the modules. */
-void lx_worker_wait_unloaded(void)
-{
-	wait_event(unload_waiters, lx_worker_unloaded());
-}
-
-/*
- * In the worker: every module_exit, newest first.  The worker runs at the
- * highest task priority meanwhile, so application tasks still running
- * cannot call into a driver half-way through its unload unless the exit
- * sleeps.  Work queued by the exits is served afterwards, as before.
- */
-static void unload_modules(void)
-{
-	PRI pri = LX_WORKER_PRIORITY;
-
-	(void)get_pri(TSK_SELF, &pri);
-	(void)chg_pri(TSK_SELF, TMIN_TPRI);
-	lx_modules_exit();
-	WRITE_ONCE(wq.unloaded, true);
-	wake_up_all(&unload_waiters);
-	(void)chg_pri(TSK_SELF, pri);
-}
-
-/* The worker task: every module_init, then work until the modules are unloaded, then work. */
-void lx_worker_task(intptr_t exinf)
-{
-	(void)exinf;
-	(void)lx_modules_init();
-	wq.ready = true;
-	for (;;) {
-		if (READ_ONCE(wq.unload_requested) && !wq.unloaded)
-			unload_modules();
-		else if (!run_one())
-			(void)slp_tsk();
-	}
 }

@@ -24,8 +24,6 @@
 #ifndef TIC_DENO
 #define TIC_DENO 5U
 #endif
-/* Tick length in nanoseconds; TIC_NUME/TIC_DENO must divide evenly into ns. */
-#define TIC_NS   ((uint64_t)(TIC_NUME) * 1000000U / (TIC_DENO))
 
 /* ---- Object types ---- */
 typedef uint_t   FLGPTN;  /* eventflag bit pattern */
@@ -49,6 +47,8 @@ typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 #define TMIN_INTPRI  (-7)   /* highest interrupt priority */
 #define TMAX_INTPRI  (-1)   /* lowest interrupt priority */
 #define TIPM_ENAALL  0      /* interrupt priority mask: all enabled */
+#define TMIN_DPRI    1      /* highest data priority (priority data queues) */
+#define TMAX_DPRI    16     /* lowest data priority */
 #define TMIN_ISRPRI  1      /* first ISR on a line */
 #define TMAX_ISRPRI  16     /* last ISR on a line */
 
@@ -72,6 +72,8 @@ typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 #define TA_TPRI      0x01U  /* wait queue in priority order */
 #define TA_WMUL      0x02U  /* eventflag: several waiters */
 #define TA_CLR       0x04U  /* eventflag: clear on release */
+#define TA_INHERIT   0x02U  /* mutex: priority inheritance (uITRON 4.0) */
+#define TA_CEILING   0x03U  /* mutex: priority ceiling protocol */
 #define TA_STA       0x02U  /* cyclic: started at boot */
 #define TA_PHS       0x04U  /* cyclic: keep phase */
 #define TA_ENAINT    0x01U  /* interrupt: enabled at boot */
@@ -92,6 +94,24 @@ typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 #define TTS_WAS      0x0cU
 #define TTS_DMT      0x10U
 
+/* ---- Reference packets ---- */
+typedef struct t_rdtq {    /* ref_dtq */
+	ID     stskid;         /* first task waiting to send, TSK_NONE if none */
+	ID     rtskid;         /* first task waiting to receive, TSK_NONE if none */
+	uint_t sdtqcnt;        /* data elements in the queue */
+} T_RDTQ;
+
+typedef struct t_rpdq {    /* ref_pdq */
+	ID     stskid;
+	ID     rtskid;
+	uint_t spdqcnt;
+} T_RPDQ;
+
+typedef struct t_rmtx {    /* ref_mtx */
+	ID     htskid;         /* the task holding the mutex, TSK_NONE if unlocked */
+	ID     wtskid;         /* first task waiting for it, TSK_NONE if none */
+} T_RMTX;
+
 /* ---- Task management ---- */
 ER      act_tsk(ID tskid);                 /* activate (queue one activation if not dormant) */
 ER      iact_tsk(ID tskid);                /* act_tsk from non-task context */
@@ -111,6 +131,9 @@ ER_UINT can_wup(ID tskid);
 ER      rel_wai(ID tskid);                 /* force a waiting task out with E_RLWAI */
 ER      irel_wai(ID tskid);
 ER      dly_tsk(RELTIM dlytim);            /* delay for at least dlytim ms */
+ER      sus_tsk(ID tskid);                 /* suspend (a waiting task becomes waiting-suspended) */
+ER      rsm_tsk(ID tskid);                 /* resume a suspended task */
+ER      ter_tsk(ID tskid);                 /* terminate another task (releases its mutexes) */
 
 /* ---- Semaphores ---- */
 ER      sig_sem(ID semid);                 /* release one resource (E_QOVR at maximum) */
@@ -126,6 +149,38 @@ ER      clr_flg(ID flgid, FLGPTN clrptn);  /* AND the pattern with clrptn */
 ER      wai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn);
 ER      pol_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn);
 ER      twai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn, TMO tmout);
+
+/* ---- Data queues (intptr_t elements, FIFO) ---- */
+ER      snd_dtq(ID dtqid, intptr_t data);  /* send, waiting while full */
+ER      psnd_dtq(ID dtqid, intptr_t data); /* send, E_TMOUT if full */
+ER      ipsnd_dtq(ID dtqid, intptr_t data);
+ER      tsnd_dtq(ID dtqid, intptr_t data, TMO tmout);
+ER      fsnd_dtq(ID dtqid, intptr_t data); /* send, dropping the oldest element if full */
+ER      ifsnd_dtq(ID dtqid, intptr_t data);
+ER      rcv_dtq(ID dtqid, intptr_t *p_data);   /* receive, waiting while empty */
+ER      prcv_dtq(ID dtqid, intptr_t *p_data);  /* receive, E_TMOUT if empty */
+ER      trcv_dtq(ID dtqid, intptr_t *p_data, TMO tmout);
+ER      ini_dtq(ID dtqid);                 /* empty it; waiting tasks get E_DLT */
+ER      ref_dtq(ID dtqid, T_RDTQ *pk_rdtq);
+
+/* ---- Priority data queues (ordered by data priority, FIFO within one) ---- */
+ER      snd_pdq(ID pdqid, intptr_t data, PRI datapri);
+ER      psnd_pdq(ID pdqid, intptr_t data, PRI datapri);
+ER      ipsnd_pdq(ID pdqid, intptr_t data, PRI datapri);
+ER      tsnd_pdq(ID pdqid, intptr_t data, PRI datapri, TMO tmout);
+ER      rcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri);
+ER      prcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri);
+ER      trcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri, TMO tmout);
+ER      ini_pdq(ID pdqid);
+ER      ref_pdq(ID pdqid, T_RPDQ *pk_rpdq);
+
+/* ---- Mutexes (TA_CEILING: priority ceiling; TA_INHERIT: priority inheritance) ---- */
+ER      loc_mtx(ID mtxid);                 /* lock, waiting while another task holds it */
+ER      ploc_mtx(ID mtxid);                /* lock, E_TMOUT if held */
+ER      tloc_mtx(ID mtxid, TMO tmout);
+ER      unl_mtx(ID mtxid);                 /* unlock; mutexes unlock in reverse order of locking */
+ER      ini_mtx(ID mtxid);                 /* unlock; waiting tasks get E_DLT */
+ER      ref_mtx(ID mtxid, T_RMTX *pk_rmtx);
 
 /* ---- Time management ---- */
 ER      get_tim(SYSTIM *p_systim);         /* system time in ms since boot */
@@ -150,6 +205,7 @@ bool_t  sns_ctx(void);                     /* TRUE in non-task context */
 bool_t  sns_loc(void);                     /* TRUE with the CPU locked */
 bool_t  sns_dsp(void);                     /* TRUE with dispatching disabled */
 bool_t  sns_dpn(void);                     /* TRUE when dispatching is pending/not possible */
+ER      ext_ker(void);                     /* end the kernel: ATT_TER routines, then stop */
 
 /* ---- Interrupts ---- */
 ER      dis_int(INTNO intno);              /* mask one interrupt line */

@@ -2,7 +2,7 @@
  * rtos_cfg.h — the static configuration, as TOPPERS .cfg files declare it.
  *
  * Each table row is one static API of the TOPPERS configurator:
- * CRE_TSK, CRE_SEM, CRE_FLG, CRE_CYC, CRE_ALM, CFG_INT, ATT_ISR, ATT_INI,
+ * CRE_TSK, CRE_SEM, CRE_FLG, CRE_DTQ, CRE_PDQ, CRE_MTX, CRE_CYC, CRE_ALM, CFG_INT, ATT_ISR, ATT_INI,
  * ATT_TER, DEF_SVC, and HRP2's memory regions per protection domain.  On the host the
  * tables are checked at rtos_boot (a bad row is a clear boot error naming the
  * row); on the AM1808 the same objects are written into the HRP2 .cfg
@@ -23,9 +23,16 @@
 #define TNUM_FLGID   16
 #define TNUM_CYCID   16
 #define TNUM_ALMID   16
+#define TNUM_DTQID   16
+#define TNUM_PDQID   16
+#define TNUM_MTXID   16
 #define TNUM_FNCD    128    /* extended service calls: function codes 1..TNUM_FNCD */
 #define TNUM_DOMID   4      /* user protection domains 1..TNUM_DOMID */
 #define TMAX_INTNO   127U   /* interrupt numbers 0..TMAX_INTNO (AINTC system interrupts) */
+
+/* The highest priority an application task may use: the levels above belong
+ * to the platform (linux_compat's workers, the API's button task). */
+#define TMIN_APP_TPRI 6
 
 /* The host tick is an interrupt line too, as on the AM1808 (TIMER64P0 TINT12). */
 #define INTNO_TICK   21U
@@ -54,6 +61,28 @@ struct rtos_flg_cfg {       /* CRE_FLG */
 	ID     flgid;
 	ATR    flgatr;           /* TA_TPRI | TA_WMUL | TA_CLR */
 	FLGPTN iflgptn;
+	const char *name;
+};
+
+struct rtos_dtq_cfg {       /* CRE_DTQ: the buffer is allocated by the kernel (dtqmb NULL) */
+	ID     dtqid;
+	ATR    dtqatr;           /* TA_TPRI (senders' queue in priority order) or TA_NULL */
+	uint_t dtqcnt;           /* capacity in data elements; 0: sender and receiver meet */
+	const char *name;
+};
+
+struct rtos_pdq_cfg {       /* CRE_PDQ */
+	ID     pdqid;
+	ATR    pdqatr;           /* TA_TPRI or TA_NULL */
+	uint_t pdqcnt;           /* capacity; 0: sender and receiver meet */
+	PRI    maxdpri;          /* data priorities 1..maxdpri (<= TMAX_DPRI) */
+	const char *name;
+};
+
+struct rtos_mtx_cfg {       /* CRE_MTX */
+	ID     mtxid;
+	ATR    mtxatr;           /* TA_NULL, TA_TPRI, TA_CEILING or TA_INHERIT */
+	PRI    ceilpri;          /* TA_CEILING only: TMIN_TPRI..TMAX_TPRI */
 	const char *name;
 };
 
@@ -128,6 +157,9 @@ struct rtos_cfg {
 	const struct rtos_ter_cfg  *ters;    uint_t nters;
 	const struct rtos_svc_cfg  *svcs;    uint_t nsvcs;
 	const struct rtos_mem_cfg  *mems;    uint_t nmems;
+	const struct rtos_dtq_cfg  *dtqs;    uint_t ndtqs;
+	const struct rtos_pdq_cfg  *pdqs;    uint_t npdqs;
+	const struct rtos_mtx_cfg  *mtxs;    uint_t nmtxs;
 	/* INCLUDE(): other configurations merged in, e.g. linux_compat's. NULL-terminated. */
 	const struct rtos_cfg *const *includes;
 };

@@ -17,6 +17,10 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 
+/* The length of one tick in virtual nanoseconds: TIC_NUME/TIC_DENO ms (kernel.h),
+ * which must come out as a whole number of nanoseconds. */
+#define RTOS_HOST_TICK_NS	((uint64_t)(TIC_NUME) * 1000000U / (TIC_DENO))
+
 /* ---- Boot and run ---- */
 
 /* Resets the kernel, checks cfg (and its includes), creates all objects, runs
@@ -44,6 +48,10 @@ void rtos_host_run_until(uint64_t t_ns);
  * until max_ns of virtual time have passed.  Returns true if idle was reached. */
 bool rtos_host_run_until_idle(uint64_t max_ns);
 
+/* True once ext_ker has ended the system (until the next boot): the run
+ * functions return at once; rtos_host_shutdown still runs the ATT_TER routines. */
+bool rtos_host_exited(void);
+
 /* Virtual time in ns since boot. */
 uint64_t rtos_host_now(void);
 
@@ -51,6 +59,50 @@ uint64_t rtos_host_now(void);
  * virtual CPU time; events due meanwhile fire, and interrupts nest if not
  * masked.  A task preempted meanwhile finishes its time when it runs again. */
 void rtos_host_consume(uint64_t ns);
+
+/* ---- CPU time of service calls and stalled tasks ---- */
+
+/*
+ * A service call made by a task costs virtual CPU time, so that a task that
+ * busy-polls (`while (!ev3_touch_sensor_is_pressed(p));` makes a service call
+ * or two per round) lets time pass as on the brick.  The defaults are make
+ * bench's ARMv5 instruction counts (production build) at the AM1808's 300 MHz:
+ * a kernel service call costs what prb_mem, the call ev3_uart_sensor_get_raw
+ * makes, measured (60 instructions: 200 ns), and cal_svc what
+ * ev3_motor_set_speed, one extended service call, measured in total (562
+ * instructions: 1 873 ns; the service calls made inside it are not charged
+ * again).  Only user-domain tasks are charged unless kernel_domain is set:
+ * the platform's own timing stays what its tests measure.
+ */
+#define RTOS_HOST_CPU_HZ        300000000U
+#define RTOS_HOST_SVC_INSN      60U
+#define RTOS_HOST_EXT_SVC_INSN  562U
+#define RTOS_HOST_INSN_NS(n)    ((uint32_t)(((uint64_t)(n) * 1000000000U + RTOS_HOST_CPU_HZ / 2) / RTOS_HOST_CPU_HZ))
+
+struct rtos_host_cpu_cost {
+	uint32_t svc_ns;         /* a kernel service call (0: free) */
+	uint32_t ext_svc_ns;     /* cal_svc, unless set per function code */
+	bool     kernel_domain;  /* charge kernel-domain tasks too */
+};
+
+/* Sets the costs (NULL: the defaults above); they stay across boots. */
+void rtos_host_set_cpu_cost(const struct rtos_host_cpu_cost *cost);
+void rtos_host_get_cpu_cost(struct rtos_host_cpu_cost *cost);
+/* The cost of extended service call fncd (ns < 0: back to ext_svc_ns); E_PAR for a bad fncd. */
+ER rtos_host_set_svc_cost(FN fncd, int32_t ns);
+
+/*
+ * A task that runs for stall_ms of wall-clock time without virtual time
+ * advancing (a loop that makes no service call, or one in the kernel domain
+ * with costs off) is reported as a bug naming the task and the PC it was at
+ * ("addr2line -f -e PROGRAM OFFSET" gives the line); the system then ends as
+ * after ext_ker and the run function returns.  A stall outside a task (an
+ * ISR, the harness) is reported and the process exits with status 3.
+ * Default 10 000 ms, or the environment's EV3LX_STALL_MS; 0 turns it off.
+ */
+void rtos_host_set_stall_bound(uint32_t stall_ms);
+/* True if the last run ended with a stalled task (until the next boot). */
+bool rtos_host_stalled(void);
 
 /* ---- Device events (the hardware side) ---- */
 
@@ -101,6 +153,16 @@ void rtos_host_set_mmio_handler(const struct rtos_host_mmio_ops *ops);
 void rtos_host_set_mmio_window(uintptr_t start, uintptr_t len);
 /* The window for a physical register range, or NULL if none is modelled. */
 void *rtos_host_map_io(uintptr_t phys, SIZE size);
+
+/* ---- Boot arguments ---- */
+
+/* The command line the simulated boot loader hands the next boots (NULL:
+ * none), as U-Boot's bootargs: the board sets it when it is created, the
+ * layers above read it (linux_compat takes "module.param=value" words as
+ * module parameters).  The string must stay valid until changed. */
+void rtos_host_set_boot_args(const char *args);
+/* The command line set by rtos_host_set_boot_args ("" if none). */
+const char *rtos_host_boot_args(void);
 
 /* ---- Trace ---- */
 

@@ -1,6 +1,6 @@
 /*
  * test_brick_api.c — the brick API end to end on host_sim: LED colours reach
- * the LED pins, ev3_button_is_pressed follows the button model (debounced,
+ * the LED pins, ev3lx_button_is_pressed follows the button model (debounced,
  * every button mapped), click handlers run in the API's button task — task
  * context, its ID, its user domain's rights, never in the interrupt — with
  * their exinf, can be replaced, removed and re-registered from a handler;
@@ -50,7 +50,7 @@ static void on_back_register_left(intptr_t exinf)
 {
 	(void)exinf;
 	chained_calls++;
-	ev3_button_set_on_clicked(LEFT_BUTTON, on_click, 77);
+	ev3lx_button_set_on_clicked(LEFT_BUTTON, on_click, 77);
 }
 
 static void click(button_t b)
@@ -67,12 +67,12 @@ static void leds(void)
 	};
 
 	for (unsigned i = 0; i < 4; i++) {
-		is_int(ev3_led_set_color(rows[i].api), E_OK, "ev3_led_set_color %s", rows[i].name);
+		is_int(ev3lx_led_set_color(rows[i].api), E_OK, "ev3lx_led_set_color %s", rows[i].name);
 		ok(ev3_ui_led_color(EV3_UI_LED_LEFT) == rows[i].model &&
 		   ev3_ui_led_color(EV3_UI_LED_RIGHT) == rows[i].model, "both LEDs %s on the pins", rows[i].name);
 	}
-	is_int(ev3_led_set_color(TNUM_LED_COLOR), E_PAR, "colour TNUM_LED_COLOR: E_PAR");
-	is_int(ev3_led_set_color((ledcolor_t)-1), E_PAR, "colour -1: E_PAR");
+	is_int(ev3lx_led_set_color(TNUM_LED_COLOR), E_PAR, "colour TNUM_LED_COLOR: E_PAR");
+	is_int(ev3lx_led_set_color((ledcolor_t)-1), E_PAR, "colour -1: E_PAR");
 	ok(ev3_ui_led_color(EV3_UI_LED_LEFT) == EV3_UI_LED_OFF, "and nothing changed");
 }
 
@@ -80,32 +80,32 @@ static void pressed(void)
 {
 	bool p = true, mapping = true, released = true;
 
-	is_int(ev3_button_is_pressed(ENTER_BUTTON, &p), E_OK, "is_pressed");
+	is_int(ev3lx_button_is_pressed(ENTER_BUTTON, &p), E_OK, "is_pressed");
 	ok(!p, "nothing pressed at first");
 	for (unsigned b = 0; b < TNUM_BUTTON; b++) {
 		ev3_ui_button_set(model_of[b], true);
 		dly_tsk(30);
 		for (unsigned o = 0; o < TNUM_BUTTON; o++) {
-			ev3_button_is_pressed((button_t)o, &p);
+			ev3lx_button_is_pressed((button_t)o, &p);
 			mapping &= p == (o == b);
 		}
 		ev3_ui_button_set(model_of[b], false);
 		dly_tsk(30);
-		ev3_button_is_pressed((button_t)b, &p);
+		ev3lx_button_is_pressed((button_t)b, &p);
 		released &= !p;
 	}
 	ok(mapping, "each button, and only it, reads pressed while held");
 	ok(released, "and released after");
 	ev3_ui_button_set(EV3_UI_BUTTON_UP, true);
 	dly_tsk(5);
-	ev3_button_is_pressed(UP_BUTTON, &p);
+	ev3lx_button_is_pressed(UP_BUTTON, &p);
 	ok(!p, "a press younger than the debounce time is not reported yet");
 	ev3_ui_button_set(EV3_UI_BUTTON_UP, false);
 	dly_tsk(30);
-	is_int(ev3_button_is_pressed(TNUM_BUTTON, &p), E_ID, "button TNUM_BUTTON: E_ID");
-	is_int(ev3_button_is_pressed((button_t)-1, &p), E_ID, "button -1: E_ID");
-	is_int(ev3_button_is_pressed(LEFT_BUTTON, NULL), E_MACV, "NULL: E_MACV");
-	is_int(ev3_button_is_pressed(LEFT_BUTTON, (bool *)&kernel_only), E_MACV,
+	is_int(ev3lx_button_is_pressed(TNUM_BUTTON, &p), E_ID, "button TNUM_BUTTON: E_ID");
+	is_int(ev3lx_button_is_pressed((button_t)-1, &p), E_ID, "button -1: E_ID");
+	is_int(ev3lx_button_is_pressed(LEFT_BUTTON, NULL), E_MACV, "NULL: E_MACV");
+	is_int(ev3lx_button_is_pressed(LEFT_BUTTON, (bool *)&kernel_only), E_MACV,
 	       "memory outside the task's domain: E_MACV");
 }
 
@@ -114,12 +114,12 @@ static ER irq_ercd;
 static void from_irq(void *arg)
 {
 	(void)arg;
-	irq_ercd = ev3_button_set_on_clicked(UP_BUTTON, on_click, 1);
+	irq_ercd = ev3lx_button_set_on_clicked(UP_BUTTON, on_click, 1);
 }
 
 static void handlers(void)
 {
-	is_int(ev3_button_set_on_clicked(ENTER_BUTTON, on_click, 42), E_OK, "set_on_clicked ENTER");
+	is_int(ev3lx_button_set_on_clicked(ENTER_BUTTON, on_click, 42), E_OK, "set_on_clicked ENTER");
 	click(ENTER_BUTTON);
 	is_int(seen.calls, 1, "one click, one call");
 	is_int(seen.exinf, 42, "with its exinf");
@@ -136,21 +136,21 @@ static void handlers(void)
 	dly_tsk(CLICK_WAIT_MS);
 	is_int(seen.calls, 2, "its release does");
 
-	ev3_button_set_on_clicked(ENTER_BUTTON, on_click, 43);
+	ev3lx_button_set_on_clicked(ENTER_BUTTON, on_click, 43);
 	click(ENTER_BUTTON);
 	ok(seen.calls == 3 && seen.exinf == 43, "a new registration replaces the old");
-	is_int(ev3_button_set_on_clicked(ENTER_BUTTON, NULL, 0), E_OK, "NULL removes it");
+	is_int(ev3lx_button_set_on_clicked(ENTER_BUTTON, NULL, 0), E_OK, "NULL removes it");
 	click(ENTER_BUTTON);
 	is_int(seen.calls, 3, "and the click calls nothing");
 
-	ev3_button_set_on_clicked(BACK_BUTTON, on_back_register_left, 0);
+	ev3lx_button_set_on_clicked(BACK_BUTTON, on_back_register_left, 0);
 	click(BACK_BUTTON);
 	click(LEFT_BUTTON);
 	ok(chained_calls == 1 && seen.calls == 4 && seen.exinf == 77,
 	   "a handler may register handlers");
 
-	is_int(ev3_button_set_on_clicked(TNUM_BUTTON, on_click, 0), E_ID, "button TNUM_BUTTON: E_ID");
-	is_int(ev3_button_set_on_clicked((button_t)-1, on_click, 0), E_ID, "button -1: E_ID");
+	is_int(ev3lx_button_set_on_clicked(TNUM_BUTTON, on_click, 0), E_ID, "button TNUM_BUTTON: E_ID");
+	is_int(ev3lx_button_set_on_clicked((button_t)-1, on_click, 0), E_ID, "button -1: E_ID");
 	hs_sim_at(rtos_host_now() + AT_MS, from_irq, NULL);
 	dly_tsk(2);
 	is_int(irq_ercd, E_CTX, "from an interrupt: E_CTX");
@@ -160,7 +160,7 @@ static void handlers(void)
 
 static void stop_and_restart(void)
 {
-	ev3_button_set_on_clicked(RIGHT_BUTTON, on_click, 5);
+	ev3lx_button_set_on_clicked(RIGHT_BUTTON, on_click, 5);
 	is_int(rel_wai(EV3_BUTTON_TSKID), E_OK, "rel_wai stops the button task");
 	click(RIGHT_BUTTON);
 	is_int(seen.calls, 4, "no handler runs while it is stopped");

@@ -184,13 +184,53 @@ static void test_files(void)
 	unlink(png);
 }
 
+/* Outputs that cannot be written: refused before the run (a missing directory), or reported
+ * after it with status 1 (a full disk: /dev/full); never a silent success, never PNG bytes on
+ * stdout; option values on flags refused. */
+static void test_output_errors(void)
+{
+	static const char *const outputs[] = { "--csv", "--log", "--trace", "--plot" };
+	char line[1024];
+
+	for (unsigned i = 0; i < sizeof(outputs) / sizeof(outputs[0]); i++) {
+		const char *missing[] = { "balance", "--seconds", "30", outputs[i], "/nonexistent/dir/out",
+					  "--no-progress", NULL };
+		const char *full[] = { "balance", "--seconds", "1", outputs[i], "/dev/full", "--no-progress",
+				       NULL };
+
+		if (!strcmp(outputs[i], "--plot") && !ev3sim_have_gnuplot()) {
+			tap_skip(4, "gnuplot is not installed");
+			continue;
+		}
+		ok(et_run(&run, missing) && run.status == 1 && strstr(run.err, "cannot write /nonexistent/dir/out") &&
+		   run.out[0] == '\0', "%s in a missing directory: refused before the run, status 1", outputs[i]);
+		ok(strchr(run.err, '\n') == strrchr(run.err, '\n') && !strstr(run.err, "BUG"),
+		   "%s: one line, no internal report", outputs[i]);
+		ok(et_run(&run, full) && run.status == 1 && strstr(run.err, "/dev/full"),
+		   "%s /dev/full: the write error is reported, status 1", outputs[i]);
+		et_last_line(&run, line, sizeof(line));
+		ok(strncmp(line, "result=", 7) == 0 && !memchr(run.out, 0x89, strlen(run.out)),
+		   "%s /dev/full: the summary is still there, no PNG bytes on stdout", outputs[i]);
+	}
+	{
+		const char *help[] = { "balance", "--help=1", NULL };
+		const char *flag[] = { "balance", "--no-balancer=yes", NULL };
+
+		ok(et_run(&run, help) && run.status == 2 && strstr(run.err, "--help takes no value"),
+		   "--help=1 is refused");
+		ok(et_run(&run, flag) && run.status == 2 && strstr(run.err, "takes no value"),
+		   "a flag with a value is refused");
+	}
+}
+
 int main(void)
 {
-	tap_plan(5 + 29 * 2 + 9 + 10 + 8);
+	tap_plan(5 + 29 * 2 + 9 + 10 + 8 + 4 * 4 + 2);
 	test_help();
 	test_bad_input();
 	test_motor();
 	test_sensors();
 	test_files();
+	test_output_errors();
 	return tap_done();
 }

@@ -5,7 +5,7 @@
  * domain (E_MACV, from a user-domain task that may touch only its stack),
  * non-task context (E_CTX), and a driver that failed to load (E_OBJ).
  */
-#include "ev3_drivers/analog/analog_test.h"
+#include "analog_test.h"
 #include <linux/moduleparam.h>
 #include "host_sim/gpio.h"
 

@@ -12,7 +12,7 @@
 #include <linux_compat/devfs.h>
 #include <linux_compat/heap.h>
 
-#include "../ev3_drivers/pwm/pwm_test.h"
+#include "pwm_test.h"
 
 static bool all_obj(void)
 {
@@ -91,7 +91,7 @@ static void life_cycle_body(void)
 	ok(after.in_use < before.in_use, "unload returns the MOTORDATA memory (%zu -> %zu bytes in use)",
 	   before.in_use, after.in_use);
 	ok(all_obj(), "every service call answers E_OBJ after the unload");
-	d = ev3_motor_drive(ev3_output_motor(0));
+	d = hs_motor_drive(ev3_output_motor(0));
 	ok(d.fwd == 0 && d.rev == 0 && d.brake == 0, "outputs coast after the unload");
 	dly_tsk(1500);
 	ok(fabs(motor_dps(0)) < 1 && fabs(motor_dps(3)) < 1, "and nothing drives them any more");
@@ -111,7 +111,7 @@ static void life_cycle_body(void)
 
 int main(void)
 {
-	const int motors[4] = { EV3_MOTOR_LARGE, EV3_MOTOR_MEDIUM, EV3_MOTOR_LARGE, EV3_MOTOR_LARGE };
+	const int motors[4] = { HS_MOTOR_LARGE, HS_MOTOR_MEDIUM, HS_MOTOR_LARGE, HS_MOTOR_LARGE };
 
 	tap_plan(23);
 	ok(pwm_test_run(life_cycle_body, motors), "body ran to its end");

@@ -11,11 +11,12 @@
  */
 #include <stdlib.h>
 #include <string.h>
-#include "api/api_test.h"
+#include "api_test.h"
 #include <linux/module.h>
 #include <linux_compat/devfs.h>
 #include <linux_compat/heap.h>
 #include <linux_compat/irq.h>
+#include <linux_compat/machine.h>
 #include <linux/ioport.h>
 #include <mach/gpio.h>
 #include "lms_pwm.h"
@@ -69,7 +70,7 @@ static void trace_sink(const char *line, void *ctx)
 
 static void attach(void)
 {
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
 	ev3_attach_uart_sensor(0, 29, NULL);
 	ev3_set_scene(0, &scene);
 }
@@ -83,19 +84,19 @@ static void body(void)
 	uint8_t pct = 0;
 
 	r->pwm_state = (int)lx_module_find("d_pwm")->state;
-	r->config_ercd = ev3_motor_config(EV3_PORT_A, LARGE_MOTOR);
+	r->config_ercd = ev3lx_motor_config(EV3_PORT_A, LARGE_MOTOR);
 	if (r->config_ercd == E_OK)
-		r->config_ercd = ev3_sensor_config(EV3_PORT_1, COLOR_SENSOR);
-	r->speed_ercd = ev3_motor_set_speed(EV3_PORT_A, 40);
-	r->reflect_ercd = ev3_color_sensor_get_reflect(EV3_PORT_1, &pct);
+		r->config_ercd = ev3lx_sensor_config(EV3_PORT_1, COLOR_SENSOR);
+	r->speed_ercd = ev3lx_motor_set_speed(EV3_PORT_A, 40);
+	r->reflect_ercd = ev3lx_color_sensor_get_reflect(EV3_PORT_1, &pct);
 	r->reflect = pct;
 	r->reflect_ms = at_now_ms();
 	dly_tsk(500);
-	ev3_motor_get_speed(EV3_PORT_A, &speed);
-	ev3_motor_get_counts(EV3_PORT_A, &counts);
+	ev3lx_motor_get_speed(EV3_PORT_A, &speed);
+	ev3lx_motor_get_counts(EV3_PORT_A, &counts);
 	r->speed = speed;
 	r->counts = counts;
-	ev3_motor_stop(EV3_PORT_A, false);
+	ev3lx_motor_stop(EV3_PORT_A, false);
 }
 
 /* The first line where the two traces differ, for the diagnostic. */

@@ -4,7 +4,7 @@
  * with the documented TOPPERS codes before anything reaches the driver, and
  * driver refusals come back as TOPPERS codes too.
  */
-#include "../ev3_drivers/uart/uart_test.h"
+#include "uart_test.h"
 
 static ER irq_ercd = E_OK;
 

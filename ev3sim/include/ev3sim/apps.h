@@ -14,7 +14,7 @@
 
 struct ev3sim_motor_opts {
 	unsigned port;              /* 0..3 = A..D */
-	enum ev3_motor_kind kind;
+	enum hs_motor_kind kind;
 	bool power_mode;            /* unregulated power instead of regulated speed */
 	int value;                  /* speed or power, -100..100 */
 	double seconds;             /* how long it runs, > 0 */

@@ -7,7 +7,7 @@
  *                 then starts the two cyclic handlers and exits;
  *   balance task  (high priority) one control step per activation: gyro
  *                 rate and wheel counts through the API, offset tracking,
- *                 state feedback, ev3_motor_set_power on both motors;
+ *                 state feedback, ev3lx_motor_set_power on both motors;
  *                 activated by a cyclic handler every EV3SIM_BALANCE_PERIOD_MS,
  *                 which also counts deadline misses;
  *   logger task   (low priority) woken at logger_hz by a 1 ms cyclic
@@ -60,6 +60,12 @@ struct ev3sim_balance_stats {
 	uint32_t api_errors;        /* API calls of the balance task that did not return E_OK */
 	uint32_t logger_lines;      /* lines written to the serial log */
 	uint32_t logger_skipped;    /* logger periods lost because the logger was still busy */
+	/* d_uart's link counters of the gyro's port (lms_uart.h), at the end of the run */
+	uint32_t gyro_frames;       /* valid DATA frames */
+	uint32_t gyro_check_errors; /* losses of sync on a bad check byte */
+	uint32_t gyro_size_errors;  /* losses of sync on a header of impossible length */
+	uint32_t gyro_resyncs;      /* losses of frame sync, each ended by the next valid frame */
+	uint32_t gyro_reconnects;   /* handshakes restarted after errors, unplug or silence */
 };
 
 /* The application's configuration (INCLUDEs ev3api_cfg and serial_log_cfg). */

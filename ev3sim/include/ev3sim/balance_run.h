@@ -34,17 +34,9 @@ struct ev3sim_balance_opts {
 	unsigned nfaults;
 	const char *trace_path;     /* VCD, NULL: none */
 	FILE *log_out;              /* the serial log's far end, NULL: dropped */
-	bool record;                /* keep the series (CSV, plot) */
+	FILE *series_out;           /* the series as CSV, one row per physics step after the
+	                             * release, streamed as the run goes (NULL: none) */
 	bool progress;              /* progress bar on stderr (if it is a terminal) */
-};
-
-/* One row of the recorded series (every physics step after the release). */
-struct ev3sim_series_row {
-	double t_s;                 /* from the release */
-	double tilt_deg, tilt_rate_dps, wheel_deg;
-	double tilt_est_deg;        /* the application's estimate */
-	int power;                  /* the application's last command */
-	double duty_a, duty_d;      /* what the H-bridges drive, % */
 };
 
 struct ev3sim_balance_result {
@@ -59,23 +51,20 @@ struct ev3sim_balance_result {
 	unsigned bugs;              /* rtos_host bug reports */
 	double wall_s;
 	double sim_virtual_s;      /* virtual time simulated, boot to end */
-	struct ev3sim_series_row *rows;   /* malloc'ed when recording, else NULL */
-	size_t nrows;
+	bool trace_failed;          /* the VCD trace could not be written completely */
 };
 
 /* Runs the experiment.  E_OK, or E_PAR for bad options (message in err),
  * E_SYS if the simulation could not boot (message in err). */
 ER ev3sim_balance_run(const struct ev3sim_balance_opts *opts, struct ev3sim_balance_result *res,
 		      char *err, size_t errlen);
-/* Frees the recorded series. */
-void ev3sim_balance_result_free(struct ev3sim_balance_result *res);
-
 /* The one-line key=value summary; sim_speed (the only field that depends
  * on the host) comes last. */
 void ev3sim_balance_summary(const struct ev3sim_balance_opts *opts,
 			    const struct ev3sim_balance_result *res, char *buf, size_t len);
 
-/* Writes the series as CSV (header line, one row per physics step); 0 or -1. */
-int ev3sim_write_csv(const struct ev3sim_balance_result *res, FILE *out);
+/* The series' CSV columns (the header line series_out starts with). */
+#define EV3SIM_SERIES_HEADER \
+	"t_s,tilt_deg,tilt_rate_dps,wheel_deg,tilt_est_deg,power_pct,duty_a_pct,duty_d_pct\n"
 
 #endif /* EV3SIM_BALANCE_RUN_H */

@@ -7,13 +7,12 @@
 
 #include <stdbool.h>
 #include <stddef.h>
-#include "ev3sim/balance_run.h"
 
 /* Whether a gnuplot executable is on the PATH. */
 bool ev3sim_have_gnuplot(void);
 
-/* Writes the PNG; 0, or -1 with a message in err (gnuplot missing or failing). */
-int ev3sim_plot(const struct ev3sim_balance_result *res, const char *title, const char *png_path,
-		char *err, size_t errlen);
+/* Draws the series CSV file (EV3SIM_SERIES_HEADER's columns) into the PNG; 0, or -1 with a
+ * message in err (gnuplot missing or failing, the PNG not written completely). */
+int ev3sim_plot(const char *csv_path, const char *title, const char *png_path, char *err, size_t errlen);
 
 #endif /* EV3SIM_PLOT_H */

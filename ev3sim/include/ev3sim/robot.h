@@ -6,7 +6,7 @@
  *
  * Each physics step (a host event every EV3SIM_ROBOT_STEP_NS) reads the
  * motors' shaft speeds and angles, advances the body, hands the motors the
- * body's reaction (ev3_motor_set_load: load torque and effective inertia for
+ * body's reaction (hs_motor_set_load: load torque and effective inertia for
  * the coming step) and sets the gyro's scene.  docs/ev3sim.md derives the
  * equations and lists the parameters.
  */

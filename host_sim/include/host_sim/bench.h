@@ -1,5 +1,5 @@
 /*
- * ev3_bench.h — the full-brick speed run: four motors turning and four UART
+ * bench.h — the full-brick speed run: four motors turning and four UART
  * sensors streaming (colour, gyro, ultrasonic, IR), with a register-level
  * host polling each sensor's UART every millisecond, ACKing the handshake
  * and sending the 100 ms keep-alive.  `make bench` and the quick test call

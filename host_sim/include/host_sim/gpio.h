@@ -22,6 +22,25 @@
 #define HS_GPIO_NPINS       (HS_GPIO_BANKS * 16U)
 #define HS_GPIO_BANK_INTNO(bank) (42U + (unsigned)(bank))
 
+/* Register layout (AM1808 TRM, GPIO chapter): BINTEN, then one block per
+ * pair of banks (32 pins) at HS_GPIO_PAIR_OFFSET, in which a pin is bit
+ * HS_GPIO_PAIR_BIT of every register. */
+#define HS_GPIO_BINTEN            0x08U
+#define HS_GPIO_PAIR_STRIDE       0x28U
+#define HS_GPIO_PAIRS             ((HS_GPIO_NPINS + 31U) / 32U)
+#define HS_GPIO_PAIR_OFFSET(pin)  (0x10U + HS_GPIO_PAIR_STRIDE * ((unsigned)(pin) / 32U))
+#define HS_GPIO_PAIR_BIT(pin)     (1U << ((unsigned)(pin) % 32U))
+#define HS_GPIO_DIR               0x00U   /* offsets in a pair's block; DIR bit 1 = input */
+#define HS_GPIO_OUT_DATA          0x04U
+#define HS_GPIO_SET_DATA          0x08U
+#define HS_GPIO_CLR_DATA          0x0CU
+#define HS_GPIO_IN_DATA           0x10U
+#define HS_GPIO_SET_RIS_TRIG      0x14U
+#define HS_GPIO_CLR_RIS_TRIG      0x18U
+#define HS_GPIO_SET_FAL_TRIG      0x1CU
+#define HS_GPIO_CLR_FAL_TRIG      0x20U
+#define HS_GPIO_INTSTAT           0x24U
+
 /* What the outside world does to a pin. */
 enum hs_pin_ext {
 	HS_EXT_FLOAT = 0,   /* nothing connected: the pin reads 0 unless the SoC drives it */

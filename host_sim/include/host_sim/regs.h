@@ -107,6 +107,19 @@ struct hs_region_cfg {
 
 struct hs_region;
 
+/*
+ * The power controller regions with a .power module consult (the SoC's PSC
+ * model installs itself when created, so the register space needs no
+ * knowledge of it): where the module's live flag is kept - true while it
+ * may be accessed, stable for the process's life - and a word for its
+ * state in bug reports.  Without a controller such regions are dead.
+ */
+struct hs_power_controller {
+	const bool *(*live_flag)(unsigned power);
+	const char *(*state_name)(unsigned power);
+};
+void hs_set_power_controller(const struct hs_power_controller *pc);
+
 /* Registers a region: checks the table (overlaps, widths, aliases, offsets
  * inside size), sets every register to its reset value and makes the range
  * answer CPU accesses.  Returns NULL after a bug report if the table or the

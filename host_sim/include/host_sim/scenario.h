@@ -21,6 +21,7 @@
 #include "rtos_host.h"
 #include "host_sim/board.h"
 #include "host_sim/clock.h"
+#include "host_sim/rng.h"
 
 struct hs_scenario {
 	const struct rtos_cfg *rtos;         /* the application's configuration (required) */
@@ -33,15 +34,17 @@ struct hs_scenario {
 };
 
 /* hs_board_init + traces + rtos_host_boot + hs_board_start.  Returns E_OK or
- * the first error (the board is shut down again on error). */
+ * the first error (the board is shut down again on error); E_SYS with errno
+ * if a trace file cannot be created. */
 ER hs_sim_boot(const struct hs_scenario *scn);
 /* Runs the system for ns / until absolute t_ns of virtual time. */
 void hs_sim_run_for(uint64_t ns);
 void hs_sim_run_until(uint64_t t_ns);
 /* Injects fn(arg) at absolute virtual time t_ns (in the hardware's context). */
 hs_event_t hs_sim_at(uint64_t t_ns, rtos_host_event_fn fn, void *arg);
-/* rtos_host_shutdown + hs_board_shutdown (closes the trace files). */
-void hs_sim_shutdown(void);
+/* rtos_host_shutdown + hs_board_shutdown (closes the trace files).  E_OK, or
+ * E_SYS if a trace file could not be written completely (a full disk). */
+ER hs_sim_shutdown(void);
 /* The scenario seed (0 without a scenario). */
 uint64_t hs_sim_seed(void);
 
@@ -62,18 +65,5 @@ uint64_t hs_sim_seed(void);
  * failed expectation in err (the script runs to its end).
  */
 ER hs_sim_script(const char *text, char *err, size_t errlen);
-
-/* Deterministic PRNG: xoshiro256** seeded through splitmix64. */
-struct hs_rng { uint64_t s[4]; };
-void hs_rng_seed(struct hs_rng *rng, uint64_t seed);
-/* A stream for a named model, derived from the scenario seed and name. */
-void hs_rng_stream(struct hs_rng *rng, const char *name);
-uint64_t hs_rng_next(struct hs_rng *rng);
-/* Uniform in [0, n) (n > 0), without modulo bias. */
-uint32_t hs_rng_below(struct hs_rng *rng, uint32_t n);
-/* Uniform in [0, 1). */
-double hs_rng_unit(struct hs_rng *rng);
-/* Normally distributed, mean 0, standard deviation 1. */
-double hs_rng_gauss(struct hs_rng *rng);
 
 #endif /* HOST_SIM_SCENARIO_H */

@@ -12,8 +12,14 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+/* KICK0R/KICK1R offsets in SYSCFG0 and the values that unlock the protected
+ * registers (AM1808 TRM, SYSCFG chapter, "Kick Registers"). */
+#define HS_SYSCFG0_KICK0  0x38U
+#define HS_SYSCFG0_KICK1  0x3CU
 #define HS_KICK0_UNLOCK   0x83E70B13U
 #define HS_KICK1_UNLOCK   0x95A4F1E0U
+/* CFGCHIPn offset in SYSCFG0 (AM1808 TRM, SYSCFG chapter: CFGCHIP0 at 0x17C). */
+#define HS_SYSCFG0_CFGCHIP(n)	(0x17CU + 4U * (unsigned)(n))
 #define HS_CFGCHIP1_TBCLKSYNC (1U << 12)
 
 /* Current PINMUXn (0..19). */

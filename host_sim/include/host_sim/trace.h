@@ -49,8 +49,9 @@ uint64_t hs_signal_last_change(const struct hs_signal *s);
  * Return 0, or -1 with errno. */
 int hs_trace_open_vcd(const char *path);
 int hs_trace_open_csv(const char *path);
-/* Flushes and closes the files (also done by hs_board_shutdown). */
-void hs_trace_close(void);
+/* Flushes and closes the files (also done by hs_board_shutdown); 0, or -1 if
+ * one of them could not be written completely (a full disk). */
+int hs_trace_close(void);
 
 /* Logs register accesses of the regions named in filter (comma-separated,
  * "*" for all; NULL stops logging) to out, or to rtos_host_trace (source

@@ -9,7 +9,9 @@
 #include "sil.h"
 #include "rtos_host.h"
 #include "host_sim/clock.h"
+#include "host_sim/gpio.h"
 #include "host_sim/psc.h"
+#include "host_sim/syscfg.h"
 #include "host_sim/scenario.h"
 #include "host_sim/bench.h"
 #include "host_sim/devices/ev3_brick.h"
@@ -59,19 +61,19 @@ static void reg_wr16(uintptr_t phys, uint16_t v)
 /* Drives a GPIO as an output at level, as a driver does. */
 static void gpio_drive(unsigned pin, int level)
 {
-	uintptr_t pair = HS_GPIO_BASE + 0x10U + 0x28U * (pin / 32U);
-	uint32_t bit = 1U << (pin % 32U);
+	uintptr_t pair = HS_GPIO_BASE + HS_GPIO_PAIR_OFFSET(pin);
+	uint32_t bit = HS_GPIO_PAIR_BIT(pin);
 
-	reg_wr(pair + (level ? 0x08U : 0x0CU), bit);
-	reg_wr(pair, reg_rd(pair) & ~bit);
+	reg_wr(pair + (level ? HS_GPIO_SET_DATA : HS_GPIO_CLR_DATA), bit);
+	reg_wr(pair + HS_GPIO_DIR, reg_rd(pair + HS_GPIO_DIR) & ~bit);
 }
 
 /* Floats a GPIO (DIR = input). */
 static void gpio_release(unsigned pin)
 {
-	uintptr_t pair = HS_GPIO_BASE + 0x10U + 0x28U * (pin / 32U);
+	uintptr_t pair = HS_GPIO_BASE + HS_GPIO_PAIR_OFFSET(pin);
 
-	reg_wr(pair, reg_rd(pair) | (1U << (pin % 32U)));
+	reg_wr(pair + HS_GPIO_DIR, reg_rd(pair + HS_GPIO_DIR) | HS_GPIO_PAIR_BIT(pin));
 }
 
 /* Sets a UART divisor for baud and flushes its FIFOs. */
@@ -155,11 +157,12 @@ ER ev3_bench_full_brick(double virtual_s, uint64_t seed, struct ev3_bench_result
 	/* PWM as d_pwm leaves it: powered, time bases running, 10 000-count periods */
 	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_EHRPWM), HS_PSC_ENABLE);
 	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_ECAP), HS_PSC_ENABLE);
-	reg_wr(HS_SYSCFG0_BASE + 0x38, 0x83E70B13U);
-	reg_wr(HS_SYSCFG0_BASE + 0x3C, 0x95A4F1E0U);
-	reg_wr(HS_SYSCFG0_BASE + 0x180, reg_rd(HS_SYSCFG0_BASE + 0x180) | (1U << 12));
-	reg_wr(HS_SYSCFG0_BASE + 0x38, 0);
-	reg_wr(HS_SYSCFG0_BASE + 0x3C, 0);
+	reg_wr(HS_SYSCFG0_BASE + HS_SYSCFG0_KICK0, HS_KICK0_UNLOCK);
+	reg_wr(HS_SYSCFG0_BASE + HS_SYSCFG0_KICK1, HS_KICK1_UNLOCK);
+	reg_wr(HS_SYSCFG0_BASE + HS_SYSCFG0_CFGCHIP(1),
+	       reg_rd(HS_SYSCFG0_BASE + HS_SYSCFG0_CFGCHIP(1)) | HS_CFGCHIP1_TBCLKSYNC);
+	reg_wr(HS_SYSCFG0_BASE + HS_SYSCFG0_KICK0, 0);
+	reg_wr(HS_SYSCFG0_BASE + HS_SYSCFG0_KICK1, 0);
 	reg_wr16(HS_EHRPWM1_BASE + 0x00, 0x0030);
 	reg_wr16(HS_EHRPWM1_BASE + 0x0A, 9999);
 	reg_wr16(HS_EHRPWM1_BASE + 0x16, 0x0021);
@@ -175,7 +178,7 @@ ER ev3_bench_full_brick(double virtual_s, uint64_t seed, struct ev3_bench_result
 	for (unsigned p = 0; p < 4; p++) {
 		const struct ev3_output_pins *op = &ev3_output_pins[p];
 
-		ev3_attach_motor(p, p < 2 ? EV3_MOTOR_LARGE : EV3_MOTOR_MEDIUM, NULL);
+		ev3_attach_motor(p, p < 2 ? HS_MOTOR_LARGE : HS_MOTOR_MEDIUM, NULL);
 		if (p & 1U) {           /* B and D in reverse */
 			gpio_release(op->dir0);
 			gpio_drive(op->dir1, 1);
@@ -206,7 +209,7 @@ ER ev3_bench_full_brick(double virtual_s, uint64_t seed, struct ev3_bench_result
 	for (unsigned p = 0; p < 4; p++) {
 		r->sensor_bytes += hosts[p].bytes;
 		r->data_frames += uart_sensor_get_stats(ev3_input_uart_sensor(p))->data_frames;
-		r->tacho_counts[p] = ev3_motor_tacho_counts(ev3_output_motor(p));
+		r->tacho_counts[p] = hs_motor_tacho_counts(ev3_output_motor(p));
 	}
 	hs_sim_shutdown();
 	r->wall_s = clock_s(CLOCK_MONOTONIC) - t0;

@@ -14,7 +14,6 @@
 
 #include "rtos_host.h"
 #include "host_sim/regs.h"
-#include "host_sim/psc.h"
 #include "space_internal.h"
 #include "core_parts.h"
 
@@ -44,7 +43,7 @@ struct hs_elem {
 struct hs_region {
 	struct hs_region_cfg cfg;
 	unsigned first_page;    /* in the window space */
-	const enum hs_psc_state *power_state;   /* the PSC module's state (HS_NO_PSC: always enabled) */
+	const bool *power_live;   /* the power module is on (HS_NO_PSC: always) */
 	struct hs_elem *elems;
 	char (*names)[HS_ELEM_NAME];   /* one per element */
 	unsigned nelems;
@@ -70,6 +69,23 @@ static struct {
 	FILE *log_out;
 	bool logging;
 } space;
+
+static const struct hs_power_controller *power_ctl;
+
+void hs_set_power_controller(const struct hs_power_controller *pc)
+{
+	power_ctl = pc;
+}
+
+/* Where a region's power module keeps its live flag. */
+static const bool *power_live_flag(unsigned power)
+{
+	static const bool always = true, never = false;
+
+	if (power == HS_NO_PSC)
+		return &always;
+	return power_ctl != NULL ? power_ctl->live_flag(power) : &never;
+}
 
 static const char *const kind_names[] = {
 	[HS_RSVD] = "reserved", [HS_RW] = "read-write", [HS_RO] = "read-only",
@@ -395,7 +411,7 @@ struct hs_region *hs_region_add(const struct hs_region_cfg *cfg)
 		return NULL;
 	}
 	r->cfg = *cfg;
-	r->power_state = hs_psc_state_ref(cfg->power);
+	r->power_live = power_live_flag(cfg->power);
 	if (!region_build(r)) {
 		region_free(r);
 		return NULL;
@@ -516,8 +532,7 @@ static void region_bug(const struct hs_region *r, uintptr_t phys, unsigned width
 		      write ? "write" : "read", width, val, phys,
 		      r->cfg.name, phys - r->cfg.phys, r->cfg.name,
 		      (r->cfg.power >> 8) - 1U, r->cfg.power & 0xFFU,
-		      hs_psc_state(r->cfg.power) == HS_PSC_SWRSTDISABLE ? "SwRstDisable" :
-		      hs_psc_state(r->cfg.power) == HS_PSC_SYNCRESET ? "SyncReset" : "Disable");
+		      power_ctl != NULL ? power_ctl->state_name(r->cfg.power) : "absent");
 }
 
 /* Reports a CPU access at offset off of r that found no usable element e
@@ -564,7 +579,7 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 	struct hs_elem *e;
 	uint32_t v = 0;
 
-	if (*r->power_state != HS_PSC_ENABLE) {
+	if (!*r->power_live) {
 		region_bug(r, r->cfg.phys + off, width, false, 0);
 	} else if ((e = elem_at(r, off, false)) == NULL || !(e->ok_widths & width)) {
 		elem_bug(r, e, off, width, false, 0);
@@ -592,7 +607,7 @@ static inline __attribute__((always_inline)) void region_write(struct hs_region 
 {
 	struct hs_elem *e;
 
-	if (*r->power_state != HS_PSC_ENABLE) {
+	if (!*r->power_live) {
 		region_bug(r, r->cfg.phys + off, width, true, value);
 	} else if ((e = elem_at(r, off, true)) == NULL || !(e->ok_widths & width)) {
 		elem_bug(r, e, off, width, true, value);

@@ -409,24 +409,33 @@ static void vcd_finish(void)
 		fwrite(buf, 1, n, tr.vcd);
 }
 
-void hs_trace_close(void)
+int hs_trace_close(void)
 {
+	int status = 0;
+
 	if (tr.nfalls)
 		flush_falls(tr.fall_t);
 	if (tr.vcd) {
 		vcd_finish();
-		fclose(tr.vcd);
+		if (ferror(tr.vcd) || ferror(tr.body))
+			status = -1;
+		if (fclose(tr.vcd) != 0)
+			status = -1;
 		fclose(tr.body);
 		tr.vcd = tr.body = NULL;
 	}
 	if (tr.csv) {
-		fclose(tr.csv);
+		if (ferror(tr.csv))
+			status = -1;
+		if (fclose(tr.csv) != 0)
+			status = -1;
 		tr.csv = NULL;
 	}
 	for (unsigned i = 0; i < tr.nsigs; i++) {
 		free(tr.sigs[i]->initial);
 		tr.sigs[i]->initial = NULL;
 	}
+	return status;
 }
 
 void hs_trace_reglog(const char *filter, FILE *out)

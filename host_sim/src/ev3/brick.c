@@ -1,5 +1,5 @@
 /*
- * ev3_brick.c — the EV3 ports: what is plugged in, the electrical level of
+ * brick.c — the EV3 ports: what is plugged in, the electrical level of
  * each pin, the links between UART sensors and their UARTs, the battery,
  * the ADC's analog sources, and seeded fault injection.
  *
@@ -11,10 +11,11 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdio.h>
 #include "rtos_host.h"
 #include "host_sim/clock.h"
 #include "host_sim/gpio.h"
-#include "host_sim/scenario.h"
+#include "host_sim/rng.h"
 #include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/pwm.h"
 #include "host_sim/devices/spi_adc.h"
@@ -46,15 +47,14 @@ struct in_port {
 };
 
 struct out_port {
-	struct ev3_motor *motor;
-	enum ev3_motor_kind kind;
-	struct ev3_motor_options opt;
+	struct hs_motor *motor;
+	enum hs_motor_kind kind;
+	struct hs_motor_options opt;
 	bool has_motor;
 };
 
 static struct {
 	bool ready;
-	uint32_t battery_mv;
 	struct in_port in[EV3_INPUT_PORTS];
 	struct out_port out[EV3_OUTPUT_PORTS];
 	double adc_noise_mv;
@@ -62,22 +62,17 @@ static struct {
 	struct hs_rng fault_rng;
 	struct ev3_fault_record log[MAX_FAULT_LOG];
 	unsigned nlog;
-} brick = { .battery_mv = 9000 };
+} brick;
 
 /* ---- battery ---- */
-
-uint32_t ev3_battery_mv(void)
-{
-	return brick.battery_mv;
-}
 
 /* Sets the battery voltage; the motors pick it up at once. */
 void ev3_set_battery_mv(uint32_t mv)
 {
-	brick.battery_mv = mv;
+	ev3_battery_store(mv);
 	for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
 		if (brick.out[p].motor)
-			ev3_motor_inputs_changed(brick.out[p].motor);
+			hs_motor_inputs_changed(brick.out[p].motor);
 }
 
 /* ---- input pins ---- */
@@ -214,10 +209,10 @@ ER ev3_set_light(unsigned port, unsigned pct)
 
 static void deliver_to_uart(struct in_port *p, uint8_t byte, uint32_t baud)
 {
-	struct ev3_uart *u = ev3_uart_of_port(p->index);
+	struct hs_uart *u = ev3_input_uart(p->index);
 
 	if (u)
-		ev3_uart_rx_byte(u, byte, baud);
+		hs_uart_rx_byte(u, byte, baud);
 }
 
 /* Sensor -> UART, through the fault filters. */
@@ -244,12 +239,12 @@ static void link_deliver(void *ctx, uint8_t byte, uint32_t baud)
 static void link_line(void *ctx, bool high)
 {
 	struct in_port *p = ctx;
-	struct ev3_uart *u = ev3_uart_of_port(p->index);
+	struct hs_uart *u = ev3_input_uart(p->index);
 
 	p->line_high = high;
 	input_apply_pins(p);
 	if (u)
-		ev3_uart_rx_line(u, high);
+		hs_uart_rx_line(u, high);
 }
 
 /* UART -> sensor: only through the port's TX buffer, enabled by driving its GPIO low. */
@@ -281,7 +276,7 @@ static void peer_tx_break(void *ctx, bool active)
 
 static void input_clear(struct in_port *p)
 {
-	struct ev3_uart *u = ev3_uart_of_port(p->index);
+	struct hs_uart *u = ev3_input_uart(p->index);
 
 	hs_event_cancel(&p->bounce_ev);
 	if (p->sensor) {
@@ -289,8 +284,8 @@ static void input_clear(struct in_port *p)
 		p->sensor = NULL;
 	}
 	if (u) {
-		ev3_uart_set_peer(u, NULL);
-		ev3_uart_rx_line(u, true);
+		hs_uart_set_peer(u, NULL);
+		hs_uart_rx_line(u, true);
 	}
 	p->kind = EV3_INPUT_NONE;
 	p->pressed = p->contact = false;
@@ -323,8 +318,8 @@ ER ev3_attach_uart_sensor(unsigned port, uint8_t type, const struct uart_sensor_
 	struct in_port *p;
 	struct uart_sensor_options o = { 0 };
 	struct uart_sensor_link link;
-	struct ev3_uart_peer peer;
-	struct ev3_uart *u;
+	struct hs_uart_peer peer;
+	struct hs_uart *u;
 	static const char *const names[EV3_INPUT_PORTS] = { "in1.sensor", "in2.sensor", "in3.sensor", "in4.sensor" };
 
 	if (!brick.ready)
@@ -345,10 +340,10 @@ ER ev3_attach_uart_sensor(unsigned port, uint8_t type, const struct uart_sensor_
 		return E_NOMEM;
 	p->kind = EV3_INPUT_UART;
 	p->plugged = true;
-	u = ev3_uart_of_port(port);
+	u = ev3_input_uart(port);
 	if (u) {
-		peer = (struct ev3_uart_peer){ peer_tx_byte, peer_tx_break, p };
-		ev3_uart_set_peer(u, &peer);
+		peer = (struct hs_uart_peer){ peer_tx_byte, peer_tx_break, p };
+		hs_uart_set_peer(u, &peer);
 	}
 	uart_sensor_power(p->sensor, true);
 	return E_OK;
@@ -401,7 +396,7 @@ static void input_plug(struct in_port *p, bool plugged)
 	input_apply_pins(p);
 }
 
-ER ev3_attach_motor(unsigned port, enum ev3_motor_kind kind, const struct ev3_motor_options *opt)
+ER ev3_attach_motor(unsigned port, enum hs_motor_kind kind, const struct hs_motor_options *opt)
 {
 	struct out_port *o;
 
@@ -409,11 +404,11 @@ ER ev3_attach_motor(unsigned port, enum ev3_motor_kind kind, const struct ev3_mo
 		return E_OBJ;
 	if (port >= EV3_OUTPUT_PORTS)
 		return E_ID;
-	if (!ev3_motor_params_of(kind))
+	if (!hs_motor_params_of(kind))
 		return E_PAR;
 	o = &brick.out[port];
-	ev3_motor_destroy(o->motor);
-	o->motor = ev3_motor_create(port, kind, opt);
+	hs_motor_destroy(o->motor);
+	o->motor = hs_motor_create(port, kind, opt);
 	if (!o->motor)
 		return E_NOMEM;
 	o->kind = kind;
@@ -430,14 +425,14 @@ ER ev3_detach_output(unsigned port)
 		return E_OBJ;
 	if (port >= EV3_OUTPUT_PORTS)
 		return E_ID;
-	ev3_motor_destroy(brick.out[port].motor);
+	hs_motor_destroy(brick.out[port].motor);
 	brick.out[port].motor = NULL;
 	brick.out[port].has_motor = false;
 	return E_OK;
 }
 
 /* The motor on an output port, or NULL. */
-struct ev3_motor *ev3_output_motor(unsigned port)
+struct hs_motor *ev3_output_motor(unsigned port)
 {
 	return port < EV3_OUTPUT_PORTS ? brick.out[port].motor : NULL;
 }
@@ -452,7 +447,7 @@ uint32_t ev3_output_pin5_mv(unsigned port)
 	if (hs_gpio_soc_output(ev3_output_pins[port].det_5w, &lvl))
 		pull_high = lvl;
 	if (brick.out[port].motor)
-		return ev3_motor_pin5_mv(brick.out[port].motor, pull_high);
+		return hs_motor_pin5_mv(brick.out[port].motor, pull_high);
 	return pull_high ? 5000U : OUT_OPEN_PIN5_MV;
 }
 
@@ -488,7 +483,7 @@ static const uint8_t *adc_sources(void)
 	return source;
 }
 
-/* Voltage of an ADC channel (facts §6 channel map). */
+/* Voltage of an ADC channel (LEGO's d_analog.c channel map). */
 uint32_t ev3_adc_channel_mv(unsigned ch)
 {
 	unsigned src = ch < ADC_CHANNELS ? adc_sources()[ch] : ADC_BRICK;
@@ -514,7 +509,7 @@ double ev3_motors_current_a(void)
 
 	for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
 		if (brick.out[p].motor)
-			amps += ev3_motor_current_a(brick.out[p].motor);
+			amps += hs_motor_current_a(brick.out[p].motor);
 	return amps;
 }
 
@@ -576,23 +571,23 @@ static void fault_apply(const struct ev3_fault *f, bool on)
 	case EV3_FAULT_UNPLUG: input_plug(ip, !on); break;
 	case EV3_FAULT_MOTOR_UNPLUG:
 		if (on) {
-			ev3_motor_destroy(op->motor);
+			hs_motor_destroy(op->motor);
 			op->motor = NULL;
 		} else if (op->has_motor && !op->motor) {
-			op->motor = ev3_motor_create(f->port, op->kind, &op->opt);
+			op->motor = hs_motor_create(f->port, op->kind, &op->opt);
 		}
 		break;
 	case EV3_FAULT_ENCODER_STUCK:
 		if (op->motor)
-			ev3_motor_set_encoder_stuck(op->motor, on);
+			hs_motor_set_encoder_stuck(op->motor, on);
 		break;
 	case EV3_FAULT_ENCODER_NOISE:
 		if (op->motor)
-			ev3_motor_set_encoder_noise(op->motor, v);
+			hs_motor_set_encoder_noise(op->motor, v);
 		break;
 	case EV3_FAULT_MOTOR_STALL:
 		if (op->motor)
-			ev3_motor_set_stalled(op->motor, on);
+			hs_motor_set_stalled(op->motor, on);
 		break;
 	case EV3_FAULT_ADC_NOISE:
 		brick.adc_noise_mv = v;
@@ -680,9 +675,10 @@ void ev3_fault_uart_counts(unsigned port, uint32_t *flipped, uint32_t *dropped, 
 static ER ports_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	static const char *const rng_names[EV3_INPUT_PORTS] = { "in1.port", "in2.port", "in3.port", "in4.port" };
+	static char boot_args[160];
 
 	memset(&brick, 0, sizeof(brick));
-	brick.battery_mv = 9000;
+	ev3_battery_store(EV3_BATTERY_MV_DEFAULT);
 	hs_rng_stream(&brick.adc_rng, "adc.noise");
 	hs_rng_stream(&brick.fault_rng, "faults");
 	for (unsigned p = 0; p < EV3_INPUT_PORTS; p++) {
@@ -691,6 +687,12 @@ static ER ports_create(const struct hs_board_cfg *cfg, void **ctx)
 		hs_rng_stream(&brick.in[p].rng, rng_names[p]);
 		input_apply_pins(&brick.in[p]);
 	}
+	/* The firmware command line of this board: d_uart finds the stand-in
+	 * UARTs of ports 3 and 4 through it, as a boot loader tells Linux. */
+	snprintf(boot_args, sizeof(boot_args),
+		 "d_uart.port3_base=%#x d_uart.port3_irq=%u d_uart.port4_base=%#x d_uart.port4_irq=%u",
+		 EV3_SUART_PORT3_BASE, EV3_SUART_PORT3_INTNO, EV3_SUART_PORT4_BASE, EV3_SUART_PORT4_INTNO);
+	rtos_host_set_boot_args(boot_args);
 	brick.ready = true;
 	*ctx = &brick;
 	return E_OK;
@@ -702,20 +704,15 @@ static void ports_destroy(void *ctx)
 	for (unsigned p = 0; p < EV3_INPUT_PORTS; p++)
 		input_clear(&brick.in[p]);
 	for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++) {
-		ev3_motor_destroy(brick.out[p].motor);
+		hs_motor_destroy(brick.out[p].motor);
 		brick.out[p].motor = NULL;
 	}
 	while (fault_jobs) {
 		hs_event_cancel(&fault_jobs->ev);
 		fault_job_free(fault_jobs);
 	}
+	rtos_host_set_boot_args(NULL);
 	brick.ready = false;
 }
 
-static const struct hs_device ev3_ports_device = { "EV3_PORTS", ports_create, NULL, ports_destroy };
-
-const struct hs_device *const ev3_board_devices[] = {
-	&ev3_ehrpwm1_device, &ev3_ecap0_device, &ev3_ecap1_device, &ev3_spi0_device,
-	&ev3_uart1_device, &ev3_uart0_device, &ev3_suart_in3_device, &ev3_suart_in4_device,
-	&ev3_ports_device, &ev3_ui_device, &ev3_power_device, NULL,
-};
+const struct hs_device ev3_ports_device = { "EV3_PORTS", ports_create, NULL, ports_destroy };

@@ -1,5 +1,5 @@
 /*
- * lump.c — framing of the LEGO UART sensor protocol (facts §8).
+ * lump.c — framing of the LEGO UART sensor protocol (LEGO's d_uart_mod.c, pybricks' port_lump.c).
  */
 #include <string.h>
 #include "host_sim/devices/lump.h"
@@ -89,7 +89,7 @@ size_t lump_encode_data(uint8_t *out, size_t cap, unsigned mode, const void *pay
 	return lump_encode(out, cap, LUMP_CLASS_DATA, mode, -1, payload, len);
 }
 
-/* Empties the parser. */
+/* Empties the parser (keeps its error count). */
 void lump_parser_reset(struct lump_parser *p)
 {
 	p->have = 0;
@@ -101,8 +101,14 @@ bool lump_parser_push(struct lump_parser *p, uint8_t byte, struct lump_msg *msg)
 {
 	size_t hdr_extra;
 
-	if (p->have == 0)
+	if (p->have == 0) {
 		p->need = lump_frame_len(byte);
+		if (p->need > sizeof(p->buf)) {
+			p->framing_errors++;
+			p->need = 0;
+			return false;
+		}
+	}
 	p->buf[p->have++] = byte;
 	if (p->have < p->need)
 		return false;

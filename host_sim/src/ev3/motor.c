@@ -1,23 +1,23 @@
 /*
- * ev3_motor.c — EV3 large/medium motor: DC motor physics at the output
+ * motor.c — EV3 large/medium motor: DC motor physics at the output
  * shaft, H-bridge, quadrature tacho edges computed analytically, pin-5 ID.
  *
  * Parameters (docs/host-sim-devices.md has the discussion):
  *   no-load speed: ev3dev's maximum speeds, 1050 deg/s large and 1560 deg/s
- *     medium (facts §4), taken as the no-load speed at 9 V;
+ *     medium (ev3dev's ev3_motor_defs.c), taken as the no-load speed at 9 V;
  *   stall torque: 0.40 N m large, 0.12 N m medium (Philo Hurbain's motor
  *     comparison, philohome.com, measured at 9 V; rounded);
  *   mechanical time constants 40 ms / 20 ms and dry friction 4 % / 12 % of
  *     stall torque: estimates, consistent with LEGO's minimum duty offsets
- *     (0.95|p| + 500 large, 0.8|p| + 2000 medium, facts §4);
- *   pin 5 ID: pybricks' 10-bit readings (facts §4): large 0.16 / 4.48 V,
+ *     (0.95|p| + 500 large, 0.8|p| + 2000 medium, LEGO's d_pwm.c);
+ *   pin 5 ID: pybricks' 10-bit readings (device.c): large 0.16 / 4.48 V,
  *     medium 0.36 / 4.21 V with the encoder low / high.
  */
 #include <math.h>
 #include <stdlib.h>
 #include "host_sim/clock.h"
 #include "host_sim/gpio.h"
-#include "host_sim/scenario.h"
+#include "host_sim/rng.h"
 #include "host_sim/trace.h"
 #include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/ev3_motor.h"
@@ -30,15 +30,15 @@
 #define GLITCH_NS 2000ULL           /* width of an encoder glitch */
 #define RAD_PER_DEG (3.14159265358979323846 / 180.0)
 
-static const struct ev3_motor_params motor_params[] = {
-	[EV3_MOTOR_LARGE] = { "large", 1050.0, 0.40, 9.0, 0.040, 0.04, 1.8, 160, 4480, 3000 },
-	[EV3_MOTOR_MEDIUM] = { "medium", 1560.0, 0.12, 9.0, 0.020, 0.12, 0.8, 360, 4210, 1800 },
+static const struct hs_motor_params motor_params[] = {
+	[HS_MOTOR_LARGE] = { "large", 1050.0, 0.40, 9.0, 0.040, 0.04, 1.8, 160, 4480, 3000 },
+	[HS_MOTOR_MEDIUM] = { "medium", 1560.0, 0.12, 9.0, 0.020, 0.12, 0.8, 360, 4210, 1800 },
 };
 
 /* Built-in parameters. */
-const struct ev3_motor_params *ev3_motor_params_of(enum ev3_motor_kind kind)
+const struct hs_motor_params *hs_motor_params_of(enum hs_motor_kind kind)
 {
-	return (unsigned)kind <= EV3_MOTOR_MEDIUM ? &motor_params[kind] : NULL;
+	return (unsigned)kind <= HS_MOTOR_MEDIUM ? &motor_params[kind] : NULL;
 }
 
 /* Time split of the bridge for its two inputs. */
@@ -66,7 +66,7 @@ struct hbridge_drive hbridge_resolve(enum hbridge_input in0, enum hbridge_input 
 /* Derived constants: the ideal no-load speed is chosen so that, with the
  * friction included, the unloaded motor at nominal voltage reaches the
  * published speed. */
-void dc_motor_model_init(struct dc_motor_model *m, const struct ev3_motor_params *p)
+void dc_motor_model_init(struct dc_motor_model *m, const struct hs_motor_params *p)
 {
 	double w_pub = p->no_load_dps * RAD_PER_DEG;
 
@@ -115,12 +115,12 @@ void dc_motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st,
 
 /* ---- the attached motor ---- */
 
-struct ev3_motor {
+struct hs_motor {
 	unsigned port;
-	enum ev3_motor_kind kind;
+	enum hs_motor_kind kind;
 	struct dc_motor_model model;
 	const struct ev3_output_pins *pins;
-	enum ev3_pwm_source pwm;
+	enum hs_pwm_output pwm;
 	uint64_t seg_t0, seg_t1;    /* current physics segment */
 	double seg_omega0, seg_omega1;  /* exact speed at its start and end (rad/s) */
 	double seg_theta0, seg_rate;/* linear angle within it (rad, rad/s) */
@@ -137,18 +137,18 @@ struct ev3_motor {
 	struct hs_signal *sig_angle, *sig_speed;
 };
 
-static struct ev3_motor *port_motor[EV3_OUTPUT_PORTS];
+static struct hs_motor *port_motor[EV3_OUTPUT_PORTS];
 
-static void motor_schedule_edge(struct ev3_motor *m);
+static void motor_schedule_edge(struct hs_motor *m);
 
 /* Angle (rad) on the current linear segment at time t. */
-static double seg_theta(const struct ev3_motor *m, uint64_t t)
+static double seg_theta(const struct hs_motor *m, uint64_t t)
 {
 	return m->seg_theta0 + m->seg_rate * (double)(t - m->seg_t0) * 1e-9;
 }
 
 /* Quadrature (INT, DIR) for half-count index h: 00, 10, 11, 01 going forward
- * (facts §4: forward when INT equals the inverted DIR just after an INT edge). */
+ * (LEGO's d_pwm.c: forward when INT equals the inverted DIR just after an INT edge). */
 static void quad_levels(int64_t h, bool *int_lvl, bool *dir_lvl)
 {
 	unsigned q = (unsigned)(h & 3);
@@ -158,7 +158,7 @@ static void quad_levels(int64_t h, bool *int_lvl, bool *dir_lvl)
 }
 
 /* Shows quadrature index h on the INT and DIR pins (only changed pins are driven). */
-static void show_index(struct ev3_motor *m, int64_t h)
+static void show_index(struct hs_motor *m, int64_t h)
 {
 	bool il, dl;
 
@@ -181,7 +181,7 @@ static int64_t index_of(double theta)
 }
 
 /* Brings the pins to the angle at time t (emitting any missed edges in order). */
-static void catch_up(struct ev3_motor *m, uint64_t t)
+static void catch_up(struct hs_motor *m, uint64_t t)
 {
 	int64_t target = index_of(seg_theta(m, t));
 
@@ -194,7 +194,7 @@ static void catch_up(struct ev3_motor *m, uint64_t t)
 /* Event: the next tacho edge. */
 static void edge_due(void *arg)
 {
-	struct ev3_motor *m = arg;
+	struct hs_motor *m = arg;
 
 	m->edge_ev = 0;
 	if (!m->stuck)
@@ -203,7 +203,7 @@ static void edge_due(void *arg)
 }
 
 /* Schedules the next edge inside the current segment, if any. */
-static void motor_schedule_edge(struct ev3_motor *m)
+static void motor_schedule_edge(struct hs_motor *m)
 {
 	double boundary_deg, dt;
 	uint64_t t;
@@ -233,13 +233,13 @@ static double battery_v(void)
 	return ev3_battery_mv() / 1000.0;
 }
 
-static void motor_new_segment(struct ev3_motor *m);
-static double omega_now(struct ev3_motor *m);
+static void motor_new_segment(struct hs_motor *m);
+static double omega_now(struct hs_motor *m);
 
 /* Event: physics step boundary. */
 static void step_due(void *arg)
 {
-	struct ev3_motor *m = arg;
+	struct hs_motor *m = arg;
 
 	m->step_ev = 0;
 	motor_new_segment(m);
@@ -247,7 +247,7 @@ static void step_due(void *arg)
 
 /* Exact speed now: the end speed at a step boundary, else the old
  * segment's solution re-run from its start up to now. */
-static double omega_now(struct ev3_motor *m)
+static double omega_now(struct hs_motor *m)
 {
 	uint64_t now = hs_now();
 	struct dc_motor_state st = { m->seg_omega0, 0 };
@@ -263,7 +263,7 @@ static double omega_now(struct ev3_motor *m)
 
 /* Starts a segment at now from the angle shown by the old one and speed
  * seg_omega1 (set by the caller to the speed now). */
-static void motor_new_segment(struct ev3_motor *m)
+static void motor_new_segment(struct hs_motor *m)
 {
 	uint64_t now = hs_now();
 	struct dc_motor_state st;
@@ -313,11 +313,11 @@ static enum hbridge_input bridge_input(unsigned pin)
 }
 
 /* Inputs changed: finish the segment up to now, then restart with them. */
-void ev3_motor_inputs_changed(struct ev3_motor *m)
+void hs_motor_inputs_changed(struct hs_motor *m)
 {
 	struct hbridge_drive d = hbridge_resolve(bridge_input(m->pins->dir0),
 						 bridge_input(m->pins->dir1),
-						 ev3_pwm_low_fraction(m->pwm));
+						 hs_pwm_low_fraction(m->pwm));
 
 	if (d.fwd == m->drive.fwd && d.rev == m->drive.rev && d.brake == m->drive.brake)
 		return;
@@ -331,25 +331,25 @@ static void bridge_pin_changed(void *ctx, unsigned pin, const struct hs_pin_stat
 {
 	(void)pin;
 	(void)st;
-	ev3_motor_inputs_changed(ctx);
+	hs_motor_inputs_changed(ctx);
 }
 
 /* ---- glitches (noisy encoder fault) ---- */
 
 static void glitch_end(void *arg)
 {
-	struct ev3_motor *m = arg;
+	struct hs_motor *m = arg;
 
 	m->glitch_end_ev = 0;
 	hs_gpio_drive(m->pins->tacho_int, m->int_level ? HS_EXT_HIGH : HS_EXT_LOW);
 }
 
-static void glitch_schedule(struct ev3_motor *m);
+static void glitch_schedule(struct hs_motor *m);
 
 /* Event: an encoder glitch starts (a 2 us pulse on INT). */
 static void glitch_due(void *arg)
 {
-	struct ev3_motor *m = arg;
+	struct hs_motor *m = arg;
 
 	m->glitch_ev = 0;
 	if (!m->glitch_end_ev) {
@@ -361,7 +361,7 @@ static void glitch_due(void *arg)
 }
 
 /* Draws the time of the next glitch (Poisson). */
-static void glitch_schedule(struct ev3_motor *m)
+static void glitch_schedule(struct hs_motor *m)
 {
 	double u;
 
@@ -375,14 +375,21 @@ static void glitch_schedule(struct ev3_motor *m)
 
 /* ---- public ---- */
 
-/* Creates the motor on a port and starts driving its tacho pins. */
-struct ev3_motor *ev3_motor_create(unsigned port, enum ev3_motor_kind kind,
-				   const struct ev3_motor_options *opt)
+/* The motor's PWM peer (hs_pwm_connect): the duty of its H-bridge changed. */
+static void pwm_changed(void *ctx, enum hs_pwm_output out)
 {
-	struct ev3_motor *m;
+	(void)out;
+	hs_motor_inputs_changed(ctx);
+}
+
+/* Creates the motor on a port and starts driving its tacho pins. */
+struct hs_motor *hs_motor_create(unsigned port, enum hs_motor_kind kind,
+				   const struct hs_motor_options *opt)
+{
+	struct hs_motor *m;
 	char scope[16] = "motorA";
 
-	if (port >= EV3_OUTPUT_PORTS || !ev3_motor_params_of(kind) || port_motor[port])
+	if (port >= EV3_OUTPUT_PORTS || !hs_motor_params_of(kind) || port_motor[port])
 		return NULL;
 	m = calloc(1, sizeof(*m));
 	if (!m)
@@ -391,7 +398,7 @@ struct ev3_motor *ev3_motor_create(unsigned port, enum ev3_motor_kind kind,
 	m->kind = kind;
 	m->pins = &ev3_output_pins[port];
 	m->pwm = ev3_output_pwm[port];
-	dc_motor_model_init(&m->model, ev3_motor_params_of(kind));
+	dc_motor_model_init(&m->model, hs_motor_params_of(kind));
 	if (opt) {
 		m->load_nm = opt->load_nm;
 		m->extra_inertia = opt->extra_inertia;
@@ -408,14 +415,15 @@ struct ev3_motor *ev3_motor_create(unsigned port, enum ev3_motor_kind kind,
 	hs_gpio_drive(m->pins->tacho_dir, m->dir_level ? HS_EXT_HIGH : HS_EXT_LOW);
 	m->watch0 = hs_gpio_watch(m->pins->dir0, bridge_pin_changed, m);
 	m->watch1 = hs_gpio_watch(m->pins->dir1, bridge_pin_changed, m);
+	hs_pwm_connect(m->pwm, &(struct hs_pwm_peer){ pwm_changed, m });
 	port_motor[port] = m;
 	m->drive.fwd = -1;  /* force the first evaluation */
-	ev3_motor_inputs_changed(m);
+	hs_motor_inputs_changed(m);
 	return m;
 }
 
 /* Removes the motor: events cancelled, pins released. */
-void ev3_motor_destroy(struct ev3_motor *m)
+void hs_motor_destroy(struct hs_motor *m)
 {
 	if (!m)
 		return;
@@ -423,6 +431,7 @@ void ev3_motor_destroy(struct ev3_motor *m)
 	hs_event_cancel(&m->edge_ev);
 	hs_event_cancel(&m->glitch_ev);
 	hs_event_cancel(&m->glitch_end_ev);
+	hs_pwm_connect(m->pwm, NULL);
 	hs_gpio_unwatch(m->watch0);
 	hs_gpio_unwatch(m->watch1);
 	hs_gpio_drive(m->pins->tacho_int, HS_EXT_FLOAT);
@@ -433,46 +442,39 @@ void ev3_motor_destroy(struct ev3_motor *m)
 }
 
 /* The motor on an output port, or NULL. */
-struct ev3_motor *ev3_motor_on_port(unsigned port)
+struct hs_motor *hs_motor_on_port(unsigned port)
 {
 	return port < EV3_OUTPUT_PORTS ? port_motor[port] : NULL;
 }
 
-/* Tells every motor driven by src that its duty changed. */
-void ev3_motor_pwm_changed(enum ev3_pwm_source src)
-{
-	for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
-		if (port_motor[p] && port_motor[p]->pwm == src)
-			ev3_motor_inputs_changed(port_motor[p]);
-}
 
 /* Shaft angle now, degrees. */
-double ev3_motor_angle_deg(struct ev3_motor *m)
+double hs_motor_angle_deg(struct hs_motor *m)
 {
 	return seg_theta(m, hs_now()) / RAD_PER_DEG;
 }
 
 /* Shaft speed on the current step, deg/s. */
-double ev3_motor_speed_dps(struct ev3_motor *m)
+double hs_motor_speed_dps(struct hs_motor *m)
 {
 	return m->seg_rate / RAD_PER_DEG;
 }
 
 /* Counts the pins show (INT edges from 0). */
-int64_t ev3_motor_tacho_counts(const struct ev3_motor *m)
+int64_t hs_motor_tacho_counts(const struct hs_motor *m)
 {
 	/* INT edges sit at odd half-count indices: count = round(index / 2) */
 	return m->shown >= 0 ? (m->shown + 1) / 2 : -((-m->shown) / 2);
 }
 
 /* Bridge split in effect. */
-struct hbridge_drive ev3_motor_drive(const struct ev3_motor *m)
+struct hbridge_drive hs_motor_drive(const struct hs_motor *m)
 {
 	return m->drive;
 }
 
 /* Estimated motor current now, amperes. */
-double ev3_motor_current_a(struct ev3_motor *m)
+double hs_motor_current_a(struct hs_motor *m)
 {
 	const struct dc_motor_model *md = &m->model;
 	double w = m->seg_rate;
@@ -483,7 +485,7 @@ double ev3_motor_current_a(struct ev3_motor *m)
 }
 
 /* Sets the external load from now on. */
-void ev3_motor_set_load(struct ev3_motor *m, double load_nm, double extra_inertia)
+void hs_motor_set_load(struct hs_motor *m, double load_nm, double extra_inertia)
 {
 	m->seg_omega1 = omega_now(m);
 	m->load_nm = load_nm;
@@ -492,7 +494,7 @@ void ev3_motor_set_load(struct ev3_motor *m, double load_nm, double extra_inerti
 }
 
 /* Locks or frees the shaft from now on. */
-void ev3_motor_set_stalled(struct ev3_motor *m, bool stalled)
+void hs_motor_set_stalled(struct hs_motor *m, bool stalled)
 {
 	m->seg_omega1 = omega_now(m);
 	m->stalled = stalled;
@@ -500,7 +502,7 @@ void ev3_motor_set_stalled(struct ev3_motor *m, bool stalled)
 }
 
 /* Freezes or releases the tacho outputs. */
-void ev3_motor_set_encoder_stuck(struct ev3_motor *m, bool stuck)
+void hs_motor_set_encoder_stuck(struct hs_motor *m, bool stuck)
 {
 	m->stuck = stuck;
 	if (!stuck)
@@ -509,22 +511,22 @@ void ev3_motor_set_encoder_stuck(struct ev3_motor *m, bool stuck)
 }
 
 /* Sets the glitch rate of the encoder. */
-void ev3_motor_set_encoder_noise(struct ev3_motor *m, double glitches_per_s)
+void hs_motor_set_encoder_noise(struct hs_motor *m, double glitches_per_s)
 {
 	m->noise_rate = glitches_per_s;
 	glitch_schedule(m);
 }
 
 /* Glitches emitted so far. */
-uint64_t ev3_motor_glitches(const struct ev3_motor *m)
+uint64_t hs_motor_glitches(const struct hs_motor *m)
 {
 	return m->glitches;
 }
 
 /* Pin 5 ID voltage for the encoder level and the 5w pull. */
-uint16_t ev3_motor_pin5_mv(const struct ev3_motor *m, bool pull5w_high)
+uint16_t hs_motor_pin5_mv(const struct hs_motor *m, bool pull5w_high)
 {
-	const struct ev3_motor_params *p = m->model.p;
+	const struct hs_motor_params *p = m->model.p;
 
 	if (!m->int_level)
 		return p->pin5_low_mv;
@@ -532,7 +534,7 @@ uint16_t ev3_motor_pin5_mv(const struct ev3_motor *m, bool pull5w_high)
 }
 
 /* Kind of the motor. */
-enum ev3_motor_kind ev3_motor_kind_of(const struct ev3_motor *m)
+enum hs_motor_kind hs_motor_kind_of(const struct hs_motor *m)
 {
 	return m->kind;
 }

@@ -1,5 +1,6 @@
 /*
- * uart_sensor.c — an EV3 UART sensor, device side (facts §8, §9).
+ * uart_sensor.c — an EV3 UART sensor, device side (LEGO's d_uart_mod.c,
+ * pybricks' port_lump.c, ev3dev's ev3_uart_sensor_defs.c).
  *
  * Life cycle: power-up holds pin 6 low for the auto-ID time, then sends the
  * whole handshake at 2400 baud (messages back-to-back, with the small gaps
@@ -17,7 +18,7 @@
 #include <string.h>
 #include "rtos_host.h"
 #include "host_sim/clock.h"
-#include "host_sim/scenario.h"
+#include "host_sim/rng.h"
 #include "host_sim/devices/uart_sensor.h"
 
 #define TXQ_FRAMES 64U
@@ -474,7 +475,7 @@ static void sensor_select(struct uart_sensor *s, unsigned mode)
 	s->mode = mode;
 	if (s->def->type == UART_SENSOR_TYPE_GYRO) {
 		gyro_integrate(s);
-		s->angle_deg = 0;   /* changing mode resets the angle (facts §9) */
+		s->angle_deg = 0;   /* changing mode resets the angle (ev3dev's ev3_uart_sensor_defs.c) */
 	}
 	hs_event_cancel(&s->data_ev);
 	hs_event_cancel(&s->phase_ev);

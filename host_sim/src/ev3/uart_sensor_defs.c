@@ -1,9 +1,10 @@
 /*
  * uart_sensor_defs.c — what each EV3 UART sensor advertises, from the
- * decoded power-up captures (facts §9: colour 47N3, gyro 49N3, ultrasonic
+ * decoded power-up captures (logic-analyser captures of real sensors published
+ * in JakubVanek/lms2012-stuff: colour 47N3, gyro 49N3, ultrasonic
  * 50N3, IR 36N8, firmware 1.10E) and the timing notes there.
  *
- * Data rates (facts §9 "Timing notes"): gyro about 330 frames/s (one every
+ * Data rates (the same captures): gyro about 330 frames/s (one every
  * 3 ms here), ultrasonic one every 21-25 ms (23 ms here), colour and IR one
  * per NACK with a steady value plus one whenever the value changes (checked
  * every 10 ms here, LEGO's typedata "Time" for these types).
@@ -49,7 +50,7 @@ static const struct uart_sensor_mode ir_modes[] = {
 	{ "IR-CAL", 0, 65535, 0, 65535, NULL, 2, LUMP_DATA16, 5, 0, 0, false, false },
 };
 
-/* Handshake durations are the captured ones (facts §8 step 5); the
+/* Handshake durations are the captured ones (LEGO's d_uart_mod.c handshake, last step); the
  * auto-ID low times lie in the measured 502-506 ms. */
 static const struct uart_sensor_def defs[] = {
 	{ "EV3 colour sensor", UART_SENSOR_TYPE_COLOR, 6, 3, 57600, 503 * MS, 1300 * MS,

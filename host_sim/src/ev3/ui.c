@@ -1,5 +1,5 @@
 /*
- * ev3_ui.c — the brick's six buttons and two bicolour LEDs on their GPIO
+ * ui.c — the brick's six buttons and two bicolour LEDs on their GPIO
  * pins (ev3_ui.h).
  *
  * A button is a contact from its pin to 3.3 V with a pull-down: released
@@ -15,7 +15,7 @@
 #include "host_sim/clock.h"
 #include "host_sim/gpio.h"
 #include "host_sim/regs.h"
-#include "host_sim/scenario.h"
+#include "host_sim/rng.h"
 #include "host_sim/trace.h"
 #include "host_sim/devices/ev3_ui.h"
 

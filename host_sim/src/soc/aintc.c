@@ -21,7 +21,7 @@
 #include "host_sim/intc.h"
 #include "host_sim/regs.h"
 #include "host_sim/trace.h"
-#include "../core/core_parts.h"
+#include "soc_parts.h"
 
 #define AINTC_VBR     0x050U
 #define AINTC_VSR     0x054U

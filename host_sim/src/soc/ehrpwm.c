@@ -1,9 +1,9 @@
 /*
- * pwm.c — eHRPWM1 and eCAP0/1 in APWM mode (AM1808 TRM chapters "eHRPWM"
- * and "eCAP"), reduced to what a motor sees: the fraction of each period an
- * output is low, recomputed whenever it can change (a register write that
- * acts at once, or a shadow load at counter zero/period, which is an event
- * at that exact instant).  Counters are computed from the virtual clock.
+ * ehrpwm.c — eHRPWM1 (AM1808 TRM chapter "eHRPWM"), reduced to what a
+ * motor sees: the fraction of each period an output is low, recomputed
+ * whenever it can change (a register write that acts at once, or a shadow
+ * load at counter zero/period, which is an event at that exact instant).
+ * The counter is computed from the virtual clock.
  */
 #include <stdlib.h>
 #include "rtos_host.h"
@@ -12,8 +12,8 @@
 #include "host_sim/regs.h"
 #include "host_sim/syscfg.h"
 #include "host_sim/trace.h"
-#include "host_sim/devices/ev3_motor.h"
 #include "host_sim/devices/pwm.h"
+#include "pwm_outputs.h"
 
 #define PWM_CLOCK_HZ HS_PLL1_SYSCLK2_HZ
 
@@ -131,8 +131,6 @@ struct ehrpwm {
 	int syscfg_watch;
 };
 
-static struct ehrpwm *ehrpwm1;
-
 /* Time-base clock for TBCTL dividers. */
 static uint64_t tbclk_hz(uint32_t tbctl)
 {
@@ -203,7 +201,7 @@ static void ehrpwm_update(struct ehrpwm *e)
 		e->level[o] = lvl;
 		if (low != e->low[o]) {
 			e->low[o] = low;
-			ev3_motor_pwm_changed(o ? EV3_PWM_EHRPWM1_B : EV3_PWM_EHRPWM1_A);
+			hs_pwm_output_changed(o ? HS_PWM_EHRPWM1_B : HS_PWM_EHRPWM1_A);
 		}
 	}
 }
@@ -274,7 +272,7 @@ static void ehrpwm_rebase(struct ehrpwm *e)
 /* Watcher: TBCLKSYNC starts or stops the time base. */
 static void ehrpwm_syscfg_changed(void *ctx, uint32_t offset, uint32_t old, uint32_t now)
 {
-	if (offset == 0x180U && ((old ^ now) & HS_CFGCHIP1_TBCLKSYNC))
+	if (offset == HS_SYSCFG0_CFGCHIP(1) && ((old ^ now) & HS_CFGCHIP1_TBCLKSYNC))
 		ehrpwm_rebase(ctx);
 }
 
@@ -419,6 +417,29 @@ static const struct hs_reg ehrpwm_regs[] = {
 	{ .name = "PCCTL", .offset = PCCTL, .width = 2, .kind = HS_RW, .after_write = ehrpwm_write_unmodelled },
 };
 
+/* Low fraction of output channel (0 = A, 1 = B). */
+static double ehrpwm_low_fraction(const void *ctx, unsigned channel)
+{
+	const struct ehrpwm *e = ctx;
+
+	return e->low[channel ? 1 : 0];
+}
+
+/* PWM frequency in Hz of both outputs (0 if stopped). */
+static double ehrpwm_frequency(const void *ctx, unsigned channel)
+{
+	const struct ehrpwm *e = ctx;
+	uint32_t tbctl;
+
+	(void)channel;
+	if (!e->running)
+		return 0;
+	tbctl = hs_reg_get(e->r, TBCTL);
+	return (double)tbclk_hz(tbctl) / tb_period_cycles(e, tbctl);
+}
+
+static const struct hs_pwm_source_ops ehrpwm_ops = { ehrpwm_low_fraction, ehrpwm_frequency };
+
 /* Creates the EHRPWM1 region and state. */
 static ER ehrpwm_create(const struct hs_board_cfg *cfg, void **ctx)
 {
@@ -435,7 +456,8 @@ static ER ehrpwm_create(const struct hs_board_cfg *cfg, void **ctx)
 	}
 	e->low[0] = e->low[1] = 1.0;    /* outputs low after reset */
 	e->syscfg_watch = hs_syscfg_watch(ehrpwm_syscfg_changed, e);
-	ehrpwm1 = e;
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_A, &ehrpwm_ops, e, 0);
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_B, &ehrpwm_ops, e, 1);
 	*ctx = e;
 	return E_OK;
 }
@@ -447,246 +469,9 @@ static void ehrpwm_destroy(void *ctx)
 
 	hs_event_cancel(&e->load_ev);
 	hs_syscfg_unwatch(e->syscfg_watch);
-	if (ehrpwm1 == e)
-		ehrpwm1 = NULL;
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_A, NULL, NULL, 0);
+	hs_pwm_output_attach(HS_PWM_EHRPWM1_B, NULL, NULL, 0);
 	free(e);
 }
 
-const struct hs_device ev3_ehrpwm1_device = { "EHRPWM1", ehrpwm_create, NULL, ehrpwm_destroy };
-
-/* ---- eCAP0/1 in APWM mode ---- */
-
-enum {
-	TSCTR = 0x00, CTRPHS = 0x04, CAP1 = 0x08, CAP2 = 0x0C, CAP3 = 0x10, CAP4 = 0x14,
-	ECCTL1 = 0x28, ECCTL2 = 0x2A, ECEINT = 0x2C, ECFLG = 0x2E, ECCLR = 0x30, ECFRC = 0x32,
-	ECAP_REVID = 0x5C,
-};
-#define ECCTL2_TSCTRSTOP (1U << 4)
-#define ECCTL2_APWM      (1U << 9)
-#define ECCTL2_APWMPOL   (1U << 10)
-
-struct ecap {
-	struct hs_region *r;
-	enum ev3_pwm_source src;
-	bool running;
-	uint64_t t_ref;
-	uint32_t cnt_ref;
-	hs_event_t load_ev;
-	double low;
-};
-
-static struct ecap *ecaps[2];
-
-/* eCAP counter now. */
-static uint32_t ecap_counter(const struct ecap *c)
-{
-	uint64_t period = (uint64_t)hs_reg_get(c->r, CAP1) + 1U;
-	uint64_t cnt = c->cnt_ref;
-
-	if (c->running)
-		cnt += hs_ns_to_cycles(hs_now() - c->t_ref, PWM_CLOCK_HZ);
-	if (!(hs_reg_get(c->r, ECCTL2) & ECCTL2_APWM))
-		return (uint32_t)cnt;
-	return (uint32_t)(cnt % period);
-}
-
-/* Recomputes the APWM low fraction; tells the motors. */
-static void ecap_update(struct ecap *c)
-{
-	uint32_t ctl2 = hs_reg_get(c->r, ECCTL2);
-	uint64_t period = (uint64_t)hs_reg_get(c->r, CAP1) + 1U;
-	uint64_t cmp = hs_reg_get(c->r, CAP2);
-	bool active_low = ctl2 & ECCTL2_APWMPOL;
-	double active, low;
-
-	if (!(ctl2 & ECCTL2_APWM)) {
-		low = 1.0;              /* capture mode: the pin is an input, the bridge sees low */
-	} else if (!c->running) {
-		bool act = ecap_counter(c) < cmp;
-
-		low = (act == active_low) ? 1.0 : 0.0;
-	} else {
-		active = (double)(cmp < period ? cmp : period) / (double)period;
-		low = active_low ? active : 1.0 - active;
-	}
-	if (low != c->low) {
-		c->low = low;
-		ev3_motor_pwm_changed(c->src);
-	}
-}
-
-static void ecap_schedule_load(struct ecap *c);
-
-/* Event: counter equals the period: CAP3/CAP4 shadows become active. */
-static void ecap_load(void *arg)
-{
-	struct ecap *c = arg;
-
-	c->load_ev = 0;
-	c->cnt_ref = ecap_counter(c);
-	c->t_ref = hs_now();
-	hs_reg_set(c->r, CAP1, hs_reg_get(c->r, CAP3));
-	hs_reg_set(c->r, CAP2, hs_reg_get(c->r, CAP4));
-	ecap_update(c);
-}
-
-/* Schedules the shadow load at the next period if a shadow differs. */
-static void ecap_schedule_load(struct ecap *c)
-{
-	uint32_t prd = hs_reg_get(c->r, CAP1), cnt;
-
-	hs_event_cancel(&c->load_ev);
-	if (!c->running || (hs_reg_get(c->r, CAP3) == prd && hs_reg_get(c->r, CAP4) == hs_reg_get(c->r, CAP2)))
-		return;
-	cnt = ecap_counter(c);
-	c->load_ev = hs_event_after(hs_cycles_to_ns(cnt < prd ? prd - cnt : (uint64_t)prd + 1U, PWM_CLOCK_HZ),
-				    ecap_load, c);
-}
-
-/* Re-bases the counter at now and re-reads ECCTL2. */
-static void ecap_rebase(struct ecap *c)
-{
-	uint32_t ctl2 = hs_reg_get(c->r, ECCTL2);
-
-	c->cnt_ref = ecap_counter(c);
-	c->t_ref = hs_now();
-	c->running = (ctl2 & ECCTL2_TSCTRSTOP) != 0;
-	ecap_update(c);
-	ecap_schedule_load(c);
-}
-
-/* TSCTR read: the counter now. */
-static void ecap_read_tsctr(void *ctx, const struct hs_access *a, uint32_t *value)
-{
-	*value = ecap_counter(ctx);
-}
-
-/* eCAP register writes. */
-static void ecap_write(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
-{
-	struct ecap *c = ctx;
-	bool apwm = hs_reg_get(c->r, ECCTL2) & ECCTL2_APWM;
-
-	switch (a->offset) {
-	case TSCTR:
-		c->cnt_ref = nv;
-		c->t_ref = hs_now();
-		break;
-	case CAP1:      /* in APWM mode a write to an active register also sets its shadow */
-		if (apwm)
-			hs_reg_set(c->r, CAP3, nv);
-		break;
-	case CAP2:
-		if (apwm)
-			hs_reg_set(c->r, CAP4, nv);
-		break;
-	case ECEINT:
-		if (nv)
-			rtos_host_bug("host_sim", "%s.ECEINT = 0x%04x: eCAP interrupts are not modelled",
-				      hs_region_name(c->r), (unsigned)nv);
-		break;
-	default:
-		break;
-	}
-	ecap_rebase(c);
-}
-
-static const struct hs_reg ecap_regs[] = {
-	{ .name = "TSCTR", .offset = TSCTR, .kind = HS_RW, .before_read = ecap_read_tsctr,
-	  .after_write = ecap_write },
-	{ .name = "CTRPHS", .offset = CTRPHS, .kind = HS_RW },
-	{ .name = "CAP1", .offset = CAP1, .kind = HS_RW, .after_write = ecap_write },
-	{ .name = "CAP2", .offset = CAP2, .kind = HS_RW, .after_write = ecap_write },
-	{ .name = "CAP3", .offset = CAP3, .kind = HS_RW, .after_write = ecap_write },
-	{ .name = "CAP4", .offset = CAP4, .kind = HS_RW, .after_write = ecap_write },
-	{ .name = "ECCTL1", .offset = ECCTL1, .width = 2, .kind = HS_RW },
-	{ .name = "ECCTL2", .offset = ECCTL2, .width = 2, .kind = HS_RW, .reset = 0x0006, .mask = 0x06FF,
-	  .after_write = ecap_write },
-	{ .name = "ECEINT", .offset = ECEINT, .width = 2, .kind = HS_RW, .after_write = ecap_write },
-	{ .name = "ECFLG", .offset = ECFLG, .width = 2, .kind = HS_RO },
-	{ .name = "ECCLR", .offset = ECCLR, .width = 2, .kind = HS_W1C, .alias = "ECFLG" },
-	{ .name = "ECFRC", .offset = ECFRC, .width = 2, .kind = HS_RW },
-	{ .name = "REVID", .offset = ECAP_REVID, .kind = HS_RO, .reset = 0x44D22100 },
-};
-
-/* Creates eCAP n. */
-static ER ecap_create_n(unsigned n, void **ctx)
-{
-	struct ecap *c = calloc(1, sizeof(*c));
-
-	if (!c)
-		return E_NOMEM;
-	c->src = n ? EV3_PWM_ECAP1 : EV3_PWM_ECAP0;
-	c->r = hs_region_add(&(struct hs_region_cfg){ .name = n ? "ECAP1" : "ECAP0",
-		.phys = n ? HS_ECAP1_BASE : HS_ECAP0_BASE, .size = 0x1000, .regs = ecap_regs,
-		.nregs = HS_ARRAY_SIZE(ecap_regs), .power = HS_PSC1_MODULE(HS_LPSC1_ECAP), .ctx = c });
-	if (!c->r) {
-		free(c);
-		return E_PAR;
-	}
-	c->low = 1.0;
-	ecaps[n] = c;
-	*ctx = c;
-	return E_OK;
-}
-
-/* Board device: eCAP0. */
-static ER ecap0_create(const struct hs_board_cfg *cfg, void **ctx)
-{
-	return ecap_create_n(0, ctx);
-}
-
-/* Board device: eCAP1. */
-static ER ecap1_create(const struct hs_board_cfg *cfg, void **ctx)
-{
-	return ecap_create_n(1, ctx);
-}
-
-/* Frees an eCAP. */
-static void ecap_destroy(void *ctx)
-{
-	struct ecap *c = ctx;
-
-	hs_event_cancel(&c->load_ev);
-	for (int i = 0; i < 2; i++)
-		if (ecaps[i] == c)
-			ecaps[i] = NULL;
-	free(c);
-}
-
-const struct hs_device ev3_ecap0_device = { "ECAP0", ecap0_create, NULL, ecap_destroy };
-const struct hs_device ev3_ecap1_device = { "ECAP1", ecap1_create, NULL, ecap_destroy };
-
-/* ---- queries ---- */
-
-/* Low fraction of a PWM source now. */
-double ev3_pwm_low_fraction(enum ev3_pwm_source src)
-{
-	switch (src) {
-	case EV3_PWM_EHRPWM1_A: return ehrpwm1 ? ehrpwm1->low[0] : 1.0;
-	case EV3_PWM_EHRPWM1_B: return ehrpwm1 ? ehrpwm1->low[1] : 1.0;
-	case EV3_PWM_ECAP0: return ecaps[0] ? ecaps[0]->low : 1.0;
-	case EV3_PWM_ECAP1: return ecaps[1] ? ecaps[1]->low : 1.0;
-	default: return 1.0;
-	}
-}
-
-/* PWM frequency of a source now (0 if stopped). */
-double ev3_pwm_frequency(enum ev3_pwm_source src)
-{
-	if (src == EV3_PWM_EHRPWM1_A || src == EV3_PWM_EHRPWM1_B) {
-		uint32_t tbctl;
-
-		if (!ehrpwm1 || !ehrpwm1->running)
-			return 0;
-		tbctl = hs_reg_get(ehrpwm1->r, TBCTL);
-		return (double)tbclk_hz(tbctl) / tb_period_cycles(ehrpwm1, tbctl);
-	}
-	{
-		struct ecap *c = ecaps[src == EV3_PWM_ECAP1 ? 1 : 0];
-
-		if (!c || !c->running)
-			return 0;
-		return (double)PWM_CLOCK_HZ / ((double)hs_reg_get(c->r, CAP1) + 1.0);
-	}
-}
+const struct hs_device hs_ehrpwm1_device = { "EHRPWM1", ehrpwm_create, NULL, ehrpwm_destroy };

@@ -28,7 +28,7 @@
 #include "host_sim/regs.h"
 #include "host_sim/syscfg.h"
 #include "host_sim/trace.h"
-#include "../core/core_parts.h"
+#include "soc_parts.h"
 
 #define GPIO_PAIRS        5U
 #define GPIO_BINTEN       0x08U
@@ -294,7 +294,7 @@ static const struct hs_reg gpio_regs[] = {
 	PAIR_REG("INTSTAT",      0x24, HS_W1C),
 };
 
-/* EV3 pins Linux muxes to GPIO at boot (facts: port pin tables). */
+/* EV3 pins Linux muxes to GPIO at boot (the port pin tables of LEGO's d_pwm.c/d_analog.c). */
 static const uint8_t ev3_gpio_pins[] = {
 	HS_GPIO(1, 14), HS_GPIO(1, 15), HS_GPIO(2, 1), HS_GPIO(2, 2), HS_GPIO(2, 5), HS_GPIO(2, 8),
 	HS_GPIO(2, 9), HS_GPIO(3, 6), HS_GPIO(3, 8), HS_GPIO(3, 14), HS_GPIO(3, 15), HS_GPIO(5, 3),

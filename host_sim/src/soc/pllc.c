@@ -10,7 +10,7 @@
 #include "rtos_host.h"
 #include "host_sim/board.h"
 #include "host_sim/regs.h"
-#include "../core/core_parts.h"
+#include "soc_parts.h"
 
 /* A write to a PLL register: stored, traced, not applied to the clock model. */
 static void pll_written(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written)

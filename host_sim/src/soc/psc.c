@@ -13,7 +13,7 @@
 #include "host_sim/board.h"
 #include "host_sim/psc.h"
 #include "host_sim/regs.h"
-#include "../core/core_parts.h"
+#include "soc_parts.h"
 
 #define PSC_NMOD       32U
 #define PSC_PTCMD      0x120U
@@ -30,6 +30,7 @@ struct psc {
 	unsigned id;                   /* 0 or 1 */
 	struct hs_region *region;
 	enum hs_psc_state state[PSC_NMOD];
+	bool live[PSC_NMOD];           /* state == HS_PSC_ENABLE, for the register space */
 };
 
 static struct psc pscs[2];
@@ -58,6 +59,7 @@ static void psc_set_state(struct psc *p, unsigned m, enum hs_psc_state st)
 	unsigned module = (p->id == 0U ? HS_PSC0_MODULE(m) : HS_PSC1_MODULE(m));
 
 	p->state[m] = st;
+	p->live[m] = st == HS_PSC_ENABLE;
 	if (p->region)
 		hs_reg_set(p->region, PSC_MDSTAT0 + 4U * m, mdstat_of(st));
 	if (old == st)
@@ -130,6 +132,7 @@ static ER psc_create_one(unsigned id, uintptr_t phys, const unsigned *on, unsign
 		return E_SYS;
 	for (unsigned i = 0; i < non; i++) {
 		p->state[on[i]] = HS_PSC_ENABLE;
+		p->live[on[i]] = true;
 		hs_reg_set(p->region, PSC_MDCTL0 + 4U * on[i], HS_PSC_ENABLE);
 	}
 	for (unsigned m = 0; m < PSC_NMOD; m++)
@@ -137,11 +140,16 @@ static ER psc_create_one(unsigned id, uintptr_t phys, const unsigned *on, unsign
 	return E_OK;
 }
 
+static const bool *psc_live_flag(unsigned module);
+static const char *psc_state_name(unsigned module);
+
 ER hs_psc_create(bool cold)
 {
+	static const struct hs_power_controller controller = { psc_live_flag, psc_state_name };
 	ER er;
 
 	memset(watches, 0, sizeof(watches));
+	hs_set_power_controller(&controller);
 	if (cold)
 		er = psc_create_one(0, HS_PSC0_BASE, psc0_cold_on, HS_ARRAY_SIZE(psc0_cold_on));
 	else
@@ -180,19 +188,29 @@ enum hs_psc_state hs_psc_state(unsigned module)
 	return p ? p->state[m] : HS_PSC_SWRSTDISABLE;
 }
 
-/* Where the state hs_psc_state(module) reports is kept, for the register
- * access path's per-access power check; stable for the process's life. */
-const enum hs_psc_state *hs_psc_state_ref(unsigned module)
+/* The register space's power check: module's live flag, stable for the
+ * process's life (the PSC state is static). */
+static const bool *psc_live_flag(unsigned module)
 {
-	static const enum hs_psc_state always_enabled = HS_PSC_ENABLE;
-	static const enum hs_psc_state no_module = HS_PSC_SWRSTDISABLE;
+	static const bool always = true, never = false;
 	unsigned m;
 	struct psc *p;
 
 	if (module == HS_NO_PSC)
-		return &always_enabled;
+		return &always;
 	p = psc_of(module, &m);
-	return p ? &p->state[m] : &no_module;
+	return p ? &p->live[m] : &never;
+}
+
+/* The state's name in the TRM's words, for bug reports. */
+static const char *psc_state_name(unsigned module)
+{
+	switch (hs_psc_state(module)) {
+	case HS_PSC_SWRSTDISABLE: return "SwRstDisable";
+	case HS_PSC_SYNCRESET: return "SyncReset";
+	case HS_PSC_DISABLE: return "Disable";
+	default: return "Enable";
+	}
 }
 
 bool hs_psc_enabled(unsigned module)

@@ -1,15 +1,14 @@
 /*
- * spi_adc.c — SPI0 master transfers in virtual time, answered by the EV3's
- * ADS7957-like converter (see spi_adc.h for the behaviour modelled).
+ * spi.c — SPI0 master transfers in virtual time (see spi_adc.h for the
+ * behaviour modelled), answered by whatever the board connects as the
+ * slave (hs_spi0_connect; on the EV3 the converter, ev3/adc.c).
  */
-#include <math.h>
 #include <stdlib.h>
 #include "rtos_host.h"
 #include "host_sim/clock.h"
 #include "host_sim/intc.h"
 #include "host_sim/psc.h"
 #include "host_sim/regs.h"
-#include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/spi_adc.h"
 
 enum {
@@ -47,47 +46,15 @@ struct spi0 {
 	hs_event_t frame_ev;
 	uint32_t rx;                /* SPIBUF data and flags */
 	bool irq;
-	/* the converter */
-	unsigned adc_next;          /* channel selected by the previous frame */
-	uint16_t adc_result;        /* conversion shifted out in the next frame */
-	bool adc_range_5v;
 	struct ev3_spi_stats stats;
 };
 
 static struct spi0 *spi;
+static struct hs_spi_peer slave;   /* what answers the frames (none: the line reads 0) */
 
-/* ADS7957 output word: channel in 15-12, 10-bit result in 11-2. */
-uint16_t ads7957_word(unsigned ch, uint32_t mv)
+void hs_spi0_connect(const struct hs_spi_peer *peer)
 {
-	uint32_t code = mv >= 5000U ? 1023U : (uint32_t)((mv * 1023U + 2500U) / 5000U);
-
-	return (uint16_t)(((ch & 0xFU) << 12) | (code << 2));
-}
-
-/* The converter's side of one frame starting now: returns what it shifts
- * out, samples the channel selected last frame, then decodes cmd. */
-static uint16_t adc_frame(struct spi0 *s, uint16_t cmd)
-{
-	uint16_t out = s->adc_result;
-	double mv = ev3_adc_channel_mv(s->adc_next);
-	double sigma = ev3_adc_noise_mv();
-	unsigned mode = cmd >> 12;
-
-	if (sigma > 0)
-		mv += sigma * ev3_adc_noise_sample();
-	if (!s->adc_range_5v)
-		mv *= 2.0;              /* 0-2.5 V range: full scale at half the voltage */
-	mv = mv < 0 ? 0 : mv > 5000 ? 5000 : mv;
-	s->adc_result = ads7957_word(s->adc_next, (uint32_t)lround(mv));
-	if (mode == 0x1U && (cmd & 0x0800U)) {
-		s->adc_next = (cmd >> 7) & 0xFU;
-		s->adc_range_5v = cmd & 0x0040U;
-	} else if (mode == 0x2U || mode == 0x3U) {
-		rtos_host_bug("host_sim", "SPI0 ADC: command 0x%04x selects an auto mode, which is not modelled "
-			      "(the EV3 uses manual mode)", cmd);
-	}
-	/* mode 1 without bit 11 keeps the channel; 0x4xxx programs GPIOs, 0x8xxx-0x9xxx auto sequences */
-	return out;
+	slave = peer != NULL ? *peer : (struct hs_spi_peer){ 0 };
 }
 
 /* Drives the SPI0 interrupt line from SPIFLG and SPIINT0. */
@@ -158,13 +125,13 @@ static void frame_done(void *arg)
 	spi_irq_update(s);
 }
 
-/* Starts a frame now with the converter answering. */
+/* Starts a frame now with the slave answering. */
 static void frame_start(struct spi0 *s, uint16_t word, unsigned fmt)
 {
 	uint64_t ns = frame_ns(s, fmt, &s->shift_len);
 
 	s->busy = true;
-	s->shift_out = adc_frame(s, word);
+	s->shift_out = slave.frame != NULL ? slave.frame(slave.ctx, word) : 0;
 	s->frame_end = hs_now() + ns;
 	s->frame_ev = hs_event_at(s->frame_end, frame_done, s);
 }
@@ -293,7 +260,7 @@ static const struct hs_reg spi_regs[] = {
 	{ .name = "INTVEC1", .offset = INTVEC1, .kind = HS_RO },
 };
 
-/* Creates the SPI0 region and converter. */
+/* Creates the SPI0 region. */
 static ER spi_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	struct spi0 *s = calloc(1, sizeof(*s));
@@ -316,8 +283,7 @@ static ER spi_create(const struct hs_board_cfg *cfg, void **ctx)
 	for (unsigned i = 0; i < 4U; i++)
 		s->fmt[i] = hs_reg_value_ptr(s->r, SPIFMT0 + 4U * i);
 	s->rx = BUF_RXEMPTY;
-	s->adc_range_5v = true;
-	/* Linux leaves SPI0 out of reset (EV3RT had to do it itself: facts §2) */
+	/* Linux leaves SPI0 out of reset (EV3RT's driver had to take it out itself) */
 	if (!cfg || !cfg->cold_reset)
 		hs_reg_set(s->r, SPIGCR0, 1);
 	spi = s;
@@ -336,7 +302,7 @@ static void spi_destroy(void *ctx)
 	free(s);
 }
 
-const struct hs_device ev3_spi0_device = { "SPI0", spi_create, NULL, spi_destroy };
+const struct hs_device hs_spi0_device = { "SPI0", spi_create, NULL, spi_destroy };
 
 /* SPI0 counters. */
 const struct ev3_spi_stats *ev3_spi_get_stats(void)

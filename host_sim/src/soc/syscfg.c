@@ -14,12 +14,11 @@
 #include "host_sim/board.h"
 #include "host_sim/regs.h"
 #include "host_sim/syscfg.h"
-#include "../core/core_parts.h"
+#include "soc_parts.h"
 
 #define SYSCFG_KICK0R    0x038U
 #define SYSCFG_KICK1R    0x03CU
 #define SYSCFG_PINMUX0   0x120U
-#define SYSCFG_CFGCHIP0  0x17CU
 #define SYSCFG1_PUPD_ENA 0x00CU
 #define SYSCFG1_PUPD_SEL 0x010U
 #define MAX_WATCHES      16U
@@ -91,7 +90,7 @@ static const struct hs_reg syscfg0_regs[] = {
 	{ .name = "SUSPSRC",     .offset = 0x170, .kind = HS_RW, .after_write = protected_written },
 	{ .name = "CHIPSIG",     .offset = 0x174, .kind = HS_RW, .mask = 0x1F, .after_write = protected_written },
 	{ .name = "CHIPSIG_CLR", .offset = 0x178, .kind = HS_W1C, .mask = 0x1F, .alias = "CHIPSIG" },
-	{ .name = "CFGCHIP",     .offset = SYSCFG_CFGCHIP0, .kind = HS_RW, .count = 5, .after_write = protected_written },
+	{ .name = "CFGCHIP",     .offset = HS_SYSCFG0_CFGCHIP(0), .kind = HS_RW, .count = 5, .after_write = protected_written },
 };
 
 static const struct hs_reg syscfg1_regs[] = {
@@ -146,7 +145,7 @@ uint32_t hs_syscfg_cfgchip(unsigned n)
 {
 	if (!sc.r0 || n >= 5U)
 		return 0;
-	return hs_reg_get(sc.r0, SYSCFG_CFGCHIP0 + 4U * n);
+	return hs_reg_get(sc.r0, HS_SYSCFG0_CFGCHIP(n));
 }
 
 bool hs_syscfg_tbclksync(void)

@@ -1,8 +1,7 @@
 /*
  * uart16550.c — AM1808 UART (TRM "Universal Asynchronous Receiver/
- * Transmitter"), 16550-compatible, with the EV3 port wiring of
- * ev3_ports.h.  Bytes are events on the virtual clock; everything else is
- * computed when read.
+ * Transmitter"), 16550-compatible.  Bytes are events on the virtual clock;
+ * everything else is computed when read.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -12,7 +11,6 @@
 #include "host_sim/psc.h"
 #include "host_sim/regs.h"
 #include "host_sim/trace.h"
-#include "host_sim/devices/ev3_ports.h"
 #include "host_sim/devices/uart16550.h"
 
 enum {
@@ -38,9 +36,8 @@ enum {
 #define PWREMU_UTRST (1U << 14)
 #define FIFO_SIZE  16U
 
-struct ev3_uart {
-	const struct ev3_port_uart *cfg;
-	unsigned port;
+struct hs_uart {
+	const struct hs_uart_cfg *cfg;
 	struct hs_region *r;
 	uint8_t fcr;                /* FCR is write-only: its state lives here */
 	/* copies of the registers the byte path consults, kept by the write hooks */
@@ -59,27 +56,26 @@ struct ev3_uart {
 	bool line_high;
 	bool break_sent;
 	bool irq;
-	struct ev3_uart_peer peer;
-	struct ev3_uart_stats stats;
+	struct hs_uart_peer peer;
+	struct hs_uart_stats stats;
 };
 
-static struct ev3_uart *port_uarts[EV3_INPUT_PORTS];
 
 /* ---- helpers ---- */
 
-static bool fifo_mode(const struct ev3_uart *u)
+static bool fifo_mode(const struct hs_uart *u)
 {
 	return u->fcr & 1U;
 }
 
 /* RX FIFO depth in the current mode. */
-static unsigned rx_capacity(const struct ev3_uart *u)
+static unsigned rx_capacity(const struct hs_uart *u)
 {
 	return fifo_mode(u) ? FIFO_SIZE : 1U;
 }
 
 /* RX trigger level. */
-static unsigned rx_trigger(const struct ev3_uart *u)
+static unsigned rx_trigger(const struct hs_uart *u)
 {
 	static const unsigned levels[4] = { 1, 4, 8, 14 };
 
@@ -87,19 +83,19 @@ static unsigned rx_trigger(const struct ev3_uart *u)
 }
 
 /* Baud divisor (DLH:DLL). */
-static uint32_t divisor(const struct ev3_uart *u)
+static uint32_t divisor(const struct hs_uart *u)
 {
 	return u->dll | (u->dlh << 8);
 }
 
 /* 16x or 13x per MDR. */
-static unsigned oversampling(const struct ev3_uart *u)
+static unsigned oversampling(const struct hs_uart *u)
 {
 	return (u->mdr & 1U) ? 13U : 16U;
 }
 
 /* Bits per character: start, data, parity, stop. */
-static unsigned char_bits(const struct ev3_uart *u)
+static unsigned char_bits(const struct hs_uart *u)
 {
 	uint32_t lcr = u->lcr;
 	unsigned data = 5U + (lcr & 3U);
@@ -108,7 +104,7 @@ static unsigned char_bits(const struct ev3_uart *u)
 }
 
 /* Nanoseconds of n bit times at the current divisor (0 if no clock). */
-static uint64_t bits_ns(const struct ev3_uart *u, unsigned n)
+static uint64_t bits_ns(const struct hs_uart *u, unsigned n)
 {
 	uint32_t div = divisor(u);
 
@@ -116,7 +112,7 @@ static uint64_t bits_ns(const struct ev3_uart *u, unsigned n)
 }
 
 /* Current baud. */
-uint32_t ev3_uart_baud(const struct ev3_uart *u)
+uint32_t hs_uart_baud(const struct hs_uart *u)
 {
 	uint32_t div = divisor(u);
 
@@ -127,38 +123,38 @@ uint32_t ev3_uart_baud(const struct ev3_uart *u)
 }
 
 /* Receiver out of reset. */
-static bool rx_enabled(const struct ev3_uart *u)
+static bool rx_enabled(const struct hs_uart *u)
 {
 	return u->pwremu & PWREMU_URRST;
 }
 
 /* Transmitter out of reset. */
-static bool tx_enabled(const struct ev3_uart *u)
+static bool tx_enabled(const struct hs_uart *u)
 {
 	return u->pwremu & PWREMU_UTRST;
 }
 
 /* The interrupt identification now (IIR bits 3:0). */
-static unsigned iir_id(const struct ev3_uart *u)
+static unsigned iir_id(const struct hs_uart *u)
 {
 	uint32_t ier = u->ier;
 	bool rx_error = u->overrun || (u->rx_count && u->rx_err[u->rx_head]);
 
 	if ((ier & IER_ELSI) && rx_error)
-		return 0x6U;
+		return HS_UART_IIR_LINE_STATUS;
 	if ((ier & IER_ERBI) && u->rx_count >= rx_trigger(u))
-		return 0x4U;
+		return HS_UART_IIR_RX_DATA;
 	if ((ier & IER_ERBI) && u->timeout_int && u->rx_count)
-		return 0xCU;
+		return HS_UART_IIR_RX_TIMEOUT;
 	if ((ier & IER_ETBEI) && u->thre_int)
-		return 0x2U;
-	return 0x1U;
+		return HS_UART_IIR_THR_EMPTY;
+	return HS_UART_IIR_NONE;
 }
 
 /* Drives the interrupt request line from the current sources. */
-static void irq_update(struct ev3_uart *u)
+static void irq_update(struct hs_uart *u)
 {
-	bool level = iir_id(u) != 0x1U;
+	bool level = iir_id(u) != HS_UART_IIR_NONE;
 
 	if (level != u->irq) {
 		u->irq = level;
@@ -172,7 +168,7 @@ static void irq_update(struct ev3_uart *u)
  * moves it instead of cancelling and re-scheduling on every byte. */
 static void timeout_due(void *arg)
 {
-	struct ev3_uart *u = arg;
+	struct hs_uart *u = arg;
 	uint64_t due = u->last_rx_activity + bits_ns(u, 4U * char_bits(u));
 
 	u->timeout_ev = 0;
@@ -187,7 +183,7 @@ static void timeout_due(void *arg)
 }
 
 /* Notes RX activity (a byte in or out of the FIFO) for the character timeout. */
-static void rx_activity(struct ev3_uart *u)
+static void rx_activity(struct hs_uart *u)
 {
 	u->last_rx_activity = hs_now();
 	u->timeout_int = false;
@@ -196,7 +192,7 @@ static void rx_activity(struct ev3_uart *u)
 }
 
 /* A received character enters the FIFO, or overruns. */
-static void rx_push(struct ev3_uart *u, uint8_t byte, uint8_t err)
+static void rx_push(struct hs_uart *u, uint8_t byte, uint8_t err)
 {
 	if (!rx_enabled(u)) {
 		u->stats.rx_in_reset++;
@@ -219,13 +215,13 @@ static void rx_push(struct ev3_uart *u, uint8_t byte, uint8_t err)
 }
 
 /* A byte from the line at the sender's baud. */
-void ev3_uart_rx_byte(struct ev3_uart *u, uint8_t byte, uint32_t baud)
+void hs_uart_rx_byte(struct hs_uart *u, uint8_t byte, uint32_t baud)
 {
 	uint32_t mine;
 
 	if (!u || (u->mcr & MCR_LOOP))
 		return;
-	mine = ev3_uart_baud(u);
+	mine = hs_uart_baud(u);
 	if (!mine || baud < mine - mine / 25U || baud > mine + mine / 25U) {
 		/* sampled at the wrong rate: the receiver assembles other bits and misses the stop bit */
 		u->stats.framing_errors++;
@@ -238,7 +234,7 @@ void ev3_uart_rx_byte(struct ev3_uart *u, uint8_t byte, uint32_t baud)
 /* Event: the line has been low a character time. */
 static void break_due(void *arg)
 {
-	struct ev3_uart *u = arg;
+	struct hs_uart *u = arg;
 
 	u->break_ev = 0;
 	u->stats.breaks++;
@@ -246,7 +242,7 @@ static void break_due(void *arg)
 }
 
 /* RX line level: low for a whole character is one break character. */
-void ev3_uart_rx_line(struct ev3_uart *u, bool high)
+void hs_uart_rx_line(struct hs_uart *u, bool high)
 {
 	if (!u || high == u->line_high)
 		return;
@@ -258,14 +254,14 @@ void ev3_uart_rx_line(struct ev3_uart *u, bool high)
 
 /* ---- transmitter ---- */
 
-static void tx_start(struct ev3_uart *u);
+static void tx_start(struct hs_uart *u);
 
 /* Event: the shift register is empty; the byte reaches the far end. */
 static void tx_done(void *arg)
 {
-	struct ev3_uart *u = arg;
+	struct hs_uart *u = arg;
 	uint8_t b = u->tsr;
-	uint32_t baud = ev3_uart_baud(u);
+	uint32_t baud = hs_uart_baud(u);
 
 	u->tx_ev = 0;
 	u->tsr_busy = false;
@@ -279,7 +275,7 @@ static void tx_done(void *arg)
 }
 
 /* Moves the next FIFO byte into the shift register if it is free. */
-static void tx_start(struct ev3_uart *u)
+static void tx_start(struct hs_uart *u)
 {
 	uint64_t ns;
 
@@ -301,7 +297,7 @@ static void tx_start(struct ev3_uart *u)
 
 static void read_rbr(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB) {
 		*value = u->dll;
@@ -321,7 +317,7 @@ static void read_rbr(void *ctx, const struct hs_access *a, uint32_t *value)
 /* THR write: queue a byte (DLL with DLAB). */
 static void write_thr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB) {
 		hs_reg_set(u->r, DLL, written & 0xFFU);
@@ -348,7 +344,7 @@ static void write_thr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* IER read (DLH with DLAB). */
 static void read_ier(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB)
 		*value = u->dlh;
@@ -357,7 +353,7 @@ static void read_ier(void *ctx, const struct hs_access *a, uint32_t *value)
 /* IER write (DLH with DLAB). */
 static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB) {
 		hs_reg_set(u->r, IER, old);
@@ -377,11 +373,11 @@ static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* IIR read; clears a THRE interrupt it reports. */
 static void read_iir(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 	unsigned id = iir_id(u);
 
-	*value = id | (fifo_mode(u) ? 0xC0U : 0U);
-	if (id == 0x2U) {           /* reading IIR clears a THRE interrupt */
+	*value = id | (fifo_mode(u) ? HS_UART_IIR_FIFOS_ON : 0U);
+	if (id == HS_UART_IIR_THR_EMPTY) {   /* reading IIR clears a THRE interrupt */
 		u->thre_int = false;
 		irq_update(u);
 	}
@@ -390,7 +386,7 @@ static void read_iir(void *ctx, const struct hs_access *a, uint32_t *value)
 /* FCR write: FIFO enable, clears, trigger. */
 static void write_fcr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	u->fcr = (uint8_t)(written & 0xC9U);
 	if (written & 0x02U) {      /* RXCLR */
@@ -406,7 +402,7 @@ static void write_fcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* LCR write: break control to the far end. */
 static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 	bool brk = nv & LCR_BC;
 
 	u->lcr = nv;
@@ -420,7 +416,7 @@ static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* LSR read: status now; error bits clear. */
 static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 	uint32_t v = 0;
 	bool any_err = false;
 
@@ -446,7 +442,7 @@ static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
 /* DLL/DLH write: new baud. */
 static void write_div(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (a->offset == DLL)
 		u->dll = nv;
@@ -458,7 +454,7 @@ static void write_div(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* MCR/MDR writes (cached). */
 static void write_mcr_mdr(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	if (a->offset == MCR)
 		u->mcr = nv;
@@ -469,7 +465,7 @@ static void write_mcr_mdr(void *ctx, const struct hs_access *a, uint32_t old, ui
 /* PWREMU_MGMT: reset bits flush receiver/transmitter. */
 static void write_pwremu(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct ev3_uart *u = ctx;
+	struct hs_uart *u = ctx;
 
 	u->pwremu = nv;
 	if (!(nv & PWREMU_URRST)) {
@@ -516,20 +512,19 @@ static const struct hs_reg uart_regs[] = {
 	  .after_write = write_mcr_mdr },
 };
 
-/* ---- devices ---- */
+/* ---- life cycle ---- */
 
-static ER uart_create_port(unsigned port, unsigned power, void **ctx)
+ER hs_uart_create(const struct hs_uart_cfg *cfg, struct hs_uart **out)
 {
-	struct ev3_uart *u = calloc(1, sizeof(*u));
+	struct hs_uart *u = calloc(1, sizeof(*u));
 	const struct hs_board_cfg *bc = hs_board_config();
 
 	if (!u)
 		return E_NOMEM;
-	u->cfg = &ev3_port_uart[port];
-	u->port = port;
+	u->cfg = cfg;
 	u->r = hs_region_add(&(struct hs_region_cfg){ .name = u->cfg->name, .phys = u->cfg->base,
 		.size = 0x1000, .regs = uart_regs, .nregs = HS_ARRAY_SIZE(uart_regs),
-		.power = power, .ctx = u });
+		.power = cfg->power, .ctx = u });
 	if (!u->r) {
 		free(u);
 		return E_PAR;
@@ -541,61 +536,22 @@ static ER uart_create_port(unsigned port, unsigned power, void **ctx)
 		hs_reg_set(u->r, PWREMU, u->pwremu);
 	}
 	u->line_high = true;
-	port_uarts[port] = u;
-	*ctx = u;
+	*out = u;
 	return E_OK;
 }
 
-/* Frees a UART. */
-static void uart_destroy(void *ctx)
+void hs_uart_destroy(struct hs_uart *u)
 {
-	struct ev3_uart *u = ctx;
-
+	if (!u)
+		return;
 	hs_event_cancel(&u->tx_ev);
 	hs_event_cancel(&u->timeout_ev);
 	hs_event_cancel(&u->break_ev);
-	if (port_uarts[u->port] == u)
-		port_uarts[u->port] = NULL;
 	free(u);
 }
 
-/* Board device: UART1 (input port 1). */
-static ER uart1_create(const struct hs_board_cfg *cfg, void **ctx)
-{
-	return uart_create_port(0, HS_PSC1_MODULE(HS_LPSC1_UART1), ctx);
-}
-
-/* Board device: UART0 (input port 2). */
-static ER uart0_create(const struct hs_board_cfg *cfg, void **ctx)
-{
-	return uart_create_port(1, HS_PSC0_MODULE(HS_LPSC0_UART0), ctx);
-}
-
-/* Board device: stand-in UART of input port 3. */
-static ER suart3_create(const struct hs_board_cfg *cfg, void **ctx)
-{
-	return uart_create_port(2, HS_NO_PSC, ctx);
-}
-
-/* Board device: stand-in UART of input port 4. */
-static ER suart4_create(const struct hs_board_cfg *cfg, void **ctx)
-{
-	return uart_create_port(3, HS_NO_PSC, ctx);
-}
-
-const struct hs_device ev3_uart1_device = { "UART1", uart1_create, NULL, uart_destroy };
-const struct hs_device ev3_uart0_device = { "UART0", uart0_create, NULL, uart_destroy };
-const struct hs_device ev3_suart_in3_device = { "SUART_IN3", suart3_create, NULL, uart_destroy };
-const struct hs_device ev3_suart_in4_device = { "SUART_IN4", suart4_create, NULL, uart_destroy };
-
-/* The UART of an input port. */
-struct ev3_uart *ev3_uart_of_port(unsigned port)
-{
-	return port < EV3_INPUT_PORTS ? port_uarts[port] : NULL;
-}
-
 /* Connects the far end. */
-void ev3_uart_set_peer(struct ev3_uart *u, const struct ev3_uart_peer *peer)
+void hs_uart_set_peer(struct hs_uart *u, const struct hs_uart_peer *peer)
 {
 	if (peer)
 		u->peer = *peer;
@@ -604,7 +560,7 @@ void ev3_uart_set_peer(struct ev3_uart *u, const struct ev3_uart_peer *peer)
 }
 
 /* UART counters. */
-const struct ev3_uart_stats *ev3_uart_get_stats(const struct ev3_uart *u)
+const struct hs_uart_stats *hs_uart_get_stats(const struct hs_uart *u)
 {
 	return &u->stats;
 }

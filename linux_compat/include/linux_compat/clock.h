@@ -6,6 +6,11 @@
 
 #include <stdint.h>
 #include <t_stddef.h>
+#include <kernel.h>
+
+/* The RTOS tick in nanoseconds, from the TOPPERS tick constants (kernel.h:
+ * TIC_NUME/TIC_DENO ms per tick); the resolution of hrtimers and delays. */
+#define LX_TICK_NS	((uint64_t)(TIC_NUME) * 1000000U / (TIC_DENO))
 
 /* Nanoseconds since boot; any context.  Host: the virtual clock; AM1808:
  * get_utm extended to 64 bits (needs a call at least every 71 minutes,

@@ -40,7 +40,7 @@
 
 /* linux_compat's configuration fragment (includes linux_irq_cfg). */
 extern const struct rtos_cfg linux_compat_cfg;
-/* The Linux interrupt lines (linux_compat/src/irq_cfg.c). */
+/* The Linux interrupt lines (linux_compat/mach-davinci/irq_cfg.c). */
 extern const struct rtos_cfg linux_irq_cfg;
 
 /* ATT_INI of linux_compat_cfg: clears all linux_compat state (a fresh boot). */
@@ -49,5 +49,12 @@ void lx_compat_boot(intptr_t exinf);
 void lx_compat_terminate(intptr_t exinf);
 /* The worker task's body: module inits, then the workqueues (and the unload at shutdown). */
 void lx_worker_task(intptr_t exinf);
+
+/* The boot command line, passed before the kernel starts as a boot loader
+ * passes Linux's (the string must stay valid): its "module.param=value" words
+ * set module parameters before the modules' init (e.g.
+ * "d_uart.port3_base=0x01d0c000").  AM1808: the firmware's start-up calls it;
+ * host: the simulated board sets it (this is rtos_host_set_boot_args). */
+void lx_compat_set_boot_args(const char *args);
 
 #endif /* _LINUX_COMPAT_CONFIG_H */

@@ -1,11 +1,19 @@
-/* linux_compat/workqueue.h — the worker's internals other parts of linux_compat call. */
+/*
+ * linux_compat/workqueue.h — the work FIFO (workqueue.c) and the worker
+ * task that serves it and runs the modules' life cycle (worker.c), as the
+ * rest of linux_compat calls them.
+ */
 #ifndef _LINUX_COMPAT_WORKQUEUE_H
 #define _LINUX_COMPAT_WORKQUEUE_H
 
 #include <stdbool.h>
 
-/* Forgets all queued work and workqueues (boot). */
+/* Forgets all queued work, workqueues and the worker's state (boot). */
 void lx_workqueue_reset(void);
+/* Runs the first queued work in the calling (worker) task; false if none is queued. */
+bool lx_workqueue_run_one(void);
+/* Forgets the worker's module life cycle state (lx_workqueue_reset). */
+void lx_worker_reset(void);
 /* True if the calling code runs in the worker task. */
 bool lx_in_worker(void);
 /* True once the worker has run the module inits and serves work. */

@@ -196,6 +196,63 @@ static ER check_flgs(const struct rtos_cfg *cfg)
 	return E_OK;
 }
 
+/* Checks the CRE_DTQ, CRE_PDQ and CRE_MTX rows and creates the objects. */
+static ER check_dtqs_pdqs_mtxs(const struct rtos_cfg *cfg)
+{
+	for (uint_t i = 0; i < cfg->ndtqs; i++) {
+		const struct rtos_dtq_cfg *r = &cfg->dtqs[i];
+
+		if (r->dtqid < 1 || r->dtqid > TNUM_DTQID)
+			return boot_fail(cfg, "CRE_DTQ", i, r->name, E_ID, "dtqid %d out of range 1..%d",
+					 r->dtqid, TNUM_DTQID);
+		if (dtq_table[r->dtqid] != NULL)
+			return boot_fail(cfg, "CRE_DTQ", i, r->name, E_OBJ, "dtqid %d already used by \"%s\"",
+					 r->dtqid, dtq_table[r->dtqid]->cfg->name ? dtq_table[r->dtqid]->cfg->name : "?");
+		if (r->dtqatr & ~(ATR)TA_TPRI)
+			return boot_fail(cfg, "CRE_DTQ", i, r->name, E_RSATR, "unknown attribute bits 0x%x",
+					 r->dtqatr & ~(ATR)TA_TPRI);
+		if (dtq_create(r) != E_OK)
+			return boot_fail(cfg, "CRE_DTQ", i, r->name, E_NOMEM, "out of memory");
+	}
+	for (uint_t i = 0; i < cfg->npdqs; i++) {
+		const struct rtos_pdq_cfg *r = &cfg->pdqs[i];
+
+		if (r->pdqid < 1 || r->pdqid > TNUM_PDQID)
+			return boot_fail(cfg, "CRE_PDQ", i, r->name, E_ID, "pdqid %d out of range 1..%d",
+					 r->pdqid, TNUM_PDQID);
+		if (pdq_table[r->pdqid] != NULL)
+			return boot_fail(cfg, "CRE_PDQ", i, r->name, E_OBJ, "pdqid %d already used by \"%s\"",
+					 r->pdqid, pdq_table[r->pdqid]->cfg->name ? pdq_table[r->pdqid]->cfg->name : "?");
+		if (r->pdqatr & ~(ATR)TA_TPRI)
+			return boot_fail(cfg, "CRE_PDQ", i, r->name, E_RSATR, "unknown attribute bits 0x%x",
+					 r->pdqatr & ~(ATR)TA_TPRI);
+		if (r->maxdpri < TMIN_DPRI || r->maxdpri > TMAX_DPRI)
+			return boot_fail(cfg, "CRE_PDQ", i, r->name, E_PAR, "maxdpri %d out of range %d..%d",
+					 r->maxdpri, TMIN_DPRI, TMAX_DPRI);
+		if (pdq_create(r) != E_OK)
+			return boot_fail(cfg, "CRE_PDQ", i, r->name, E_NOMEM, "out of memory");
+	}
+	for (uint_t i = 0; i < cfg->nmtxs; i++) {
+		const struct rtos_mtx_cfg *r = &cfg->mtxs[i];
+
+		if (r->mtxid < 1 || r->mtxid > TNUM_MTXID)
+			return boot_fail(cfg, "CRE_MTX", i, r->name, E_ID, "mtxid %d out of range 1..%d",
+					 r->mtxid, TNUM_MTXID);
+		if (mtx_table[r->mtxid] != NULL)
+			return boot_fail(cfg, "CRE_MTX", i, r->name, E_OBJ, "mtxid %d already used by \"%s\"",
+					 r->mtxid, mtx_table[r->mtxid]->cfg->name ? mtx_table[r->mtxid]->cfg->name : "?");
+		if (r->mtxatr != TA_NULL && r->mtxatr != TA_TPRI && r->mtxatr != TA_CEILING &&
+		    r->mtxatr != TA_INHERIT)
+			return boot_fail(cfg, "CRE_MTX", i, r->name, E_RSATR, "unknown attribute 0x%x", r->mtxatr);
+		if (r->mtxatr == TA_CEILING && (r->ceilpri < TMIN_TPRI || r->ceilpri > TMAX_TPRI))
+			return boot_fail(cfg, "CRE_MTX", i, r->name, E_PAR, "ceilpri %d out of range %d..%d",
+					 r->ceilpri, TMIN_TPRI, TMAX_TPRI);
+		if (mtx_create(r) != E_OK)
+			return boot_fail(cfg, "CRE_MTX", i, r->name, E_NOMEM, "out of memory");
+	}
+	return E_OK;
+}
+
 /* Checks the CRE_CYC and CRE_ALM rows and registers the handlers. */
 static ER check_cycs_alms(const struct rtos_cfg *cfg)
 {
@@ -312,6 +369,7 @@ static void free_objects(void)
 		free(flg_table[id]);
 		flg_table[id] = NULL;
 	}
+	dtq_pdq_mtx_reset();
 	cyc_reset();
 	svc_reset();
 	mem_reset();
@@ -320,6 +378,8 @@ static void free_objects(void)
 	time_reset();
 	paused_task = NULL;
 	run_active = false;
+	kernel_exited = false;
+	kernel_stalled = false;
 }
 
 /*
@@ -340,6 +400,20 @@ static void run_termination_routines(void)
 		for (uint_t i = configs[c]->nters; i-- > 0;)
 			configs[c]->ters[i].terrtn(configs[c]->ters[i].exinf);
 	terminating = false;
+}
+
+static const char *boot_args;    /* the boot loader's command line, kept across boots */
+
+/* Sets the command line later boots see. */
+void rtos_host_set_boot_args(const char *args)
+{
+	boot_args = args;
+}
+
+/* The command line, "" if none was set. */
+const char *rtos_host_boot_args(void)
+{
+	return boot_args != NULL ? boot_args : "";
 }
 
 /* Runs the ATT_TER routines, then frees task stacks and forgets objects and events. */
@@ -379,7 +453,8 @@ ER rtos_host_boot(const struct rtos_cfg *cfg)
 		ercd = check_ints(configs[i]);
 	for (uint_t i = 0; ercd == E_OK && i < nconfigs; i++)
 		if ((ercd = check_tasks(configs[i])) == E_OK && (ercd = check_sems(configs[i])) == E_OK &&
-		    (ercd = check_flgs(configs[i])) == E_OK && (ercd = check_cycs_alms(configs[i])) == E_OK)
+		    (ercd = check_flgs(configs[i])) == E_OK && (ercd = check_dtqs_pdqs_mtxs(configs[i])) == E_OK &&
+		    (ercd = check_cycs_alms(configs[i])) == E_OK)
 			ercd = check_isrs_svcs_mems_inis(configs[i]);
 	if (ercd == E_OK && (ercd = task_create_all()) != E_OK)
 		boot_fail(cfg, "CRE_TSK", 0, NULL, ercd, "cannot allocate task stacks");

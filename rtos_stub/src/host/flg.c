@@ -55,6 +55,7 @@ ER set_flg(ID flgid, FLGPTN setptn)
 	struct flgcb *f;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("set_flg", E_CTX);
 	if ((f = flg_lookup(flgid, &ercd)) == NULL)
@@ -70,6 +71,7 @@ ER iset_flg(ID flgid, FLGPTN setptn)
 	struct flgcb *f;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("iset_flg", E_CTX);
 	if ((f = flg_lookup(flgid, &ercd)) == NULL)
@@ -84,6 +86,7 @@ ER clr_flg(ID flgid, FLGPTN clrptn)
 	struct flgcb *f;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("clr_flg", E_CTX);
 	if ((f = flg_lookup(flgid, &ercd)) == NULL)
@@ -128,17 +131,20 @@ static ER flg_wait(const char *svc, ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN
 /* Waits until the pattern satisfies waiptn/wfmode; *p_flgptn gets the pattern at release. */
 ER wai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn)
 {
+	svc_charge();
 	return flg_wait("wai_flg", flgid, waiptn, wfmode, p_flgptn, TMO_FEVR, false);
 }
 
 /* wai_flg without waiting (E_TMOUT). */
 ER pol_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn)
 {
+	svc_charge();
 	return flg_wait("pol_flg", flgid, waiptn, wfmode, p_flgptn, TMO_POL, true);
 }
 
 /* wai_flg with a timeout in ms (E_TMOUT). */
 ER twai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn, TMO tmout)
 {
+	svc_charge();
 	return flg_wait("twai_flg", flgid, waiptn, wfmode, p_flgptn, tmout, false);
 }

@@ -240,6 +240,7 @@ ER dis_int(INTNO intno)
 {
 	ER ercd;
 
+	svc_charge();
 	if (cpu.locked)
 		return svc_result("dis_int", E_CTX);
 	if ((ercd = line_check(intno)) != E_OK)
@@ -253,6 +254,7 @@ ER ena_int(INTNO intno)
 {
 	ER ercd;
 
+	svc_charge();
 	if (cpu.locked)
 		return svc_result("ena_int", E_CTX);
 	if ((ercd = line_check(intno)) != E_OK)

@@ -110,7 +110,12 @@ void co_switch(struct coroutine *from, struct coroutine *to, bool from_dying);
 
 /* ---- Tasks ---- */
 
-enum wait_kind { WAIT_NONE, WAIT_SLP, WAIT_DLY, WAIT_SEM, WAIT_FLG };
+enum wait_kind {
+	WAIT_NONE, WAIT_SLP, WAIT_DLY, WAIT_SEM, WAIT_FLG,
+	WAIT_SDTQ, WAIT_RDTQ, WAIT_SPDQ, WAIT_RPDQ, WAIT_MTX,
+};
+
+struct mtxcb;
 
 /* A time event: fires in the tick handler when the tick count reaches tick. */
 struct tmevt {
@@ -125,8 +130,14 @@ struct tcb {
 	const struct rtos_task_cfg *cfg;
 	const char *cfg_name;            /* configuration that declared it */
 	ID       id;
-	STAT     state;                  /* TTS_DMT, TTS_RDY (includes running), TTS_WAI */
-	PRI      bpri;                   /* base priority = current (no mutexes) */
+	STAT     state;                  /* TTS_DMT, TTS_RDY (includes running), TTS_WAI, TTS_SUS */
+	PRI      bpri;                   /* current priority: what the queues order by */
+	PRI      base_pri;               /* base priority (chg_pri); mutexes may raise bpri above it */
+	bool     suspended;              /* sus_tsk: TTS_SUS, or TTS_WAS while state is TTS_WAI */
+	struct mtxcb *mtx_last;          /* the mutex it locked last (a stack through mtxcb.prev_locked) */
+	intptr_t wdata;                  /* data queues: the element sent or received */
+	PRI      wdpri;                  /* priority data queues: its priority */
+	uint_t   nocharge_depth;         /* inside a call whose cost covers its nested calls (cal_svc) */
 	uint_t   actcnt;
 	uint_t   wupcnt;
 	enum wait_kind wait;
@@ -146,6 +157,13 @@ extern struct tcb *schedtsk;   /* the highest-priority ready task (NULL: none) *
 
 /* Marks t ready at the tail of its priority queue. */
 void ready_insert_tail(struct tcb *t);
+/* Marks t ready at the head of its priority queue. */
+void ready_insert_head(struct tcb *t);
+/* Sets t's current priority: a ready task goes to the head (mutex) or tail (chg_pri)
+ * of its new priority, a waiting one moves in a priority-ordered wait queue. */
+void task_set_priority(struct tcb *t, PRI pri, bool head);
+/* True if the queue t waits in is in priority order. */
+bool wait_queue_tpri(const struct tcb *t);
 /* Removes t from the ready queue. */
 void ready_remove(struct tcb *t);
 /* Moves the first ready task of pri to the tail of its priority. */
@@ -160,6 +178,8 @@ void task_switch(void);
 void task_activate(struct tcb *t);
 /* Puts runtsk to wait; returns the release code (E_OK, E_TMOUT, E_RLWAI...). */
 ER wait_block(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO tmout);
+/* wait_block's first half: runtsk waits from now on; the caller then calls task_switch. */
+void wait_enter(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO tmout);
 /* Releases a waiting task with ercd; it becomes ready (no dispatch here). */
 void wait_release(struct tcb *t, ER ercd);
 /* Reinserts a waiting task after a priority change (priority-ordered queues). */
@@ -187,6 +207,51 @@ struct flgcb {
 };
 extern struct flgcb *flg_table[TNUM_FLGID + 1];
 
+/* ---- Data queues, priority data queues, mutexes ---- */
+struct dtqcb {
+	const struct rtos_dtq_cfg *cfg;
+	intptr_t *buf;           /* ring of cfg->dtqcnt elements */
+	uint_t head, count;
+	struct queue swq;        /* senders waiting (FIFO or TA_TPRI) */
+	struct queue rwq;        /* receivers waiting (FIFO) */
+};
+extern struct dtqcb *dtq_table[TNUM_DTQID + 1];
+
+struct pdq_elem {
+	intptr_t data;
+	PRI      pri;
+};
+struct pdqcb {
+	const struct rtos_pdq_cfg *cfg;
+	struct pdq_elem *buf;    /* cfg->pdqcnt elements, sorted by priority then arrival */
+	uint_t count;
+	struct queue swq;
+	struct queue rwq;
+};
+extern struct pdqcb *pdq_table[TNUM_PDQID + 1];
+
+struct mtxcb {
+	const struct rtos_mtx_cfg *cfg;
+	struct tcb *owner;       /* NULL: unlocked */
+	struct mtxcb *prev_locked;   /* the owner's mutex locked before this one */
+	struct queue wq;         /* waiters, in priority order unless TA_NULL */
+};
+extern struct mtxcb *mtx_table[TNUM_MTXID + 1];
+
+/* The priority t runs at: its base priority raised by the ceilings of the
+ * mutexes it holds and by the waiters of those with priority inheritance. */
+PRI  mtx_effective_priority(const struct tcb *t);
+/* Recomputes t's current priority after a mutex change; follows inheritance chains. */
+void mtx_update_priority(struct tcb *t);
+/* Unlocks every mutex t holds (its end: ext_tsk, ter_tsk), handing each to its first waiter. */
+void mtx_release_all(struct tcb *t);
+/* A waiter left mutex mtxid's queue (timeout, rel_wai, ter_tsk): the owner's priority may drop. */
+void mtx_waiter_left(ID mtxid);
+/* Allocates the control blocks of one configuration's rows (already checked). */
+ER   dtq_create(const struct rtos_dtq_cfg *cfg);
+ER   pdq_create(const struct rtos_pdq_cfg *cfg);
+ER   mtx_create(const struct rtos_mtx_cfg *cfg);
+void dtq_pdq_mtx_reset(void);
 /* ---- Time ---- */
 extern uint64_t now_ns;        /* the virtual clock */
 extern uint64_t tick_done;     /* last tick index processed by the tick handler */
@@ -247,6 +312,7 @@ extern uint64_t run_deadline;
 extern bool kernel_booted;
 extern bool terminating;       /* rtos_host_shutdown is running the ATT_TER routines */
 extern struct tcb *paused_task;   /* a task stopped at the run deadline inside rtos_host_consume */
+extern bool kernel_exited;        /* ext_ker was called: nothing runs until the next boot */
 /* Enters the harness from a task paused at the run deadline mid-consume. */
 void pause_to_harness(void);
 
@@ -279,6 +345,21 @@ void bug_reset(void);
 void syslog_reset(void);
 /* Name of an error code ("E_CTX"), or "E_?". */
 const char *ercd_name(ER ercd);
+
+/* ---- CPU cost of service calls (cost.c) and stall watch (stall.c) ---- */
+extern struct rtos_host_cpu_cost cpu_cost;
+/* The first step of every service call: its CPU time, charged to the calling
+ * task (which may be preempted meanwhile).  Out of line in cost.c, so that
+ * make bench's instruction counter sees one call of simulation code. */
+void svc_charge(void);
+/* cal_svc's charge: the extended service's cost, and no charge for the calls
+ * it makes; returns the calling task (NULL in non-task context) for svc_ext_exit. */
+struct tcb *svc_ext_enter(FN fncd);
+void svc_ext_exit(struct tcb *caller);
+/* The stall watch runs while the harness runs the system. */
+void stall_watch_start(void);
+void stall_watch_stop(void);
+extern bool kernel_stalled;
 
 /* ---- Context checks, TOPPERS shape ---- */
 static inline bool ctx_is_task(void)

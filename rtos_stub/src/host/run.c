@@ -6,11 +6,14 @@
  * otherwise it advances virtual time to the next event and processes it.
  * Nothing is stepped per nanosecond.
  */
+#include <stdlib.h>
+
 #include "kernel_impl.h"
 
 bool run_active;
 uint64_t run_deadline;
 struct tcb *paused_task;
+bool kernel_exited;
 
 /* From the harness: runs the highest-priority ready task until the CPU is idle again. */
 static void harness_dispatch(void)
@@ -49,6 +52,41 @@ void pause_to_harness(void)
 	co_switch(&t->co, &harness_co, false);
 }
 
+/* From a task after ext_ker: leaves for the harness for good (the task is never resumed). */
+static __attribute__((noreturn)) void task_leave_for_exit(void)
+{
+	struct tcb *t = runtsk;
+
+	cpu.locked = false;
+	cpu.dsp_disabled = false;
+	runtsk = NULL;
+	cpu.kind = EXEC_IDLE;
+	cpu.exec_id = 0;
+	co_switch(&t->co, &harness_co, true);
+	abort();
+}
+
+/* Ends the kernel: nothing runs until the next boot; rtos_host_shutdown then runs
+ * the ATT_TER routines.  From a task it does not return; from a handler it
+ * returns and the system stops when the CPU next reaches a task or the harness. */
+ER ext_ker(void)
+{
+	if (!kernel_booted)
+		return svc_result("ext_ker", E_CTX);
+	kernel_exited = true;
+	if (trace_on())
+		rtos_host_trace("kernel", "ext_ker from %s", rtos_host_context_name());
+	if (cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && cpu.irq_defer == 0)
+		task_leave_for_exit();
+	return E_OK;
+}
+
+/* True after ext_ker (until the next boot). */
+bool rtos_host_exited(void)
+{
+	return kernel_exited;
+}
+
 /* True if nothing but time events is left to do. */
 static bool idle_reached(void)
 {
@@ -62,6 +100,8 @@ static bool harness_may_run(const char *fn)
 		rtos_host_bug("harness", "%s before rtos_host_boot", fn);
 		return false;
 	}
+	if (kernel_exited)
+		return false;	/* ext_ker: the system has ended, time stands still */
 	if (run_active || cpu.kind != EXEC_IDLE || cpu.isr_depth != 0) {
 		rtos_host_bug("harness", "%s called from inside the kernel (%s)", fn, rtos_host_context_name());
 		return false;
@@ -76,9 +116,12 @@ static bool run_loop(uint64_t t, bool until_idle)
 
 	run_active = true;
 	run_deadline = t;
+	stall_watch_start();
 	for (;;) {
 		uint64_t next;
 
+		if (kernel_exited)
+			break;
 		if (paused_task != NULL) {
 			if (now_ns >= t)
 				break;
@@ -103,6 +146,7 @@ static bool run_loop(uint64_t t, bool until_idle)
 		now_ns = next;
 		event_run_next();
 	}
+	stall_watch_stop();
 	run_active = false;
 	return idle;
 }
@@ -153,6 +197,8 @@ static __attribute__((noinline)) void consume_slow(uint64_t ns)
 
 		if (task_level) {
 			irq_dispatch_pending();
+			if (kernel_exited)
+				task_leave_for_exit();
 			dispatch_if_needed();
 		}
 		limit = remaining > UINT64_MAX - now_ns ? UINT64_MAX : now_ns + remaining;

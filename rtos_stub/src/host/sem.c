@@ -41,6 +41,7 @@ ER sig_sem(ID semid)
 	struct semcb *s;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("sig_sem", E_CTX);
 	if ((s = sem_lookup(semid, &ercd)) == NULL)
@@ -56,6 +57,7 @@ ER isig_sem(ID semid)
 	struct semcb *s;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("isig_sem", E_CTX);
 	if ((s = sem_lookup(semid, &ercd)) == NULL)
@@ -88,17 +90,20 @@ static ER sem_wait(const char *svc, ID semid, TMO tmout, bool polling)
 /* Acquires one resource, waiting as long as needed. */
 ER wai_sem(ID semid)
 {
+	svc_charge();
 	return sem_wait("wai_sem", semid, TMO_FEVR, false);
 }
 
 /* Acquires one resource if available, else E_TMOUT. */
 ER pol_sem(ID semid)
 {
+	svc_charge();
 	return sem_wait("pol_sem", semid, TMO_POL, true);
 }
 
 /* Acquires one resource, waiting at most tmout ms (E_TMOUT). */
 ER twai_sem(ID semid, TMO tmout)
 {
+	svc_charge();
 	return sem_wait("twai_sem", semid, tmout, false);
 }

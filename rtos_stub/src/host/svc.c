@@ -20,11 +20,17 @@ static uint_t nregions[TNUM_DOMID + 1];
 ER_UINT cal_svc(FN fncd, intptr_t par1, intptr_t par2, intptr_t par3, intptr_t par4, intptr_t par5)
 {
 	EXTSVC fn;
+	struct tcb *caller;
+	ER_UINT ercd;
 
-	if ((uint_t)fncd - 1U >= (uint_t)TNUM_FNCD || (fn = svc_table[fncd]) == NULL)
+	if ((uint_t)fncd - 1U >= (uint_t)TNUM_FNCD || (fn = svc_table[fncd]) == NULL) {
+		svc_charge();
 		return svc_result("cal_svc", E_RSFN);
-	return fn(par1, par2, par3, par4, par5,
-		  cpu.kind == EXEC_TASK ? runtsk->cfg->domid : TDOM_KERNEL);
+	}
+	caller = svc_ext_enter(fncd);
+	ercd = fn(par1, par2, par3, par4, par5, caller != NULL ? caller->cfg->domid : TDOM_KERNEL);
+	svc_ext_exit(caller);
+	return ercd;
 }
 
 /* The domain of the calling task (TDOM_KERNEL in non-task context). */
@@ -61,6 +67,7 @@ ER prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode)
 	uintptr_t lo = (uintptr_t)base, hi;
 	struct mem_region stack;
 
+	svc_charge();
 	if (tskid == TSK_SELF) {		/* the common case: no lookup */
 		if (cpu.kind != EXEC_TASK)
 			return svc_result("prb_mem", E_ID);

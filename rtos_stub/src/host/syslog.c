@@ -24,6 +24,7 @@ void syslog(uint_t prio, const char *format, ...)
 	char msg[400];
 	va_list ap;
 
+	svc_charge();
 	if (prio > LOG_DEBUG)
 		prio = LOG_DEBUG;
 	if (!(low_mask & LOG_MASK(prio)) && !((log_mask & LOG_MASK(prio)) && trace_on()))
@@ -42,6 +43,7 @@ void syslog(uint_t prio, const char *format, ...)
 /* Sets which priorities reach the trace (logmask) and the console (lowmask). */
 ER syslog_msk_log(uint_t logmask, uint_t lowmask)
 {
+	svc_charge();
 	log_mask = logmask;
 	low_mask = lowmask;
 	return E_OK;

@@ -48,6 +48,14 @@ void ready_insert_tail(struct tcb *t)
 		schedtsk = t;
 }
 
+/* Marks t ready at the head of its priority queue. */
+void ready_insert_head(struct tcb *t)
+{
+	queue_insert_before(ready_queue[t->bpri].next, &t->node);
+	ready_map |= 1U << (t->bpri - 1);
+	update_schedtsk();
+}
+
 /* Removes t from the ready queue. */
 void ready_remove(struct tcb *t)
 {
@@ -75,7 +83,8 @@ void ready_rotate(PRI pri)
 static void switch_from_task(bool dying)
 {
 	struct tcb *from = runtsk;
-	struct tcb *to = schedtsk;
+	/* after ext_ker from a handler, the CPU goes back to the harness for good */
+	struct tcb *to = kernel_exited ? NULL : schedtsk;
 	struct coroutine *to_co;
 
 	if (to == from && !dying)
@@ -108,7 +117,7 @@ void task_switch(void)
 /* Switches tasks if the current task context may and should be preempted. */
 void dispatch_if_needed(void)
 {
-	if (schedtsk != runtsk && cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && !cpu.locked &&
+	if ((schedtsk != runtsk || kernel_exited) && cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && !cpu.locked &&
 	    !cpu.dsp_disabled && cpu.sil_lock == 0 && cpu.irq_defer == 0)
 		switch_from_task(false);
 }
@@ -121,6 +130,7 @@ __attribute__((noreturn)) static void task_exit_running(void)
 	/* TOPPERS: ext_tsk releases the CPU lock and re-enables dispatching. */
 	cpu.locked = false;
 	cpu.dsp_disabled = false;
+	mtx_release_all(t);
 	ready_remove(t);
 	t->state = TTS_DMT;
 	trace_task("exit", t);
@@ -147,6 +157,10 @@ void task_activate(struct tcb *t)
 {
 	t->state = TTS_RDY;
 	t->bpri = t->cfg->itskpri;
+	t->base_pri = t->cfg->itskpri;
+	t->suspended = false;
+	t->mtx_last = NULL;
+	t->nocharge_depth = 0;
 	t->wupcnt = 0;
 	t->wait = WAIT_NONE;
 	t->co.restart = true;
@@ -156,6 +170,14 @@ void task_activate(struct tcb *t)
 
 /* Puts runtsk to wait; returns the release code (E_OK, E_TMOUT, E_RLWAI...). */
 ER wait_block(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO tmout)
+{
+	wait_enter(kind, objid, wq, tpri, tmout);
+	task_switch();
+	return runtsk->wercd;
+}
+
+/* Puts runtsk into the waiting state and its queue, without switching yet. */
+void wait_enter(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO tmout)
 {
 	struct tcb *t = runtsk;
 
@@ -170,8 +192,6 @@ ER wait_block(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO tm
 	if (tmout != TMO_FEVR)
 		tmevt_enqueue(&t->tmevt, tick_after_ms((RELTIM)tmout));
 	trace_task("wait", t);
-	task_switch();
-	return t->wercd;
 }
 
 /* Inserts a waiting task into its wait queue (FIFO, or by priority after its peers). */
@@ -192,9 +212,11 @@ void wait_requeue(struct tcb *t, bool tpri)
 	queue_insert_before(pos, &t->node);
 }
 
-/* Releases a waiting task with ercd; it becomes ready (the caller dispatches). */
-void wait_release(struct tcb *t, ER ercd)
+/* Takes t out of its wait (queue, timeout) without making it ready. */
+static void wait_cancel(struct tcb *t)
 {
+	enum wait_kind kind = t->wait;
+
 	if (t->wait_queue != NULL) {
 		queue_remove(&t->node);
 		t->wait_queue = NULL;
@@ -202,12 +224,61 @@ void wait_release(struct tcb *t, ER ercd)
 	if (tmevt_queued(&t->tmevt))
 		tmevt_dequeue(&t->tmevt);
 	t->wait = WAIT_NONE;
+	/* leaving a mutex's queue other than by getting it may lower the owner's priority */
+	if (kind == WAIT_MTX && mtx_table[t->wobjid]->owner != t)
+		mtx_waiter_left(t->wobjid);
+}
+
+/* Releases a waiting task with ercd; it becomes ready, or suspended after sus_tsk (the caller dispatches). */
+void wait_release(struct tcb *t, ER ercd)
+{
+	wait_cancel(t);
 	t->wercd = ercd;
-	t->state = TTS_RDY;
 	if (trace_on())
 		rtos_host_trace("kernel", "release %s %s", t->cfg->name ? t->cfg->name : "?",
 				ercd_name(ercd));
+	if (t->suspended) {
+		t->state = TTS_SUS;
+		return;
+	}
+	t->state = TTS_RDY;
 	ready_insert_tail(t);
+}
+
+/* True if the queue t waits in is in priority order. */
+bool wait_queue_tpri(const struct tcb *t)
+{
+	switch (t->wait) {
+	case WAIT_SEM:
+		return (sem_table[t->wobjid]->cfg->sematr & TA_TPRI) != 0;
+	case WAIT_FLG:
+		return (flg_table[t->wobjid]->cfg->flgatr & TA_TPRI) != 0;
+	case WAIT_SDTQ:
+		return (dtq_table[t->wobjid]->cfg->dtqatr & TA_TPRI) != 0;
+	case WAIT_SPDQ:
+		return (pdq_table[t->wobjid]->cfg->pdqatr & TA_TPRI) != 0;
+	case WAIT_MTX:
+		return mtx_table[t->wobjid]->cfg->mtxatr != TA_NULL;
+	default:
+		return false;
+	}
+}
+
+/* Sets t's current priority; head: a ready task goes first among its new peers. */
+void task_set_priority(struct tcb *t, PRI pri, bool head)
+{
+	if (t->state == TTS_RDY) {
+		ready_remove(t);
+		t->bpri = pri;
+		if (head)
+			ready_insert_head(t);
+		else
+			ready_insert_tail(t);
+	} else {
+		t->bpri = pri;
+		if (t->state == TTS_WAI && wait_queue_tpri(t))
+			wait_requeue(t, true);
+	}
 }
 
 /* Time event of a waiting task: E_TMOUT (E_OK for dly_tsk). */
@@ -237,12 +308,17 @@ struct tcb *task_lookup(ID tskid, bool self_ok, ER *ercd)
 /* Checks an output pointer from the caller: E_OK, or E_MACV (NULL, or outside its domain). */
 ER check_out_ptr(const void *p, SIZE size)
 {
+	ER ercd;
+
 	if (p == NULL)
 		return E_MACV;
-	if (cpu.kind == EXEC_TASK && runtsk->cfg->domid != TDOM_KERNEL &&
-	    prb_mem(p, size, TSK_SELF, TPM_WRITE) != E_OK)
-		return E_MACV;
-	return E_OK;
+	if (cpu.kind != EXEC_TASK || runtsk->cfg->domid == TDOM_KERNEL)
+		return E_OK;
+	/* part of the calling service call, which has paid for it */
+	runtsk->nocharge_depth++;
+	ercd = prb_mem(p, size, TSK_SELF, TPM_WRITE);
+	runtsk->nocharge_depth--;
+	return ercd != E_OK ? E_MACV : E_OK;
 }
 
 /* Creates the control blocks and stacks of the configured tasks (rows already checked). */
@@ -263,6 +339,7 @@ ER task_create_all(void)
 		queue_init(&t->node);
 		t->state = TTS_DMT;
 		t->bpri = t->cfg->itskpri;
+		t->base_pri = t->cfg->itskpri;
 		t->tmevt.heap_index = UINT32_MAX;
 		t->tmevt.callback = wait_timeout;
 		if (!co_create(&t->co, size, task_entry))
@@ -307,6 +384,7 @@ ER act_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("act_tsk", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -322,6 +400,7 @@ ER iact_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("iact_tsk", E_CTX);
 	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
@@ -336,6 +415,7 @@ ER_UINT can_act(ID tskid)
 	ER ercd = E_OK;
 	uint_t n;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("can_act", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -348,6 +428,7 @@ ER_UINT can_act(ID tskid)
 /* Ends the calling task; from non-task context it is a reported bug and returns. */
 void ext_tsk(void)
 {
+	svc_charge();
 	if (cpu.kind != EXEC_TASK || cpu.isr_depth != 0) {
 		svc_result("ext_tsk", E_CTX);
 		rtos_host_bug("ext_tsk", "called from non-task context (E_CTX)");
@@ -363,6 +444,7 @@ ER chg_pri(ID tskid, PRI tskpri)
 	ER ercd = E_OK;
 	PRI newpri;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("chg_pri", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -372,17 +454,17 @@ ER chg_pri(ID tskid, PRI tskpri)
 	if (t->state == TTS_DMT)
 		return svc_result("chg_pri", E_OBJ);
 	newpri = tskpri == TPRI_INI ? t->cfg->itskpri : tskpri;
-	if (t->state == TTS_RDY) {
-		ready_remove(t);
-		t->bpri = newpri;
-		ready_insert_tail(t);
-	} else {
-		t->bpri = newpri;
-		if (t->wait == WAIT_SEM)
-			wait_requeue(t, (sem_table[t->wobjid]->cfg->sematr & TA_TPRI) != 0);
-		else if (t->wait == WAIT_FLG)
-			wait_requeue(t, (flg_table[t->wobjid]->cfg->flgatr & TA_TPRI) != 0);
-	}
+	/* HRP2: a base priority above the ceiling of a mutex the task holds or waits for */
+	for (const struct mtxcb *m = t->mtx_last; m != NULL; m = m->prev_locked)
+		if (m->cfg->mtxatr == TA_CEILING && newpri < m->cfg->ceilpri)
+			return svc_result("chg_pri", E_ILUSE);
+	if (t->state == TTS_WAI && t->wait == WAIT_MTX && mtx_table[t->wobjid]->cfg->mtxatr == TA_CEILING &&
+	    newpri < mtx_table[t->wobjid]->cfg->ceilpri)
+		return svc_result("chg_pri", E_ILUSE);
+	t->base_pri = newpri;
+	task_set_priority(t, mtx_effective_priority(t), false);
+	if (t->state == TTS_WAI && t->wait == WAIT_MTX)
+		mtx_waiter_left(t->wobjid);	/* the owner inherits the waiter's new priority */
 	dispatch_if_needed();
 	return E_OK;
 }
@@ -393,6 +475,7 @@ ER get_pri(ID tskid, PRI *p_tskpri)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("get_pri", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -408,6 +491,7 @@ ER get_pri(ID tskid, PRI *p_tskpri)
 /* ID of the running task (task context). */
 ER get_tid(ID *p_tskid)
 {
+	svc_charge();
 	if (cpu.kind != EXEC_TASK)
 		return svc_result("get_tid", E_CTX);
 	if (check_out_ptr(p_tskid, sizeof(*p_tskid)) != E_OK)
@@ -419,6 +503,7 @@ ER get_tid(ID *p_tskid)
 /* ID of the task the interrupt came on top of, TSK_NONE if the CPU was idle. */
 ER iget_tid(ID *p_tskid)
 {
+	svc_charge();
 	if (cpu.kind == EXEC_TASK)
 		return svc_result("iget_tid", E_CTX);
 	if (p_tskid == NULL)
@@ -432,6 +517,7 @@ ER iget_tid(ID *p_tskid)
 /* Sleeps until woken (a queued wakeup is consumed at once). */
 ER slp_tsk(void)
 {
+	svc_charge();
 	if (!ctx_may_block())
 		return svc_result("slp_tsk", E_CTX);
 	if (runtsk->wupcnt > 0) {
@@ -446,6 +532,7 @@ ER tslp_tsk(TMO tmout)
 {
 	struct tcb *t;
 
+	svc_charge();
 	if (!ctx_may_block())
 		return svc_result("tslp_tsk", E_CTX);
 	if (!tmout_valid(tmout))
@@ -481,6 +568,7 @@ ER wup_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("wup_tsk", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -496,6 +584,7 @@ ER iwup_tsk(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("iwup_tsk", E_CTX);
 	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
@@ -510,6 +599,7 @@ ER_UINT can_wup(ID tskid)
 	ER ercd = E_OK;
 	uint_t n;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("can_wup", E_CTX);
 	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
@@ -536,6 +626,7 @@ ER rel_wai(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("rel_wai", E_CTX);
 	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
@@ -551,6 +642,7 @@ ER irel_wai(ID tskid)
 	struct tcb *t;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("irel_wai", E_CTX);
 	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
@@ -561,9 +653,95 @@ ER irel_wai(ID tskid)
 /* Delays the calling task for at least dlytim ms (rel_wai ends it early with E_RLWAI). */
 ER dly_tsk(RELTIM dlytim)
 {
+	svc_charge();
 	if (!ctx_may_block())
 		return svc_result("dly_tsk", E_CTX);
 	if (dlytim > TMAX_RELTIM)
 		return svc_result("dly_tsk", E_PAR);
 	return svc_result("dly_tsk", wait_block(WAIT_DLY, 0, NULL, false, (TMO)dlytim));
+}
+
+/* ---- Suspension and termination ---- */
+
+/* Suspends a task: a ready one leaves the ready queue, a waiting one keeps waiting (TTS_WAS). */
+ER sus_tsk(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	svc_charge();
+	if (!ctx_task_unlocked())
+		return svc_result("sus_tsk", E_CTX);
+	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+		return svc_result("sus_tsk", ercd);
+	if (t == runtsk && cpu.dsp_disabled)
+		return svc_result("sus_tsk", E_CTX);
+	if (t->state == TTS_DMT)
+		return svc_result("sus_tsk", E_OBJ);
+	if (t->suspended)
+		return svc_result("sus_tsk", E_QOVR);
+	t->suspended = true;
+	if (t->state == TTS_RDY) {
+		ready_remove(t);
+		t->state = TTS_SUS;
+	}
+	trace_task("suspend", t);
+	dispatch_if_needed();
+	return E_OK;
+}
+
+/* Resumes a suspended task (E_OBJ if it is not suspended). */
+ER rsm_tsk(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	svc_charge();
+	if (!ctx_task_unlocked())
+		return svc_result("rsm_tsk", E_CTX);
+	if ((t = task_lookup(tskid, false, &ercd)) == NULL)
+		return svc_result("rsm_tsk", ercd);
+	if (!t->suspended)
+		return svc_result("rsm_tsk", E_OBJ);
+	t->suspended = false;
+	if (t->state == TTS_SUS) {
+		t->state = TTS_RDY;
+		ready_insert_tail(t);
+	}
+	trace_task("resume", t);
+	dispatch_if_needed();
+	return E_OK;
+}
+
+/* Terminates another task: out of its queues, its mutexes unlocked; a queued activation restarts it. */
+ER ter_tsk(ID tskid)
+{
+	struct tcb *t;
+	ER ercd = E_OK;
+
+	svc_charge();
+	if (!ctx_task_unlocked())
+		return svc_result("ter_tsk", E_CTX);
+	if ((t = task_lookup(tskid, true, &ercd)) == NULL)
+		return svc_result("ter_tsk", ercd);
+	if (t == runtsk)
+		return svc_result("ter_tsk", E_ILUSE);
+	if (t->state == TTS_DMT)
+		return svc_result("ter_tsk", E_OBJ);
+	if (t->state == TTS_RDY)
+		ready_remove(t);
+	else if (t->state == TTS_WAI)
+		wait_cancel(t);
+	if (t == paused_task)
+		paused_task = NULL;
+	t->state = TTS_DMT;
+	t->suspended = false;
+	mtx_release_all(t);
+	trace_task("terminate", t);
+	if (t->actcnt > 0) {
+		t->actcnt--;
+		task_activate(t);
+	}
+	dispatch_if_needed();
+	return E_OK;
 }

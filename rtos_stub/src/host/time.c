@@ -4,7 +4,7 @@
  *
  * Time events are kept in a heap keyed by (tick index, sequence) and are
  * processed by the kernel's part of the tick interrupt (INTNO_TICK).  Tick k
- * is the boundary at k * TIC_NS.  A relative time of ms from now expires at
+ * is the boundary at k * RTOS_HOST_TICK_NS.  A relative time of ms from now expires at
  * the first tick boundary at or after now + ms, and never at a tick already
  * processed (docs/rtos-stub.md, "Timing rules").  The tick interrupt is only
  * raised at boundaries where something is due, unless ISRs are attached to
@@ -97,7 +97,7 @@ static void tick_fire(void *arg);
 /* Makes sure a tick interrupt happens at boundary tick (or earlier). */
 static void tick_need(uint64_t tick)
 {
-	uint64_t t = tick * TIC_NS;
+	uint64_t t = tick * RTOS_HOST_TICK_NS;
 
 	if (tick_every)
 		return;
@@ -152,7 +152,7 @@ void tmevt_dequeue(struct tmevt *ev)
 uint64_t tick_after_ms(RELTIM ms)
 {
 	uint64_t due = now_ns + (uint64_t)ms * NS_PER_MS;
-	uint64_t tick = (due + TIC_NS - 1) / TIC_NS;
+	uint64_t tick = (due + RTOS_HOST_TICK_NS - 1) / RTOS_HOST_TICK_NS;
 
 	return tick > tick_done ? tick : tick_done + 1;
 }
@@ -166,7 +166,7 @@ static void tick_fire(void *arg)
 	tick_event = 0;
 	tick_event_time = UINT64_MAX;
 	if (tick_every) {
-		tick_event_time = (now_ns / TIC_NS + 1) * TIC_NS;
+		tick_event_time = (now_ns / RTOS_HOST_TICK_NS + 1) * RTOS_HOST_TICK_NS;
 		tick_event = event_at_kernel(tick_event_time, tick_fire, NULL);
 	}
 	rtos_host_irq_raise(INTNO_TICK);
@@ -175,7 +175,7 @@ static void tick_fire(void *arg)
 /* The kernel's part of the tick interrupt: processes every time event due by now. */
 void tick_handler(void)
 {
-	uint64_t cur = now_ns / TIC_NS;
+	uint64_t cur = now_ns / RTOS_HOST_TICK_NS;
 
 	tick_done = cur;
 	while (tm_len > 0 && tm_heap[0]->tick <= cur) {
@@ -210,8 +210,8 @@ void time_reset(void)
 void time_start(void)
 {
 	if (tick_every) {
-		tick_event_time = TIC_NS;
-		tick_event = event_at_kernel(TIC_NS, tick_fire, NULL);
+		tick_event_time = RTOS_HOST_TICK_NS;
+		tick_event = event_at_kernel(RTOS_HOST_TICK_NS, tick_fire, NULL);
 	}
 }
 
@@ -227,7 +227,7 @@ static uint64_t cyc_due_ns(const struct cyccb *c, uint64_t k)
 /* Tick at which activation k runs: the first boundary at or after its due time. */
 static uint64_t cyc_tick(const struct cyccb *c, uint64_t k)
 {
-	return (cyc_due_ns(c, k) + TIC_NS - 1) / TIC_NS;
+	return (cyc_due_ns(c, k) + RTOS_HOST_TICK_NS - 1) / RTOS_HOST_TICK_NS;
 }
 
 /* Tick callback of a cyclic handler: queues the next activation, then runs the handler. */
@@ -280,6 +280,7 @@ ER sta_cyc(ID cycid)
 	struct cyccb *c;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("sta_cyc", E_CTX);
 	if ((c = cyc_lookup(cycid, &ercd)) == NULL)
@@ -301,6 +302,7 @@ ER stp_cyc(ID cycid)
 	struct cyccb *c;
 	ER ercd = E_OK;
 
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("stp_cyc", E_CTX);
 	if ((c = cyc_lookup(cycid, &ercd)) == NULL)
@@ -367,6 +369,7 @@ static ER alm_stop(const char *svc, ID almid)
 /* Starts (or restarts) an alarm almtim ms from now. */
 ER sta_alm(ID almid, RELTIM almtim)
 {
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("sta_alm", E_CTX);
 	return alm_start("sta_alm", almid, almtim);
@@ -375,6 +378,7 @@ ER sta_alm(ID almid, RELTIM almtim)
 /* sta_alm from non-task context. */
 ER ista_alm(ID almid, RELTIM almtim)
 {
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("ista_alm", E_CTX);
 	return alm_start("ista_alm", almid, almtim);
@@ -383,6 +387,7 @@ ER ista_alm(ID almid, RELTIM almtim)
 /* Stops an alarm. */
 ER stp_alm(ID almid)
 {
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("stp_alm", E_CTX);
 	return alm_stop("stp_alm", almid);
@@ -391,6 +396,7 @@ ER stp_alm(ID almid)
 /* stp_alm from non-task context. */
 ER istp_alm(ID almid)
 {
+	svc_charge();
 	if (!ctx_nontask_unlocked())
 		return svc_result("istp_alm", E_CTX);
 	return alm_stop("istp_alm", almid);
@@ -465,17 +471,19 @@ void cyc_reset(void)
 /* System time in ms since boot, as the tick counter sees it (whole ticks). */
 ER get_tim(SYSTIM *p_systim)
 {
+	svc_charge();
 	if (!ctx_task_unlocked())
 		return svc_result("get_tim", E_CTX);
 	if (check_out_ptr(p_systim, sizeof(*p_systim)) != E_OK)
 		return svc_result("get_tim", E_MACV);
-	*p_systim = (SYSTIM)((now_ns / TIC_NS) * TIC_NS / NS_PER_MS);
+	*p_systim = (SYSTIM)((now_ns / RTOS_HOST_TICK_NS) * RTOS_HOST_TICK_NS / NS_PER_MS);
 	return E_OK;
 }
 
 /* Performance time in us since boot (any context; wraps at 2^32 us). */
 ER get_utm(SYSUTM *p_sysutm)
 {
+	svc_charge();
 	if (p_sysutm == NULL)
 		return svc_result("get_utm", E_MACV);
 	*p_sysutm = (SYSUTM)(now_ns / 1000U);

@@ -28,8 +28,8 @@ static void detect_boot1(void)
 	ev3_attach_analog(1, EV3_INPUT_NXT_TOUCH, NULL);
 	ev3_attach_analog(2, EV3_INPUT_NXT_LIGHT, NULL);
 	ev3_attach_analog(3, EV3_INPUT_DUMB, &dumb);
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
-	ev3_attach_motor(1, EV3_MOTOR_MEDIUM, NULL);
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
+	ev3_attach_motor(1, HS_MOTOR_MEDIUM, NULL);
 
 	dly_tsk(1990);
 	for (p = 0; p < 4; p++)

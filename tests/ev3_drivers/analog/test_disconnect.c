@@ -15,7 +15,7 @@ static void disconnect_body(void)
 
 	ev3_attach_analog(0, EV3_INPUT_EV3_TOUCH, NULL);
 	ev3_attach_uart_sensor(3, UART_SENSOR_TYPE_IR, NULL);
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
 	ok(wait_in_conn(0, LMS_CONN_INPUT_DUMB, 3000) > 0, "EV3 touch detected");
 	ok(wait_in_conn(3, LMS_CONN_INPUT_UART, 100) > 0, "IR sensor detected");
 	ok(wait_out_conn(0, LMS_CONN_OUTPUT_TACHO, 100) > 0, "large motor detected");
@@ -36,7 +36,7 @@ static void disconnect_body(void)
 	dly_tsk(50);
 	t0 = now_ms();
 	ev3_attach_analog(0, EV3_INPUT_NXT_LIGHT, NULL);
-	ev3_attach_motor(0, EV3_MOTOR_MEDIUM, NULL);
+	ev3_attach_motor(0, HS_MOTOR_MEDIUM, NULL);
 	t = wait_in_conn(0, LMS_CONN_NXT_DUMB, 600) - t0;
 	in_range(t, 350, 391, "a new device on the port is identified after %.1f ms", t);
 	is_int(shm->in_dcm[0], LMS_TYPE_NXT_LIGHT, "and it is the new one (NXT light)");

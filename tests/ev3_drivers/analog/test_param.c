@@ -12,7 +12,7 @@ static void param_body(void)
 	double t;
 
 	ev3_attach_analog(2, EV3_INPUT_EV3_TOUCH, NULL);
-	ev3_attach_motor(3, EV3_MOTOR_LARGE, NULL);
+	ev3_attach_motor(3, HS_MOTOR_LARGE, NULL);
 	dly_tsk(490);
 	ok(shm->in_conn[2] == LMS_CONN_NONE && shm->out_conn[3] == LMS_CONN_NONE,
 	   "nothing reported before 500 ms");

@@ -248,10 +248,10 @@ static void test_semantics(void)
 	}
 	t0 = now_ms();
 	dly_tsk(50);
-	d = ev3_motor_drive(ev3_output_motor(0));
+	d = hs_motor_drive(ev3_output_motor(0));
 	ok(d.brake > 0.99, "braked port still braking at +50 ms");
 	dly_tsk(100);
-	d = ev3_motor_drive(ev3_output_motor(0));
+	d = hs_motor_drive(ev3_output_motor(0));
 	ok(d.brake == 0 && d.fwd == 0 && d.rev == 0, "coasting at +%.0f ms", now_ms() - t0);
 	a0 = motor_angle(1);
 	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 0x02, 40);
@@ -270,7 +270,7 @@ static void test_semantics(void)
 	   md.tacho_sensor);
 	ok(pwm_set_types(7, 8, LMS_PWM_TYPE_NONE, 7) == E_OK, "SET_TYPE C := none");
 	dly_tsk(4);
-	d = ev3_motor_drive(ev3_output_motor(2));
+	d = hs_motor_drive(ev3_output_motor(2));
 	ok(d.fwd == 0 && d.rev == 0 && d.brake == 0, "C coasts");
 	ok(motor_data_of(2).tacho_sensor <= 2, "and its counters restart (%d)", motor_data_of(2).tacho_sensor);
 	pwm_set_types(7, 8, 7, 7);
@@ -351,7 +351,7 @@ static void user_task(intptr_t exinf)
 
 int main(void)
 {
-	const int motors[4] = { EV3_MOTOR_LARGE, EV3_MOTOR_MEDIUM, EV3_MOTOR_LARGE, EV3_MOTOR_LARGE };
+	const int motors[4] = { HS_MOTOR_LARGE, HS_MOTOR_MEDIUM, HS_MOTOR_LARGE, HS_MOTOR_LARGE };
 	const struct rtos_task_cfg tasks[] = {
 		{ USER_TASK_ID, TA_NULL, 0, user_task, 8, PWM_TEST_STACK, USER_DOMAIN, "pwm_user" },
 	};

@@ -58,7 +58,7 @@ static void body(void)
 
 int main(void)
 {
-	const int motors[4] = { EV3_MOTOR_LARGE, EV3_MOTOR_MEDIUM, EV3_MOTOR_LARGE, EV3_MOTOR_LARGE };
+	const int motors[4] = { HS_MOTOR_LARGE, HS_MOTOR_MEDIUM, HS_MOTOR_LARGE, HS_MOTOR_LARGE };
 
 	tap_plan(16);
 	ok(pwm_test_run(body, motors), "test body ran to its end");

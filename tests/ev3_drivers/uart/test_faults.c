@@ -117,7 +117,7 @@ static void overrun(void)
 static void forged_write(void)
 {
 	struct lms_uart *lms = (struct lms_uart *)&ut_shm->lms;	/* the process's writable view */
-	const struct ev3_uart_stats *st = ev3_uart_get_stats(ev3_uart_of_port(3));
+	const struct hs_uart_stats *st = hs_uart_get_stats(ev3_input_uart(3));
 	static const int8_t forged[] = { -1, 33, 127 };
 	uint32_t sent;
 	unsigned i;

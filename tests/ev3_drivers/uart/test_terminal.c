@@ -7,7 +7,7 @@
 
 static void body(void)
 {
-	struct ev3_uart *u = ev3_uart_of_port(1);
+	struct hs_uart *u = ev3_input_uart(1);
 	struct lms_uart_types t;
 	static const uint8_t hello[] = { 'h', 'i', 0xC0, 0x00 };
 	const int8_t *s;
@@ -18,8 +18,8 @@ static void body(void)
 	is_int(ut_ext(1)->state, LMS_UART_STATE_SYNC, "still searching after 1.9 s");
 	ok(ut_wait_state(1, LMS_UART_STATE_TERMINAL, 200), "TERMINAL after 2 s");
 	is_int(ut_ext(1)->speed, 115200, "at 115200 baud");
-	ok(ev3_uart_baud(u) > 114048 && ev3_uart_baud(u) < 116352, "the UART runs at 115200 +-1 %% (%u)",
-	   ev3_uart_baud(u));
+	ok(hs_uart_baud(u) > 114048 && hs_uart_baud(u) < 116352, "the UART runs at 115200 +-1 %% (%u)",
+	   hs_uart_baud(u));
 	is_int(uart_svc_mode_info(1, 0, &t), E_OK, "mode info");
 	ok(t.type == LMS_TYPE_TERMINAL && !strcmp(t.name, "TERMINAL") && t.data_sets == 32,
 	   "type 124 \"TERMINAL\", 32 bytes");
@@ -27,12 +27,12 @@ static void body(void)
 	is_int(uart_svc_clear_changed(1), E_OK, "accepted");
 
 	for (i = 0; i < sizeof(hello); i++)
-		ev3_uart_rx_byte(u, hello[i], 115200);
+		hs_uart_rx_byte(u, hello[i], 115200);
 	s = ut_wait_sample(1, 0, 10);
 	ok(s && !memcmp(s, hello, sizeof(hello)), "received bytes served as a raw sample");
 	is_int(uart_svc_write(1, "AT", 2), E_OK, "raw write accepted");
 	dly_tsk(5);
-	is_int(ev3_uart_get_stats(u)->tx_bytes, 2, "sent unframed: 2 bytes");
+	is_int(hs_uart_get_stats(u)->tx_bytes, 2, "sent unframed: 2 bytes");
 	is_int(uart_svc_set_mode(1, 1), E_PAR, "TERMINAL has only mode 0");
 }
 

@@ -27,9 +27,15 @@ static void steady(void)
 	}
 }
 
-/* Samples the left LED every ms for ms; the lit (non-off) pattern as a bit string. */
+/* Samples the left LED every ms for ms; the lit (non-off) pattern as a bit string.
+ * The sampler's service calls cost no CPU time here, so that dly_tsk(1) from a
+ * tick boundary is 1 ms and sample i is taken at i ms. */
 static void sample(char *bits, unsigned ms, enum ev3_ui_color lit_color, bool *colour_ok)
 {
+	struct rtos_host_cpu_cost cost, free_calls = { 0, 0, false };
+
+	rtos_host_get_cpu_cost(&cost);
+	rtos_host_set_cpu_cost(&free_calls);
 	for (unsigned i = 0; i < ms; i++) {
 		enum ev3_ui_color c = ev3_ui_led_color(EV3_UI_LED_LEFT);
 
@@ -41,6 +47,7 @@ static void sample(char *bits, unsigned ms, enum ev3_ui_color lit_color, bool *c
 		dly_tsk(1);
 	}
 	bits[ms] = 0;
+	rtos_host_set_cpu_cost(&cost);
 }
 
 /* Number of '1'->'0' and '0'->'1' changes, and the length of each run. */

@@ -17,7 +17,7 @@
 #include "host_sim/scenario.h"
 
 #define GPIO       0x01E26000U
-#define PAIR2      (GPIO + 0x10 + 0x28 * 2)
+#define PAIR2      (GPIO + HS_GPIO_PAIR_OFFSET(64U))
 #define TACHO      HS_GPIO(5, 11)
 #define TACHO_BIT  (1U << 27)
 #define XDEV       0x01E00000U

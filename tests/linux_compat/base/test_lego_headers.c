@@ -1,6 +1,6 @@
 /*
  * test_lego_headers.c — the 78 kernel symbols of LEGO's d_pwm, d_analog and
- * d_uart (facts: linux-api-surface.md §1) are reachable through exactly the
+ * d_uart (the kernel symbols LEGO's d_pwm.c, d_analog.c and d_uart_mod.c use) are reachable through exactly the
  * headers those drivers include (their union; none includes linux/slab.h,
  * linux/string.h or linux/ioctl.h, as in 2.6.33 where kmalloc, the string
  * functions and _IOWR came through linux/mm.h and linux/fs.h), with the

@@ -5,7 +5,7 @@
  * context predicates (in_interrupt, in_atomic, irqs_disabled) agree.
  */
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
+#include "lx_core_test.h"
 #include <linux/kernel.h>
 #include <linux/hrtimer.h>
 #include <linux/delay.h>

@@ -4,7 +4,7 @@
  * modern and the 2.6.33 form)/mmap/poll/llseek/close round trips with
  * Linux's error codes, and deregistration.
  */
-#include "../lx_test.h"
+#include "lx_test.h"
 #include <linux/fs.h>
 #include <linux/miscdevice.h>
 #include <linux/mm.h>

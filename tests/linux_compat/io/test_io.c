@@ -3,8 +3,8 @@
  * accessor reaching the model with exactly its width and value, the SYSCFG
  * windows set at boot, and request_mem_region's overlap rules.
  */
-#include "../lx_test.h"
-#include "../fake_mmio.h"
+#include "lx_test.h"
+#include "fake_mmio.h"
 #include <linux/io.h>
 #include <linux/ioport.h>
 #include <mach/da8xx.h>

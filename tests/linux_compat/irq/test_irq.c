@@ -5,7 +5,7 @@
  * accounted); handlers run in interrupt context; disable/enable nest;
  * argument and context errors are refused or reported.
  */
-#include "../lx_test.h"
+#include "lx_test.h"
 #include <linux/interrupt.h>
 #include <linux/irq.h>
 #include <linux_compat/context.h>

@@ -5,8 +5,8 @@
  * locked and in an ISR, and the 2.6-era initialisers.
  */
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
-#include "rtos_stub/rtos_test.h"
+#include "lx_core_test.h"
+#include "rtos_test.h"
 #include <linux/semaphore.h>
 #include <linux/delay.h>
 #include <linux/ktime.h>

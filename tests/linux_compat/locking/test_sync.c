@@ -4,8 +4,8 @@
  * an ISR, timeouts, rel_wai), nested irqsave, spinlock recursion, atomics.
  */
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
-#include "rtos_stub/rtos_test.h"
+#include "lx_core_test.h"
+#include "rtos_test.h"
 #include <linux/mutex.h>
 #include <linux/completion.h>
 #include <linux/wait.h>

@@ -2,12 +2,13 @@
  * test_module.c — module_init/module_exit run by the worker at boot in the
  * documented order (initcall level, then module name), a failing init's exit
  * is never called, lx_modules_exit runs exits in reverse, THIS_MODULE and
- * references, and module parameters of every type set before boot.
+ * references, and module parameters of every type set before boot, from
+ * the configuration or from the boot command line.
  */
 #define KBUILD_MODNAME "lxtest"
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
-#include "rtos_stub/rtos_test.h"
+#include "lx_core_test.h"
+#include "rtos_test.h"
 #include <linux/module.h>
 #include <linux/moduleparam.h>
 #include <linux/init.h>
@@ -108,7 +109,7 @@ int main(void)
 	static const struct rtos_task_cfg tasks[] = { LXC_TASK(1, main_task, 8, true) };
 	char buf[32];
 
-	tap_plan(24);
+	tap_plan(26);
 	is_int(lx_module_param_set("lxtest", "HwId", "04"), E_OK, "charp parameter set before boot");
 	is_int(lx_module_param_set("lxtest", "count", "-17"), E_OK, "int parameter");
 	is_int(lx_module_param_set("lxtest", "ucount", "0x20"), E_OK, "uint parameter (hex)");
@@ -149,5 +150,16 @@ int main(void)
 	       "lx_modules_exit runs exits in reverse init order, never the failed module's");
 	is_str(THIS_MODULE->name, "lxtest", "THIS_MODULE is the module named by KBUILD_MODNAME");
 	ok(lx_module_find("zeta") == &zeta_mod && lx_module_find("none") == NULL, "lx_module_find");
+
+	/* The boot loader's command line: module words set parameters, others are skipped. */
+	rtos_host_set_boot_args("console=ttyS1,115200  lxtest.count=41 lxtest.HwId=bt lxtest.nosuch=1 quiet d_nosuch.x=2");
+	if (!lxc_boot(tasks, 1, NULL, 0, NULL, 0))
+		return tap_done();
+	rtos_host_run_for(5 * NSEC_PER_MSEC);
+	rtos_host_shutdown();
+	rtos_host_set_boot_args(NULL);
+	ok(seen_count == 41 && strcmp(seen_hwid, "bt") == 0,
+	   "module.param=value boot arguments are set before the module's init");
+	ok(count == 41 && strcmp(HwId, "bt") == 0, "...and the other words of the command line are left alone");
 	return tap_done();
 }

@@ -9,8 +9,8 @@
  */
 #define KBUILD_MODNAME "unload_a"
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
-#include "rtos_stub/rtos_test.h"
+#include "lx_core_test.h"
+#include "rtos_test.h"
 #include <linux/module.h>
 #include <linux/completion.h>
 #include <linux/delay.h>

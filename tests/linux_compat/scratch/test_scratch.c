@@ -8,8 +8,8 @@
 #define KBUILD_MODNAME "scratch"
 #include "scratch_drv.c"	/* NOLINT(bugprone-suspicious-include): a driver verbatim, as the hacks do */
 
-#include "../lx_test.h"
-#include "../fake_mmio.h"
+#include "lx_test.h"
+#include "fake_mmio.h"
 #include <linux/fcntl.h>
 #include <linux_compat/devfs.h>
 

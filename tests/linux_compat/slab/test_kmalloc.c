@@ -4,7 +4,7 @@
  * workload that keeps every block intact, misuse reports, and GFP_KERNEL
  * from an interrupt handler reported as a context bug (GFP_ATOMIC fine).
  */
-#include "../lx_test.h"
+#include "lx_test.h"
 #include <linux/slab.h>
 #include <linux/mm.h>
 #include <linux/interrupt.h>

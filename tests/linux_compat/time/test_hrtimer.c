@@ -5,14 +5,15 @@
  * callbacks, self-cancellation, overruns after a long CPU lock.
  */
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
+#include "lx_core_test.h"
 #include <linux/hrtimer.h>
 #include <linux/completion.h>
 #include <linux/delay.h>
 #include <kernel.h>
+#include <linux_compat/clock.h>
 #include <sil.h>
 
-#define TICK	((s64)TIC_NS)
+#define TICK	((s64)LX_TICK_NS)
 
 /* ---- zero drift ---- */
 
@@ -339,7 +340,7 @@ static void test_forward_math(void)
 	is_int(ktime_to_us(ms_to_ktime(3)), 3000, "ms_to_ktime / ktime_to_us");
 	is_int(ktime_to_ms(ktime_sub(ktime_set(1, 0), us_to_ktime(1500))), 998, "ktime_sub / ktime_to_ms");
 	ok(ktime_before(1, 2) && ktime_after(3, 2) && ktime_compare(5, 5) == 0, "ktime comparisons");
-	is_int(hrtimer_resolution, TIC_NS, "hrtimer_resolution is the tick");
+	is_int(hrtimer_resolution, LX_TICK_NS, "hrtimer_resolution is the tick");
 }
 
 int main(void)

@@ -3,13 +3,14 @@
  * add_timer, timer_pending, from_timer), conversions, busy delays and sleeps.
  */
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
+#include "lx_core_test.h"
 #include <linux/timer.h>
 #include <linux/jiffies.h>
 #include <linux/delay.h>
 #include <linux/ktime.h>
 #include <linux/spinlock.h>
 #include <kernel.h>
+#include <linux_compat/clock.h>
 
 struct my_dev {
 	int value;
@@ -114,9 +115,9 @@ int main(void)
 	is_int(t2_count, 1, "...and run after local_bh_enable");
 	is_int(udelay_ns, 123000, "udelay(123) spends exactly 123 us of virtual CPU time");
 	is_int(mdelay_ns, 2000000, "mdelay(2) spends 2 ms");
-	ok(msleep_ns >= 3 * NSEC_PER_MSEC && msleep_ns <= 3 * NSEC_PER_MSEC + (s64)TIC_NS,
+	ok(msleep_ns >= 3 * NSEC_PER_MSEC && msleep_ns <= 3 * NSEC_PER_MSEC + (s64)LX_TICK_NS,
 	   "msleep(3) sleeps 3 ms, rounded up to the tick (%lld ns)", (long long)msleep_ns);
-	ok(usleep_ns >= 300000 && usleep_ns < 300000 + (s64)TIC_NS,
+	ok(usleep_ns >= 300000 && usleep_ns < 300000 + (s64)LX_TICK_NS,
 	   "usleep_range(300, 400) sleeps at least 300 us, less than a tick more (%lld ns)",
 	   (long long)usleep_ns);
 	ok(t2_fired_jiffies != 0, "a re-armed timer fired");

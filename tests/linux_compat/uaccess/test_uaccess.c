@@ -5,7 +5,7 @@
  * copied (bisection, few probes), the read-only region refuses writes, and
  * a call from interrupt context is reported and copies nothing.
  */
-#include "../lx_test.h"
+#include "lx_test.h"
 #include <linux/uaccess.h>
 #include <linux/interrupt.h>
 #include <linux/string.h>

@@ -4,8 +4,8 @@
  * alloc/destroy_workqueue, and a flush from inside a work item.
  */
 #include "tap.h"
-#include "linux_compat/lx_core_test.h"
-#include "rtos_stub/rtos_test.h"
+#include "lx_core_test.h"
+#include "rtos_test.h"
 #include <linux/workqueue.h>
 #include <linux/delay.h>
 #include <linux/jiffies.h>

@@ -9,7 +9,7 @@
 
 #include "tap.h"
 #include "kernel.h"
-#include "rtos_stub/rtos_test.h"
+#include "rtos_test.h"
 
 static void task_fn(intptr_t x)
 {

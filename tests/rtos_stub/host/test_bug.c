@@ -11,7 +11,7 @@
 
 #include "tap.h"
 #include "kernel.h"
-#include "rtos_stub/rtos_test.h"
+#include "rtos_test.h"
 
 #define IRQ_DEV 110U
 

@@ -8,7 +8,7 @@
 #include "tap.h"
 #include "kernel.h"
 #include "sil.h"
-#include "rtos_stub/rtos_test.h"
+#include "rtos_test.h"
 
 #define US 1000ULL
 #define IRQ_DEV 120U

@@ -7,7 +7,7 @@
 
 #include "tap.h"
 #include "kernel.h"
-#include "rtos_stub/rtos_test.h"
+#include "rtos_test.h"
 
 #define IRQ_A 100U
 #define IRQ_B 101U

@@ -4,7 +4,7 @@
  */
 #include "tap.h"
 #include "kernel.h"
-#include "rtos_stub/rtos_test.h"
+#include "rtos_test.h"
 
 enum { FLG_MUL = 1, FLG_CLR, FLG_ONE };
 

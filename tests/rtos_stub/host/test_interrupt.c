@@ -7,7 +7,7 @@
 #include "tap.h"
 #include "kernel.h"
 #include "sil.h"
-#include "rtos_stub/rtos_test.h"
+#include "rtos_test.h"
 
 #define IRQ_LOW   70U   /* priority -1 */
 #define IRQ_MID   71U   /* priority -3 */

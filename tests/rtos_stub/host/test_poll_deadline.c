@@ -4,7 +4,7 @@
  * rtos_host_run_for ends, and goes on polling in the next run.
  */
 #include "tap.h"
-#include "../rtos_test.h"
+#include "rtos_test.h"
 #include "kernel.h"
 #include "sil.h"
 

@@ -4,7 +4,7 @@
  */
 #include "tap.h"
 #include "kernel.h"
-#include "rtos_stub/rtos_test.h"
+#include "rtos_test.h"
 
 enum { SEM_FIFO = 1, SEM_TPRI, SEM_COUNT };
 

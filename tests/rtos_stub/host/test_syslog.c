@@ -8,7 +8,7 @@
 
 #include "tap.h"
 #include "kernel.h"
-#include "rtos_stub/rtos_test.h"
+#include "rtos_test.h"
 
 static char traced[2048];
 

@@ -8,7 +8,7 @@
  *   struct hs_board_cfg board = { .devices = ev3_board_devices };
  *   struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 7 };
  *   hs_sim_boot(&scn);
- *   ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);              port A
+ *   ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);              port A
  *   ev3_attach_uart_sensor(0, UART_SENSOR_TYPE_GYRO, NULL);  port 1
  */
 #ifndef HOST_SIM_DEVICES_EV3_BRICK_H
@@ -27,11 +27,16 @@
  * power pins of ev3_power.h), NULL-terminated,
  * for hs_board_cfg.devices. */
 extern const struct hs_device *const ev3_board_devices[];
+/* The ports' model (input pins, sensor links, motors, faults), one of them. */
+extern const struct hs_device ev3_ports_device;
 
-/* Battery EMF (open-circuit voltage) in mV (default 9000): the motors run from it; the ADC
- * sees the terminal voltage, which sags with the current (ev3_power.h). */
+/* Battery EMF (open-circuit voltage) in mV (default EV3_BATTERY_MV_DEFAULT): the motors run
+ * from it; the ADC sees the terminal voltage, which sags with the current (ev3_power.h). */
+#define EV3_BATTERY_MV_DEFAULT	9000U
 uint32_t ev3_battery_mv(void);
 void ev3_set_battery_mv(uint32_t mv);
+/* Records the voltage without telling anyone (the ports model does the telling). */
+void ev3_battery_store(uint32_t mv);
 /* Sum of the motors' currents now, amperes (the battery model of ev3_power.h adds the brick's draw). */
 double ev3_motors_current_a(void);
 
@@ -77,10 +82,10 @@ uint32_t ev3_input_pin_mv(unsigned port, unsigned pin);
 /* ---- output ports (0..3 = A..D) ---- */
 
 /* Plugs a motor into an output port; E_ID, E_PAR, E_OBJ as above. */
-ER ev3_attach_motor(unsigned port, enum ev3_motor_kind kind, const struct ev3_motor_options *opt);
+ER ev3_attach_motor(unsigned port, enum hs_motor_kind kind, const struct hs_motor_options *opt);
 ER ev3_detach_output(unsigned port);
 /* The motor on the port, or NULL. */
-struct ev3_motor *ev3_output_motor(unsigned port);
+struct hs_motor *ev3_output_motor(unsigned port);
 /* Voltage of output pin 5 in mV now. */
 uint32_t ev3_output_pin5_mv(unsigned port);
 

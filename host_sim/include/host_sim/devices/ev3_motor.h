@@ -17,13 +17,13 @@
 #include <stdint.h>
 #include "host_sim/devices/ev3_ports.h"
 
-enum ev3_motor_kind {
-	EV3_MOTOR_LARGE = 0,        /* 45502, lms2012 type 7 (TACHO) */
-	EV3_MOTOR_MEDIUM = 1,       /* 45503, lms2012 type 8 (MINITACHO) */
+enum hs_motor_kind {
+	HS_MOTOR_LARGE = 0,        /* 45502, lms2012 type 7 (TACHO) */
+	HS_MOTOR_MEDIUM = 1,       /* 45503, lms2012 type 8 (MINITACHO) */
 };
 
 /* Output-shaft parameters of a motor model. */
-struct ev3_motor_params {
+struct hs_motor_params {
 	const char *name;
 	double no_load_dps;         /* no-load speed at nominal_v, deg/s */
 	double stall_nm;            /* stall torque at nominal_v, N m */
@@ -36,7 +36,7 @@ struct ev3_motor_params {
 };
 
 /* The built-in parameters of a kind. */
-const struct ev3_motor_params *ev3_motor_params_of(enum ev3_motor_kind kind);
+const struct hs_motor_params *hs_motor_params_of(enum hs_motor_kind kind);
 
 /* How the H-bridge spends each PWM period: fractions driving forward and
  * reverse at the battery voltage, and braking (terminals shorted); the rest
@@ -54,7 +54,7 @@ enum hbridge_input {
 };
 
 /* The bridge's time split for inputs in0 (DIR0, pin 1) and in1 (DIR1, pin 2)
- * with the PWM signal low for pwm_low of each period (facts §3: forward =
+ * with the PWM signal low for pwm_low of each period (LEGO's d_pwm.c: forward =
  * DIR0 high + DIR1 floating, reverse = the mirror, brake = both high,
  * coast = both low). */
 struct hbridge_drive hbridge_resolve(enum hbridge_input in0, enum hbridge_input in1, double pwm_low);
@@ -67,7 +67,7 @@ struct dc_motor_state {
 
 /* Derived constants of a motor model (computed once from the params). */
 struct dc_motor_model {
-	const struct ev3_motor_params *p;
+	const struct hs_motor_params *p;
 	double k_back;              /* N m per rad/s of back-EMF braking at full drive */
 	double k_volt;              /* N m per volt */
 	double viscous;             /* N m per rad/s */
@@ -76,7 +76,7 @@ struct dc_motor_model {
 };
 
 /* Fills a model from parameters. */
-void dc_motor_model_init(struct dc_motor_model *m, const struct ev3_motor_params *p);
+void dc_motor_model_init(struct dc_motor_model *m, const struct hs_motor_params *p);
 
 /* Advances st by dt seconds under drive at vbat volts with external load
  * torque load_nm (signed, opposing positive rotation when positive) and
@@ -87,10 +87,10 @@ void dc_motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st,
 
 /* ---- the motor attached to an output port ---- */
 
-struct ev3_motor;
+struct hs_motor;
 
 /* Options of an attached motor. */
-struct ev3_motor_options {
+struct hs_motor_options {
 	double load_nm;             /* constant external torque on the output shaft */
 	double extra_inertia;       /* kg m^2 added to the shaft (wheels, arms) */
 	double start_deg;           /* initial shaft angle */
@@ -98,44 +98,42 @@ struct ev3_motor_options {
 
 /* Creates the motor on output port (0..3 = A..D): watches the H-bridge
  * GPIOs, drives INT/DIR from the tacho.  NULL on bad arguments. */
-struct ev3_motor *ev3_motor_create(unsigned port, enum ev3_motor_kind kind,
-				   const struct ev3_motor_options *opt);
+struct hs_motor *hs_motor_create(unsigned port, enum hs_motor_kind kind,
+				   const struct hs_motor_options *opt);
 /* Stops its events, releases the pins (they float) and frees it. */
-void ev3_motor_destroy(struct ev3_motor *m);
+void hs_motor_destroy(struct hs_motor *m);
 
 /* The motor on output port (0..3), or NULL. */
-struct ev3_motor *ev3_motor_on_port(unsigned port);
-/* A PWM source's duty changed: every motor it drives re-reads its inputs. */
-void ev3_motor_pwm_changed(enum ev3_pwm_source src);
+struct hs_motor *hs_motor_on_port(unsigned port);
 
 /* The PWM duty or the bridge inputs changed: integrate to now, apply. */
-void ev3_motor_inputs_changed(struct ev3_motor *m);
+void hs_motor_inputs_changed(struct hs_motor *m);
 
 /* Shaft angle (deg, continuous) and speed (deg/s) now. */
-double ev3_motor_angle_deg(struct ev3_motor *m);
-double ev3_motor_speed_dps(struct ev3_motor *m);
+double hs_motor_angle_deg(struct hs_motor *m);
+double hs_motor_speed_dps(struct hs_motor *m);
 /* Tacho position the pins show now, in counts (each INT edge is one count). */
-int64_t ev3_motor_tacho_counts(const struct ev3_motor *m);
+int64_t hs_motor_tacho_counts(const struct hs_motor *m);
 /* The bridge split in effect. */
-struct hbridge_drive ev3_motor_drive(const struct ev3_motor *m);
+struct hbridge_drive hs_motor_drive(const struct hs_motor *m);
 /* Current through the motor now, amperes (estimate, for the ADC). */
-double ev3_motor_current_a(struct ev3_motor *m);
+double hs_motor_current_a(struct hs_motor *m);
 
 /* Scenario and faults. */
-void ev3_motor_set_load(struct ev3_motor *m, double load_nm, double extra_inertia);
+void hs_motor_set_load(struct hs_motor *m, double load_nm, double extra_inertia);
 /* Locks the shaft (true) or frees it. */
-void ev3_motor_set_stalled(struct ev3_motor *m, bool stalled);
+void hs_motor_set_stalled(struct hs_motor *m, bool stalled);
 /* Freezes the tacho outputs (true); on release they jump to the true position. */
-void ev3_motor_set_encoder_stuck(struct ev3_motor *m, bool stuck);
+void hs_motor_set_encoder_stuck(struct hs_motor *m, bool stuck);
 /* Spurious INT glitches (2 us pulses) at a mean rate per second; 0 stops. */
-void ev3_motor_set_encoder_noise(struct ev3_motor *m, double glitches_per_s);
+void hs_motor_set_encoder_noise(struct hs_motor *m, double glitches_per_s);
 /* Counts of spurious glitches emitted so far. */
-uint64_t ev3_motor_glitches(const struct ev3_motor *m);
+uint64_t hs_motor_glitches(const struct hs_motor *m);
 
 /* Pin 5 voltage in mV as the ADC sees it, given whether the brick drives
  * the 5w detection pull high. */
-uint16_t ev3_motor_pin5_mv(const struct ev3_motor *m, bool pull5w_high);
+uint16_t hs_motor_pin5_mv(const struct hs_motor *m, bool pull5w_high);
 /* Kind of the attached motor. */
-enum ev3_motor_kind ev3_motor_kind_of(const struct ev3_motor *m);
+enum hs_motor_kind hs_motor_kind_of(const struct hs_motor *m);
 
 #endif /* HOST_SIM_DEVICES_EV3_MOTOR_H */

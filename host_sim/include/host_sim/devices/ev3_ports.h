@@ -1,6 +1,6 @@
 /*
  * ev3_ports.h — how the EV3's input ports 1-4 and output ports A-D are wired
- * to the AM1808 (EP2 board, facts §3 and §6): GPIO pins, PWM sources, ADC
+ * to the AM1808 (EP2 board, the pin tables of LEGO's d_pwm.c and d_analog.c): GPIO pins, PWM sources, ADC
  * channels, and the UART behind each input port.  Host only; the tables
  * are data the device models and the tests share.
  *
@@ -16,11 +16,13 @@
 #include <stdint.h>
 #include "host_sim/board.h"
 #include "host_sim/gpio.h"
+#include "host_sim/devices/pwm.h"
+#include "host_sim/devices/uart16550.h"
 
 #define EV3_INPUT_PORTS   4U
 #define EV3_OUTPUT_PORTS  4U
 
-/* GPIOs of an input port (facts §3, EP2). */
+/* GPIOs of an input port (LEGO's d_pwm.c/d_analog.c pin tables, EP2). */
 struct ev3_input_pins {
 	unsigned pin1_9v;           /* pin 1: switches 9 V for NXT sensors (brick output) */
 	unsigned pin2;              /* LEGDET: NXT device detect (input) */
@@ -39,34 +41,29 @@ struct ev3_output_pins {
 	uint8_t adc_pin5;           /* ADC channel of pin 5 */
 };
 
-/* Which PWM drives an output port. */
-enum ev3_pwm_source {
-	EV3_PWM_EHRPWM1_A,
-	EV3_PWM_EHRPWM1_B,
-	EV3_PWM_ECAP0,
-	EV3_PWM_ECAP1,
-};
-
 extern const struct ev3_input_pins ev3_input_pins[EV3_INPUT_PORTS];
 extern const struct ev3_output_pins ev3_output_pins[EV3_OUTPUT_PORTS];
-extern const enum ev3_pwm_source ev3_output_pwm[EV3_OUTPUT_PORTS];
+/* Which PWM output of the AM1808 drives each output port. */
+extern const enum hs_pwm_output ev3_output_pwm[EV3_OUTPUT_PORTS];
 
-/* ADC channels of the brick's own signals (facts §6). */
+/* ADC channels of the brick's own signals (LEGO's d_analog.c). */
 #define EV3_ADC_BATTERY_TEMP     2U
 #define EV3_ADC_MOTOR_CURRENT    15U
 #define EV3_ADC_BATTERY_CURRENT  3U
 #define EV3_ADC_BATTERY_VOLTAGE  4U
 
-/* The UART behind each input port: register base, AINTC line, module clock. */
-struct ev3_port_uart {
-	const char *name;           /* region name */
-	uintptr_t base;
-	unsigned intno;
-	uint32_t clock_hz;          /* module clock: baud = clock / (16 or 13 * divisor) */
-	bool stand_in;              /* true: not a real AM1808 UART (PRU soft UART stand-in) */
-};
+/* The UART behind each input port: register base, AINTC line, module clock
+ * (ports 3 and 4: stand-ins for the PRU soft UARTs, see below). */
+extern const struct hs_uart_cfg ev3_port_uart[EV3_INPUT_PORTS];
 
-extern const struct ev3_port_uart ev3_port_uart[EV3_INPUT_PORTS];
+/* The board devices creating them (port 1: UART1, port 2: UART0, ports 3/4: stand-ins). */
+extern const struct hs_device ev3_uart1_device;
+extern const struct hs_device ev3_uart0_device;
+extern const struct hs_device ev3_suart_in3_device;
+extern const struct hs_device ev3_suart_in4_device;
+
+/* The UART behind input port (0..3), or NULL if its device is not on the board. */
+struct hs_uart *ev3_input_uart(unsigned port);
 
 /* Stand-in UARTs for the PRU soft UARTs of ports 3 and 4 (reserved range
  * after the McBSP FIFO registers in the AM1808 memory map). */

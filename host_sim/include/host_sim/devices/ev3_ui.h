@@ -4,7 +4,7 @@
  * and LEDs").
  *
  * Pins (ev3_ui_pins) follow ev3dev's EV3 board support as far as we know it,
- * NOT our facts sheet: check them against the EV3 schematic before relying
+ * NOT from LEGO's published sources: check them against the EV3 schematic before relying
  * on them.  A button connects its pin to 3.3 V (pressed = high; a pull-down
  * holds it low when released); an LED colour is lit while the SoC drives its
  * pin high.  The board leaves the ten pins muxed to GPIO, as U-Boot/Linux

@@ -1,6 +1,6 @@
 /*
  * lump.h — the LEGO UART sensor message protocol, as both ends frame it
- * (facts §8): header bits 7-6 message class, bits 5-3 payload size code,
+ * (LEGO's d_uart_mod.c, pybricks' port_lump.c): header bits 7-6 message class, bits 5-3 payload size code,
  * bits 2-0 command or mode; check byte = 0xFF XOR every preceding byte.
  * Used by the sensor models (device side) and by tests (host side).
  */
@@ -79,15 +79,19 @@ struct lump_msg {
 	bool check_ok;              /* the check byte matched (always true for SYS) */
 };
 
-/* A byte-wise frame assembler: feed bytes, get whole messages.  It trusts
- * headers (as a device does: the host only sends SYS, SELECT and WRITE). */
+/* A byte-wise frame assembler: feed bytes, get whole messages.  A header
+ * announcing more than the longest valid frame (size codes 6 and 7: 64 and
+ * 128 payload bytes) is a framing error: it is counted and dropped, and the
+ * next byte is taken as a header again, so the parser resynchronises on the
+ * next valid header and never writes past buf. */
 struct lump_parser {
 	uint8_t buf[LUMP_MAX_FRAME];
 	size_t have;
 	size_t need;
+	uint32_t framing_errors;    /* headers dropped for an impossible length */
 };
 
-/* Empties the parser. */
+/* Empties the parser (keeps its error count). */
 void lump_parser_reset(struct lump_parser *p);
 
 /* Adds one byte; returns true and fills *msg when it completes a message. */

@@ -1,6 +1,6 @@
 /*
  * pwm.h — eHRPWM1 and eCAP0/eCAP1 (APWM mode) of the AM1808 as the motor
- * PWM sources of the EV3 (facts §2, §3).  Host only.
+ * PWM outputs the EV3 drives its motors with.  Host only.
  *
  * eHRPWM1 (0x01F02000, 16-bit registers): time base (TBCTL, TBPRD with its
  * shadow, TBCNT computed from the virtual clock), counter-compare CMPA/CMPB
@@ -13,24 +13,45 @@
  * compare (active), CAP3/CAP4 their shadows loaded at the period, polarity
  * from ECCTL2.APWMPOL, counter running while ECCTL2.TSCTRSTOP is set.
  * Module clock of both: the ASYNC3 domain, HS_PLL1_SYSCLK2_HZ.
+ *
+ * The models know nothing of what their outputs drive: the board connects
+ * a peer to each output (hs_pwm_connect), which is told whenever the
+ * output's low fraction changes and reads it back with hs_pwm_low_fraction.
  */
 #ifndef HOST_SIM_DEVICES_PWM_H
 #define HOST_SIM_DEVICES_PWM_H
 
 #include "host_sim/board.h"
-#include "host_sim/devices/ev3_ports.h"
 
-/* The board devices (for hs_board_cfg.devices). */
-extern const struct hs_device ev3_ehrpwm1_device;
-extern const struct hs_device ev3_ecap0_device;
-extern const struct hs_device ev3_ecap1_device;
+/* The PWM outputs of the modelled modules. */
+enum hs_pwm_output {
+	HS_PWM_EHRPWM1_A,
+	HS_PWM_EHRPWM1_B,
+	HS_PWM_ECAP0,
+	HS_PWM_ECAP1,
+};
+#define HS_PWM_OUTPUTS	4U
+
+/* What an output drives: changed(ctx, out) runs after out's low fraction changed. */
+struct hs_pwm_peer {
+	void (*changed)(void *ctx, enum hs_pwm_output out);
+	void *ctx;
+};
+
+/* Connects peer to out (copied; NULL disconnects).  Connections outlive the models. */
+void hs_pwm_connect(enum hs_pwm_output out, const struct hs_pwm_peer *peer);
+
+/* The peripheral models (for hs_board_cfg.devices). */
+extern const struct hs_device hs_ehrpwm1_device;
+extern const struct hs_device hs_ecap0_device;
+extern const struct hs_device hs_ecap1_device;
 
 /* Fraction of each period the PWM output is low (0..1), as the H-bridge
  * sees it now; 1.0 (held low, as after reset) if the module is absent,
  * unpowered or stopped at a low level. */
-double ev3_pwm_low_fraction(enum ev3_pwm_source src);
+double hs_pwm_low_fraction(enum hs_pwm_output src);
 
 /* PWM frequency in Hz of a source now (0 if stopped). */
-double ev3_pwm_frequency(enum ev3_pwm_source src);
+double hs_pwm_frequency(enum hs_pwm_output src);
 
 #endif /* HOST_SIM_DEVICES_PWM_H */

@@ -1,9 +1,12 @@
 /*
  * uart16550.h — the AM1808 UART (16550-compatible) as used behind the EV3
- * input ports: UART1 (port 1), UART0 (port 2) and two stand-ins for the PRU
- * soft UARTs of ports 3 and 4 (ev3_ports.h: ev3_port_uart).  Host only.
+ * input ports.  The model is one 16550 at an address, on an interrupt line,
+ * with a module clock (struct hs_uart_cfg); which UARTs a board has and
+ * what sits on their lines is the board's business (the EV3: UART1 behind
+ * port 1, UART0 behind port 2 and two stand-ins for the PRU soft UARTs of
+ * ports 3 and 4, ev3_ports.h: ev3_port_uart).  Host only.
  *
- * Registers are 32-bit words (facts §2): RBR/THR 0x00, IER 0x04, IIR/FCR
+ * Registers are 32-bit words (AM1808 TRM): RBR/THR 0x00, IER 0x04, IIR/FCR
  * 0x08, LCR 0x0C, MCR 0x10, LSR 0x14, MSR 0x18, SCR 0x1C, DLL 0x20, DLH
  * 0x24, REVID1/2 0x28/0x2C, PWREMU_MGMT 0x30, MDR 0x34; byte accesses are
  * accepted too.  DLL/DLH also appear at 0x00/0x04 while LCR.DLAB is set.
@@ -22,40 +25,66 @@
 #include <stdint.h>
 #include "host_sim/board.h"
 
-extern const struct hs_device ev3_uart1_device;     /* input port 1 */
-extern const struct hs_device ev3_uart0_device;     /* input port 2 */
-extern const struct hs_device ev3_suart_in3_device; /* input port 3 stand-in */
-extern const struct hs_device ev3_suart_in4_device; /* input port 4 stand-in */
+struct hs_uart;
 
-struct ev3_uart;
+/* Register offsets (32-bit words, AM1808 TRM, UART chapter). */
+#define HS_UART_RBR	0x00U   /* THR on writes, DLL while LCR.DLAB */
+#define HS_UART_IER	0x04U
+#define HS_UART_IIR	0x08U   /* FCR on writes */
+#define HS_UART_LCR	0x0CU
+#define HS_UART_LSR	0x14U
 
-/* The UART behind input port (0..3), or NULL if its device is not on the board. */
-struct ev3_uart *ev3_uart_of_port(unsigned port);
+/* IIR bits 3-0, the interrupt identification, highest priority first
+ * (AM1808 TRM, UART chapter, table "Interrupt Identification and Interrupt
+ * Clearing Information"); bits 7-6 are set while the FIFOs are enabled. */
+#define HS_UART_IIR_LINE_STATUS	0x6U    /* overrun, parity, framing error or break */
+#define HS_UART_IIR_RX_DATA	0x4U    /* receiver data at the trigger level */
+#define HS_UART_IIR_RX_TIMEOUT	0xCU    /* character timeout with data in the FIFO */
+#define HS_UART_IIR_THR_EMPTY	0x2U
+#define HS_UART_IIR_NONE	0x1U    /* no interrupt pending */
+#define HS_UART_IIR_ID_MASK	0x0FU
+#define HS_UART_IIR_FIFOS_ON	0xC0U
+
+/* One UART instance: register base, AINTC line, module clock, power domain. */
+struct hs_uart_cfg {
+	const char *name;           /* region name */
+	uintptr_t base;
+	unsigned intno;
+	uint32_t clock_hz;          /* module clock: baud = clock / (16 or 13 * divisor) */
+	unsigned power;             /* HS_PSCx_MODULE(n), or HS_NO_PSC */
+};
+
+/* Creates a UART (cfg must stay valid while it exists) in the state Linux
+ * leaves it, or at TRM reset with the board's cold_reset.  Returns E_OK
+ * and *out, E_NOMEM, or E_PAR if its registers cannot be placed. */
+ER hs_uart_create(const struct hs_uart_cfg *cfg, struct hs_uart **out);
+/* Stops its events and frees it. */
+void hs_uart_destroy(struct hs_uart *u);
 
 /* The far end: called when a byte the UART sent has left the wire, and
  * when the UART starts/stops sending a break (LCR.BC). */
-struct ev3_uart_peer {
+struct hs_uart_peer {
 	void (*tx_byte)(void *ctx, uint8_t byte, uint32_t baud);
 	void (*tx_break)(void *ctx, bool active);
 	void *ctx;
 };
-void ev3_uart_set_peer(struct ev3_uart *u, const struct ev3_uart_peer *peer);
+void hs_uart_set_peer(struct hs_uart *u, const struct hs_uart_peer *peer);
 
 /* A byte finished arriving on the RX line, sent at baud. */
-void ev3_uart_rx_byte(struct ev3_uart *u, uint8_t byte, uint32_t baud);
+void hs_uart_rx_byte(struct hs_uart *u, uint8_t byte, uint32_t baud);
 /* The RX line level: held low for a character time or more is a break. */
-void ev3_uart_rx_line(struct ev3_uart *u, bool high);
+void hs_uart_rx_line(struct hs_uart *u, bool high);
 
 /* Current baud (0 if the divisor is 0 or the UART is in reset). */
-uint32_t ev3_uart_baud(const struct ev3_uart *u);
+uint32_t hs_uart_baud(const struct hs_uart *u);
 
-struct ev3_uart_stats {
+struct hs_uart_stats {
 	uint32_t rx_bytes, tx_bytes;
 	uint32_t overruns;          /* bytes lost because the RX FIFO was full */
 	uint32_t framing_errors;    /* garbled bytes (speed mismatch, break) */
 	uint32_t breaks;
 	uint32_t rx_in_reset;       /* bytes that arrived while the receiver was in reset */
 };
-const struct ev3_uart_stats *ev3_uart_get_stats(const struct ev3_uart *u);
+const struct hs_uart_stats *hs_uart_get_stats(const struct hs_uart *u);
 
 #endif /* HOST_SIM_DEVICES_UART16550_H */

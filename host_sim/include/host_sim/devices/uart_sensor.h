@@ -1,7 +1,8 @@
 /*
  * uart_sensor.h — the EV3 UART sensors (colour 29, ultrasonic 30, gyro 32,
  * infrared 33), modelled from the device side of the LEGO UART protocol
- * (facts §8, §9; docs/host-sim-devices.md): auto-ID low period on pin 6,
+ * (LEGO's d_uart_mod.c, pybricks' port_lump.c, ev3dev's
+ * ev3_uart_sensor_defs.c; docs/host-sim-devices.md): auto-ID low period on pin 6,
  * TYPE/MODES/SPEED and per-mode INFO at 2400 baud, ACK, the switch to
  * 57600 baud after the host's ACK, DATA at each sensor's rate, the 1 s
  * keep-alive reset, SELECT and WRITE.  Values come from the scenario.
@@ -26,7 +27,7 @@
 #define UART_SENSOR_HANDSHAKE_BAUD   2400U
 #define UART_SENSOR_MAX_MODES        8U
 
-/* What one mode advertises (facts §9); PCT is never sent (0-100 implied). */
+/* What one mode advertises (ev3dev's ev3_uart_sensor_defs.c); PCT is never sent (0-100 implied). */
 struct uart_sensor_mode {
 	const char *name;           /* <= 11 characters */
 	float raw_min, raw_max;
@@ -46,7 +47,7 @@ struct uart_sensor_def {
 	uint8_t type;
 	uint8_t modes, views;
 	uint32_t speed;             /* advertised SPEED, used after the host's ACK */
-	uint32_t autoid_low_us;     /* pin 6 held low at power-up (facts: 502-506 ms) */
+	uint32_t autoid_low_us;     /* pin 6 held low at power-up (502-506 ms in logic-analyser captures of real sensors) */
 	uint32_t handshake_us;      /* TYPE .. ACK as captured (gaps between messages fill it) */
 	uint32_t first_data_us;     /* host ACK -> first DATA frame (captures: ~7 ms) */
 	uint32_t ack_timeout_us;    /* no host ACK this long after ours: start the handshake over */

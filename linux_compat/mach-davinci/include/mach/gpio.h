@@ -10,7 +10,7 @@
  * Every access goes through the asm/io.h accessors, i.e. SIL register
  * accesses.  gpio_set_value/gpio_get_value are inline: a bounds check, the
  * block's address and one register access, since drivers call them for many
- * pins every 1-2 ms.  The rest is in linux_compat/src/gpio.c:
+ * pins every 1-2 ms.  The rest is in linux_compat/mach-davinci/gpio.c:
  * - gpio_request/gpio_free track ownership (-EBUSY if taken, -EINVAL if not
  *   a valid pin), but as in Linux's legacy API the other calls work on any
  *   valid pin, requested or not;

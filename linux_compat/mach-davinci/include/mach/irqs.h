@@ -4,7 +4,7 @@
  * IRQs 0..100 are the AINTC's system interrupts.  As on DaVinci, the GPIO
  * pins' own IRQs follow them: gpio_to_irq(gpio) = DAVINCI_N_AINTC_IRQ + gpio
  * = 101 + gpio, demultiplexed from the bank interrupts 42..50 by
- * linux_compat/src/gpio.c.  Only the lines listed in linux_compat/irq.h
+ * linux_compat/mach-davinci/gpio.c.  Only the lines listed in linux_compat/irq.h
  * (LX_IRQ_LINES) have an RTOS interrupt service routine; request_irq on any
  * other AINTC line fails with -EINVAL.
  */

@@ -1,0 +1,319 @@
+/*
+ * ev3cfg — the app.cfg configurator: a host tool the build runs to turn a
+ * TOPPERS-style configuration file into kernel tables.
+ *
+ *   ev3cfg -o OUTDIR [-I dir]... [-D name[=value]]... [--cpp CMD] [--symbol NAME]
+ *          [--object path.o]... app.cfg
+ *
+ * app.cfg is run through the C preprocessor (CMD, default "cpp", with
+ * -DTOPPERS_MACRO_ONLY -DTOPPERS_CFG1 and the -I/-D options), then its static
+ * APIs are read: INCLUDE, DOMAIN, CRE_TSK, CRE_SEM, CRE_FLG, CRE_DTQ, CRE_PDQ,
+ * CRE_MTX, CRE_CYC, CRE_ALM, EV3_CRE_CYC, ATT_MOD, ATT_INI, ATT_TER, DEF_SVC,
+ * CFG_INT, ATT_ISR, and ev3lx's EV3LX_INCLUDE_TABLE(symbol) (an existing
+ * struct rtos_cfg, such as the platform's, joined to this one).  It writes:
+ *
+ *   OUTDIR/kernel_cfg.h    #define of every object ID and domain; the apps include it
+ *   OUTDIR/kernel_cfg.c    the rtos_cfg tables and `const struct rtos_cfg NAME`
+ *                          (default ev3rt_app_cfg), INCLUDEing the tables named
+ *   OUTDIR/modules.txt     one line "path/object.o OUTDIR/ev3mod_N.ld" per ATT_MOD
+ *                          (ATT_MOD("x.o") names the --object whose file name is x.o)
+ *   OUTDIR/ev3mod_N.ld     the relocatable-link script that gathers that object's
+ *                          code and data where kernel_cfg.c finds their bounds
+ *
+ * Errors name the file, line and static API ("app.cfg:7: error: CRE_TSK
+ * (MAIN_TASK): ..."); value errors are found by the compiler on kernel_cfg.c
+ * and reported at the same place (#line).  Exit status 0, 1 on configuration
+ * errors, 2 on usage or I/O errors.
+ *
+ * The build drives it through mk/ev3rt_app.mk's function ev3rt_app (see
+ * docs/ev3rt-apps.md, "The configurator"): configure, compile the app and
+ * kernel_cfg.c, relink every ATT_MOD object with its script, link.
+ */
+#include <ctype.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cfg_gen.h"
+
+#define MAX_ARGS 128
+#define MAX_INCLUDED 32
+
+struct tool {
+	const char *cpp;
+	const char *incdirs[MAX_ARGS];
+	int nincdirs;
+	const char *defs[MAX_ARGS];
+	int ndefs;
+	const char *objects[MAX_ARGS];  /* --object: the app's objects, for ATT_MOD */
+	int nobjects;
+	char *included[MAX_INCLUDED];   /* configuration files read so far */
+	int nincluded;
+};
+
+/* Reads a whole file or command output; NULL on error. */
+static char *read_stream(FILE *f)
+{
+	size_t cap = 8192, len = 0;
+	char *buf = malloc(cap);
+
+	if (buf == NULL)
+		return NULL;
+	for (;;) {
+		size_t n;
+
+		if (cap - len < 4096) {
+			char *nb = realloc(buf, cap *= 2);
+
+			if (nb == NULL) {
+				free(buf);
+				return NULL;
+			}
+			buf = nb;
+		}
+		n = fread(buf + len, 1, cap - len - 1, f);
+		len += n;
+		if (n == 0)
+			break;
+	}
+	buf[len] = '\0';
+	return buf;
+}
+
+/* Appends s to the command line, single-quoted for the shell. */
+static void append_quoted(char *cmd, size_t size, const char *s)
+{
+	size_t len = strlen(cmd);
+
+	if (len + 2 < size)
+		cmd[len++] = '\'';
+	for (; *s && len + 5 < size; s++) {
+		if (*s == '\'') {
+			memcpy(cmd + len, "'\\''", 4);
+			len += 4;
+		} else {
+			cmd[len++] = *s;
+		}
+	}
+	if (len + 2 < size)
+		cmd[len++] = '\'';
+	cmd[len++] = ' ';
+	cmd[len] = '\0';
+}
+
+/* Copies the #include directives of a configuration file into kernel_cfg.c's list. */
+static void collect_c_includes(struct cfg_ctx *ctx, const char *raw)
+{
+	for (const char *line = raw; *line != '\0';) {
+		size_t n = strcspn(line, "\n");
+		char buf[1024];
+		char *p = buf, *end;
+
+		snprintf(buf, sizeof(buf), "%.*s", (int)(n < sizeof(buf) ? n : sizeof(buf) - 1), line);
+		line += n + (line[n] == '\n');
+		while (isspace((unsigned char)*p))
+			p++;
+		if (*p != '#')
+			continue;
+		end = p + 1;
+		while (isspace((unsigned char)*end))
+			end++;
+		if (strncmp(end, "include", 7) != 0)
+			continue;
+		end = p + strlen(p);
+		while (end > p && isspace((unsigned char)end[-1]))
+			*--end = '\0';
+		cfg_add_c_include(ctx, p);
+	}
+}
+
+/* Preprocesses and parses one configuration file; returns the errors it
+ * printed itself (cfg_parse counts its own in ctx). */
+static int process_file(struct cfg_ctx *ctx, struct tool *tool, const char *path)
+{
+	char cmd[8192] = "";
+	FILE *f, *pipe;
+	char *raw, *text;
+	int status;
+
+	if ((f = fopen(path, "r")) == NULL) {
+		fprintf(stderr, "ev3cfg: %s: %s\n", path, strerror(errno));
+		return 1;
+	}
+	raw = read_stream(f);
+	fclose(f);
+	if (raw == NULL)
+		return 1;
+	collect_c_includes(ctx, raw);
+	free(raw);
+	snprintf(cmd, sizeof(cmd), "%s -x c -DTOPPERS_MACRO_ONLY -DTOPPERS_CFG1 ", tool->cpp);
+	for (int i = 0; i < tool->nincdirs; i++) {
+		strncat(cmd, "-I", sizeof(cmd) - strlen(cmd) - 1);
+		append_quoted(cmd, sizeof(cmd), tool->incdirs[i]);
+	}
+	for (int i = 0; i < tool->ndefs; i++) {
+		strncat(cmd, "-D", sizeof(cmd) - strlen(cmd) - 1);
+		append_quoted(cmd, sizeof(cmd), tool->defs[i]);
+	}
+	append_quoted(cmd, sizeof(cmd), path);
+	if ((pipe = popen(cmd, "r")) == NULL) {
+		fprintf(stderr, "ev3cfg: cannot run %s\n", tool->cpp);
+		return 1;
+	}
+	text = read_stream(pipe);
+	status = pclose(pipe);
+	if (text == NULL || status != 0) {
+		fprintf(stderr, "%s:1: error: the C preprocessor failed (%s)\n", path, tool->cpp);
+		free(text);
+		return 1;
+	}
+	cfg_parse(ctx, text, path);
+	free(text);
+	return 0;
+}
+
+static bool file_exists(const char *path)
+{
+	struct stat st;
+
+	return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* INCLUDE("file"): beside the including file, else along the -I path. */
+static int include_file(struct cfg_ctx *ctx, const char *file, const char *from_file, int from_line, void *arg)
+{
+	struct tool *tool = arg;
+	char path[4096];
+	const char *slash = strrchr(from_file, '/');
+	bool found = false;
+
+	if (file[0] == '/') {
+		snprintf(path, sizeof(path), "%s", file);
+		found = file_exists(path);
+	} else {
+		snprintf(path, sizeof(path), "%.*s%s", slash != NULL ? (int)(slash - from_file + 1) : 0, from_file, file);
+		found = file_exists(path);
+		for (int i = 0; !found && i < tool->nincdirs; i++) {
+			snprintf(path, sizeof(path), "%s/%s", tool->incdirs[i], file);
+			found = file_exists(path);
+		}
+	}
+	if (!found) {
+		fprintf(stderr, "%s:%d: error: INCLUDE: \"%s\" not found beside the file or along -I (E_NOEXS)\n",
+			from_file, from_line, file);
+		return 1;
+	}
+	for (int i = 0; i < tool->nincluded; i++)
+		if (strcmp(tool->included[i], path) == 0) {
+			fprintf(stderr, "%s:%d: error: INCLUDE: \"%s\" is included twice (E_OBJ)\n",
+				from_file, from_line, file);
+			return 1;
+		}
+	if (tool->nincluded == MAX_INCLUDED) {
+		fprintf(stderr, "%s:%d: error: INCLUDE: more than %d files\n", from_file, from_line, MAX_INCLUDED);
+		return 1;
+	}
+	tool->included[tool->nincluded++] = strdup(path);
+	return process_file(ctx, tool, path);
+}
+
+static FILE *open_out(const char *dir, const char *name)
+{
+	char path[4096];
+	FILE *f;
+
+	snprintf(path, sizeof(path), "%s/%s", dir, name);
+	if ((f = fopen(path, "w")) == NULL)
+		fprintf(stderr, "ev3cfg: %s: %s\n", path, strerror(errno));
+	return f;
+}
+
+static int usage(void)
+{
+	fputs("usage: ev3cfg -o OUTDIR [-I dir]... [-D name[=value]]... [--cpp CMD] [--symbol NAME]\n"
+	      "              [--object path.o]... app.cfg\n", stderr);
+	return 2;
+}
+
+int main(int argc, char **argv)
+{
+	struct tool tool = { .cpp = "cpp" };
+	const char *outdir = NULL, *symbol = "ev3rt_app_cfg", *input = NULL;
+	struct cfg_ctx *ctx;
+	FILE *f;
+	int errors;
+
+	for (int i = 1; i < argc; i++) {
+		const char *a = argv[i];
+		const char *val = NULL;
+
+		if ((strncmp(a, "-I", 2) == 0 || strncmp(a, "-D", 2) == 0) && a[2] != '\0') {
+			val = a + 2;
+		} else if (strcmp(a, "-I") == 0 || strcmp(a, "-D") == 0 || strcmp(a, "-o") == 0 ||
+			   strcmp(a, "--cpp") == 0 || strcmp(a, "--symbol") == 0 || strcmp(a, "--object") == 0) {
+			if (++i == argc)
+				return usage();
+			val = argv[i];
+		} else if (a[0] == '-' || input != NULL) {
+			return usage();
+		} else {
+			input = a;
+			continue;
+		}
+		if (a[1] == 'I' && tool.nincdirs < MAX_ARGS)
+			tool.incdirs[tool.nincdirs++] = val;
+		else if (a[1] == 'D' && tool.ndefs < MAX_ARGS)
+			tool.defs[tool.ndefs++] = val;
+		else if (a[1] == 'o')
+			outdir = val;
+		else if (strcmp(a, "--cpp") == 0)
+			tool.cpp = val;
+		else if (strcmp(a, "--symbol") == 0)
+			symbol = val;
+		else if (strcmp(a, "--object") == 0 && tool.nobjects < MAX_ARGS)
+			tool.objects[tool.nobjects++] = val;
+		else
+			return usage();
+	}
+	if (input == NULL || outdir == NULL)
+		return usage();
+	ctx = cfg_new(stderr, include_file, &tool);
+	tool.included[tool.nincluded++] = strdup(input);
+	errors = process_file(ctx, &tool, input);
+	cfg_finish(ctx);
+	cfg_bind_modules(ctx, tool.objects, tool.nobjects);
+	errors += cfg_errors(ctx);
+	if (errors > 0) {
+		fprintf(stderr, "ev3cfg: %s: %d error%s\n", input, errors, errors == 1 ? "" : "s");
+		cfg_free(ctx);
+		return 1;
+	}
+	if ((f = open_out(outdir, "kernel_cfg.h")) == NULL)
+		return 2;
+	cfg_write_header(ctx, f, symbol);
+	fclose(f);
+	if ((f = open_out(outdir, "kernel_cfg.c")) == NULL)
+		return 2;
+	cfg_write_source(ctx, f, symbol, "kernel_cfg.c");
+	fclose(f);
+	if ((f = open_out(outdir, "modules.txt")) == NULL)
+		return 2;
+	for (int m = 1; m <= cfg_module_count(ctx); m++) {
+		char name[64];
+		FILE *ld;
+
+		snprintf(name, sizeof(name), "ev3mod_%d.ld", m);
+		fprintf(f, "%s %s/%s\n", cfg_module_path(ctx, m), outdir, name);
+		if ((ld = open_out(outdir, name)) == NULL)
+			return 2;
+		cfg_write_module_script(ctx, ld, m);
+		fclose(ld);
+	}
+	fclose(f);
+	cfg_free(ctx);
+	for (int i = 0; i < tool.nincluded; i++)
+		free(tool.included[i]);
+	return 0;
+}

@@ -1,0 +1,10 @@
+# cfg: the app.cfg configurator (ev3cfg), a host tool the build runs.  Its
+# sources are not part of libev3lx.a; mk/ev3rt_app.mk holds the rules that
+# configure, compile and link an EV3RT-style app with it.
+EV3CFG := $(BUILD)/tools/ev3cfg
+EV3CFG_SRCS := cfg/ev3cfg.c cfg/cfg_gen.c
+
+$(EV3CFG): $(EV3CFG_SRCS) cfg/cfg_gen.h
+	@mkdir -p $(@D)
+	$(quiet) CC tools $@
+	$(Q)gcc -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) -O2 -g -o $@ $(EV3CFG_SRCS)

@@ -1,0 +1,465 @@
+/*
+ * run.c — an EV3RT-style application in a robot and its world (run.h).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "rtos_host.h"
+#include "host_sim/scenario.h"
+#include "host_sim/devices/ev3_brick.h"
+#include "host_sim/devices/ev3_ui.h"
+#include "host_sim/devices/uart_sensor.h"
+#include "ev3sim/balance_run.h"
+#include "ev3sim/run.h"
+#include "ev3sim/tribot.h"
+
+#define CHUNK_NS        10000000ULL     /* run in 10 ms slices: the CSV's row period */
+#define DRAIN_NS        20000000ULL
+#define GYROBOY_RELEASE_NS 4000000000ULL
+#define TOUCH_PRESS_NS  3000000000ULL
+#define TOUCH_HOLD_NS   300000000ULL
+
+static const char *const robot_names[] = { "bare", "gyroboy", "tribot" };
+
+/* LEGO's button numbering in host_sim of each EV3RT button_t. */
+static const enum ev3_ui_button ui_button_of[] = {
+	EV3_UI_BUTTON_LEFT, EV3_UI_BUTTON_RIGHT, EV3_UI_BUTTON_UP,
+	EV3_UI_BUTTON_DOWN, EV3_UI_BUTTON_ENTER, EV3_UI_BUTTON_BACK,
+};
+
+#define MAX_IMAGE_REGIONS 8
+
+/*
+ * The app's writable memory as loaded (the regions of its ATT_MOD modules):
+ * copied before its first boot and put back before every later one, as a
+ * power-on loads the app afresh — so runs in one process do not share the
+ * app's statics.
+ */
+static struct {
+	const struct rtos_cfg *app;
+	unsigned n;
+	struct { void *base, *copy; SIZE size; } region[MAX_IMAGE_REGIONS];
+} image;
+
+/*
+ * Before the brick powers down, the app ends as EV3RT's loader ends one: its
+ * cyclic handlers stop and its tasks are terminated (ter_tsk), by a task of
+ * the highest priority in the kernel domain.  Only then do the drivers unload
+ * (ATT_TER), so no app task still polls their shared memory.  Its ID is the
+ * first below the API's button task (EV3_BUTTON_TSKID) and linux_compat's
+ * worker (TNUM_TSKID).
+ */
+#define POWER_OFF_TSKID  (TNUM_TSKID - 2)
+#define POWER_OFF_STACK  (16 * 1024)
+
+static void power_off_task(intptr_t exinf);
+
+static const struct rtos_task_cfg power_off_tasks[] = {
+	{ POWER_OFF_TSKID, TA_NULL, 0, power_off_task, TMIN_TPRI, POWER_OFF_STACK, TDOM_KERNEL,
+	  "ev3sim power-off" },
+};
+/* The run's configuration: the power-off task and the app. */
+static const struct rtos_cfg *run_includes[2];
+static const struct rtos_cfg run_cfg = {
+	.name = "ev3sim_run",
+	.tasks = RTOS_TABLE(power_off_tasks),
+	.includes = run_includes,
+};
+
+static struct {
+	const struct ev3sim_run_opts *o;
+	struct ev3sim_run_result *r;
+	double sum_sq_error;
+	uint64_t samples, on_line;
+} run;
+
+const char *ev3sim_robot_name(enum ev3sim_robot_kind k)
+{
+	return (unsigned)k < sizeof(robot_names) / sizeof(robot_names[0]) ? robot_names[k] : "?";
+}
+
+bool ev3sim_robot_parse(const char *s, enum ev3sim_robot_kind *k)
+{
+	for (unsigned i = 0; i < sizeof(robot_names) / sizeof(robot_names[0]); i++)
+		if (strcmp(s, robot_names[i]) == 0) {
+			*k = (enum ev3sim_robot_kind)i;
+			return true;
+		}
+	return false;
+}
+
+void ev3sim_run_defaults(struct ev3sim_run_opts *o, enum ev3sim_robot_kind robot)
+{
+	memset(o, 0, sizeof(*o));
+	o->robot = robot;
+	o->seconds = 10.0;
+	o->seed = 1;
+	o->release_ns = GYROBOY_RELEASE_NS;
+	switch (robot) {
+	case EV3SIM_ROBOT_GYROBOY:
+		o->out[0] = EV3SIM_OUT_LARGE;
+		o->out[3] = EV3SIM_OUT_LARGE;
+		o->in[1] = EV3SIM_IN_GYRO;
+		o->start_tilt_deg = 0.5;
+		o->gyro_noise_dps = 0.3;
+		break;
+	case EV3SIM_ROBOT_TRIBOT:
+		o->out[1] = EV3SIM_OUT_LARGE;
+		o->out[2] = EV3SIM_OUT_LARGE;
+		o->in[0] = EV3SIM_IN_TOUCH;
+		o->in[2] = EV3SIM_IN_COLOR;
+		o->in[3] = EV3SIM_IN_ULTRASONIC;
+		o->actions[0] = (struct ev3sim_action){ .touch = true, .t_ns = TOUCH_PRESS_NS,
+							.hold_ns = TOUCH_HOLD_NS };
+		o->nactions = 1;
+		break;
+	default:
+		break;
+	}
+}
+
+/*
+ * Copies n bytes of an app region.  A region is the app's whole data or bss
+ * section, so under ASan it holds the redzones between the app's objects too:
+ * copied byte by byte outside ASan's checks (memcpy would be intercepted).
+ */
+__attribute__((no_sanitize_address))
+static void copy_region(void *dst, const void *src, size_t n)
+{
+	volatile uint8_t *d = dst;
+	const volatile uint8_t *s = src;
+
+	while (n--)
+		*d++ = *s++;
+}
+
+/* Copies the app's writable regions at its first run, restores them at later ones. */
+static ER load_image(const struct rtos_cfg *app)
+{
+	if (image.app == app) {
+		for (unsigned i = 0; i < image.n; i++)
+			copy_region(image.region[i].base, image.region[i].copy, image.region[i].size);
+		return E_OK;
+	}
+	for (unsigned i = 0; i < image.n; i++)
+		free(image.region[i].copy);
+	memset(&image, 0, sizeof(image));
+	for (uint_t i = 0; i < app->nmems; i++) {
+		const struct rtos_mem_cfg *m = &app->mems[i];
+
+		if (!(m->access & TPM_WRITE) || m->size == 0)
+			continue;
+		if (image.n == MAX_IMAGE_REGIONS)
+			return E_NOMEM;
+		image.region[image.n].base = (void *)(uintptr_t)m->base;
+		image.region[image.n].size = m->size;
+		image.region[image.n].copy = malloc(m->size);
+		if (image.region[image.n].copy == NULL)
+			return E_NOMEM;
+		copy_region(image.region[image.n].copy, m->base, m->size);
+		image.n++;
+	}
+	image.app = app;
+	return E_OK;
+}
+
+/* Stops the app's cyclic handlers and terminates its tasks. */
+static void power_off_task(intptr_t exinf)
+{
+	const struct rtos_cfg *app = run_includes[0];
+
+	(void)exinf;
+	for (uint_t i = 0; i < app->ncycs; i++)
+		(void)stp_cyc(app->cycs[i].cycid);
+	for (uint_t i = 0; i < app->ntasks; i++)
+		(void)ter_tsk(app->tasks[i].tskid);     /* E_OBJ for a dormant one */
+}
+
+/* Syslog lines of the run: counted and handed to the sink. */
+static void trace_sink(const char *line, void *ctx)
+{
+	const char *text = strstr(line, " syslog ");
+
+	(void)ctx;
+	if (text == NULL)
+		return;
+	text += strlen(" syslog ");
+	run.r->log_lines++;
+	if (strncmp(text, "WARNING:", 8) == 0)
+		run.r->warnings++;
+	else if (strncmp(text, "ERROR:", 6) == 0 || strncmp(text, "CRIT:", 5) == 0 ||
+		 strncmp(text, "ALERT:", 6) == 0 || strncmp(text, "EMERG:", 6) == 0)
+		run.r->errors++;
+	if (run.o->log_sink)
+		run.o->log_sink(text, run.o->log_ctx);
+}
+
+/* The gyro's noise and drift from the faults. */
+static void gyro_options(const struct ev3sim_run_opts *o, struct uart_sensor_options *gyro)
+{
+	gyro->gyro_noise_dps = o->gyro_noise_dps;
+	for (unsigned i = 0; i < o->nfaults; i++) {
+		if (o->faults[i].target == EV3SIM_FAULT_GYRO_NOISE)
+			gyro->gyro_noise_dps = o->faults[i].value;
+		else if (o->faults[i].target == EV3SIM_FAULT_GYRO_DRIFT)
+			gyro->gyro_drift_dps = o->faults[i].value;
+	}
+}
+
+/* Plugs in the devices with a neutral scene (the world sets what it drives). */
+static ER plug_in(const struct ev3sim_run_opts *o)
+{
+	static const struct uart_sensor_scene scene = {
+		.reflect_pct = EV3SIM_MAT_WHITE_PCT, .ambient_pct = 10, .color = 6,
+		.rgb = { 420, 420, 420 }, .distance_mm = 1000,
+		.beacon_distance = { -128, -128, -128, -128 },
+	};
+	static const uint8_t uart_type[EV3SIM_IN_COUNT] = {
+		[EV3SIM_IN_GYRO] = UART_SENSOR_TYPE_GYRO, [EV3SIM_IN_COLOR] = UART_SENSOR_TYPE_COLOR,
+		[EV3SIM_IN_ULTRASONIC] = UART_SENSOR_TYPE_ULTRASONIC, [EV3SIM_IN_IR] = UART_SENSOR_TYPE_IR,
+	};
+	ER ercd = E_OK;
+
+	for (unsigned p = 0; p < 4 && ercd == E_OK; p++) {
+		struct uart_sensor_options uopt = { .name = NULL };
+
+		switch (o->in[p]) {
+		case EV3SIM_IN_NONE:
+			break;
+		case EV3SIM_IN_TOUCH:
+			ercd = ev3_attach_analog(p, EV3_INPUT_EV3_TOUCH, NULL);
+			break;
+		case EV3SIM_IN_NXT_TOUCH:
+			ercd = ev3_attach_analog(p, EV3_INPUT_NXT_TOUCH, NULL);
+			break;
+		case EV3SIM_IN_NXT_LIGHT:
+			ercd = ev3_attach_analog(p, EV3_INPUT_NXT_LIGHT, NULL);
+			if (ercd == E_OK)
+				ercd = ev3_set_light(p, 40);
+			break;
+		default:
+			if (o->in[p] == EV3SIM_IN_GYRO)
+				gyro_options(o, &uopt);
+			ercd = ev3_attach_uart_sensor(p, uart_type[o->in[p]], &uopt);
+			if (ercd == E_OK)
+				ercd = ev3_set_scene(p, &scene);
+			break;
+		}
+		if (ercd == E_OK && o->out[p] != EV3SIM_OUT_NONE)
+			ercd = ev3_attach_motor(p, o->out[p] == EV3SIM_OUT_MEDIUM ? HS_MOTOR_MEDIUM :
+						HS_MOTOR_LARGE, NULL);
+	}
+	return ercd;
+}
+
+/* Event: the touch sensors on every port with one change to (bool)arg. */
+static void touch_event(void *arg)
+{
+	for (unsigned p = 0; p < 4; p++)
+		if (run.o->in[p] == EV3SIM_IN_TOUCH || run.o->in[p] == EV3SIM_IN_NXT_TOUCH)
+			ev3_set_touch(p, arg != NULL);
+}
+
+/* Schedules the user's actions and the faults. */
+static ER schedule(const struct ev3sim_run_opts *o, char *err, size_t errlen)
+{
+	static const char press = 1;
+
+	for (unsigned i = 0; i < o->nactions; i++) {
+		const struct ev3sim_action *a = &o->actions[i];
+
+		if (a->touch) {
+			hs_sim_at(a->t_ns, touch_event, (void *)&press);
+			hs_sim_at(a->t_ns + a->hold_ns, touch_event, NULL);
+		} else if (a->button >= sizeof(ui_button_of) / sizeof(ui_button_of[0]) ||
+			   ev3_ui_click_at(a->t_ns, ui_button_of[a->button], a->hold_ns) != E_OK) {
+			snprintf(err, errlen, "action %u: bad button click", i + 1);
+			return E_PAR;
+		}
+	}
+	for (unsigned i = 0; i < o->nfaults; i++) {
+		if (o->faults[i].target != EV3SIM_FAULT_BRICK)
+			continue;
+		if (ev3_fault_at(o->faults[i].at_ns, &o->faults[i].fault) != E_OK) {
+			snprintf(err, errlen, "fault %u rejected by host_sim", i + 1);
+			return E_PAR;
+		}
+	}
+	return E_OK;
+}
+
+/* Starts the robot's physics. */
+static ER start_world(const struct ev3sim_run_opts *o)
+{
+	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
+		struct ev3sim_robot_cfg cfg = {
+			.left_port = 0, .right_port = 3, .gyro_port = 1, .release_ns = o->release_ns,
+			.start_tilt_deg = o->start_tilt_deg, .pushes = o->pushes, .npushes = o->npushes,
+		};
+
+		return ev3sim_robot_start(&cfg);
+	}
+	if (o->robot == EV3SIM_ROBOT_TRIBOT) {
+		struct ev3sim_tribot_cfg cfg = {
+			.left_port = 1, .right_port = 2,
+			.color_port = o->in[2] == EV3SIM_IN_COLOR ? 2 : -1,
+		};
+
+		return ev3sim_tribot_start(&cfg);
+	}
+	return E_OK;
+}
+
+/* The world's state every CHUNK_NS: statistics and a CSV row. */
+static void observe(const struct ev3sim_run_opts *o, struct ev3sim_run_result *r)
+{
+	double t = rtos_host_now() * 1e-9;
+
+	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
+		const struct ev3sim_robot_sample *s = ev3sim_robot_now();
+
+		if (!s->held && fabs(s->tilt_deg) > r->max_tilt_deg)
+			r->max_tilt_deg = fabs(s->tilt_deg);
+		if (o->csv)
+			fprintf(o->csv, "%.2f,%.3f,%.3f,%.2f,%d\n", t, s->tilt_deg, s->tilt_rate_dps,
+				s->wheel_deg, s->held ? 1 : 0);
+	} else if (o->robot == EV3SIM_ROBOT_TRIBOT) {
+		const struct ev3sim_tribot_sample *s = ev3sim_tribot_now();
+		double e = fabs(s->line_error_m) * 1000.0;
+
+		if (e > r->max_line_error_mm)
+			r->max_line_error_mm = e;
+		run.sum_sq_error += e * e;
+		run.samples++;
+		run.on_line += s->line_cover > 0.0;
+		r->progress_m = s->progress_m;
+		r->travel_m = s->travel_m;
+		if (o->csv)
+			fprintf(o->csv, "%.2f,%.4f,%.4f,%.2f,%.2f,%u,%.3f\n", t, s->x_m, s->y_m,
+				s->heading_deg, s->line_error_m * 1000.0, s->reflect_pct, s->progress_m);
+	}
+}
+
+static void csv_header(const struct ev3sim_run_opts *o)
+{
+	if (o->csv == NULL)
+		return;
+	if (o->robot == EV3SIM_ROBOT_GYROBOY)
+		fprintf(o->csv, "t_s,tilt_deg,tilt_rate_dps,wheel_deg,held\n");
+	else if (o->robot == EV3SIM_ROBOT_TRIBOT)
+		fprintf(o->csv, "t_s,x_m,y_m,heading_deg,line_error_mm,reflect_pct,progress_m\n");
+	else
+		fprintf(o->csv, "t_s\n");
+}
+
+ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
+	      struct ev3sim_run_result *r, char *err, size_t errlen)
+{
+	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
+	struct hs_scenario scn = { .rtos = &run_cfg, .board = &board, .seed = o->seed,
+				   .vcd_path = o->trace_path };
+	uint64_t end;
+	double wall0;
+	ER ercd;
+
+	memset(r, 0, sizeof(*r));
+	if (app == NULL || !(o->seconds > 0 && o->seconds <= EV3SIM_MAX_SECONDS) ||
+	    o->nfaults > EV3SIM_RUN_MAX_FAULTS || o->nactions > EV3SIM_RUN_MAX_ACTIONS ||
+	    o->npushes > EV3SIM_MAX_PUSHES || (unsigned)o->robot > EV3SIM_ROBOT_TRIBOT ||
+	    fabs(o->start_tilt_deg) >= 30.0 || !(o->gyro_noise_dps >= 0)) {
+		snprintf(err, errlen, "bad run options");
+		return E_PAR;
+	}
+	for (unsigned p = 0; p < 4; p++)
+		if ((unsigned)o->in[p] >= EV3SIM_IN_COUNT || (unsigned)o->out[p] >= EV3SIM_OUT_COUNT) {
+			snprintf(err, errlen, "bad device on port %u", p + 1);
+			return E_PAR;
+		}
+	if (load_image(app) != E_OK) {
+		snprintf(err, errlen, "out of memory for the app's image");
+		return E_SYS;
+	}
+	run_includes[0] = app;
+	memset(&run, 0, sizeof(run));
+	run.o = o;
+	run.r = r;
+	wall0 = ev3sim_wall_seconds();
+	if (hs_sim_boot(&scn) != E_OK) {
+		snprintf(err, errlen, "boot failed: %s", rtos_host_boot_error());
+		return E_SYS;
+	}
+	rtos_host_trace_set_sink(trace_sink, NULL);
+	if (o->quiet)
+		ev3sim_quiet_console();
+	ercd = plug_in(o);
+	if (ercd != E_OK)
+		snprintf(err, errlen, "cannot plug the devices in (%d)", (int)ercd);
+	if (ercd == E_OK)
+		ercd = schedule(o, err, errlen);
+	if (ercd == E_OK && (ercd = start_world(o)) != E_OK)
+		snprintf(err, errlen, "the %s's devices are not all plugged in (%d)",
+			 ev3sim_robot_name(o->robot), (int)ercd);
+	if (ercd != E_OK) {
+		(void)iact_tsk(POWER_OFF_TSKID);
+		hs_sim_run_for(DRAIN_NS);
+		rtos_host_trace_set_sink(NULL, NULL);
+		hs_sim_shutdown();
+		return ercd == E_PAR ? E_PAR : E_SYS;
+	}
+	csv_header(o);
+	end = (uint64_t)llround(o->seconds * 1e9);
+	while (rtos_host_now() < end) {
+		uint64_t next = rtos_host_now() + CHUNK_NS;
+
+		hs_sim_run_until(next < end ? next : end);
+		observe(o, r);
+	}
+	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
+		uint64_t fell_ns;
+
+		r->fell = ev3sim_robot_fallen(&fell_ns);
+		r->fell_at_s = r->fell ? fell_ns * 1e-9 : 0.0;
+		ev3sim_robot_stop();
+	} else if (o->robot == EV3SIM_ROBOT_TRIBOT) {
+		ev3sim_tribot_stop();
+		r->rms_line_error_mm = run.samples ? sqrt(run.sum_sq_error / (double)run.samples) : 0.0;
+		r->on_line_pct = run.samples ? 100.0 * (double)run.on_line / (double)run.samples : 0.0;
+	}
+	r->seconds = rtos_host_now() * 1e-9;
+	r->bugs = rtos_host_bug_count();
+	r->wall_s = ev3sim_wall_seconds() - wall0;
+	(void)iact_tsk(POWER_OFF_TSKID);
+	hs_sim_run_for(DRAIN_NS);
+	rtos_host_trace_set_sink(NULL, NULL);
+	if (hs_sim_shutdown() != E_OK) {
+		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
+		return E_SYS;
+	}
+	return E_OK;
+}
+
+void ev3sim_run_summary(const struct ev3sim_run_opts *o, const struct ev3sim_run_result *r,
+			char *buf, size_t len)
+{
+	char world[256] = "";
+
+	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
+		char fell_at[32] = "none";
+
+		if (r->fell)
+			snprintf(fell_at, sizeof(fell_at), "%.3f", r->fell_at_s);
+		snprintf(world, sizeof(world), "result=%s fell_at_s=%s max_tilt_deg=%.2f ",
+			 r->fell ? "fell" : "upright", fell_at, r->max_tilt_deg);
+	} else if (o->robot == EV3SIM_ROBOT_TRIBOT) {
+		snprintf(world, sizeof(world),
+			 "line_progress_m=%.3f travel_m=%.3f max_line_error_mm=%.1f rms_line_error_mm=%.1f "
+			 "on_line_pct=%.1f ", r->progress_m, r->travel_m, r->max_line_error_mm,
+			 r->rms_line_error_mm, r->on_line_pct);
+	}
+	snprintf(buf, len, "app=%s robot=%s seconds=%g seed=%llu %slog_lines=%u warnings=%u errors=%u "
+		 "bugs=%u sim_speed=%.0fx",
+		 o->app_name ? o->app_name : "?", ev3sim_robot_name(o->robot), o->seconds,
+		 (unsigned long long)o->seed, world, r->log_lines, r->warnings, r->errors, r->bugs,
+		 r->wall_s > 0 ? r->seconds / r->wall_s : 0.0);
+}

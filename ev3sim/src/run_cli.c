@@ -1,0 +1,326 @@
+/*
+ * run_cli.c — `ev3sim run APP [options]` (run.h): builds the app directory
+ * with make into an application runner and executes it with the options;
+ * the runner parses them (ev3sim_run_main) and runs the app.
+ */
+#define _XOPEN_SOURCE 700
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include "t_syslog.h"
+#include "ev3sim/cli.h"
+#include "ev3sim/parse.h"
+#include "ev3sim/balance_run.h"
+#include "ev3sim/run.h"
+
+#define MAX_PUSH_NM 5.0
+
+static const char run_usage[] =
+	"usage: ev3sim run APP_DIR [options]\n"
+	"\n"
+	"Builds the EV3RT-style application in APP_DIR (app.c, app.h, app.cfg and an\n"
+	"optional Makefile.inc whose APPL_COBJS lists more sources) against ev3lx and\n"
+	"runs it on the simulated brick in a robot, then prints one key=value summary.\n"
+	"Times count from power-on.\n"
+	"\n"
+	"  --robot R            bare, gyroboy or tribot (default bare):\n"
+	"                         gyroboy: large motors A (left), D (right), gyro on 2; held\n"
+	"                                  upright until --release, then falls unless balanced\n"
+	"                         tribot:  large motors B (left), C (right), touch on 1, colour on 3\n"
+	"                                  looking down at a line-following mat, ultrasonic on 4;\n"
+	"                                  the touch sensor is pressed at 3 s (unless --touch)\n"
+	"  --in1 .. --in4 DEV   none, touch, nxt-touch, nxt-light, gyro, color, ultrasonic, ir\n"
+	"  --outA .. --outD DEV none, large, medium (override the robot's)\n"
+	"  --seconds N          virtual seconds to run (default 10, max 3600)\n"
+	"  --seed S             seed of every random stream (default 1)\n"
+	"  --touch T[:HOLD]     press the touch sensor at T for HOLD (default 300ms); may repeat\n"
+	"  --click BUTTON:T     click left|right|up|down|enter|back at T (held 100 ms); may repeat\n"
+	"  --release T          gyroboy: when the hand lets go (default 4s)\n"
+	"  --tilt DEG           gyroboy: tilt when let go (default 0.5)\n"
+	"  --push T:NM          gyroboy: pitch torque NM (N m) for 100 ms at T; may repeat\n"
+	"  --fault SPEC         inject a fault (as ev3sim balance --help lists; uart faults go to\n"
+	"                       the first UART sensor, times from power-on); may repeat\n"
+	"  --trace FILE.vcd     host_sim's signal trace\n"
+	"  --csv FILE           the robot's state every 10 ms\n"
+	"  --quiet              the console shows warnings and worse only\n"
+	"\n"
+	"Summary: app, robot, seconds, seed, the world's figures (gyroboy: result, fell_at_s,\n"
+	"max_tilt_deg; tribot: line_progress_m, travel_m, max/rms_line_error_mm, on_line_pct),\n"
+	"syslog line counts, bugs, sim_speed.\n";
+
+static const char *const button_names[] = { "left", "right", "up", "down", "enter", "back" };
+
+static int usage(const char *fmt, const char *what)
+{
+	fprintf(stderr, "ev3sim run: ");
+	fprintf(stderr, fmt, what);
+	fprintf(stderr, "\n(ev3sim run --help lists the options)\n");
+	return EV3SIM_EXIT_USAGE;
+}
+
+/* Splits "A:B" at the first ':' into a (copied) and b; false if too long. */
+static bool split_colon(const char *v, char *a, size_t alen, const char **b)
+{
+	const char *colon = strchr(v, ':');
+	size_t n = colon ? (size_t)(colon - v) : strlen(v);
+
+	if (n >= alen)
+		return false;
+	memcpy(a, v, n);
+	a[n] = '\0';
+	*b = colon ? colon + 1 : NULL;
+	return true;
+}
+
+/* The first port with a UART sensor (where uart-* faults go), else 0. */
+static unsigned first_uart_port(const struct ev3sim_run_opts *o)
+{
+	for (unsigned p = 0; p < 4; p++)
+		if (o->in[p] == EV3SIM_IN_GYRO || o->in[p] == EV3SIM_IN_COLOR ||
+		    o->in[p] == EV3SIM_IN_ULTRASONIC || o->in[p] == EV3SIM_IN_IR)
+			return p;
+	return 0;
+}
+
+/* One option with its value v; EV3SIM_EXIT_OK or a usage error. */
+static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v, bool *touch_given,
+		      const char **csv_path)
+{
+	char head[64], err[256];
+	const char *tail;
+
+	if (strcmp(name, "--robot") == 0) {
+		enum ev3sim_robot_kind k;
+
+		if (!ev3sim_robot_parse(v, &k))
+			return usage("--robot: bad value '%s' (bare, gyroboy or tribot)", v);
+	} else if (strncmp(name, "--in", 4) == 0 && name[4] >= '1' && name[4] <= '4' && name[5] == '\0') {
+		if (!ev3sim_input_device_parse(v, &o->in[name[4] - '1']))
+			return usage("bad input device '%s' (none, touch, nxt-touch, nxt-light, gyro, "
+				     "color, ultrasonic, ir)", v);
+	} else if (strncmp(name, "--out", 5) == 0 && name[5] >= 'A' && name[5] <= 'D' && name[6] == '\0') {
+		if (!ev3sim_output_device_parse(v, &o->out[name[5] - 'A']))
+			return usage("bad output device '%s' (none, large, medium)", v);
+	} else if (strcmp(name, "--seconds") == 0) {
+		if (!ev3sim_parse_double(v, &o->seconds) || !(o->seconds > 0) ||
+		    o->seconds > EV3SIM_MAX_SECONDS)
+			return usage("--seconds: bad value '%s' (0 < N <= 3600)", v);
+	} else if (strcmp(name, "--seed") == 0) {
+		if (!ev3sim_parse_uint(v, UINT64_MAX, &o->seed))
+			return usage("--seed: bad value '%s' (an unsigned integer)", v);
+	} else if (strcmp(name, "--touch") == 0) {
+		struct ev3sim_action a = { .touch = true, .hold_ns = 300000000ULL };
+
+		if (!*touch_given)
+			o->nactions = 0;    /* the first --touch replaces the robot's default press */
+		*touch_given = true;
+		if (o->nactions == EV3SIM_RUN_MAX_ACTIONS)
+			return usage("%s: too many actions (16)", "--touch");
+		if (!split_colon(v, head, sizeof(head), &tail) || !ev3sim_parse_time(head, &a.t_ns) ||
+		    (tail && (!ev3sim_parse_time(tail, &a.hold_ns) || a.hold_ns == 0)))
+			return usage("--touch: bad value '%s' (T[:HOLD], e.g. 2s:500ms)", v);
+		o->actions[o->nactions++] = a;
+	} else if (strcmp(name, "--click") == 0) {
+		struct ev3sim_action a = { .touch = false, .hold_ns = 100000000ULL, .button = 99 };
+
+		if (o->nactions == EV3SIM_RUN_MAX_ACTIONS)
+			return usage("%s: too many actions (16)", "--click");
+		if (split_colon(v, head, sizeof(head), &tail))
+			for (unsigned b = 0; b < sizeof(button_names) / sizeof(button_names[0]); b++)
+				if (strcmp(head, button_names[b]) == 0)
+					a.button = b;
+		if (a.button == 99 || tail == NULL || !ev3sim_parse_time(tail, &a.t_ns))
+			return usage("--click: bad value '%s' (BUTTON:T, e.g. enter:2s)", v);
+		o->actions[o->nactions++] = a;
+	} else if (strcmp(name, "--release") == 0) {
+		if (!ev3sim_parse_time(v, &o->release_ns))
+			return usage("--release: bad value '%s' (a time, e.g. 4s)", v);
+	} else if (strcmp(name, "--tilt") == 0) {
+		if (!ev3sim_parse_double(v, &o->start_tilt_deg) || fabs(o->start_tilt_deg) >= 30.0)
+			return usage("--tilt: bad value '%s' (|DEG| < 30)", v);
+	} else if (strcmp(name, "--push") == 0) {
+		double nm;
+
+		if (o->npushes == EV3SIM_MAX_PUSHES)
+			return usage("%s: too many pushes (16)", "--push");
+		if (!split_colon(v, head, sizeof(head), &tail) || tail == NULL ||
+		    !ev3sim_parse_time(head, &o->pushes[o->npushes].t_ns) ||
+		    !ev3sim_parse_double(tail, &nm) || fabs(nm) > MAX_PUSH_NM)
+			return usage("--push: bad value '%s' (T:NM, |NM| <= 5 N m)", v);
+		o->pushes[o->npushes++].torque_nm = nm;
+	} else if (strcmp(name, "--fault") == 0) {
+		if (o->nfaults == EV3SIM_RUN_MAX_FAULTS)
+			return usage("%s: too many faults (16)", "--fault");
+		if (!ev3sim_fault_parse(v, first_uart_port(o), &o->faults[o->nfaults], err, sizeof(err)))
+			return usage("--fault: %s", err);
+		o->nfaults++;
+	} else if (strcmp(name, "--trace") == 0) {
+		if (!ev3sim_can_create("run", v))	/* checked before the run, not after it */
+			return EV3SIM_EXIT_FAIL;
+		o->trace_path = v;
+	} else if (strcmp(name, "--csv") == 0) {
+		*csv_path = v;
+	} else {
+		return usage("unknown option %s", name);
+	}
+	return EV3SIM_EXIT_OK;
+}
+
+int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rtos_cfg *app)
+{
+	enum ev3sim_robot_kind robot = EV3SIM_ROBOT_BARE;
+	struct ev3sim_run_opts o;
+	struct ev3sim_run_result r;
+	const char *csv_path = NULL;
+	bool touch_given = false, quiet = false;
+	char err[256], line[1024];
+	int status = EV3SIM_EXIT_OK;
+
+	/* the robot first: its devices are the defaults the other options change */
+	for (int i = 1; i < argc; i++) {
+		if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+			fputs(run_usage, stdout);
+			return EV3SIM_EXIT_OK;
+		}
+		if (strcmp(argv[i], "--robot") == 0 && i + 1 < argc && !ev3sim_robot_parse(argv[i + 1], &robot))
+			return usage("--robot: bad value '%s' (bare, gyroboy or tribot)", argv[i + 1]);
+		if (strncmp(argv[i], "--robot=", 8) == 0 && !ev3sim_robot_parse(argv[i] + 8, &robot))
+			return usage("--robot: bad value '%s' (bare, gyroboy or tribot)", argv[i] + 8);
+	}
+	ev3sim_run_defaults(&o, robot);
+	o.app_name = app_name;
+	for (int i = 1; i < argc; i++) {
+		char name[64];
+		const char *eq = strchr(argv[i], '='), *v;
+		int st;
+
+		if (strcmp(argv[i], "--quiet") == 0) {
+			quiet = true;
+			continue;
+		}
+		if (strncmp(argv[i], "--", 2) != 0)
+			return usage("unexpected argument '%s'", argv[i]);
+		if (eq != NULL && (size_t)(eq - argv[i]) < sizeof(name)) {
+			memcpy(name, argv[i], (size_t)(eq - argv[i]));
+			name[eq - argv[i]] = '\0';
+			v = eq + 1;
+		} else if (strlen(argv[i]) < sizeof(name) && i + 1 < argc) {
+			strcpy(name, argv[i]);
+			v = argv[++i];
+		} else {
+			return usage("%s needs a value (or is unknown)", argv[i]);
+		}
+		st = run_option(&o, name, v, &touch_given, &csv_path);
+		if (st != EV3SIM_EXIT_OK)
+			return st;
+	}
+	if (csv_path && (o.csv = fopen(csv_path, "w")) == NULL) {
+		fprintf(stderr, "ev3sim run: cannot write %s\n", csv_path);
+		return EV3SIM_EXIT_FAIL;
+	}
+	o.quiet = quiet;
+	if (ev3sim_run(&o, app, &r, err, sizeof(err)) != E_OK) {
+		fprintf(stderr, "ev3sim run: %s\n", err);
+		status = EV3SIM_EXIT_FAIL;
+	} else {
+		ev3sim_run_summary(&o, &r, line, sizeof(line));
+		printf("%s\n", line);
+	}
+	if (o.csv && fclose(o.csv) != 0) {
+		fprintf(stderr, "ev3sim run: cannot write %s\n", csv_path);
+		status = EV3SIM_EXIT_FAIL;
+	}
+	fflush(stdout);
+	return status;
+}
+
+/* The source tree: ev3sim is build/host/ev3sim in it. */
+static bool source_root(char *root, size_t len)
+{
+	char exe[PATH_MAX];
+	ssize_t n = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
+
+	if (n <= 0)
+		return false;
+	exe[n] = '\0';
+	for (int up = 0; up < 3; up++) {
+		char *slash = strrchr(exe, '/');
+
+		if (slash == NULL)
+			return false;
+		*slash = '\0';
+	}
+	if (strlen(exe) >= len)
+		return false;
+	strcpy(root, exe);
+	return true;
+}
+
+/* Runs argv to its end; its exit status, or -1. */
+static int run_program(char *const argv[])
+{
+	int wstatus;
+	pid_t pid = fork();
+
+	if (pid < 0)
+		return -1;
+	if (pid == 0) {
+		execvp(argv[0], argv);
+		_exit(127);
+	}
+	if (waitpid(pid, &wstatus, 0) < 0 || !WIFEXITED(wstatus))
+		return -1;
+	return WEXITSTATUS(wstatus);
+}
+
+int ev3sim_run_command(int argc, char **argv)
+{
+	char root[PATH_MAX], app[PATH_MAX], runner[2 * PATH_MAX + 64], app_arg[PATH_MAX + 16];
+	char cfg_path[PATH_MAX + 16];
+	const char *base;
+	struct stat st;
+	char **args;
+
+	if (argc < 1 || strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0) {
+		fputs(run_usage, argc < 1 ? stderr : stdout);
+		return argc < 1 ? EV3SIM_EXIT_USAGE : EV3SIM_EXIT_OK;
+	}
+	if (realpath(argv[0], app) == NULL || stat(app, &st) != 0 || !S_ISDIR(st.st_mode))
+		return usage("'%s' is not an application directory", argv[0]);
+	snprintf(cfg_path, sizeof(cfg_path), "%s/app.cfg", app);
+	if (access(cfg_path, R_OK) != 0)
+		return usage("'%s' has no app.cfg", argv[0]);
+	if (!source_root(root, sizeof(root))) {
+		fprintf(stderr, "ev3sim run: cannot find the ev3lx source tree\n");
+		return EV3SIM_EXIT_FAIL;
+	}
+	base = strrchr(app, '/');
+	base = base && base[1] ? base + 1 : "app";
+	snprintf(runner, sizeof(runner), "%s/build/host/ev3rt/run_%s/run_%s", root, base, base);
+	snprintf(app_arg, sizeof(app_arg), "APP=%s", app);
+	{
+		char *make_argv[] = { "make", "-s", "--no-print-directory", "-C", root, app_arg,
+				      "ev3rt-app", NULL };
+
+		if (run_program(make_argv) != 0) {
+			fprintf(stderr, "ev3sim run: building %s failed\n", app);
+			return EV3SIM_EXIT_FAIL;
+		}
+	}
+	args = calloc((size_t)argc + 1, sizeof(*args));
+	if (args == NULL)
+		return EV3SIM_EXIT_FAIL;
+	args[0] = runner;
+	for (int i = 1; i < argc; i++)
+		args[i] = argv[i];
+	fflush(stdout);
+	execv(runner, args);
+	fprintf(stderr, "ev3sim run: cannot run %s\n", runner);
+	free(args);
+	return EV3SIM_EXIT_FAIL;
+}

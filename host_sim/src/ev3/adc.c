@@ -1,0 +1,68 @@
+/*
+ * adc.c — the EV3's analog-to-digital converter, a TI ADS7957 in manual
+ * mode on SPI0 (spi_adc.h; ADS7957 data sheet, "Manual mode"): each frame
+ * shifts out the conversion of the channel selected two frames before.
+ * The voltages come from the board's analog front end (ev3_adc_channel_mv).
+ */
+#include <math.h>
+#include "rtos_host.h"
+#include "host_sim/devices/ev3_brick.h"
+#include "host_sim/devices/spi_adc.h"
+
+static struct {
+	unsigned next;              /* channel selected by the previous frame */
+	uint16_t result;            /* conversion shifted out in the next frame */
+	bool range_5v;
+} adc;
+
+/* ADS7957 output word: channel in 15-12, 10-bit result in 11-2. */
+uint16_t ads7957_word(unsigned ch, uint32_t mv)
+{
+	uint32_t code = mv >= 5000U ? 1023U : (uint32_t)((mv * 1023U + 2500U) / 5000U);
+
+	return (uint16_t)(((ch & 0xFU) << 12) | (code << 2));
+}
+
+/* The converter's side of one frame starting now: returns what it shifts
+ * out, samples the channel selected last frame, then decodes cmd. */
+static uint16_t adc_frame(void *ctx, uint16_t cmd)
+{
+	uint16_t out = adc.result;
+	double mv = ev3_adc_channel_mv(adc.next);
+	double sigma = ev3_adc_noise_mv();
+	unsigned mode = cmd >> 12;
+
+	if (sigma > 0)
+		mv += sigma * ev3_adc_noise_sample();
+	if (!adc.range_5v)
+		mv *= 2.0;              /* 0-2.5 V range: full scale at half the voltage */
+	mv = mv < 0 ? 0 : mv > 5000 ? 5000 : mv;
+	adc.result = ads7957_word(adc.next, (uint32_t)lround(mv));
+	if (mode == 0x1U && (cmd & 0x0800U)) {
+		adc.next = (cmd >> 7) & 0xFU;
+		adc.range_5v = cmd & 0x0040U;
+	} else if (mode == 0x2U || mode == 0x3U) {
+		rtos_host_bug("host_sim", "SPI0 ADC: command 0x%04x selects an auto mode, which is not modelled "
+			      "(the EV3 uses manual mode)", cmd);
+	}
+	/* mode 1 without bit 11 keeps the channel; 0x4xxx programs GPIOs, 0x8xxx-0x9xxx auto sequences */
+	return out;
+}
+
+/* Connects the converter to SPI0 in its power-up state. */
+static ER adc_create(const struct hs_board_cfg *cfg, void **ctx)
+{
+	adc.next = 0;
+	adc.result = 0;
+	adc.range_5v = true;
+	hs_spi0_connect(&(struct hs_spi_peer){ adc_frame, NULL });
+	*ctx = &adc;
+	return E_OK;
+}
+
+static void adc_destroy(void *ctx)
+{
+	hs_spi0_connect(NULL);
+}
+
+const struct hs_device ev3_adc_device = { "ADS7957", adc_create, NULL, adc_destroy };

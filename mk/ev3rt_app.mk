@@ -1,0 +1,119 @@
+# EV3RT-style apps: app.cfg through the configurator (cfg/ev3cfg.c), then
+# compile and link.  Call once per app and build configuration:
+#
+#   $(eval $(call ev3rt_app,NAME,CONFIG,CFG,SRCS[,RUNNER]))
+#
+#   NAME    the app's name; it builds in $(BUILD)/CONFIG/ev3rt/NAME/
+#   CONFIG  host, host-san or arm926-test
+#   CFG     the app's configuration file (app.cfg); its directory is on the
+#           include path of everything below, then cfg/ (app_common.cfg)
+#           and the platform's headers
+#   SRCS    the app's C sources
+#   RUNNER  optional: objects with main() (booting ev3rt_app_cfg); the app is
+#           then also linked as the program $(BUILD)/CONFIG/ev3rt/NAME/NAME
+#
+# It produces gen/kernel_cfg.h and gen/kernel_cfg.c (the ID macros, and the
+# tables as `const struct rtos_cfg ev3rt_app_cfg`), and NAME.o: one
+# relocatable object holding the app's objects, every ATT_MOD object relinked
+# into its domain's sections, and kernel_cfg.o — link it with a runner and
+# libev3lx.a.  App sources get EV3RT_APP_WARN (no -Werror: apps build
+# unchanged); configuration errors stop the build with "app.cfg:LINE: ...".
+EV3RT_APP_WARN ?= -Wall -Wno-unused-parameter
+
+define ev3rt_app
+EV3RT_DIR_$(1)_$(2)  := $(BUILD)/$(2)/ev3rt/$(1)
+EV3RT_OBJS_$(1)_$(2) := $$(patsubst %.c,$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o,$(4))
+EV3RT_INC_$(1)_$(2)  := -I$(BUILD)/$(2)/ev3rt/$(1)/gen -I$(patsubst %/,%,$(dir $(3))) -Icfg $(call layer_inc,api)
+
+$(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg $$(wildcard $(dir $(3))*.h $(dir $(3))*.cfg)
+	@mkdir -p $$(@D)
+	$$(quiet) CFG $(2) $(3)
+	$(Q)$$(EV3CFG) -o $$(@D) --cpp '$$(CC_$(2)) -E' $$(EV3RT_INC_$(1)_$(2)) $(KERNEL_DEFS) \
+		$$(addprefix --object ,$$(EV3RT_OBJS_$(1)_$(2))) $(3)
+
+$(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c ;
+
+$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.c $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h
+	@mkdir -p $$(@D)
+	$$(quiet) CC $(2) $$<
+	$(Q)$$(CC_$(2)) -std=gnu11 $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+		-MMD -MP -c $$< -o $$@
+
+$(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c
+	$$(quiet) CC $(2) $$<
+	$(Q)$$(CC_$(2)) -std=gnu11 $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+		-MMD -MP -c $$< -o $$@
+
+$(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o
+	$$(quiet) LD $(2) $$@
+	$(Q)set -e; objs=; \
+	for o in $$(EV3RT_OBJS_$(1)_$(2)); do \
+		script=$$$$(awk -v o="$$$$o" '$$$$1 == o { print $$$$2 }' $(BUILD)/$(2)/ev3rt/$(1)/gen/modules.txt); \
+		if [ -n "$$$$script" ]; then \
+			$$(CC_$(2)) -r -nostdlib -o "$$$$o.dom.o" -Wl,-T,"$$$$script" "$$$$o"; \
+			objs="$$$$objs $$$$o.dom.o"; \
+		else \
+			objs="$$$$objs $$$$o"; \
+		fi; \
+	done; \
+	$$(CC_$(2)) -r -nostdlib -o $$@ $$$$objs $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o
+
+ifneq ($(strip $(5)),)
+$(BUILD)/$(2)/ev3rt/$(1)/$(1): $(BUILD)/$(2)/ev3rt/$(1)/$(1).o $(5) $(BUILD)/$(2)/libev3lx.a
+	$$(quiet) LD $(2) $$@
+	$(Q)$$(CC_$(2)) $$(CFLAGS_$(2)) $$(LDFLAGS_$(2)) -o $$@ $$< $(5) \
+		-Wl,--start-group $(BUILD)/$(2)/libev3lx.a -Wl,--end-group -lm
+endif
+
+-include $$(EV3RT_OBJS_$(1)_$(2):.o=.d) $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.d
+endef
+
+# The configurator's own test app, linked into tests/cfg/test_app_cfg in every
+# host configuration: the test's object is the test code plus the whole app.
+define ev3rt_cfg_test
+$(call ev3rt_app,cfg_test_app,$(1),tests/cfg/app_kernel/app.cfg,tests/cfg/app_kernel/app.c)
+
+$(BUILD)/$(1)/obj/tests/cfg/test_app_cfg.o: tests/cfg/test_app_cfg.c $(BUILD)/$(1)/ev3rt/cfg_test_app/cfg_test_app.o
+	@mkdir -p $$(@D)
+	$$(quiet) CC $(1) $$<
+	$(Q)$$(CC_$(1)) $$(call src_flags,$$<) -Itests/cfg/app_kernel -I$(BUILD)/$(1)/ev3rt/cfg_test_app/gen \
+		$$(WARN) $$(CFLAGS_$(1)) $(KERNEL_DEFS) -MMD -MP -c $$< -o $$@.main.o
+	$(Q)$$(CC_$(1)) -r -nostdlib -o $$@ $$@.main.o $(BUILD)/$(1)/ev3rt/cfg_test_app/cfg_test_app.o
+endef
+$(foreach c,$(HOST_CONFIGS),$(eval $(call ev3rt_cfg_test,$(c))))
+
+# The configurator's pass 1 tested in-process: the test object includes cfg_gen.
+define ev3rt_cfg_unit_test
+$(BUILD)/$(1)/obj/tests/cfg/test_cfg_errors.o: tests/cfg/test_cfg_errors.c cfg/cfg_gen.c cfg/cfg_gen.h
+	@mkdir -p $$(@D)
+	$$(quiet) CC $(1) $$<
+	$(Q)$$(CC_$(1)) $$(call src_flags,$$<) -Icfg $$(WARN) $$(CFLAGS_$(1)) -MMD -MP -c $$< -o $$@.main.o
+	$(Q)$$(CC_$(1)) -std=c11 $$(WARN) $$(CFLAGS_$(1)) -c cfg/cfg_gen.c -o $$@.gen.o
+	$(Q)$$(CC_$(1)) -r -nostdlib -o $$@ $$@.main.o $$@.gen.o
+endef
+$(foreach c,$(HOST_CONFIGS),$(eval $(call ev3rt_cfg_unit_test,$(c))))
+
+# `make cfg-error-check` (in `make test`): every configuration in tests/cfg/bad
+# fails — in ev3cfg or when kernel_cfg.c is compiled — with the messages its
+# "/* expect: ... */" lines give (file, line, static API).
+CFG_BAD_INC := -Itests/cfg/bad -Icfg $(call layer_inc,api)
+
+.PHONY: cfg-error-check
+cfg-error-check: $(EV3CFG)
+	@set -e; export LC_ALL=C; n=0; \
+	for f in tests/cfg/bad/*.cfg; do \
+		out=$(BUILD)/cfg-error-check/$$(basename $$f .cfg); rm -rf $$out; mkdir -p $$out; \
+		if $(EV3CFG) -o $$out --cpp 'gcc -E' $(CFG_BAD_INC) --object $$out/main.o $$f 2> $$out/errors.txt; then \
+			if gcc -std=gnu11 -I$$out $(CFG_BAD_INC) -c $$out/kernel_cfg.c -o $$out/kernel_cfg.o \
+				2>> $$out/errors.txt; then \
+				echo "cfg-error-check: $$f: accepted"; exit 1; \
+			fi; \
+		fi; \
+		grep '^/\* expect: ' $$f | sed 's|^/\* expect: \(.*\) \*/$$|\1|' | while IFS= read -r e; do \
+			grep -qF -- "$$e" $$out/errors.txt || \
+				{ echo "cfg-error-check: $$f: no \"$$e\" in:"; cat $$out/errors.txt; exit 1; }; \
+		done; \
+		n=$$((n + 1)); \
+	done; \
+	echo "cfg-error-check: $$n bad configurations, each reported at its file, line and static API"
+TEST_SUITE_EXTRA += cfg-error-check

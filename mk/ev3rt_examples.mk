@@ -1,0 +1,63 @@
+# EV3RT-style apps beyond the configurator's rule (mk/ev3rt_app.mk):
+#
+#   examples/NAME/   each example app is built in every host configuration and
+#                    linked into its test, tests/examples/test_NAME.c, which
+#                    runs it in ev3sim's robots (ev3sim/run.h) and asserts what
+#                    it does.
+#   ev3rt-app        `make ev3rt-app APP=/abs/dir` builds the runner of any app
+#                    directory, $(BUILD)/host/ev3rt/run_NAME/run_NAME: what
+#                    `ev3sim run APP_DIR` does before executing it.  The app's
+#                    sources are app.c and the .c of every object its
+#                    Makefile.inc lists in APPL_COBJS (in the app directory or
+#                    its APPL_DIRS).
+
+EXAMPLES := $(patsubst examples/%/app.cfg,%,$(wildcard examples/*/app.cfg))
+
+# $(1) = example, $(2) = config
+define ev3rt_example_rules
+$(call ev3rt_app,$(1),$(2),examples/$(1)/app.cfg,examples/$(1)/app.c)
+
+$(BUILD)/$(2)/obj/tests/examples/test_$(1).o: tests/examples/test_$(1).c $(BUILD)/$(2)/ev3rt/$(1)/$(1).o
+	@mkdir -p $$(@D)
+	$$(quiet) CC $(2) $$<
+	$(Q)$$(CC_$(2)) $$(call src_flags,$$<) $$(WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+		-MMD -MP -MF $$(@:.o=.d) -MT $$@ -c $$< -o $$@.main.o
+	$(Q)$$(CC_$(2)) -r -nostdlib -o $$@ $$@.main.o $(BUILD)/$(2)/ev3rt/$(1)/$(1).o
+endef
+$(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_rules,$(e),$(c)))))
+
+ifneq ($(APP),)
+EV3RT_RUN_NAME := run_$(notdir $(APP))
+EV3RT_RUN_DIR  := $(BUILD)/host/ev3rt/$(EV3RT_RUN_NAME)
+APPL_COBJS :=
+APPL_DIRS :=
+-include $(APP)/Makefile.inc
+EV3RT_RUN_SRCS := $(APP)/app.c $(foreach o,$(APPL_COBJS),$(firstword \
+	$(wildcard $(addsuffix /$(o:.o=.c),$(APP) $(APPL_DIRS))) $(APP)/$(o:.o=.c)))
+
+$(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
+	@mkdir -p $(@D)
+	$(quiet) CC host $<
+	$(Q)$(CC_host) $(call src_flags,$<) $(WARN) $(CFLAGS_host) $(KERNEL_DEFS) \
+		-DEV3SIM_APP_NAME='"$(notdir $(APP))"' -c $< -o $@
+
+$(eval $(call ev3rt_app,$(EV3RT_RUN_NAME),host,$(APP)/app.cfg,$(EV3RT_RUN_SRCS),$(EV3RT_RUN_DIR)/runner.o))
+
+.PHONY: ev3rt-app
+ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)
+endif
+
+# `make ev3sim-run-check` (in make test): `ev3sim run` builds an app directory
+# and runs it, ending with its summary line.
+.PHONY: ev3sim-run-check
+ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
+	+$(Q)out=$$($(BUILD)/host/ev3sim run examples/blink --seconds 3 --click back:1500ms --quiet) || \
+		{ echo "ev3sim-run-check: FAILED: ev3sim run examples/blink exited $$?"; exit 1; }; \
+	summary=$$(printf '%s\n' "$$out" | tail -n 1); \
+	case "$$summary" in \
+	"app=blink robot=bare seconds=3 seed=1 "*" warnings=0 errors=0 bugs=0 sim_speed="*) \
+		echo "ev3sim-run-check: $$summary";; \
+	*) echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1;; \
+	esac
+
+TEST_SUITE_EXTRA += ev3sim-run-check

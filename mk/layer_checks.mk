@@ -1,0 +1,51 @@
+# Checks of the layering (mk/layers.mk), both in `make test`.
+#
+# `make layer-check`: every #include line and every link edge between the
+# layers' objects follows an edge of LAYER_EDGES (mk/layer_check.sh), after
+# a self-test on fake layers proves each kind of violation is caught.
+.PHONY: layer-check
+layer-check: $(LIB_host) $(BUILD)/am1808/libev3lx.a
+	@bash mk/layer_check_selftest.sh $(abspath $(BUILD))/layer-check-selftest
+	@LAYERS='$(LAYERS)' SUBLAYERS_host_sim='$(SUBLAYERS_host_sim)' \
+		$(foreach l,$(LAYERS),LAYER_EDGES_$(l)='$(LAYER_EDGES_$(l))' HDR_$(l)='$(HDR_$(l))') \
+		bash mk/layer_check.sh $(BUILD)/host/obj $(BUILD)/am1808/obj
+TEST_SUITE_EXTRA += layer-check
+
+# `make header-check`: every public header of every layer
+# compiles on its own, included twice (the include guard holds), with the one
+# compile recipe of its configuration and its layer's include path, warnings
+# as errors: on the host for all layers, with arm-none-eabi-gcc for the layers
+# that go to the brick (host-only headers excepted).  The test helpers in
+# tests/lib are test code, checked by the tests that use them.
+
+HDRCHECK_LAYERS_host   := rtos_stub linux_compat ev3_drivers hacks api host_sim ev3sim
+HDRCHECK_LAYERS_am1808 := rtos_stub linux_compat ev3_drivers hacks api
+HDRCHECK_HOST_ONLY     := rtos_stub/include/rtos_host.h
+# Parts of another header, compiled through it: EV3RT's API groups exist only
+# inside ev3api.h (as in EV3RT), which is checked.
+HDRCHECK_PARTS         := api/ev3api_%.h
+HDRCHECK               := $(BUILD)/header-check
+
+# "path-of-header include-name" pairs of a layer: the name relative to its header directory.
+hdrcheck_pairs = $(foreach d,$(HDR_$(1)),$(foreach h,$(filter-out $(HDRCHECK_PARTS),$(sort $(shell find $(d) -name '*.h' 2>/dev/null))),$(h)@$(patsubst $(d)/%,%,$(h))))
+HDRCHECK_PAIRS_host   := $(foreach l,$(HDRCHECK_LAYERS_host),$(call hdrcheck_pairs,$(l)))
+HDRCHECK_PAIRS_am1808 := $(filter-out $(addsuffix @%,$(HDRCHECK_HOST_ONLY)),\
+	$(foreach l,$(HDRCHECK_LAYERS_am1808),$(call hdrcheck_pairs,$(l))))
+
+# $(1) = config, $(2) = header path, $(3) = its include name
+define hdrcheck_rule
+$(HDRCHECK)/$(1)/$(2:.h=.o): $(2)
+	@mkdir -p $$(@D)
+	@printf '#include "%s"\n#include "%s"\n' '$(3)' '$(3)' > $$(@:.o=.c)
+	$(Q)$$(call compile,$(1),$(2)) -MMD -MP -c $$(@:.o=.c) -o $$@
+-include $(HDRCHECK)/$(1)/$(2:.h=.d)
+endef
+$(foreach c,host am1808,$(foreach p,$(HDRCHECK_PAIRS_$(c)),\
+	$(eval $(call hdrcheck_rule,$(c),$(word 1,$(subst @, ,$(p))),$(word 2,$(subst @, ,$(p)))))))
+
+HDRCHECK_OBJS := $(foreach c,host am1808,$(foreach p,$(HDRCHECK_PAIRS_$(c)),$(HDRCHECK)/$(c)/$(patsubst %.h,%.o,$(word 1,$(subst @, ,$(p))))))
+
+.PHONY: header-check
+header-check: $(HDRCHECK_OBJS)
+	@echo "header-check: $(words $(HDRCHECK_PAIRS_host)) headers compile alone (twice included) on the host, $(words $(HDRCHECK_PAIRS_am1808)) for the AM1808"
+TEST_SUITE_EXTRA += header-check

@@ -1,0 +1,75 @@
+/*
+ * cost.c — the CPU time service calls cost (rtos_host.h): the defaults are
+ * make bench's ARMv5 instruction counts at 300 MHz; the harness may change
+ * them, per extended service call too.  svc_charge, the first step of every
+ * service call, charges them.  This is simulation, not kernel: make bench's
+ * counter excludes this file (it is not one of the service-call files).
+ */
+#include "kernel_impl.h"
+
+static const struct rtos_host_cpu_cost default_cost = {
+	.svc_ns = RTOS_HOST_INSN_NS(RTOS_HOST_SVC_INSN),
+	.ext_svc_ns = RTOS_HOST_INSN_NS(RTOS_HOST_EXT_SVC_INSN),
+	.kernel_domain = false,
+};
+
+struct rtos_host_cpu_cost cpu_cost = default_cost;
+static int64_t fncd_cost[TNUM_FNCD + 1];   /* ns + 1; 0: the default */
+
+/* Sets the costs (NULL: the defaults); they stay across boots. */
+void rtos_host_set_cpu_cost(const struct rtos_host_cpu_cost *cost)
+{
+	cpu_cost = cost != NULL ? *cost : default_cost;
+}
+
+void rtos_host_get_cpu_cost(struct rtos_host_cpu_cost *cost)
+{
+	if (cost != NULL)
+		*cost = cpu_cost;
+}
+
+/* Sets the cost of one extended service call; ns < 0 returns it to the default. */
+ER rtos_host_set_svc_cost(FN fncd, int32_t ns)
+{
+	if (fncd < 1 || fncd > TNUM_FNCD)
+		return E_PAR;
+	fncd_cost[fncd] = ns < 0 ? 0 : (int64_t)ns + 1;
+	return E_OK;
+}
+
+/* True if a service call made now costs CPU time: a task at task level, not
+ * inside an extended service (whose measured cost includes its calls). */
+static bool charge_applies(void)
+{
+	return cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && cpu.irq_defer == 0 &&
+	       runtsk->nocharge_depth == 0 && (cpu_cost.kernel_domain || runtsk->cfg->domid != TDOM_KERNEL);
+}
+
+/* The first step of every service call: its CPU time. */
+void svc_charge(void)
+{
+	if (cpu_cost.svc_ns != 0 && charge_applies())
+		rtos_host_consume(cpu_cost.svc_ns);
+}
+
+/* cal_svc: charges the measured total of extended service fncd; the calls it makes are covered. */
+struct tcb *svc_ext_enter(FN fncd)
+{
+	uint32_t ns = fncd_cost[fncd] != 0 ? (uint32_t)(fncd_cost[fncd] - 1) : cpu_cost.ext_svc_ns;
+	struct tcb *caller;
+
+	if (cpu.kind != EXEC_TASK)
+		return NULL;
+	if (ns != 0 && charge_applies())
+		rtos_host_consume(ns);
+	/* the task that called, even if another ran meanwhile */
+	caller = runtsk;
+	caller->nocharge_depth++;
+	return caller;
+}
+
+void svc_ext_exit(struct tcb *caller)
+{
+	if (caller != NULL)
+		caller->nocharge_depth--;
+}

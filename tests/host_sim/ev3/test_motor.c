@@ -1,0 +1,151 @@
+/*
+ * test_motor.c — EV3 motors through the registers a driver writes: speed
+ * against duty and direction (eHRPWM1 and eCAP), brake against coast, the
+ * tacho edges counted with LEGO's d_pwm.c direction rule against the shaft
+ * angle both ways, the sleep when nothing moves, and the stall/encoder
+ * faults.
+ */
+#include <math.h>
+#include "devtest.h"
+
+static struct {
+	int64_t count;
+	uint64_t int_edges, dir_edges;
+	unsigned int_pin, dir_pin;
+	bool last_int;
+} tacho;
+
+/* Counts like d_pwm: on every INT edge, forward if INT equals the inverted DIR. */
+static void int_watch(void *ctx, unsigned pin, const struct hs_pin_state *st)
+{
+	bool dir = hs_gpio_level(tacho.dir_pin);
+
+	(void)ctx; (void)pin;
+	if (st->level == tacho.last_int)
+		return;
+	tacho.last_int = st->level;
+	tacho.int_edges++;
+	tacho.count += (st->level == !dir) ? 1 : -1;
+}
+
+static void dir_watch(void *ctx, unsigned pin, const struct hs_pin_state *st)
+{
+	(void)ctx; (void)pin; (void)st;
+	tacho.dir_edges++;
+}
+
+static double speed_after(unsigned port, int mode, uint16_t duty, uint64_t ns)
+{
+	devtest_duty(port, duty);
+	devtest_bridge(port, mode);
+	hs_sim_run_for(ns);
+	return hs_motor_speed_dps(ev3_output_motor(port));
+}
+
+int main(void)
+{
+	struct hs_motor *m;
+	double s25, s50, s75, s100, rev, a0, brake_speed, coast_speed;
+	int64_t counted;
+
+	tap_plan(24);
+	devtest_boot(1, NULL);
+	devtest_pwm_setup();
+
+	is_int(ev3_attach_motor(0, HS_MOTOR_LARGE, NULL), E_OK, "large motor on port A");
+	is_int(ev3_attach_motor(4, HS_MOTOR_LARGE, NULL), E_ID, "port 4 is no output port");
+	is_int(ev3_attach_motor(1, (enum hs_motor_kind)7, NULL), E_PAR, "unknown motor kind refused");
+	m = ev3_output_motor(0);
+	tacho.int_pin = ev3_output_pins[0].tacho_int;
+	tacho.dir_pin = ev3_output_pins[0].tacho_dir;
+	tacho.last_int = hs_gpio_level(tacho.int_pin);
+	hs_gpio_watch(tacho.int_pin, int_watch, NULL);
+	hs_gpio_watch(tacho.dir_pin, dir_watch, NULL);
+
+	/* speed against duty, forward (LEGO's d_pwm.c: DIR0 high, DIR1 floating) */
+	s25 = speed_after(0, 1, 2500, 500 * MS);
+	s50 = speed_after(0, 1, 5000, 500 * MS);
+	s75 = speed_after(0, 1, 7500, 500 * MS);
+	s100 = speed_after(0, 1, 10000, 500 * MS);
+	tap_diag("large motor at 9 V: 25%% %.0f, 50%% %.0f, 75%% %.0f, 100%% %.0f deg/s", s25, s50, s75, s100);
+	in_range(s100, 1030, 1070, "full duty reaches the no-load speed (1050 deg/s)");
+	ok(s25 > 0 && s25 < s50 && s50 < s75 && s75 < s100, "speed rises with duty");
+	in_range((s75 - s50) / (s50 - s25), 0.95, 1.05, "speed is linear in duty above the friction");
+	in_range(s25, 200, 260, "25%% duty minus dry friction");
+
+	counted = tacho.count;
+	a0 = hs_motor_angle_deg(m);
+	in_range((double)counted - a0, -1.0, 1.0, "counts forward = shaft angle (%lld vs %.1f deg)",
+		 (long long)counted, a0);
+	ok(tacho.dir_edges >= tacho.int_edges - 1 && tacho.dir_edges <= tacho.int_edges + 1,
+	   "DIR toggles once per INT edge (quadrature)");
+
+	/* reverse */
+	rev = speed_after(0, -1, 10000, 800 * MS);
+	in_range(rev, -1070, -1030, "reverse (DIR0 floating, DIR1 high) turns backwards");
+	in_range((double)tacho.count - hs_motor_angle_deg(m), -1.0, 1.0,
+		 "counts after reversing still equal the angle (%lld vs %.1f)", (long long)tacho.count,
+		 hs_motor_angle_deg(m));
+	ok(tacho.count < counted, "the count went down while reversing");
+	is_int(hs_motor_tacho_counts(m), tacho.count, "model's own count matches the pins");
+
+	/* brake against coast from full speed */
+	speed_after(0, 1, 10000, 300 * MS);
+	brake_speed = speed_after(0, 2, 10000, 30 * MS);
+	speed_after(0, 1, 10000, 300 * MS);
+	coast_speed = speed_after(0, 0, 10000, 30 * MS);
+	tap_diag("30 ms after full speed: braked %.0f, coasting %.0f deg/s", brake_speed, coast_speed);
+	ok(brake_speed < coast_speed, "braking stops faster than coasting");
+	hs_sim_run_for(3000 * MS);
+	is_int((int64_t)hs_motor_speed_dps(m), 0, "coasting motor comes to rest (dry friction)");
+	{
+		uint64_t edges = tacho.int_edges;
+
+		hs_sim_run_for(1000 * MS);
+		is_int(tacho.int_edges, edges, "a resting motor makes no edges");
+	}
+
+	/* medium motor on an eCAP port */
+	is_int(ev3_attach_motor(2, HS_MOTOR_MEDIUM, NULL), E_OK, "medium motor on port C (eCAP0)");
+	{
+		double med = speed_after(2, 1, 10000, 500 * MS);
+		double med_half = speed_after(2, -1, 5000, 500 * MS);
+
+		in_range(med, 1520, 1600, "medium at full duty ~1560 deg/s (%.0f)", med);
+		ok(med_half < 0 && med_half > -med / 2, "medium reverse at half duty, below half speed (%.0f)",
+		   med_half);
+	}
+
+	/* load slows it; a stall fault locks it and stops the edges */
+	hs_motor_set_load(m, 0.2, 0);
+	s50 = speed_after(0, 1, 10000, 500 * MS);
+	in_range(s50, 450, 560, "half the stall torque as load halves the speed (%.0f)", s50);
+	hs_motor_set_load(m, 0, 0);
+	{
+		struct ev3_fault f = { EV3_FAULT_MOTOR_STALL, 0, 0, 200 * MS };
+		uint64_t t = hs_now() + 100 * MS, edges;
+
+		is_int(ev3_fault_at(t, &f), E_OK, "stall scheduled");
+		hs_sim_run_until(t + 50 * MS);
+		edges = tacho.int_edges;
+		hs_sim_run_for(100 * MS);
+		is_int(tacho.int_edges, edges, "stalled shaft: no edges");
+		hs_sim_run_for(200 * MS);
+		ok(tacho.int_edges > edges + 50, "edges again after the stall ends");
+	}
+	/* encoder stuck: the shaft turns, the pins do not */
+	{
+		struct ev3_fault f = { EV3_FAULT_ENCODER_STUCK, 0, 0, 100 * MS };
+		uint64_t t = hs_now() + 10 * MS, edges;
+		double a;
+
+		ev3_fault_at(t, &f);
+		hs_sim_run_until(t + 1);
+		edges = tacho.int_edges;
+		a = hs_motor_angle_deg(m);
+		hs_sim_run_for(50 * MS);
+		ok(tacho.int_edges == edges && hs_motor_angle_deg(m) > a + 30, "stuck encoder: shaft moves, pins frozen");
+	}
+	hs_sim_shutdown();
+	return tap_done();
+}
