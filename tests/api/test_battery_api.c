@@ -12,10 +12,10 @@ static int irq_mv = -1;
 
 static void attach(void)
 {
-	ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL);
-	ev3_attach_motor(3, EV3_MOTOR_LARGE, NULL);
-	ev3_motor_set_load(ev3_output_motor(0), 0.15, 0);
-	ev3_motor_set_load(ev3_output_motor(3), 0.15, 0);
+	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
+	ev3_attach_motor(3, HS_MOTOR_LARGE, NULL);
+	hs_motor_set_load(ev3_output_motor(0), 0.15, 0);
+	hs_motor_set_load(ev3_output_motor(3), 0.15, 0);
 }
 
 static void from_irq(void *arg)

@@ -40,8 +40,8 @@ int main(void)
 	is_int(ev3_adc_channel_mv(EV3_ADC_BATTERY_TEMP), 1500, "BatteryTemp at its fixed level");
 
 	/* a large motor at full power against a load */
-	is_int(ev3_attach_motor(0, EV3_MOTOR_LARGE, NULL), E_OK, "large motor on port A");
-	ev3_motor_set_load(ev3_output_motor(0), 0.3, 0);
+	is_int(ev3_attach_motor(0, HS_MOTOR_LARGE, NULL), E_OK, "large motor on port A");
+	hs_motor_set_load(ev3_output_motor(0), 0.3, 0);
 	devtest_pwm_setup();
 	devtest_duty(0, 10000);
 	devtest_bridge(0, 1);
