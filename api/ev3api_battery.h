@@ -7,7 +7,8 @@
  * 0.11 Ω shunt amplified 22×, the pack voltage as twice the divided cell
  * voltage plus the shunt's drop plus a 0.05 V diode.  EV3RT's convention:
  * they return the value; when d_analog is not loaded, or the caller is not
- * a task, they log a warning and return 0.
+ * a task, they log a warning and return 0.  Before d_analog's first
+ * battery sample (within 8 ms of its start) the voltage reads 0.
  */
 #ifndef EV3API_BATTERY_H
 #define EV3API_BATTERY_H

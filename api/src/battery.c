@@ -58,8 +58,8 @@ int ev3_battery_voltage_mV(void)
 {
 	const struct lms_analog *a = battery_channels(__func__);
 
-	if (!a)
-		return 0;
+	if (!a || !*(const volatile uint16_t *)&a->cell123456)
+		return 0;	/* no sample yet: d_analog reads the battery every 8 ms from its start */
 	/* V = V(cell) / 0.5 + V(current) / gain + diode: the shunt's drop added back */
 	return channel_mv(&a->cell123456) * CELL_SCALE + channel_mv(&a->battery_current) / SHUNT_GAIN +
 	       DIODE_MV;
