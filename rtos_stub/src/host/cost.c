@@ -7,13 +7,15 @@
  */
 #include "kernel_impl.h"
 
-static const struct rtos_host_cpu_cost default_cost = {
-	.svc_ns = RTOS_HOST_INSN_NS(RTOS_HOST_SVC_INSN),
-	.ext_svc_ns = RTOS_HOST_INSN_NS(RTOS_HOST_EXT_SVC_INSN),
-	.kernel_domain = false,
-};
+/* One initializer for both: a const object is no constant expression in ISO C. */
+#define DEFAULT_COST { \
+	.svc_ns = RTOS_HOST_INSN_NS(RTOS_HOST_SVC_INSN), \
+	.ext_svc_ns = RTOS_HOST_INSN_NS(RTOS_HOST_EXT_SVC_INSN), \
+	.kernel_domain = false, \
+}
 
-struct rtos_host_cpu_cost cpu_cost = default_cost;
+static const struct rtos_host_cpu_cost default_cost = DEFAULT_COST;
+struct rtos_host_cpu_cost cpu_cost = DEFAULT_COST;
 static int64_t fncd_cost[TNUM_FNCD + 1];   /* ns + 1; 0: the default */
 
 /* Sets the costs (NULL: the defaults); they stay across boots. */
