@@ -29,7 +29,8 @@ extern const struct hs_device ev3_speaker_device;
 
 /* Starts recording from now (dropping an earlier recording): E_OK, E_OBJ without a board. */
 ER ev3_speaker_record(void);
-/* The recording up to now: *samples (valid until the next call), returns their number. */
+/* The recording up to now: *samples (valid until the next call; after the
+ * board shuts down, until the next boot), returns their number. */
 size_t ev3_speaker_samples(const int16_t **samples);
 /* Writes the recording up to now as a 16-bit mono WAV file: E_OK, E_OBJ, E_SYS on an I/O error. */
 ER ev3_speaker_write_wav(const char *path);
