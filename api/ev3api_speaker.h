@@ -2,8 +2,8 @@
  * ev3api_speaker.h — the speaker (included by ev3api.h), EV3RT's interface,
  * over d_sound (sound_hack.h).  Tones are played by the driver itself
  * (eHRPWM0 makes the square wave, its one-shot timer ends a timed tone), so
- * a call returns at once.  ev3_speaker_play_file is not provided yet
- * (EV3API_NOT_YET: an app using it compiles and fails to link, naming it).
+ * a call returns at once; a file's samples are fed to the driver from a
+ * work item, so play_file returns at once too.
  * Errors: E_CTX from non-task context, E_OBJ when d_sound is not loaded.
  */
 #ifndef EV3API_SPEAKER_H
@@ -62,8 +62,11 @@ ER ev3_speaker_set_volume(uint8_t volume);
  * SOUND_MANUAL_STOP (any negative duration), until ev3_speaker_stop; replaces what plays.
  * A duration of 0 plays nothing. */
 ER ev3_speaker_play_tone(uint16_t frequency, int32_t duration);
-ER ev3_speaker_play_file(const memfile_t *file, int32_t duration)
-	EV3API_NOT_YET(speaker, ev3_speaker_play_file);
+/* Plays a RIFF WAV file in memory (PCM, mono, 8000 Hz, 8 bits: else E_NOSPT; not a WAV: E_PAR)
+ * at the volume, for duration ms or, with SOUND_MANUAL_STOP (any negative duration), to its end;
+ * 0 plays nothing.  The memory must stay loaded while it plays.  E_MACV for memory the task may
+ * not read. */
+ER ev3_speaker_play_file(const memfile_t *file, int32_t duration);
 /* Stops what plays. */
 ER ev3_speaker_stop(void);
 

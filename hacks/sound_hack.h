@@ -9,7 +9,7 @@
  * the sound.
  *
  * Every call returns a TOPPERS code:
- *   E_PAR   an empty or too long command, or one the driver refuses
+ *   E_PAR   an empty or too long command, or one the driver refuses; a level above 100
  *   E_MACV  a command buffer the calling task may not read
  *   E_CTX   called from non-task context
  *   E_OBJ   the driver is not loaded (its module_init failed)
@@ -23,6 +23,7 @@
 
 #define SOUND_FN_WRITE    72  /* (const uint8_t *cmd, uint_t len): write(), returns its count */
 #define SOUND_FN_STATUS   73  /* (): the status byte, LMS_SOUND_OK or LMS_SOUND_BUSY */
+#define SOUND_FN_PLAY_PCM 74  /* (const uint8_t *samples, uint_t len, uint_t level): PCM playback */
 #define SOUND_FN_FIRST    72
 #define SOUND_FN_LAST     79  /* the range reserved for d_sound */
 #define SOUND_MAX_COMMAND (1 + LMS_SOUND_SLOT_SAMPLES)
@@ -34,6 +35,18 @@ extern const struct rtos_cfg sound_hack_cfg;
 static inline ER_UINT sound_svc_write(const uint8_t *cmd, uint_t len)
 {
 	return cal_svc(SOUND_FN_WRITE, (intptr_t)cmd, (intptr_t)len, 0, 0, 0);
+}
+
+/*
+ * Plays len unsigned 8-bit 8 kHz samples at level 0..100: PLAY, then the
+ * samples written slot by slot (SERVICE) from a work item every 10 ms, as
+ * LEGO's user space loops; returns at once.  The buffer must stay valid
+ * until the status is OK again (the end, an underrun, or any other command,
+ * which also stops the feeding).
+ */
+static inline ER sound_svc_play_pcm(const uint8_t *samples, uint_t len, uint_t level)
+{
+	return (ER)cal_svc(SOUND_FN_PLAY_PCM, (intptr_t)samples, (intptr_t)len, (intptr_t)level, 0, 0);
 }
 
 /* The status byte: LMS_SOUND_BUSY while a sound plays, else LMS_SOUND_OK. */
