@@ -16,8 +16,14 @@ check() {  # check NAME REPORTED FILES...
 	else echo "not ok - $name: report says $reported, cloc SUM says $expected"; fail=1; fi
 }
 csvv() { awk -F, -v k="$1" -v c="$2" '$1 == k { print $c }' "$out/reuse.csv"; }
-reused=(); for d in ev3_drivers/d_*.c; do m=${d#ev3_drivers/d_}; m=${m%.c}; for f in "$d" "ev3_drivers/lms_$m.h"; do [ -f "$f" ] && reused+=("$f"); done; done
-glue=(); while IFS= read -r f; do glue+=("$f"); done < <(find hacks -type f \( -name '*.c' -o -name '*.h' \) 2>/dev/null | sort)
+# The same drivers as the report: what the hack files include (find_drivers.sh).
+reused=(); glue=()
+while read -r hack d; do
+	m=$(basename "$d" .c); m=${m#d_}
+	for f in "$d" "$(dirname "$d")/lms_$m.h"; do [ -f "$f" ] && reused+=("$f"); done
+	case $hack in ${HACK_DIRS:-hacks}/*) ;; *) for f in "$hack" "${hack%.c}.h"; do [ -f "$f" ] && glue+=("$f"); done ;; esac
+done < <(bash cloc_report/find_drivers.sh "${HACK_DIRS:-hacks}" "${DRIVER_DIRS:-ev3_drivers}")
+while IFS= read -r f; do glue+=("$f"); done < <(find ${HACK_DIRS:-hacks} -type f \( -name '*.c' -o -name '*.h' \) 2>/dev/null | sort)
 shim=(); while IFS= read -r f; do shim+=("$f"); done < <(find linux_compat rtos_stub/include rtos_stub/src -type f \( -name '*.c' -o -name '*.h' -o -name '*.S' \) 2>/dev/null | sort)
 check "reused total" "$(csvv total 3)" "${reused[@]}"
 check "written glue total" "$(csvv total 5)" "${glue[@]}"

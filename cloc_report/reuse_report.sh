@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # reuse_report.sh — reused versus written lines, counted by cloc.
 #
-#   reuse_report.sh OUTDIR                      ev3lx's own modules (one per ev3_drivers/d_*.c)
+#   reuse_report.sh OUTDIR                      every driver a hack file includes (find_drivers.sh)
 #   reuse_report.sh OUTDIR REUSED GLUE [SHIM]   any port: dirs or files, space-separated
 #
 # Every number is a sum of cloc's own per-file "code" counts (--by-file, with
 # --skip-uniqueness so identical files are not merged); nothing here counts
-# lines itself.  For ev3lx's modules the report also proves that the driver
-# files compiled by kbuild and by the RTOS/host builds are byte-identical to
-# ev3_drivers/ (0 modified lines) by hashing the files named in each build's
-# dependency files.
+# lines itself.  The report also proves that every driver (every .c file in
+# REUSED) was compiled unmodified: each build recorded, at compile time, the
+# sha256 of every driver file its compiler read (record_driver_hashes.sh, and
+# kbuild-check for kbuild); a record missing in any of BUILD_CONFIGS or a hash
+# differing from the tree's is reported and makes the script exit 1.
+# Environment: HACK_DIRS, DRIVER_DIRS (find_drivers.sh), BUILD_CONFIGS.
 set -euo pipefail
 out=$1; shift
 mkdir -p "$out"
@@ -34,15 +36,38 @@ cloc_code() {
 pct() { awk -v w="$1" -v r="$2" 'BEGIN { if (r > 0) printf "%.1f", 100 * (1 - w / r); else printf "n/a" }'; }
 ratio() { awk -v w="$1" -v r="$2" 'BEGIN { if (r > 0) printf "%.3f", w / r; else printf "n/a" }'; }
 
-# Where a build compiled a source from, per its dependency file (first match).
-dep_source() {   # dep_source DEPFILE BASENAME
-	[ -f "$1" ] || return 0
-	tr ' \\' '\n\n' < "$1" | grep -E "(^|/)$2\$" | grep -v '^$' | head -n 1
+hash_of() { [ -n "$1" ] && [ -f "$1" ] && sha256sum "$1" | cut -c1-64 || echo "-"; }
+configs=(${BUILD_CONFIGS:-host host-san arm926-test am1808 kbuild})
+# The hash configuration $1 recorded at compile time for driver $2 ("-" if none).
+recorded_hash() {
+	local recs=build/$1/obj
+	[ "$1" = kbuild ] && recs=build/kbuild/drivers.sha256
+	[ -e "$recs" ] || { echo "-"; return; }
+	{ grep -rh --include='*.drivers' --include='drivers.sha256' -E "  (\./)?$2\$" "$recs" 2>/dev/null || true; } |
+		awk '{ print $1 }' | sort -u | paste -sd/ | sed 's/^$/-/'
 }
-hash_of() { [ -n "$1" ] && [ -f "$1" ] && sha256sum "$1" | cut -c1-16 || echo "-"; }
+proof_failures=0
+# Checks driver $1 in every configuration: P_MOD (0, or n/a if unproven) and P_CELLS.
+prove_unmodified() {
+	local drv=$1 hack=${2:-} src c h cells="" bad=0
+	src=$(hash_of "$drv")
+	for c in "${configs[@]}"; do
+		# a driver whose hack file is a test is not in the firmware library
+		case $c:$hack in am1808:tests/*) continue ;; esac
+		h=$(recorded_hash "$c" "$drv")
+		if [ "$h" = "$src" ]; then cells+="$c:ok "
+		elif [ "$h" = "-" ]; then cells+="$c:MISSING "; bad=1
+			echo "report: $drv: no compile-time hash recorded by the $c build" >&2
+		else cells+="$c:DIFFERS "; bad=1
+			echo "report: $drv: the $c build compiled a different file (sha256 $h, tree $src)" >&2
+		fi
+	done
+	[ $bad = 0 ] || proof_failures=$((proof_failures + 1))
+	P_MOD=$([ $bad = 0 ] && echo 0 || echo n/a); P_CELLS=${cells% }
+}
 
 md="$out/reuse.md"; csv="$out/reuse.csv"
-echo "module,reused_files,reused_code,modified_lines,glue_code,source_sha256,kbuild_sha256,rtos_sha256" > "$csv"
+echo "module,reused_files,reused_code,modified_lines,glue_code,source_sha256,compiled_as" > "$csv"
 
 if [ $# -ge 2 ]; then
 	mapfile -t reused < <(expand $1)
@@ -50,46 +75,44 @@ if [ $# -ge 2 ]; then
 	mapfile -t shim < <(expand ${3:-})
 	modules=(custom)
 else
-	# one module per driver: ev3_drivers/d_<m>.c with hacks/<m>_hack.[ch]
-	modules=(); for f in ev3_drivers/d_*.c; do m=${f#ev3_drivers/d_}; modules+=("${m%.c}"); done
+	# one module per driver a hack file includes: its hack .c/.h are the glue
+	mapfile -t pairs < <(bash cloc_report/find_drivers.sh "${HACK_DIRS:-hacks}" "${DRIVER_DIRS:-ev3_drivers}")
+	modules=(); for p in "${pairs[@]}"; do modules+=("$p"); done
 	mapfile -t shim < <(expand linux_compat rtos_stub/include rtos_stub/src)
 fi
 mapfile -t tests < <(expand tests)
 
-total_reused=0; total_glue=0; rows=()
+total_reused=0; total_glue=0; rows=(); module_glue=()
 for m in "${modules[@]}"; do
 	if [ "$m" = custom ]; then
-		r_files=("${reused[@]}"); g_files=("${glue[@]}")
-		modified="n/a"; src_h="-"; kb_h="-"; rt_h="-"
+		r_files=("${reused[@]}"); g_files=("${glue[@]}"); hack=${glue[0]:-}
+		drivers=(); for f in "${reused[@]}"; do case $f in *.c) drivers+=("$f") ;; esac; done
 	else
-		drv=ev3_drivers/d_$m.c
-		r_files=(); for f in "$drv" "ev3_drivers/lms_$m.h"; do [ -f "$f" ] && r_files+=("$f"); done
-		g_files=(); for f in "hacks/${m}_hack.c" "hacks/${m}_hack.h"; do [ -f "$f" ] && g_files+=("$f"); done
-		src_h=$(hash_of "$drv")
-		kb_src=$(sed -n "s/^source_.*d_$m.o := //p" "build/kbuild/.d_$m.o.cmd" 2>/dev/null | head -n 1 || true)
-		kb_h=$(hash_of "$kb_src")
-		rt_src=$(dep_source "build/host/obj/hacks/${m}_hack.d" "d_$m.c" || true)
-		rt_h=$(hash_of "$rt_src")
-		# Modified lines: diff of the compiled copies against the tree (0 when identical).
-		modified=0
-		for built in "$kb_src" "$rt_src"; do
-			[ -n "$built" ] && [ -f "$built" ] && [ -f "$drv" ] || continue
-			n=$(diff "$drv" "$built" | grep -c '^[<>]' || true)
-			modified=$((modified + n))
-		done
+		hack=${m% *}; drv=${m#* }
+		name=$(basename "$drv" .c); m=${name#d_}
+		r_files=("$drv"); [ -f "$(dirname "$drv")/lms_$m.h" ] && r_files+=("$(dirname "$drv")/lms_$m.h")
+		g_files=("$hack"); [ -f "${hack%.c}.h" ] && g_files+=("${hack%.c}.h")
+		drivers=("$drv")
+		module_glue+=("${g_files[@]}")
 	fi
+	modified=0; src_h=""; proof=""
+	for d in "${drivers[@]}"; do
+		prove_unmodified "$d" "${hack:-}"
+		[ "$P_MOD" = 0 ] || modified="n/a"
+		src_h+="$(hash_of "$d" | cut -c1-16) "; proof+="$P_CELLS; "
+	done
+	src_h=${src_h% }; proof=${proof%; }
 	rc=$(cloc_code "${r_files[@]}"); gc=$(cloc_code "${g_files[@]}")
 	total_reused=$((total_reused + rc)); total_glue=$((total_glue + gc))
-	rows+=("| $m | $rc | $modified | $gc | $(ratio "$gc" "$rc") | $(pct "$gc" "$rc") % | \`$src_h\` | \`$kb_h\` | \`$rt_h\` |")
-	echo "$m,${#r_files[@]},$rc,$modified,$gc,$src_h,$kb_h,$rt_h" >> "$csv"
+	rows+=("| $m | $rc | $modified | $gc | $(ratio "$gc" "$rc") | $(pct "$gc" "$rc") % | \`$src_h\` | $proof |")
+	echo "$m,${#r_files[@]},$rc,$modified,$gc,$src_h,$proof" >> "$csv"
 done
 
 shim_code=$(cloc_code "${shim[@]}")
 test_code=$(cloc_code "${tests[@]}")
 shared_glue=0
 if [ "${modules[0]}" != custom ]; then
-	per_module=$(IFS='|'; echo "${modules[*]}")
-	mapfile -t shared_hacks < <(expand hacks | grep -vE "/($per_module)_hack\.[ch]\$" || true)
+	mapfile -t shared_hacks < <(expand ${HACK_DIRS:-hacks} | grep -vxF -f <(printf '%s\n' "${module_glue[@]}") || true)
 	shared_glue=$(cloc_code "${shared_hacks[@]}")
 fi
 written=$((total_glue + shared_glue))
@@ -99,10 +122,10 @@ echo "shared_shim,,,,$shim_code,,," >> "$csv"
 echo "tests,,,,$test_code,,," >> "$csv"
 
 {
-	echo "| module | reused (code lines) | modified lines | written glue | written/reused | coding saved | driver sha256 | kbuild copy | RTOS build |"
-	echo "|---|---:|---:|---:|---:|---:|---|---|---|"
+	echo "| module | reused (code lines) | modified lines | written glue | written/reused | coding saved | driver sha256 | compiled unmodified by |"
+	echo "|---|---:|---:|---:|---:|---:|---|---|"
 	printf '%s\n' "${rows[@]}"
-	echo "| **total** | **$total_reused** | | **$written** | $(ratio "$written" "$total_reused") | $(pct "$written" "$total_reused") % | | | |"
+	echo "| **total** | **$total_reused** | | **$written** | $(ratio "$written" "$total_reused") | $(pct "$written" "$total_reused") % | | |"
 	echo
 	echo "| counted once | code lines |"
 	echo "|---|---:|"
@@ -114,3 +137,7 @@ echo "tests,,,,$test_code,,," >> "$csv"
 	echo "- With the shared shim: wrote $written_shim lines — written/reused $(ratio "$written_shim" "$total_reused"), $(pct "$written_shim" "$total_reused") % saved."
 	echo "- \"Coding saved\" = 1 − written/reused: the share of the reused code that did not have to be written."
 } | tee "$md"
+if [ $proof_failures -gt 0 ]; then
+	echo "report: FAILED: $proof_failures driver(s) without a compile-time proof of 0 modified lines" >&2
+	exit 1
+fi

@@ -1,8 +1,9 @@
 # Fuzzing with libFuzzer (clang): `make fuzz` builds every harness
 # (tests/**/test_fuzz_*.c, each also a TAP test replaying its corpus in
 # `make test`) against the library instrumented for coverage, ASan and UBSan,
-# runs each for FUZZ_SECONDS, and merges what it found into the committed
-# corpus tests/fuzz/corpus/NAME/ (only inputs that add coverage).  The
+# runs each for FUZZ_SECONDS, and replaces the committed corpus
+# tests/fuzz/corpus/NAME/ by the smallest set of the old and the new inputs
+# that keeps all their coverage (libFuzzer's -merge into an empty directory).  The
 # figures of the campaign (executions, crashes) go to build/fuzz/report.txt;
 # a crash leaves its input in build/fuzz/crash-NAME-*.  docs/reliability.md.
 
@@ -48,7 +49,7 @@ fuzz-build: fuzz-deps
 	@$(MAKE) --no-print-directory $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_NAMES))
 
 # One harness after the other (the machine's cores are the simulation's): new
-# inputs in build/fuzz/found/NAME, then merged into the committed corpus.
+# inputs in build/fuzz/found/NAME, then the corpus minimised with them.
 fuzz: fuzz-build
 	@mkdir -p $(BUILD)/fuzz; rm -f $(BUILD)/fuzz/crash-*; : > $(BUILD)/fuzz/report.txt; status=0; \
 	for n in $(FUZZ_NAMES); do \
@@ -61,7 +62,9 @@ fuzz: fuzz-build
 		crashes=$$(ls $(BUILD)/fuzz/crash-$$n-* 2>/dev/null | wc -l); \
 		echo "$$n executions=$${execs:-0} crashes=$$crashes exit=$$rc" | tee -a $(BUILD)/fuzz/report.txt; \
 		[ $$rc = 0 ] && [ $$crashes = 0 ] || status=1; \
-		( cd $(BUILD)/fuzz && ./fuzz_$$n -merge=1 ../../tests/fuzz/corpus/$$n found/$$n ) \
-			>> $(BUILD)/fuzz/$$n.log 2>&1; \
+		rm -rf $(BUILD)/fuzz/min/$$n; mkdir -p $(BUILD)/fuzz/min/$$n; \
+		( cd $(BUILD)/fuzz && ./fuzz_$$n -merge=1 min/$$n ../../tests/fuzz/corpus/$$n found/$$n ) \
+			>> $(BUILD)/fuzz/$$n.log 2>&1 && [ -n "$$(ls $(BUILD)/fuzz/min/$$n)" ] && \
+			rm -f tests/fuzz/corpus/$$n/* && cp $(BUILD)/fuzz/min/$$n/* tests/fuzz/corpus/$$n/; \
 	done; \
 	echo "fuzz: report in $(BUILD)/fuzz/report.txt"; exit $$status

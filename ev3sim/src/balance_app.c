@@ -47,6 +47,9 @@
 /* Virtual CPU time of the application's own computation on the 300 MHz
  * ARM926 (no FPU: soft-float): a control step and formatting a log line. */
 #define BALANCE_COMPUTE_NS   30000ULL
+/* An API call of the balance task that takes longer than this waited somewhere (a fast call
+ * costs a few microseconds of CPU time). */
+#define BLOCKED_NS           200000ULL
 #define LOG_FORMAT_NS        20000ULL
 
 static struct ev3sim_balance_cfg app_cfg = { true, 1000, false };
@@ -79,6 +82,15 @@ static ER check(ER ercd)
 	if (ercd != E_OK)
 		stats.api_errors++;
 	return ercd;
+}
+
+/* check() for a call of the balance task started at virtual time t0: a call that took longer
+ * than BLOCKED_NS waited (in a driver, or for the sensor) and is counted as blocked. */
+static ER check_since(ER ercd, uint64_t t0)
+{
+	if (rtos_host_now() - t0 > BLOCKED_NS)
+		stats.api_blocked++;
+	return check(ercd);
 }
 
 /* Cyclic handler: releases the balance task, counting overlaps. */
@@ -118,6 +130,7 @@ static void balance_task(intptr_t exinf)
 	uint64_t delay = rtos_host_now() - bal.release_ns;
 	int16_t rate = 0;
 	int32_t count_l = 0, count_r = 0;
+	uint64_t t0;
 	double phi, phi_rate, u;
 	int power;
 
@@ -130,9 +143,12 @@ static void balance_task(intptr_t exinf)
 		stats.late_starts++;
 		stats.deadline_misses++;
 	}
-	check(ev3lx_gyro_sensor_get_rate(GYRO_PORT, &rate));
-	check(ev3lx_motor_get_counts(LEFT_MOTOR, &count_l));
-	check(ev3lx_motor_get_counts(RIGHT_MOTOR, &count_r));
+	t0 = rtos_host_now();
+	check_since(ev3lx_gyro_sensor_get_rate(GYRO_PORT, &rate), t0);
+	t0 = rtos_host_now();
+	check_since(ev3lx_motor_get_counts(LEFT_MOTOR, &count_l), t0);
+	t0 = rtos_host_now();
+	check_since(ev3lx_motor_get_counts(RIGHT_MOTOR, &count_r), t0);
 
 	bal.offset += OFFSET_TRACKING * (rate - bal.offset);
 	bal.tilt_rate = rate - bal.offset;
@@ -150,8 +166,10 @@ static void balance_task(intptr_t exinf)
 	    K_WHEEL * (phi + bal.tilt) + K_WHEEL_RATE * (phi_rate + bal.tilt_rate);
 	power = (int)lround(u > 100.0 ? 100.0 : u < -100.0 ? -100.0 : u);
 	spend_cpu(BALANCE_COMPUTE_NS);
-	check(ev3lx_motor_set_power(LEFT_MOTOR, power));
-	check(ev3lx_motor_set_power(RIGHT_MOTOR, power));
+	t0 = rtos_host_now();
+	check_since(ev3lx_motor_set_power(LEFT_MOTOR, power), t0);
+	t0 = rtos_host_now();
+	check_since(ev3lx_motor_set_power(RIGHT_MOTOR, power), t0);
 
 	stats.power = power;
 	stats.tilt_est_deg = bal.tilt;

@@ -209,7 +209,7 @@ void ev3sim_balance_summary(const struct ev3sim_balance_opts *o,
 		 "deadline_misses=%u balance_runs=%u max_start_delay_us=%llu "
 		 "logger_lines=%u logger_skipped=%u log_bytes=%llu logger_spin_ms=%llu "
 		 "gyro_frames=%u gyro_check_errors=%u gyro_size_errors=%u gyro_resyncs=%u "
-		 "gyro_reconnects=%u api_errors=%u bugs=%u sim_speed=%.0fx",
+		 "gyro_reconnects=%u api_errors=%u api_blocked=%u bugs=%u sim_speed=%.0fx",
 		 r->fell ? "fell" : "upright", r->seconds, (unsigned long long)o->seed,
 		 o->app.balancer ? "on" : "off", o->app.logger_hz,
 		 o->app.logger_above ? "above" : "below", fell_at, r->max_tilt_deg, r->rms_tilt_deg,
@@ -218,6 +218,6 @@ void ev3sim_balance_summary(const struct ev3sim_balance_opts *o,
 		 r->app.logger_skipped, (unsigned long long)r->log_bytes,
 		 (unsigned long long)r->log_spin_ms, r->app.gyro_frames, r->app.gyro_check_errors,
 		 r->app.gyro_size_errors, r->app.gyro_resyncs, r->app.gyro_reconnects,
-		 r->app.api_errors, r->bugs,
+		 r->app.api_errors, r->app.api_blocked, r->bugs,
 		 r->wall_s > 0 ? r->sim_virtual_s / r->wall_s : 0.0);
 }

@@ -8,6 +8,7 @@
 #include "rtos_host.h"
 #include "host_sim/scenario.h"
 #include "host_sim/devices/ev3_brick.h"
+#include "host_sim/devices/ev3_speaker.h"
 #include "host_sim/devices/ev3_ui.h"
 #include "host_sim/devices/uart_sensor.h"
 #include "ev3sim/brick_io.h"
@@ -363,7 +364,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 				   .vcd_path = o->trace_path };
 	uint64_t end;
 	double wall0;
-	ER ercd;
+	ER ercd, shutdown;
 
 	memset(r, 0, sizeof(*r));
 	if (app == NULL || !(o->seconds > 0 && o->seconds <= EV3SIM_MAX_SECONDS) ||
@@ -395,6 +396,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		return E_SYS;
 	}
 	rtos_host_trace_set_sink(trace_sink, NULL);
+	if (o->audio_path)
+		(void)ev3_speaker_record();
 	if (o->quiet)
 		ev3sim_quiet_console();
 	ercd = plug_in(o);
@@ -435,13 +438,19 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	r->seconds = rtos_host_now() * 1e-9;
 	r->bugs = rtos_host_bug_count();
 	r->wall_s = ev3sim_wall_seconds() - wall0;
+	if (o->audio_path && ev3_speaker_write_wav(o->audio_path) != E_OK)
+		ercd = E_SYS;
 	(void)iact_tsk(POWER_OFF_TSKID);
 	hs_sim_run_for(DRAIN_NS);
 	rtos_host_trace_set_sink(NULL, NULL);
-	ercd = hs_sim_shutdown();
+	shutdown = hs_sim_shutdown();
 	brick_io_teardown();
-	if (ercd != E_OK) {
+	if (shutdown != E_OK) {
 		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
+		return E_SYS;
+	}
+	if (ercd != E_OK) {
+		snprintf(err, errlen, "cannot write %s completely", o->audio_path);
 		return E_SYS;
 	}
 	return E_OK;

@@ -51,6 +51,7 @@ static const char run_usage[] =
 	"                       receives what the app writes; a pseudo-terminal or FIFO\n"
 	"                       carries both directions\n"
 	"  --trace FILE.vcd     host_sim's signal trace\n"
+	"  --audio FILE.wav     what the speaker played (32 kHz, 16-bit mono)\n"
 	"  --csv FILE           the robot's state every 10 ms\n"
 	"  --quiet              the console shows warnings and worse only\n"
 	"\n"
@@ -168,6 +169,10 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		if (!ev3sim_can_create("run", v))	/* checked before the run, not after it */
 			return EV3SIM_EXIT_FAIL;
 		o->trace_path = v;
+	} else if (strcmp(name, "--audio") == 0) {
+		if (!ev3sim_can_create("run", v))
+			return EV3SIM_EXIT_FAIL;
+		o->audio_path = v;
 	} else if (strcmp(name, "--sd") == 0) {
 		struct stat st;
 

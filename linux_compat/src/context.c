@@ -252,6 +252,19 @@ bool lx_in_interrupt(void)
 	return sns_ctx() || ctx.irq_depth > 0 || ctx.hrtimer_cb > 0 || ctx.timer_cb > 0;
 }
 
+/* True in hard-IRQ context: a Linux handler, an hrtimer callback, or an ISR
+ * outside a timer_list callback (which Linux runs as a softirq). */
+bool lx_in_hardirq(void)
+{
+	return ctx.irq_depth > 0 || ctx.hrtimer_cb > 0 || (sns_ctx() && ctx.timer_cb == 0);
+}
+
+/* True in softirq context: a timer_list callback is running. */
+bool lx_in_softirq(void)
+{
+	return ctx.timer_cb > 0;
+}
+
 /* True if the calling code must not sleep. */
 bool lx_in_atomic(void)
 {
@@ -265,10 +278,17 @@ bool lx_in_atomic(void)
 #endif
 }
 
-/* True with interrupts disabled by linux_compat or by the CPU lock. */
-bool lx_irqs_disabled(void)
+/* True with interrupts masked by linux_compat or by the CPU lock. */
+bool lx_irqs_masked(void)
 {
 	return ctx.irqs_off > 0 || sns_loc();
+}
+
+/* Linux's irqs_disabled: masked, or in hard-IRQ context (where Linux runs
+ * every handler and hrtimer callback with local interrupts off since 2.6.35). */
+bool lx_irqs_disabled(void)
+{
+	return lx_irqs_masked() || lx_in_hardirq();
 }
 
 /* Appends ", text" (or just text if buf is empty) to buf, bounded. */

@@ -223,6 +223,36 @@ void unregister_chrdev(unsigned int major, const char *name)
 	WARN(!found, "unregister_chrdev(%u, %s): not registered", major, name ? name : "?");
 }
 
+int lx_dev_register(const char *name, __kernel_dev_t devt, const struct file_operations *fops)
+{
+	int err;
+	SIL_PRE_LOC;
+
+	if (!fops || !name_ok(name) || MAJOR(devt) == MISC_MAJOR)
+		return -EINVAL;
+	SIL_LOC_INT();
+	err = add_locked(name, devt, fops, NULL);
+	SIL_UNL_INT();
+	return err;
+}
+
+void lx_dev_unregister(__kernel_dev_t devt)
+{
+	unsigned int i;
+	SIL_PRE_LOC;
+
+	SIL_LOC_INT();
+	for (i = 0; i < LX_NR_DEV_NODES; i++)
+		if (nodes[i].in_use && !nodes[i].misc && nodes[i].devt == devt)
+			nodes[i].in_use = false;
+	SIL_UNL_INT();
+}
+
+bool lx_dev_major_taken(unsigned int major)
+{
+	return major_taken_locked(major);
+}
+
 bool lx_dev_exists(const char *path)
 {
 	bool found;
@@ -452,4 +482,5 @@ void lx_devfs_boot(void)
 {
 	memset(nodes, 0, sizeof(nodes));
 	sema_init(&big_kernel_lock, 1);
+	lx_cdev_boot();
 }

@@ -140,6 +140,8 @@ int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
 	for (tail = &desc->action; *tail; tail = &(*tail)->next) {
 		if (!((*tail)->flags & IRQF_SHARED) || !(flags & IRQF_SHARED))
 			err = -EBUSY;
+		else if (type && desc->type && type != desc->type)
+			err = -EBUSY;   /* Linux: "type mismatch" for a shared line */
 		else if ((*tail)->dev_id == dev)
 			err = -EINVAL;
 		if (err)

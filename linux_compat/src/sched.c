@@ -11,6 +11,7 @@
 #include <linux_compat/clock.h>
 #include <linux_compat/context.h>
 #include <linux_compat/report.h>
+#include <linux_compat/workqueue.h>
 #include <kernel.h>
 #include <rtos_cfg.h>
 #include <sil.h>
@@ -58,7 +59,7 @@ void lx_wake_task(ID tskid)
 
 	if (tskid <= 0 || tskid > TNUM_TSKID)
 		return;
-	if (sns_loc() || lx_irqs_disabled()) {
+	if (lx_irqs_masked()) {
 		defer_wake(tskid);
 		return;
 	}
@@ -67,15 +68,17 @@ void lx_wake_task(ID tskid)
 		defer_wake(tskid);
 }
 
-/* Delivers the deferred wakeups (tick ISR, interrupts unlocked). */
+/* Delivers the deferred wakeups (the tick ISR, or whoever just unmasked interrupts). */
 void lx_deferred_wakeups_run(void)
 {
 	uint32_t pending;
 	unsigned int word, bit;
+	bool in_isr;
 	SIL_PRE_LOC;
 
-	if (!any_deferred_wake)
+	if (!any_deferred_wake || lx_irqs_masked())
 		return;
+	in_isr = sns_ctx();
 	for (word = 0; word < sizeof(deferred_wake) / sizeof(deferred_wake[0]); word++) {
 		SIL_LOC_INT();
 		pending = deferred_wake[word];
@@ -83,7 +86,8 @@ void lx_deferred_wakeups_run(void)
 		SIL_UNL_INT();
 		for (bit = 0; bit < 32; bit++)
 			if (pending & (1U << bit))
-				(void)iwup_tsk((ID)(word * 32 + bit + 1));
+				(void)(in_isr ? iwup_tsk((ID)(word * 32 + bit + 1))
+					      : wup_tsk((ID)(word * 32 + bit + 1)));
 	}
 	SIL_LOC_INT();
 	any_deferred_wake = false;
@@ -161,6 +165,8 @@ int lx_waiter_sleep(struct lx_waiter *w, uint64_t deadline_ns)
 	uint64_t now;
 	ER er;
 
+	while (!w->woken && lx_worker_serve_before_init_sleep())
+		;
 	for (;;) {
 		if (w->woken)
 			return 0;

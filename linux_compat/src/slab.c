@@ -26,6 +26,7 @@
 #include <linux/string.h>
 #include <linux/bug.h>
 #include <linux/printk.h>
+#include <linux_compat/fault_inject.h>
 #include <linux_compat/report.h>
 #include <sil.h>
 
@@ -252,6 +253,11 @@ void *kmalloc(size_t size, gfp_t flags)
 	SIL_LOC_INT();
 	if (!heap_ready)
 		heap_init_locked();
+	if (unlikely(lx_fail_alloc_should_fail_locked())) {
+		stats.failures++;
+		SIL_UNL_INT();
+		return NULL;
+	}
 	if (size <= order_bytes(top_order)) {
 		order = order_for(size);
 		g = block_take_locked(order);
@@ -484,6 +490,7 @@ void lx_heap_reset(void)
 
 	SIL_LOC_INT();
 	heap_ready = false;
+	lx_fail_alloc_boot();
 	SIL_UNL_INT();
 }
 

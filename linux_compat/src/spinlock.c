@@ -67,6 +67,7 @@ void arch_local_irq_restore(unsigned long flags)
 {
 	lx_irqs_off_exit();
 	irq_mask_restore(flags);
+	lx_deferred_wakeups_run();
 }
 
 /* Masks interrupts until local_irq_enable (does not nest). */
@@ -183,6 +184,8 @@ void lx_spin_unlock_irqrestore(spinlock_t *lock, unsigned long flags, const char
 	give(lock, file, line);
 	lx_irqs_off_atomic_exit();
 	irq_mask_restore(flags);
+	/* A wake_up under the lock takes effect here, Linux's preemption point. */
+	lx_deferred_wakeups_run();
 }
 
 /* Interrupts masked (state kept in the lock), then the lock. */

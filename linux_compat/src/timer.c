@@ -189,8 +189,8 @@ int lx_del_timer_sync_at(struct timer_list *timer, const char *file, int line)
 	if (timer != NULL && tq.running == timer)
 		lx_report("del_timer_sync would deadlock", file, line,
 			  "the timer's callback is running (called from it or from what it interrupted)");
-	else if (timer != NULL && lx_in_interrupt() && !(timer->flags & TIMER_IRQSAFE))
-		lx_report("del_timer_sync in interrupt context", file, line,
+	else if (timer != NULL && lx_in_hardirq() && !(timer->flags & TIMER_IRQSAFE))
+		lx_report("del_timer_sync in hard-IRQ context", file, line,
 			  "Linux forbids this for timers without TIMER_IRQSAFE");
 	return del_timer(timer);
 }

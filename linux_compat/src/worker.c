@@ -41,6 +41,18 @@ bool lx_worker_ready(void)
 	return worker.ready;
 }
 
+/*
+ * Module inits run in the worker: one that queues work and sleeps until it is
+ * done would wait for itself.  While the inits run, a sleep in the worker
+ * first serves the queued work in place; true if it ran one.
+ */
+bool lx_worker_serve_before_init_sleep(void)
+{
+	if (READ_ONCE(worker.ready) || !lx_in_worker())
+		return false;
+	return lx_workqueue_run_one();
+}
+
 /* Asks the worker to unload every module (any context; the worker does it when it next runs). */
 void lx_worker_request_unload(void)
 {

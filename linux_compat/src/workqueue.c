@@ -235,12 +235,11 @@ static bool instance_alive(const struct work_struct *work, u64 seq)
 	       READ_ONCE(wq.running_seq) == seq;
 }
 
-/* Waits until instance seq of work is gone; false (reported) if that would deadlock. */
+/* Waits until instance seq of work is gone (the caller checked it may sleep);
+ * false (reported) if that would deadlock. */
 static bool wait_instance(const struct work_struct *work, u64 seq, const char *what,
 			  const char *file, int line)
 {
-	if (!lx_might_sleep_check(what, file, line))
-		return false;
 	if (!lx_in_worker()) {
 		wait_event(flush_waiters, !instance_alive(work, seq));
 		return true;
@@ -262,6 +261,9 @@ bool lx_flush_work_at(struct work_struct *work, const char *file, int line)
 	u64 seq;
 	SIL_PRE_LOC;
 
+	/* Checked whether or not it would wait, as Linux's might_sleep(). */
+	bool may_sleep = lx_might_sleep_check("flush_work()", file, line);
+
 	if (work == NULL || work->lx_magic != LX_WORK_MAGIC)
 		return false;
 	SIL_LOC_INT();
@@ -274,7 +276,8 @@ bool lx_flush_work_at(struct work_struct *work, const char *file, int line)
 	SIL_UNL_INT();
 	if (seq == 0)
 		return false;
-	(void)wait_instance(work, seq, "flush_work()", file, line);
+	if (may_sleep)
+		(void)wait_instance(work, seq, "flush_work()", file, line);
 	return true;
 }
 
@@ -285,13 +288,15 @@ bool lx_cancel_work_sync_at(struct work_struct *work, const char *file, int line
 	u64 seq;
 	SIL_PRE_LOC;
 
+	bool may_sleep = lx_might_sleep_check("cancel_work_sync()", file, line);
+
 	if (work == NULL || work->lx_magic != LX_WORK_MAGIC)
 		return false;
 	was_pending = cancel_work(work);
 	SIL_LOC_INT();
 	seq = wq.running == work ? wq.running_seq : 0;
 	SIL_UNL_INT();
-	if (seq != 0)
+	if (seq != 0 && may_sleep)
 		(void)wait_instance(work, seq, "cancel_work_sync()", file, line);
 	return was_pending;
 }
@@ -308,8 +313,14 @@ bool cancel_delayed_work(struct delayed_work *dwork)
 /* cancel_delayed_work and wait for a running instance. */
 bool lx_cancel_delayed_work_sync_at(struct delayed_work *dwork, const char *file, int line)
 {
-	bool timer_was = lx_del_timer_sync_at(&dwork->timer, file, line) != 0;
-	bool work_was = lx_cancel_work_sync_at(&dwork->work, file, line);
+	bool timer_was, work_was;
+
+	if (!lx_might_sleep_check("cancel_delayed_work_sync()", file, line)) {
+		/* Reported once: the parts below would repeat the report. */
+		return cancel_delayed_work(dwork);
+	}
+	timer_was = lx_del_timer_sync_at(&dwork->timer, file, line) != 0;
+	work_was = lx_cancel_work_sync_at(&dwork->work, file, line);
 
 	return timer_was || work_was;
 }

@@ -16,8 +16,6 @@ void main_task(intptr_t exinf)
 
 	ev3_lcd_draw_string("hello", 0, 0);
 	ev3_image_load(&file, &image);
-	ev3_speaker_play_tone(NOTE_A4, 100);
-	syslog(LOG_NOTICE, "%d mV", ev3_battery_voltage_mV());
 	ht_nxt_accel_sensor_measure(EV3_PORT_1, axes);
 	(void)exinf;
 }

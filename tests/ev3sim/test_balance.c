@@ -46,6 +46,7 @@ static void test_upright(void)
 	ok(et_number(line, "max_tilt_deg") < 3.0, "it stays near vertical (max %g deg)",
 	   et_number(line, "max_tilt_deg"));
 	is_int(et_number(line, "api_errors"), 0, "no API call failed");
+	is_int(et_number(line, "api_blocked"), 0, "no API call of the balance task blocked");
 	is_int(et_number(line, "bugs"), 0, "no bug reports from the stack");
 	ok(strstr(line, " sim_speed=") != NULL && line[strlen(line) - 1] == 'x', "sim_speed comes last");
 }
@@ -142,7 +143,7 @@ static void test_determinism(void)
 
 int main(void)
 {
-	tap_plan(38);
+	tap_plan(39);
 	test_upright();
 	test_push();
 	test_negative_control();

@@ -19,7 +19,7 @@
 #define FUZZ_NAME "uart_data"
 #define PORT 0
 #define DATA_BAUD 57600U
-#define RESYNC_FRAMES 40	/* the longest message's 35 bytes, each a stall, and some */
+#define RESYNC_FRAMES 40U	/* the longest message's 35 bytes, each a stall, and some */
 
 static const struct lms_uart_shm *shm;
 

@@ -58,6 +58,7 @@ struct ev3sim_balance_stats {
 	uint32_t late_starts;       /* started later than EV3SIM_START_BOUND_NS after release */
 	uint64_t max_start_delay_ns;
 	uint32_t api_errors;        /* API calls of the balance task that did not return E_OK */
+	uint32_t api_blocked;       /* API calls of the balance task that waited (> 200 us) */
 	uint32_t logger_lines;      /* lines written to the serial log */
 	uint32_t logger_skipped;    /* logger periods lost because the logger was still busy */
 	/* d_uart's link counters of the gyro's port (lms_uart.h), at the end of the run */

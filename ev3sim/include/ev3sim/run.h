@@ -57,6 +57,7 @@ struct ev3sim_run_opts {
 	struct ev3sim_push pushes[EV3SIM_MAX_PUSHES];              /* gyroboy, t_ns from boot */
 	unsigned npushes;
 	const char *trace_path;     /* VCD, NULL: none */
+	const char *audio_path;     /* WAV of what the speaker played, NULL: none */
 	const char *sd_dir;         /* the SD card's directory, NULL: no card (brick_io.h) */
 	const char *serial_path;    /* the serial port's far end, NULL: not connected */
 	FILE *csv;                  /* the robot's state every 10 ms, NULL: none */

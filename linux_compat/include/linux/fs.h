@@ -140,4 +140,13 @@ int register_chrdev(unsigned int major, const char *name, const struct file_oper
 /* Removes a register_chrdev registration; warns if there is none. */
 void unregister_chrdev(unsigned int major, const char *name);
 
+/* Reserves the count device numbers from first under name (linux/cdev.h
+ * names the nodes after it): 0, -EINVAL, -EBUSY (overlap) or -ENOMEM. */
+int register_chrdev_region(__kernel_dev_t first, unsigned int count, const char *name);
+/* As register_chrdev_region on a free major (254 downwards); *dev is the first number. */
+int alloc_chrdev_region(__kernel_dev_t *dev, unsigned int baseminor, unsigned int count,
+			const char *name);
+/* Releases a region; warns if there is none at first. */
+void unregister_chrdev_region(__kernel_dev_t first, unsigned int count);
+
 #endif /* _LINUX_FS_H */

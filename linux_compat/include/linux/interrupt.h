@@ -26,6 +26,7 @@
 #include <linux/irqreturn.h>
 #include <linux/irq.h>
 #include <linux/errno.h>
+#include <linux/hardirq.h>   /* as in Linux: in_irq, in_task & co. */
 
 #define IRQF_TRIGGER_NONE	0x00000000
 #define IRQF_TRIGGER_RISING	0x00000001

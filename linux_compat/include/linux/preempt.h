@@ -2,9 +2,9 @@
  * linux/preempt.h — preemption control and context predicates.
  *
  * preempt_disable in a task disables dispatching (no other task runs;
- * interrupts still do); in an ISR it only counts.  in_interrupt/in_irq are
- * true in every non-task context: ISRs, hrtimer and timer callbacks (all of
- * which run in the tick's or a line's interrupt context).
+ * interrupts still do); in an ISR it only counts.  As in Linux, IRQ handlers
+ * and hrtimer callbacks are hard-IRQ context (in_irq), timer_list callbacks
+ * are softirq context (in_softirq, not in_irq); in_interrupt covers both.
  */
 #ifndef _LINUX_PREEMPT_H
 #define _LINUX_PREEMPT_H
@@ -19,10 +19,10 @@
 #define preemptible()			(!lx_in_atomic())
 
 #define in_interrupt()		lx_in_interrupt()
-#define in_irq()		lx_in_interrupt()
-#define in_hardirq()		lx_in_interrupt()
-#define in_softirq()		lx_in_interrupt()
-#define in_serving_softirq()	0
+#define in_irq()		lx_in_hardirq()
+#define in_hardirq()		lx_in_hardirq()
+#define in_softirq()		lx_in_softirq()
+#define in_serving_softirq()	lx_in_softirq()
 #define in_nmi()		0
 #define in_task()		(!lx_in_interrupt())
 #define in_atomic()		lx_in_atomic()

@@ -15,6 +15,7 @@
 
 #include <linux/types.h>
 #include <linux/compiler.h>
+#include <linux/errno.h>     /* the interruptible waits expand to -ERESTARTSYS */
 #include <linux/list.h>
 #include <linux/spinlock.h>
 #include <linux/jiffies.h>

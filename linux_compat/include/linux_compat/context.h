@@ -61,7 +61,13 @@ void lx_context_reset(void);
 bool lx_in_interrupt(void);
 /* True if the calling code must not sleep (interrupt, atomic section, irqs off, CPU locked). */
 bool lx_in_atomic(void);
-/* True with interrupts disabled by linux_compat or by the RTOS CPU lock. */
+/* True in hard-IRQ context (Linux handler, hrtimer callback, ISR not running a timer_list callback). */
+bool lx_in_hardirq(void);
+/* True in softirq context (a timer_list callback runs). */
+bool lx_in_softirq(void);
+/* True with interrupts masked by linux_compat or by the RTOS CPU lock. */
+bool lx_irqs_masked(void);
+/* Linux's irqs_disabled(): interrupts masked, or hard-IRQ context. */
 bool lx_irqs_disabled(void);
 
 /*

@@ -49,6 +49,16 @@ int lx_dev_close(struct file *file);
 /* True if a device of that name is registered. */
 bool lx_dev_exists(const char *path);
 
+/* For cdev_add: registers /dev/<name> as number devt with fops; 0, -EINVAL,
+ * -EBUSY (name or number taken) or -ENOMEM.  Process context. */
+int lx_dev_register(const char *name, __kernel_dev_t devt, const struct file_operations *fops);
+/* Removes the registry's node of number devt (not a misc device), if any. */
+void lx_dev_unregister(__kernel_dev_t devt);
+/* True if a registered device has that major; called with interrupts locked. */
+bool lx_dev_major_taken(unsigned int major);
+/* Forgets the device number regions (cdev.c; at boot, with the registry). */
+void lx_cdev_boot(void);
+
 /* Calls the legacy .ioctl with the file's inode under the big kernel lock (out of line). */
 long lx_dev_legacy_ioctl(struct file *file, unsigned int cmd, unsigned long arg);
 

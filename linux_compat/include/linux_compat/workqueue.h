@@ -18,6 +18,9 @@ void lx_worker_reset(void);
 bool lx_in_worker(void);
 /* True once the worker has run the module inits and serves work. */
 bool lx_worker_ready(void);
+/* In the worker while the module inits run, runs one queued work (a sleep
+ * calls it first, so an init may wait for work it queued); false if none. */
+bool lx_worker_serve_before_init_sleep(void);
 /* Asks the worker to run every module_exit (lx_modules_exit) when it next
  * runs; any context.  The request lasts until the next boot. */
 void lx_worker_request_unload(void);

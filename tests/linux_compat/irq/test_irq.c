@@ -2,8 +2,8 @@
  * test_irq.c — Linux IRQs on the RTOS lines of linux_irq_cfg: request_irq
  * enables the line and free_irq of the last handler disables it; shared
  * lines call every handler in request order (IRQ_NONE / IRQ_HANDLED
- * accounted); handlers run in interrupt context; disable/enable nest;
- * argument and context errors are refused or reported.
+ * accounted), a shared request with a different trigger is -EBUSY;
+ * handlers run in interrupt context; disable/enable nest; argument and context errors are refused or reported.
  */
 #include "lx_test.h"
 #include <linux/interrupt.h>
@@ -153,6 +153,25 @@ static void test_shared(void)
 	raise_and_log(line, "", "no handler runs any more");
 }
 
+/* Linux's __setup_irq: a shared request whose trigger differs from the line's is a type mismatch. */
+static void test_shared_trigger_mismatch(void)
+{
+	unsigned int line = IRQ_DA8XX_EVTOUT1;
+
+	is_int(request_irq(line, handler_a, IRQF_SHARED | IRQF_TRIGGER_HIGH, "a", &dev_a), 0,
+	       "shared, level-high: the line takes that trigger");
+	is_int(request_irq(line, handler_b, IRQF_SHARED | IRQF_TRIGGER_RISING, "b", &dev_b), -EBUSY,
+	       "shared with a different trigger (rising): -EBUSY");
+	is_int(request_irq(line, handler_b, IRQF_SHARED | IRQF_TRIGGER_HIGH, "b", &dev_b), 0,
+	       "shared with the same trigger joins");
+	is_int(request_irq(line, handler_c, IRQF_SHARED, "c", &dev_c), 0,
+	       "shared without a trigger takes the line's");
+	ok(irq_get_trigger_type(line) == IRQ_TYPE_LEVEL_HIGH, "the line's trigger is unchanged");
+	(void)free_irq(line, &dev_a);
+	(void)free_irq(line, &dev_b);
+	(void)free_irq(line, &dev_c);
+}
+
 static void test_flags_and_context(void)
 {
 	unsigned int line = IRQ_DA8XX_EVTOUT0;
@@ -194,12 +213,13 @@ static void body(void)
 	test_errors();
 	test_single();
 	test_shared();
+	test_shared_trigger_mismatch();
 	test_flags_and_context();
 }
 
 int main(void)
 {
-	tap_plan(57);
+	tap_plan(62);
 	ok(lx_test_run(body), "test task ran to completion");
 	return tap_done();
 }

@@ -326,16 +326,21 @@ static void test_overrun(void)
 
 static void test_forward_math(void)
 {
+	const ktime_t r = (ktime_t)hrtimer_resolution;   /* one tick */
 	struct hrtimer t;
 
 	hrtimer_init(&t, CLOCK_MONOTONIC, HRTIMER_MODE_ABS);
-	hrtimer_set_expires(&t, 1000);
-	is_u64(hrtimer_forward(&t, 999, 100), 0, "forward before the expiry: 0 overruns");
-	is_int(hrtimer_get_expires(&t), 1000, "...and the expiry is unchanged");
-	is_u64(hrtimer_forward(&t, 1000, 100), 1, "forward at the expiry: 1 overrun");
-	is_int(hrtimer_get_expires(&t), 1100, "...expiry moved one interval");
-	is_u64(hrtimer_forward(&t, 1450, 100), 4, "forward 350 ns late by 100: 4 intervals");
-	is_int(hrtimer_get_expires(&t), 1500, "...expiry 1500, after now, on the grid");
+	hrtimer_set_expires(&t, 10 * r);
+	is_u64(hrtimer_forward(&t, 10 * r - 1, r), 0, "forward before the expiry: 0 overruns");
+	is_int(hrtimer_get_expires(&t), 10 * r, "...and the expiry is unchanged");
+	is_u64(hrtimer_forward(&t, 10 * r, r), 1, "forward at the expiry: 1 overrun");
+	is_int(hrtimer_get_expires(&t), 11 * r, "...expiry moved one interval");
+	is_u64(hrtimer_forward(&t, 14 * r + r / 2, r), 4, "forward 3.5 intervals late: 4 intervals");
+	is_int(hrtimer_get_expires(&t), 15 * r, "...expiry after now, on the grid");
+	/* Linux clamps an interval below hrtimer_resolution to it. */
+	is_u64(hrtimer_forward(&t, 15 * r, 100), 1, "a 100 ns interval at the expiry: 1 overrun, not 1 per 100 ns");
+	is_int(hrtimer_get_expires(&t), 16 * r, "...the expiry moved by hrtimer_resolution");
+	is_u64(hrtimer_forward(&t, 18 * r, r / 4), 3, "a quarter-tick interval 2 ticks late: 3 (tick) intervals");
 	is_int(ktime_set(2, 5), 2000000005LL, "ktime_set");
 	is_int(ktime_to_us(ms_to_ktime(3)), 3000, "ms_to_ktime / ktime_to_us");
 	is_int(ktime_to_ms(ktime_sub(ktime_set(1, 0), us_to_ktime(1500))), 998, "ktime_sub / ktime_to_ms");
@@ -345,7 +350,7 @@ static void test_forward_math(void)
 
 int main(void)
 {
-	tap_plan(37);
+	tap_plan(40);
 	test_forward_math();
 	test_zero_drift();
 	test_never_early();
