@@ -259,6 +259,7 @@ static ER_UINT svc_dir_read(intptr_t dirid, intptr_t p_info, intptr_t p3, intptr
 		return E_MACV;
 	do {
 		errno = 0;
+		/* cppcheck-suppress readdirCalled ; one simulation thread, and readdir_r is deprecated in glibc */
 		if ((e = readdir(d)) == NULL)
 			return errno != 0 ? E_OBJ : E_NOEXS;
 	} while (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0);
