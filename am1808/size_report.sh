@@ -10,14 +10,8 @@ component_of() {
 	case "$1" in
 	*rtos_stub/*)              echo "rtos glue" ;;
 	*linux_compat/*)           echo "linux_compat" ;;
-	*ev3_drivers/d_pwm.c*)     echo "driver d_pwm" ;;
-	*ev3_drivers/d_analog.c*)  echo "driver d_analog" ;;
-	*ev3_drivers/d_uart.c*)    echo "driver d_uart" ;;
-	*ev3_drivers/d_ui.c*)      echo "driver d_ui" ;;
-	*hacks/pwm_hack.c*)        echo "hack pwm" ;;
-	*hacks/analog_hack.c*)     echo "hack analog" ;;
-	*hacks/uart_hack.c*)       echo "hack uart" ;;
-	*hacks/ui_hack.c*)         echo "hack ui" ;;
+	*ev3_drivers/d_*.c*)      f=${1##*ev3_drivers/}; echo "driver ${f%%.c*}" ;;
+	*hacks/*_hack.c*)         f=${1##*hacks/}; echo "hack ${f%%_hack.c*}" ;;
 	*hacks/*)                  echo "hacks (shared)" ;;
 	*api/*)                    echo "api" ;;
 	*newlib*|*libgcc*)         echo "libc + libgcc" ;;
@@ -25,8 +19,10 @@ component_of() {
 	esac
 }
 declare -A text data bss itext
-order=("rtos glue" "linux_compat" "driver d_pwm" "driver d_analog" "driver d_uart" "driver d_ui" \
-	"hack pwm" "hack analog" "hack uart" "hack ui" "hacks (shared)" "api" "libc + libgcc" "other")
+# one driver and one hack component per ev3_drivers/d_<m>.c
+drivers=(); hacks=()
+for f in ev3_drivers/d_*.c; do m=${f#ev3_drivers/d_}; m=${m%.c}; drivers+=("driver d_$m"); hacks+=("hack $m"); done
+order=("rtos glue" "linux_compat" "${drivers[@]}" "${hacks[@]}" "hacks (shared)" "api" "libc + libgcc" "other")
 for c in "${order[@]}"; do text[$c]=0; data[$c]=0; bss[$c]=0; itext[$c]=0; done
 
 # attribute FILE FALLBACK_SOURCE ARRAY-PREFIX: adds each defined symbol's size to its component.

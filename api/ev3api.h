@@ -50,6 +50,8 @@
 #include "ev3api_speaker.h"
 #include "ev3api_battery.h"
 
+#include "ev3api_battery.h"
+
 /* ---- Configuration ---- */
 
 /* What an application INCLUDEs: linux_compat, the four drivers' service calls,

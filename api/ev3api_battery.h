@@ -1,13 +1,21 @@
 /*
- * ev3api_battery.h — the battery (included by ev3api.h), EV3RT's interface.
- * Not provided yet: every call is EV3API_NOT_YET (an app using one compiles
- * and fails to link, naming the call).
+ * ev3api_battery.h — the battery, as EV3RT's API has it (included by ev3api.h).
+ *
+ * Both calls read d_analog's battery channels (the raw counts it publishes
+ * in its shared ANALOG area, unfiltered) and convert them with the FINAL
+ * board's constants LEGO's c_ui and EV3RT use: battery current through a
+ * 0.11 Ω shunt amplified 22×, the pack voltage as twice the divided cell
+ * voltage plus the shunt's drop plus a 0.05 V diode.  EV3RT's convention:
+ * they return the value; when d_analog is not loaded, or the caller is not
+ * a task, they log a warning and return 0.  Before d_analog's first
+ * battery sample (within 8 ms of its start) the voltage reads 0.
  */
 #ifndef EV3API_BATTERY_H
 #define EV3API_BATTERY_H
 
-#include "ev3api_not_yet.h"
-int ev3_battery_current_mA(void) EV3API_NOT_YET(battery, ev3_battery_current_mA);
-int ev3_battery_voltage_mV(void) EV3API_NOT_YET(battery, ev3_battery_voltage_mV);
+/* Current drawn from the battery (brick and motors), mA. */
+int ev3_battery_current_mA(void);
+/* Battery terminal voltage, mV. */
+int ev3_battery_voltage_mV(void);
 
 #endif /* EV3API_BATTERY_H */

@@ -1,7 +1,10 @@
 /*
- * ev3api_speaker.h — the speaker (included by ev3api.h), EV3RT's interface.
- * ev3lx has no sound driver yet: every call is EV3API_NOT_YET (an app using
- * one compiles and fails to link, naming the call).
+ * ev3api_speaker.h — the speaker (included by ev3api.h), EV3RT's interface,
+ * over d_sound (sound_hack.h).  Tones are played by the driver itself
+ * (eHRPWM0 makes the square wave, its one-shot timer ends a timed tone), so
+ * a call returns at once; a file's samples are fed to the driver from a
+ * work item, so play_file returns at once too.
+ * Errors: E_CTX from non-task context, E_OBJ when d_sound is not loaded.
  */
 #ifndef EV3API_SPEAKER_H
 #define EV3API_SPEAKER_H
@@ -53,11 +56,18 @@
 #define NOTE_B6  (1975.53)
 
 
-ER ev3_speaker_set_volume(uint8_t volume) EV3API_NOT_YET(speaker, ev3_speaker_set_volume);
-ER ev3_speaker_play_tone(uint16_t frequency, int32_t duration)
-	EV3API_NOT_YET(speaker, ev3_speaker_play_tone);
-ER ev3_speaker_play_file(const memfile_t *file, int32_t duration)
-	EV3API_NOT_YET(speaker, ev3_speaker_play_file);
-ER ev3_speaker_stop(void) EV3API_NOT_YET(speaker, ev3_speaker_stop);
+/* Volume 0..100 (above 100: 100) for the next tone; default 10 (EV3RT's).  A playing tone keeps its volume. */
+ER ev3_speaker_set_volume(uint8_t volume);
+/* Plays frequency Hz (250..10000, clamped) for duration ms (up to 65535) or, with
+ * SOUND_MANUAL_STOP (any negative duration), until ev3_speaker_stop; replaces what plays.
+ * A duration of 0 plays nothing. */
+ER ev3_speaker_play_tone(uint16_t frequency, int32_t duration);
+/* Plays a RIFF WAV file in memory (PCM, mono, 8000 Hz, 8 bits: else E_NOSPT; not a WAV: E_PAR)
+ * at the volume, for duration ms or, with SOUND_MANUAL_STOP (any negative duration), to its end;
+ * 0 plays nothing.  The memory must stay loaded while it plays.  E_MACV for memory the task may
+ * not read. */
+ER ev3_speaker_play_file(const memfile_t *file, int32_t duration);
+/* Stops what plays. */
+ER ev3_speaker_stop(void);
 
 #endif /* EV3API_SPEAKER_H */

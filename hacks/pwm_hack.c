@@ -6,22 +6,13 @@
  * copy_*_user against the caller's domain) guard every call.
  */
 #define KBUILD_MODNAME "d_pwm"
-#include "driver_common.h"
-
-/* Renames: the driver's module_init/exit become plain pointers, called by ours below. */
-#pragma push_macro("module_init")
-#pragma push_macro("module_exit")
-#undef module_init
-#undef module_exit
-#define module_init(fn) static int (*const pwm_driver_init)(void) = fn
-#define module_exit(fn) static void (*const pwm_driver_exit)(void) = fn
+/* The driver's module_init/exit become plain pointers, called by ours below. */
+#define LX_HACK_DRIVER_INIT pwm_driver_init
+#define LX_HACK_DRIVER_EXIT pwm_driver_exit
 
 #include "d_pwm.c"
 
-#undef module_init
-#undef module_exit
-#pragma pop_macro("module_init")
-#pragma pop_macro("module_exit")
+#include "driver_common.h"
 
 #include "pwm_hack.h"
 

@@ -6,17 +6,12 @@
  * against the caller's domain) guard every call, after the ones here.
  */
 #define KBUILD_MODNAME "d_uart"
-#include "driver_common.h"
-
-/* Rename: the driver's module_exit becomes a plain pointer, called by ours below. */
-#pragma push_macro("module_exit")
-#undef module_exit
-#define module_exit(fn) static void (*const uart_driver_exit)(void) = fn
+/* The driver's module_exit becomes a plain pointer, called by ours below. */
+#define LX_HACK_DRIVER_EXIT uart_driver_exit
 
 #include "d_uart.c"
 
-#undef module_exit
-#pragma pop_macro("module_exit")
+#include "driver_common.h"
 
 #include "uart_hack.h"
 

@@ -11,23 +11,14 @@
  * rel_wai - so a task waiting for clicks can always be stopped.
  */
 #define KBUILD_MODNAME "d_ui"
-#include "driver_common.h"
-#include <linux_compat/clock.h>
-
-/* Renames: the driver's module_init/exit become plain pointers, called by ours below. */
-#pragma push_macro("module_init")
-#pragma push_macro("module_exit")
-#undef module_init
-#undef module_exit
-#define module_init(fn) static int (*const ui_driver_init)(void) = fn
-#define module_exit(fn) static void (*const ui_driver_exit)(void) = fn
+/* The driver's module_init/exit become plain pointers, called by ours below. */
+#define LX_HACK_DRIVER_INIT ui_driver_init
+#define LX_HACK_DRIVER_EXIT ui_driver_exit
 
 #include "d_ui.c"
 
-#undef module_init
-#undef module_exit
-#pragma pop_macro("module_init")
-#pragma pop_macro("module_exit")
+#include "driver_common.h"
+#include <linux_compat/clock.h>
 
 #include "ui_hack.h"
 

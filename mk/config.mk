@@ -11,7 +11,7 @@ WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes 
 
 # Directories whose code is written against the Linux kernel API: they see
 # linux_compat/include and use gnu11 (typeof, statement expressions).
-LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers
+LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers tests/legacy
 
 # Layers and their include directories.
 include mk/layers.mk
@@ -19,6 +19,14 @@ include mk/layers.mk
 # Linux code is held to kbuild W=1: -Wextra without -Wmissing-field-initializers
 # (LEGO fills struct miscdevice positionally: { minor, name, fops }).
 LINUX_INC  := -D__KERNEL__ -Wno-missing-field-initializers -Ilinux_compat/include -Ilinux_compat/mach-davinci/include
+# Code generation as kbuild's top-level Makefile sets it for every kernel object
+# (Linux 6.1): drivers may type-pun through pointers, rely on wrapping signed
+# arithmetic, keep null checks after a dereference, and must not get stores the
+# source does not contain (another context may own the neighbouring field).
+# -fno-common: a tentative definition is a definition, so two modules' `int Hw;`
+# are two symbols the module link keeps apart, never one merged common block.
+LINUX_CODEGEN := -fno-strict-aliasing -fno-common -fno-delete-null-pointer-checks \
+	-fno-strict-overflow -fno-allow-store-data-races
 
 # Build-time kernel settings (TIC_NUME/TIC_DENO: tick length in ms).
 TIC_NUME ?= 1
@@ -43,7 +51,7 @@ RUN_arm926-test    := qemu-arm -cpu arm926 -L /usr/arm-linux-gnueabi
 
 # std and include path for one source file: its layer's include directories (mk/layers.mk)
 is_linux_src = $(filter $(addsuffix /%,$(LINUX_DIRS)),$(1))
-src_flags = $(if $(call is_linux_src,$(1)),-std=gnu11 $(LINUX_INC),-std=c11) $(call layer_inc,$(call LAYER_OF,$(1)))
+src_flags = $(if $(call is_linux_src,$(1)),-std=gnu11 $(LINUX_INC) $(LINUX_CODEGEN),-std=c11) $(call layer_inc,$(call LAYER_OF,$(1)))
 # warnings for one source file: kernel code keeps GNU void-pointer arithmetic, as kbuild's W=1 does
 warn_flags = $(if $(call is_linux_src,$(1)),$(filter-out -Wpointer-arith,$(WARN)),$(WARN))
 

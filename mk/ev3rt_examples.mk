@@ -9,7 +9,7 @@
 #                    `ev3sim run APP_DIR` does before executing it.  The app's
 #                    sources are app.c and the .c of every object its
 #                    Makefile.inc lists in APPL_COBJS (in the app directory or
-#                    its APPL_DIRS).
+#                    its APPL_DIRS); its INCLUDES are added to the compile.
 
 EXAMPLES := $(patsubst examples/%/app.cfg,%,$(wildcard examples/*/app.cfg))
 
@@ -29,11 +29,16 @@ $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_
 ifneq ($(APP),)
 EV3RT_RUN_NAME := run_$(notdir $(APP))
 EV3RT_RUN_DIR  := $(BUILD)/host/ev3rt/$(EV3RT_RUN_NAME)
+# What EV3RT's build gives a Makefile.inc: mkfile_path (the app's directory,
+# unless the file sets it), APPL_COBJS, APPL_DIRS, INCLUDES (-I flags).
+mkfile_path := $(APP)/
 APPL_COBJS :=
 APPL_DIRS :=
+INCLUDES :=
 -include $(APP)/Makefile.inc
+EV3RT_RUN_DIRS := $(APP) $(foreach d,$(APPL_DIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d)))
 EV3RT_RUN_SRCS := $(APP)/app.c $(foreach o,$(APPL_COBJS),$(firstword \
-	$(wildcard $(addsuffix /$(o:.o=.c),$(APP) $(APPL_DIRS))) $(APP)/$(o:.o=.c)))
+	$(wildcard $(addsuffix /$(o:.o=.c),$(EV3RT_RUN_DIRS))) $(APP)/$(o:.o=.c)))
 
 $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 	@mkdir -p $(@D)
@@ -42,13 +47,18 @@ $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 		-DEV3SIM_APP_NAME='"$(notdir $(APP))"' -c $< -o $@
 
 $(eval $(call ev3rt_app,$(EV3RT_RUN_NAME),host,$(APP)/app.cfg,$(EV3RT_RUN_SRCS),$(EV3RT_RUN_DIR)/runner.o))
+EV3RT_INC_$(EV3RT_RUN_NAME)_host += $(INCLUDES)
+# the objects ATT_MOD names come from Makefile.inc too
+$(EV3RT_RUN_DIR)/gen/kernel_cfg.c: $(wildcard $(APP)/Makefile.inc)
 
 .PHONY: ev3rt-app
 ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)
 endif
 
 # `make ev3sim-run-check` (in make test): `ev3sim run` builds an app directory
-# and runs it, ending with its summary line.
+# and runs it, ending with its summary line: examples/blink, and an app whose
+# Makefile.inc adds a source from another directory (APPL_COBJS, APPL_DIRS,
+# INCLUDES, mkfile_path) with its own ATT_MOD.
 .PHONY: ev3sim-run-check
 ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	+$(Q)out=$$($(BUILD)/host/ev3sim run examples/blink --seconds 3 --click back:1500ms --quiet) || \
@@ -59,5 +69,11 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 		echo "ev3sim-run-check: $$summary";; \
 	*) echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1;; \
 	esac
+	+$(Q)out=$$($(BUILD)/host/ev3sim run tests/ev3sim/apps/multisrc --outA large --seconds 2) || \
+		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/multisrc exited $$?"; exit 1; }; \
+	printf '%s\n' "$$out" | grep -q "NOTICE: multisrc: A turned [1-9][0-9]* degrees, 1 speed lookups" && \
+	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=multisrc .* warnings=0 errors=0 bugs=0 " || \
+		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
+	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
 
 TEST_SUITE_EXTRA += ev3sim-run-check

@@ -32,9 +32,9 @@ LINT_SHARED_SRCS := $(sort $(filter $(LINT_HOST_SRCS),$(AM1808_SRCS)))
 
 # Compile flags per configuration: the build's, without -Werror (clang-tidy reports a
 # compiler warning as a finding of its own, by name).
-lint_flags_host   = $(call src_flags,$(1)) $(filter-out -Werror,$(call warn_flags,$(1))) \
+lint_flags_host   = $(filter-out -fno-allow-store-data-races,$(call src_flags,$(1))) $(filter-out -Werror,$(call warn_flags,$(1))) \
 	-DEV3LX_HOST=1 $(KERNEL_DEFS)
-lint_flags_am1808 = $(call src_flags,$(1)) $(filter-out -Werror,$(call warn_flags,$(1))) \
+lint_flags_am1808 = $(filter-out -fno-allow-store-data-races,$(call src_flags,$(1))) $(filter-out -Werror,$(call warn_flags,$(1))) \
 	-DEV3LX_AM1808=1 -ffreestanding $(KERNEL_DEFS)
 lint_cfg = $(if $(filter $(1),$(LINT_AM1808_SRCS)),am1808,host)
 lint_flags = $(call lint_flags_$(call lint_cfg,$(1)),$(1))

@@ -54,6 +54,8 @@ void api_warn(const char *call, int arg, ER ercd);
 void api_motor_boot(void);
 void api_sensor_boot(void);
 void api_brick_boot(void);
+void api_battery_boot(void);
+void api_speaker_boot(void);
 
 /* The button task's body (CRE_TSK EV3_BUTTON_TSKID in config.c): runs click handlers. */
 void api_button_task(intptr_t exinf);

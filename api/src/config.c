@@ -12,6 +12,8 @@ static void api_boot(intptr_t exinf)
 	api_motor_boot();
 	api_sensor_boot();
 	api_brick_boot();
+	api_battery_boot();
+	api_speaker_boot();
 }
 
 static const struct rtos_ini_cfg api_inis[] = { { api_boot, 0 } };

@@ -8,6 +8,7 @@
 #include "rtos_host.h"
 #include "host_sim/scenario.h"
 #include "host_sim/devices/ev3_brick.h"
+#include "host_sim/devices/ev3_speaker.h"
 #include "host_sim/devices/ev3_ui.h"
 #include "host_sim/devices/uart_sensor.h"
 #include "ev3sim/balance_run.h"
@@ -390,6 +391,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		return E_SYS;
 	}
 	rtos_host_trace_set_sink(trace_sink, NULL);
+	if (o->audio_path)
+		(void)ev3_speaker_record();
 	if (o->quiet)
 		ev3sim_quiet_console();
 	ercd = plug_in(o);
@@ -429,11 +432,17 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	r->seconds = rtos_host_now() * 1e-9;
 	r->bugs = rtos_host_bug_count();
 	r->wall_s = ev3sim_wall_seconds() - wall0;
+	if (o->audio_path && ev3_speaker_write_wav(o->audio_path) != E_OK)
+		ercd = E_SYS;
 	(void)iact_tsk(POWER_OFF_TSKID);
 	hs_sim_run_for(DRAIN_NS);
 	rtos_host_trace_set_sink(NULL, NULL);
 	if (hs_sim_shutdown() != E_OK) {
 		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
+		return E_SYS;
+	}
+	if (ercd != E_OK) {
+		snprintf(err, errlen, "cannot write %s completely", o->audio_path);
 		return E_SYS;
 	}
 	return E_OK;

@@ -46,6 +46,7 @@ static const char run_usage[] =
 	"  --fault SPEC         inject a fault (as ev3sim balance --help lists; uart faults go to\n"
 	"                       the first UART sensor, times from power-on); may repeat\n"
 	"  --trace FILE.vcd     host_sim's signal trace\n"
+	"  --audio FILE.wav     what the speaker played (32 kHz, 16-bit mono)\n"
 	"  --csv FILE           the robot's state every 10 ms\n"
 	"  --quiet              the console shows warnings and worse only\n"
 	"\n"
@@ -163,6 +164,10 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		if (!ev3sim_can_create("run", v))	/* checked before the run, not after it */
 			return EV3SIM_EXIT_FAIL;
 		o->trace_path = v;
+	} else if (strcmp(name, "--audio") == 0) {
+		if (!ev3sim_can_create("run", v))
+			return EV3SIM_EXIT_FAIL;
+		o->audio_path = v;
 	} else if (strcmp(name, "--csv") == 0) {
 		*csv_path = v;
 	} else {

@@ -10,7 +10,10 @@
  *   - the Linux interrupt lines and their priority (linux_compat/irq.h);
  *   - the kmalloc pool's size and statistics (linux_compat/heap.h), whose
  *     area a configuration may grant to a user domain for mmap'd buffers.
- * A hack defines KBUILD_MODNAME, includes this, then the driver verbatim.
+ * A hack defines KBUILD_MODNAME (and LX_HACK_DRIVER_INIT/_EXIT, see
+ * linux/module.h), includes the driver verbatim, then this: nothing of the
+ * RTOS and no pr_fmt stands before the driver, as under kbuild.  From here
+ * on module_init/module_exit register the hack's own init and exit.
  */
 #ifndef EV3LX_DRIVER_COMMON_H
 #define EV3LX_DRIVER_COMMON_H
@@ -58,5 +61,7 @@
 #include <linux_compat/config.h>
 #include <linux_compat/irq.h>
 #include <linux_compat/heap.h>
+#include <linux_compat/modparam.h>
+#include <linux_compat/hack.h>
 
 #endif /* EV3LX_DRIVER_COMMON_H */

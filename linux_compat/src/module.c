@@ -15,6 +15,7 @@
 #include <linux_compat/report.h>
 #include <stdio.h>
 #include <sil.h>
+#include <linux_compat/modparam.h>
 
 extern const struct lx_initcall *const __start_lx_initcalls[] __attribute__((__weak__));
 extern const struct lx_initcall *const __stop_lx_initcalls[] __attribute__((__weak__));

@@ -8,6 +8,7 @@
 #include <linux_compat/context.h>
 #include <linux_compat/report.h>
 #include <sil.h>
+#include <kernel.h>
 
 /* Initialises lock as unlocked. */
 void lx_mutex_init(struct mutex *lock, const char *name)

@@ -26,7 +26,7 @@
 #define TNUM_DTQID   16
 #define TNUM_PDQID   16
 #define TNUM_MTXID   16
-#define TNUM_FNCD    64     /* extended service calls: function codes 1..TNUM_FNCD */
+#define TNUM_FNCD    128    /* extended service calls: function codes 1..TNUM_FNCD */
 #define TNUM_DOMID   4      /* user protection domains 1..TNUM_DOMID */
 #define TMAX_INTNO   127U   /* interrupt numbers 0..TMAX_INTNO (AINTC system interrupts) */
 

@@ -17,8 +17,6 @@ void main_task(intptr_t exinf)
 
 	ev3_lcd_draw_string("hello", 0, 0);
 	ev3_image_load(&file, &image);
-	ev3_speaker_play_tone(NOTE_A4, 100);
-	syslog(LOG_NOTICE, "%d mV", ev3_battery_voltage_mV());
 	ev3_memfile_load("/ev3rt/x.wav", &file);
 	bt = ev3_serial_open_file(EV3_SERIAL_BT);
 	if (ev3_bluetooth_is_connected() && bt)

@@ -8,6 +8,7 @@
 #include "analog_test.h"
 #include <linux/moduleparam.h>
 #include "host_sim/gpio.h"
+#include <linux_compat/modparam.h>
 
 #define IN1_PIN5	HS_GPIO(0, 2)
 

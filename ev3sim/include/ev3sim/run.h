@@ -57,6 +57,7 @@ struct ev3sim_run_opts {
 	struct ev3sim_push pushes[EV3SIM_MAX_PUSHES];              /* gyroboy, t_ns from boot */
 	unsigned npushes;
 	const char *trace_path;     /* VCD, NULL: none */
+	const char *audio_path;     /* WAV of what the speaker played, NULL: none */
 	FILE *csv;                  /* the robot's state every 10 ms, NULL: none */
 	bool quiet;                 /* the console shows warnings and worse only */
 	/* every syslog line of the run ("WARNING: text"), NULL: none */

@@ -19,7 +19,7 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 
-#define SERIAL_LOG_FN_WRITE   64    /* (const char *buf, uint_t len): returns len; the last code (1..63 are the drivers') */
+#define SERIAL_LOG_FN_WRITE   TNUM_FNCD  /* (const char *buf, uint_t len): returns len; the last code (the drivers' are below) */
 #define SERIAL_LOG_MAX_WRITE  256U  /* bytes per call */
 #define SERIAL_LOG_DEFAULT_BAUD 115200U
 

@@ -79,6 +79,11 @@ int hs_gpio_watch(unsigned pin, hs_pin_watch_fn fn, void *ctx);
 /* Removes a watcher (harmless for 0 or an unknown handle). */
 void hs_gpio_unwatch(int handle);
 
+/* Muxes pin to GPIO (SYSCFG0 PINMUXn, unlock not needed): what the board code
+ * does for the pins a driver expects muxed.  No effect where host_sim does not
+ * know the pin's mux field (banks 0, 7, 8). */
+void hs_gpio_mux_as_gpio(unsigned pin);
+
 /* Pin name "GP<bank>_<bit>" into buf (at least 8 bytes); returns buf. */
 const char *hs_gpio_name(unsigned pin, char *buf);
 /* Pin number for a name like "GP5_11", or -1. */

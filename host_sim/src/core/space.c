@@ -18,7 +18,17 @@
 #include "core_parts.h"
 
 #define HS_PAGE          4096U
-#define HS_SPACE_PAGES   512U      /* 2 MiB of window space */
+/*
+ * The window space mirrors the AM1808's peripheral address range
+ * 0x01C00000..0x01FFFFFF (AM1808 TRM, memory map: the SYSCFG/EDMA/PSC0/
+ * UART0/SPI0 block at 0x01C0xxxx through eHRPWM/eCAP/timers at 0x01F0xxxx)
+ * page for page, so that an ioremap of any range there — across pages,
+ * regions and unmodelled holes, as Linux allows — is one contiguous window;
+ * a region elsewhere (the AINTC at 0xFFFEE000) gets pages after the mirror.
+ */
+#define HS_MIRROR_PHYS   0x01C00000U
+#define HS_MIRROR_PAGES  1024U     /* 4 MiB */
+#define HS_SPACE_PAGES   (HS_MIRROR_PAGES + 64U)
 #define HS_MAX_REGIONS   64U
 #define HS_NO_ELEM       (-1)
 
@@ -127,7 +137,7 @@ int hs_space_init(uint32_t access_ns)
 	if (p == MAP_FAILED)
 		return -1;
 	space.base = p;
-	space.next_page = 0;
+	space.next_page = HS_MIRROR_PAGES;
 	space.nregions = 0;
 	space.access_ns = access_ns;
 	memset(space.page_owner, 0, sizeof(space.page_owner));
@@ -183,8 +193,17 @@ uintptr_t hs_space_to_phys(uintptr_t addr)
 	rel = addr - (uintptr_t)space.base;
 	r = space.page_owner[rel / HS_PAGE];
 	if (!r)
-		return 0;
+		return rel < (uintptr_t)HS_MIRROR_PAGES * HS_PAGE ? HS_MIRROR_PHYS + rel : 0;
 	return r->cfg.phys + (rel - (uintptr_t)r->first_page * HS_PAGE);
+}
+
+/* The window page of [phys, phys + size) in the mirrored range; HS_SPACE_PAGES if it is not all there. */
+static unsigned mirror_page(uintptr_t phys, size_t size)
+{
+	if (phys < HS_MIRROR_PHYS || size > (size_t)HS_MIRROR_PAGES * HS_PAGE ||
+	    phys - HS_MIRROR_PHYS > (uintptr_t)HS_MIRROR_PAGES * HS_PAGE - size)
+		return HS_SPACE_PAGES;
+	return (unsigned)((phys - HS_MIRROR_PHYS) / HS_PAGE);
 }
 
 /* Region containing physical address phys, or NULL. */
@@ -401,7 +420,8 @@ struct hs_region *hs_region_add(const struct hs_region_cfg *cfg)
 		}
 	}
 	pages = cfg->size / HS_PAGE;
-	if (space.nregions == HS_MAX_REGIONS || space.next_page + pages > HS_SPACE_PAGES) {
+	if (space.nregions == HS_MAX_REGIONS ||
+	    (mirror_page(cfg->phys, cfg->size) == HS_SPACE_PAGES && space.next_page + pages > HS_SPACE_PAGES)) {
 		rtos_host_bug("host_sim", "region %s: no room left in the window space", cfg->name);
 		return NULL;
 	}
@@ -416,10 +436,13 @@ struct hs_region *hs_region_add(const struct hs_region_cfg *cfg)
 		region_free(r);
 		return NULL;
 	}
-	r->first_page = space.next_page;
+	r->first_page = mirror_page(cfg->phys, cfg->size);
+	if (r->first_page == HS_SPACE_PAGES) {
+		r->first_page = space.next_page;
+		space.next_page += pages;
+	}
 	for (unsigned p = 0; p < pages; p++)
 		space.page_owner[r->first_page + p] = r;
-	space.next_page += pages;
 	space.regions[space.nregions++] = r;
 	hs_space_set_reglog(space.log_filter, space.log_out);
 	return r;
@@ -708,8 +731,8 @@ static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
 
 	(void)ctx;
 	if (!r) {
-		rtos_host_bug("host_sim", "read of %u bytes at window address %p: outside every region",
-			      width, (const void *)addr);
+		rtos_host_bug("host_sim", "read of %u bytes at window address %p (physical 0x%08" PRIxPTR
+			      "): no modelled device there", width, (const void *)addr, hs_space_to_phys((uintptr_t)addr));
 		return 0;
 	}
 	if (!width_bit(width)) {
@@ -727,8 +750,9 @@ static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *c
 
 	(void)ctx;
 	if (!r) {
-		rtos_host_bug("host_sim", "write of %u bytes (0x%" PRIx32 ") at window address %p: outside every region",
-			      width, data, (void *)addr);
+		rtos_host_bug("host_sim", "write of %u bytes (0x%" PRIx32 ") at window address %p (physical 0x%08"
+			      PRIxPTR "): no modelled device there", width, data, (void *)addr,
+			      hs_space_to_phys((uintptr_t)addr));
 		return;
 	}
 	if (!width_bit(width)) {
@@ -744,6 +768,13 @@ static void *mmio_map(uintptr_t phys, SIZE size, void *ctx)
 	struct hs_region *r = region_at(phys);
 
 	(void)ctx;
+	if (size != 0 && mirror_page(phys, size) != HS_SPACE_PAGES) {
+		/* Any range in the mirror that touches a modelled device: one window, as
+		 * Linux's ioremap; a range with none at all is almost surely a wrong address. */
+		for (unsigned p = mirror_page(phys, size); p <= mirror_page(phys + size - 1U, 1); p++)
+			if (space.page_owner[p])
+				return (void *)(space.base + (phys - HS_MIRROR_PHYS));
+	}
 	if (!r || size == 0 || size > r->cfg.size - (phys - r->cfg.phys)) {
 		rtos_host_trace("host_sim", "map 0x%08" PRIxPTR "+0x%zx: no modelled region covers it", phys, (size_t)size);
 		return NULL;

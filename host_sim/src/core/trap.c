@@ -5,10 +5,16 @@
  * store through a plain pointer faults.  On x86-64 Linux the SIGSEGV
  * handler decodes the faulting instruction (the mov forms gcc emits for
  * 8/16/32-bit volatile accesses: mov r/m<->r, mov imm->r/m, movzx, movsx,
- * movsxd; with 0x66, REX and segment prefixes), performs the access through
+ * movsxd; the read-modify-write and compare forms -O2 makes of compound
+ * statements such as `*p |= m`: add/or/adc/sbb/and/sub/xor/cmp with a
+ * register or immediate, test, inc, dec, not, neg, bt/bts/btr/btc; with
+ * 0x66, REX, lock and segment prefixes), performs the access through
  * sil_host_read/sil_host_write — exactly the accessor path, hooks, log,
  * cost and interrupt deferral included — writes the destination register
- * in the saved context and resumes after the instruction.  Faults outside
+ * (and, for arithmetic, the flags, computed by the same instruction on the
+ * host) in the saved context and resumes after the instruction.  A read-
+ * modify-write is one read and one write on the bus, as on the ARM (LDR,
+ * ORR, STR); compares and bit tests only read.  Faults outside
  * the window space go to the handler installed before ours (ASan's, or the
  * default action).  Elsewhere (qemu-arm user mode) accesses are not
  * emulated: a fault in the window space is reported clearly and aborts.
@@ -38,6 +44,82 @@ static const int greg_of[16] = {
 	REG_R8, REG_R9, REG_R10, REG_R11, REG_R12, REG_R13, REG_R14, REG_R15,
 };
 
+/* The arithmetic forms, in the order of the x86 group-1 /digit field. */
+enum alu_op {
+	ALU_ADD, ALU_OR, ALU_ADC, ALU_SBB, ALU_AND, ALU_SUB, ALU_XOR, ALU_CMP,
+	ALU_TEST, ALU_INC, ALU_DEC, ALU_NOT, ALU_NEG, ALU_BT, ALU_BTS, ALU_BTR, ALU_BTC,
+	ALU_NONE,
+};
+
+/* EFLAGS bits an arithmetic instruction defines: OF SF ZF AF PF CF. */
+#define ARITH_FLAGS 0x8D5ULL
+
+/*
+ * Runs one instruction on registers with the given arithmetic flags in and
+ * out (the red zone below the stack pointer is stepped over: this code may
+ * run in a leaf function's red zone's place).
+ */
+#define ALU_ASM(text, type, cons)							\
+	do {										\
+		type x_ = (type)a, y_ = (type)b;					\
+		__asm__("lea -128(%%rsp), %%rsp\n\tpush %[f]\n\tpopf\n\t" text		\
+			"\n\tpushf\n\tpop %[f]\n\tlea 128(%%rsp), %%rsp"		\
+			: [x] "+" cons (x_), [f] "+r" (fl) : [y] cons (y_) : "cc");	\
+		r = x_;									\
+	} while (0)
+#define ALU_WIDTHS(text)								\
+	do {										\
+		if (width == 1U)							\
+			ALU_ASM(text, uint8_t, "q");					\
+		else if (width == 2U)							\
+			ALU_ASM(text, uint16_t, "r");					\
+		else									\
+			ALU_ASM(text, uint32_t, "r");					\
+	} while (0)
+#define ALU_WIDTHS_16_32(text)								\
+	do {										\
+		if (width == 2U)							\
+			ALU_ASM(text, uint16_t, "r");					\
+		else									\
+			ALU_ASM(text, uint32_t, "r");					\
+	} while (0)
+
+/* a op b at width bytes, as the CPU computes it; *flags: EFLAGS in and out. */
+static uint32_t alu(enum alu_op op, unsigned width, uint32_t a, uint32_t b, uint64_t *flags)
+{
+	uint64_t fl = (*flags & ARITH_FLAGS) | 0x202U;
+	uint32_t r = a;
+
+	switch (op) {
+	case ALU_ADD:  ALU_WIDTHS("add %[y], %[x]"); break;
+	case ALU_OR:   ALU_WIDTHS("or %[y], %[x]"); break;
+	case ALU_ADC:  ALU_WIDTHS("adc %[y], %[x]"); break;
+	case ALU_SBB:  ALU_WIDTHS("sbb %[y], %[x]"); break;
+	case ALU_AND:  ALU_WIDTHS("and %[y], %[x]"); break;
+	case ALU_SUB:  ALU_WIDTHS("sub %[y], %[x]"); break;
+	case ALU_XOR:  ALU_WIDTHS("xor %[y], %[x]"); break;
+	case ALU_CMP:  ALU_WIDTHS("cmp %[y], %[x]"); break;
+	case ALU_TEST: ALU_WIDTHS("test %[y], %[x]"); break;
+	case ALU_INC:  ALU_WIDTHS("inc %[x]"); break;
+	case ALU_DEC:  ALU_WIDTHS("dec %[x]"); break;
+	case ALU_NOT:  ALU_WIDTHS("not %[x]"); break;
+	case ALU_NEG:  ALU_WIDTHS("neg %[x]"); break;
+	case ALU_BT:   ALU_WIDTHS_16_32("bt %[y], %[x]"); break;
+	case ALU_BTS:  ALU_WIDTHS_16_32("bts %[y], %[x]"); break;
+	case ALU_BTR:  ALU_WIDTHS_16_32("btr %[y], %[x]"); break;
+	case ALU_BTC:  ALU_WIDTHS_16_32("btc %[y], %[x]"); break;
+	case ALU_NONE: break;
+	}
+	*flags = (*flags & ~ARITH_FLAGS) | (fl & ARITH_FLAGS);
+	return r;
+}
+
+/* True if the form only reads its memory operand (no write back). */
+static bool alu_reads_only(enum alu_op op)
+{
+	return op == ALU_CMP || op == ALU_TEST || op == ALU_BT;
+}
+
 struct insn {
 	unsigned len;          /* bytes */
 	unsigned width;        /* memory access width */
@@ -48,6 +130,8 @@ struct insn {
 	bool rex;              /* any REX prefix: byte registers 4..7 are spl..dil */
 	unsigned dst_width;    /* load: destination register width (1, 2, 4, 8) */
 	bool sign;             /* load: sign-extend */
+	enum alu_op alu;       /* ALU_NONE: a mov form */
+	bool reg_dst;          /* ALU form whose destination is the register (op r, r/m) */
 };
 
 /* Length of the ModRM/SIB/displacement part starting at p. */
@@ -75,10 +159,11 @@ static bool decode(const uint8_t *p, struct insn *in)
 	unsigned op, mlen;
 
 	memset(in, 0, sizeof(*in));
+	in->alu = ALU_NONE;
 	for (;; p++) {
 		if (*p == 0x66U)
 			opsize = true;
-		else if (*p == 0x2EU || *p == 0x3EU || *p == 0x26U || *p == 0x36U || *p == 0x64U || *p == 0x65U)
+		else if (*p == 0xF0U || *p == 0x2EU || *p == 0x3EU || *p == 0x26U || *p == 0x36U || *p == 0x64U || *p == 0x65U)
 			continue;
 		else
 			break;
@@ -128,7 +213,75 @@ static bool decode(const uint8_t *p, struct insn *in)
 	case 0x0FBE: in->width = 1; in->sign = true; break;
 	case 0x0FBF: in->width = 2; in->sign = true; break;
 	case 0x63:   in->width = 4; in->sign = rex_w; break;
+	case 0x80: case 0x81: case 0x83:            /* group 1: op r/m, imm */
+		in->alu = (enum alu_op)(in->reg & 7U);
+		in->width = op == 0x80U ? 1U : in->dst_width;
+		in->has_imm = true;
+		if (op == 0x81U && in->width == 2U) {
+			in->imm = (uint32_t)p[mlen] | (uint32_t)p[mlen + 1] << 8;
+			mlen += 2;
+		} else if (op == 0x81U) {
+			memcpy(&in->imm, p + mlen, 4);
+			mlen += 4;
+		} else {
+			in->imm = op == 0x83U ? (uint32_t)(int32_t)(int8_t)p[mlen] : p[mlen];
+			mlen += 1;
+		}
+		break;
+	case 0x84: case 0x85:                       /* test r/m, r */
+		in->alu = ALU_TEST;
+		in->width = op == 0x84U ? 1U : in->dst_width;
+		break;
+	case 0xF6: case 0xF7:                       /* group 3: test imm, not, neg */
+		in->width = op == 0xF6U ? 1U : in->dst_width;
+		switch (in->reg & 7U) {
+		case 0:
+			in->alu = ALU_TEST;
+			in->has_imm = true;
+			if (in->width == 1U) {
+				in->imm = p[mlen];
+				mlen += 1;
+			} else if (in->width == 2U) {
+				in->imm = (uint32_t)p[mlen] | (uint32_t)p[mlen + 1] << 8;
+				mlen += 2;
+			} else {
+				memcpy(&in->imm, p + mlen, 4);
+				mlen += 4;
+			}
+			break;
+		case 2: in->alu = ALU_NOT; break;
+		case 3: in->alu = ALU_NEG; break;
+		default: return false;               /* mul, div: not register accesses a driver makes */
+		}
+		break;
+	case 0xFE: case 0xFF:                       /* group 4/5: inc, dec */
+		if ((in->reg & 7U) > 1U)
+			return false;
+		in->alu = (in->reg & 7U) ? ALU_DEC : ALU_INC;
+		in->width = op == 0xFEU ? 1U : in->dst_width;
+		break;
+	case 0x0FA3: in->alu = ALU_BT;  in->width = in->dst_width; break;
+	case 0x0FAB: in->alu = ALU_BTS; in->width = in->dst_width; break;
+	case 0x0FB3: in->alu = ALU_BTR; in->width = in->dst_width; break;
+	case 0x0FBB: in->alu = ALU_BTC; in->width = in->dst_width; break;
+	case 0x0FBA:                                /* group 8: bt/bts/btr/btc r/m, imm8 */
+		if ((in->reg & 7U) < 4U)
+			return false;
+		in->alu = (enum alu_op)(ALU_BT + ((in->reg & 7U) - 4U));
+		in->width = in->dst_width;
+		in->has_imm = true;
+		in->imm = p[mlen];
+		mlen += 1;
+		break;
 	default:
+		if (op < 0x40U && (op & 7U) < 4U) {  /* add/or/adc/sbb/and/sub/xor/cmp r/m<->r */
+			in->alu = (enum alu_op)(op >> 3);
+			in->width = (op & 1U) ? in->dst_width : 1U;
+			in->reg_dst = (op & 2U) != 0;
+			if (in->width == 1U)
+				in->dst_width = 1U;
+			break;
+		}
 		return false;
 	}
 	in->len = (unsigned)(p - start) + mlen;
@@ -179,6 +332,26 @@ static void reg_put(mcontext_t *mc, const struct insn *in, uint32_t v)
 		break;
 	}
 }
+
+/* An arithmetic form: one bus read, the operation, one bus write unless it only reads. */
+static void emulate_alu(mcontext_t *mc, const struct insn *in, uintptr_t addr)
+{
+	uint64_t flags = (uint64_t)mc->gregs[REG_EFL];
+	uint32_t mem = sil_host_read((const volatile void *)addr, in->width);
+	uint32_t other = in->has_imm ? in->imm : reg_get(mc, in, in->width);
+	uint32_t r;
+
+	if (in->reg_dst) {
+		r = alu(in->alu, in->width, other, mem, &flags);
+		if (!alu_reads_only(in->alu))
+			reg_put(mc, in, r);
+	} else {
+		r = alu(in->alu, in->width, mem, other, &flags);
+		if (!alu_reads_only(in->alu))
+			sil_host_write((volatile void *)addr, in->width, r);
+	}
+	mc->gregs[REG_EFL] = (greg_t)flags;
+}
 #else
 #define HS_TRAP_EMULATES 0
 #endif
@@ -216,12 +389,15 @@ static void trap_handler(int sig, siginfo_t *si, void *uctx)
 
 		if (!decode(ip, &in)) {
 			rtos_host_bug("host_sim", "plain pointer access to register window address %p (physical 0x%08lx): "
-				      "instruction %02x %02x %02x %02x %02x %02x at %p is not an emulated 8/16/32-bit mov",
+				      "instruction %02x %02x %02x %02x %02x %02x at %p is not an emulated 8/16/32-bit access form "
+				      "(mov, movzx/movsx, add/or/adc/sbb/and/sub/xor/cmp/test, inc/dec/not/neg, bt*)",
 				      (void *)addr, (unsigned long)hs_space_to_phys(addr), ip[0], ip[1], ip[2], ip[3],
 				      ip[4], ip[5], (const void *)ip);
 			abort();
 		}
-		if (in.store)
+		if (in.alu != ALU_NONE)
+			emulate_alu(mc, &in, addr);
+		else if (in.store)
 			sil_host_write((volatile void *)addr, in.width,
 				       in.has_imm ? in.imm : reg_get(mc, &in, in.width));
 		else

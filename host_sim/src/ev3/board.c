@@ -4,11 +4,14 @@
  */
 #include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/ev3_ui.h"
+#include "host_sim/devices/ev3_power.h"
+#include "host_sim/devices/ev3_speaker.h"
 #include "host_sim/devices/pwm.h"
 #include "host_sim/devices/spi_adc.h"
 
 const struct hs_device *const ev3_board_devices[] = {
-	&hs_ehrpwm1_device, &hs_ecap0_device, &hs_ecap1_device, &hs_spi0_device, &ev3_adc_device,
+	&hs_ehrpwm0_device, &hs_ehrpwm1_device, &hs_ecap0_device, &hs_ecap1_device, &hs_spi0_device, &ev3_adc_device,
 	&ev3_uart1_device, &ev3_uart0_device, &ev3_suart_in3_device, &ev3_suart_in4_device,
-	&ev3_ports_device, &ev3_ui_device, NULL,
+	&ev3_ports_device, &ev3_ui_device, &ev3_power_device,
+	&ev3_speaker_device, NULL,
 };

@@ -21,6 +21,7 @@
 #include "host_sim/devices/spi_adc.h"
 #include "host_sim/devices/uart16550.h"
 #include "host_sim/devices/ev3_ui.h"
+#include "host_sim/devices/ev3_power.h"
 
 #define PULLUP_OHMS       10000U
 #define EV3_TOUCH_ID_OHMS 2200U
@@ -485,7 +486,6 @@ static const uint8_t *adc_sources(void)
 /* Voltage of an ADC channel (LEGO's d_analog.c channel map). */
 uint32_t ev3_adc_channel_mv(unsigned ch)
 {
-	double amps = 0;
 	unsigned src = ch < ADC_CHANNELS ? adc_sources()[ch] : ADC_BRICK;
 
 	switch (src & 0xF0U) {
@@ -498,22 +498,19 @@ uint32_t ev3_adc_channel_mv(unsigned ch)
 	default:
 		break;
 	}
-	if (ch == EV3_ADC_MOTOR_CURRENT || ch == EV3_ADC_BATTERY_CURRENT)
-		for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
-			if (brick.out[p].motor)
-				amps += hs_motor_current_a(brick.out[p].motor);
-	switch (ch) {
-	case EV3_ADC_BATTERY_VOLTAGE:   /* 1:2 divider assumed */
-		return ev3_battery_mv() / 2U;
-	case EV3_ADC_MOTOR_CURRENT:     /* 1 V per ampere assumed */
-		return amps > 5.0 ? 5000U : (uint32_t)(amps * 1000.0);
-	case EV3_ADC_BATTERY_CURRENT:   /* brick draw 0.1 A plus the motors */
-		return amps + 0.1 > 5.0 ? 5000U : (uint32_t)((amps + 0.1) * 1000.0);
-	case EV3_ADC_BATTERY_TEMP:
-		return 1500U;
-	default:
-		return 0;
-	}
+	return ev3_power_adc_mv(ch, ch == EV3_ADC_MOTOR_CURRENT || ch == EV3_ADC_BATTERY_CURRENT ||
+					 ch == EV3_ADC_BATTERY_VOLTAGE ? ev3_motors_current_a() : 0);
+}
+
+/* Sum of the motor currents now, amperes. */
+double ev3_motors_current_a(void)
+{
+	double amps = 0;
+
+	for (unsigned p = 0; p < EV3_OUTPUT_PORTS; p++)
+		if (brick.out[p].motor)
+			amps += hs_motor_current_a(brick.out[p].motor);
+	return amps;
 }
 
 /* ADC noise standard deviation now (mV). */

@@ -19,8 +19,6 @@
 #include "host_sim/trace.h"
 #include "host_sim/devices/ev3_ui.h"
 
-#define GPIO_MUX_FUNC  8U           /* PINMUX field value selecting GPIO */
-#define SYSCFG_PINMUX0 0x120U
 
 const struct ev3_ui_pins ev3_ui_pins = {
 	.button = {
@@ -250,28 +248,17 @@ uint32_t ev3_ui_led_changes(enum ev3_ui_led led)
 
 /* ---- the board device ---- */
 
-/* Muxes pin to GPIO as the board code does (banks 1..6: the fields host_sim checks). */
-static void mux_to_gpio(struct hs_region *syscfg0, unsigned pin)
-{
-	unsigned bank = pin / 16U, bit = pin % 16U, reg, shift;
-
-	if (!syscfg0 || bank < 1U || bank > 6U)
-		return;
-	reg = bit >= 8U ? 2U * bank + 1U : 2U * bank + 2U;
-	shift = 28U - 4U * (bit % 8U);
-	hs_reg_update(syscfg0, SYSCFG_PINMUX0 + 4U * reg, 0xFU << shift, GPIO_MUX_FUNC << shift);
-}
-
 static ER ui_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	static const char *const led_signal[EV3_UI_LEDS] = { "led_left", "led_right" };
-	struct hs_region *syscfg0 = cfg && cfg->cold_reset ? NULL : hs_region_by_name("SYSCFG0");
+	bool board_code = !(cfg && cfg->cold_reset);
 	unsigned w = 0;
 
 	memset(&ui, 0, sizeof(ui));
 	hs_rng_stream(&ui.rng, "ui.buttons");
 	for (unsigned b = 0; b < EV3_UI_BUTTONS; b++) {
-		mux_to_gpio(syscfg0, ev3_ui_pins.button[b]);
+		if (board_code)
+			hs_gpio_mux_as_gpio(ev3_ui_pins.button[b]);
 		ui.buttons[b].sig = hs_trace_signal("ui", button_signal[b], 1);
 		contact_apply((enum ev3_ui_button)b);
 	}
@@ -281,7 +268,8 @@ static ER ui_create(const struct hs_board_cfg *cfg, void **ctx)
 		ui.leds[i].sig = hs_trace_signal("ui", led_signal[i], 2);
 		hs_trace_set(ui.leds[i].sig, EV3_UI_LED_OFF);
 		for (unsigned k = 0; k < 2; k++) {
-			mux_to_gpio(syscfg0, pins[k]);
+			if (board_code)
+				hs_gpio_mux_as_gpio(pins[k]);
 			ui.watches[w] = hs_gpio_watch(pins[k], led_pin_changed, NULL);
 			if (!ui.watches[w++])
 				return E_NOMEM;

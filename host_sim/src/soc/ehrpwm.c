@@ -1,5 +1,5 @@
 /*
- * ehrpwm.c — eHRPWM1 (AM1808 TRM chapter "eHRPWM"), reduced to what a
+ * ehrpwm.c — eHRPWM0 and eHRPWM1 (AM1808 TRM chapter "eHRPWM"), reduced to what a
  * motor sees: the fraction of each period an output is low, recomputed
  * whenever it can change (a register write that acts at once, or a shadow
  * load at counter zero/period, which is an event at that exact instant).
@@ -129,6 +129,9 @@ struct ehrpwm {
 	double low[2];              /* outputs A, B */
 	bool level[2];
 	int syscfg_watch;
+	enum hs_pwm_output out[2];  /* outputs A, B */
+	const char *name;
+	double freq;                /* time-base frequency last notified (Hz, 0 stopped) */
 };
 
 /* Time-base clock for TBCTL dividers. */
@@ -178,8 +181,9 @@ static uint32_t tb_counter(const struct ehrpwm *e, uint32_t pos)
 static void ehrpwm_update(struct ehrpwm *e)
 {
 	uint32_t tbctl = hs_reg_get(e->r, TBCTL), csfrc = hs_reg_get(e->r, AQCSFRC);
-	uint32_t pos = tb_position(e);
+	uint32_t pos = tb_position(e), len = tb_period_cycles(e, tbctl);
 	static const uint32_t aq[2] = { AQCTLA, AQCTLB };
+	double freq = e->running && len ? (double)tbclk_hz(tbctl) / len : 0;
 
 	for (int o = 0; o < 2; o++) {
 		unsigned force = (csfrc >> (2 * o)) & 3U;
@@ -199,11 +203,12 @@ static void ehrpwm_update(struct ehrpwm *e)
 					      hs_reg_get(e->r, aq[o]), lvl, pos, &lvl);
 		}
 		e->level[o] = lvl;
-		if (low != e->low[o]) {
+		if (low != e->low[o] || freq != e->freq) {
 			e->low[o] = low;
-			hs_pwm_output_changed(o ? HS_PWM_EHRPWM1_B : HS_PWM_EHRPWM1_A);
+			hs_pwm_output_changed(e->out[o]);
 		}
 	}
+	e->freq = freq;
 }
 
 static void ehrpwm_schedule_load(struct ehrpwm *e);
@@ -373,8 +378,9 @@ static void ehrpwm_write_unmodelled(void *ctx, const struct hs_access *a, uint32
 				   uint32_t written)
 {
 	if (nv != 0 && a->offset != TZCLR && a->offset != ETCLR)
-		rtos_host_bug("host_sim", "EHRPWM1.%s = 0x%04x: dead band, chopper, trip zones and event "
-			      "triggers are not modelled", a->reg->name, (unsigned)nv);
+		rtos_host_bug("host_sim", "%s.%s = 0x%04x: dead band, chopper, trip zones and event "
+			      "triggers are not modelled", ((struct ehrpwm *)ctx)->name, a->reg->name,
+			      (unsigned)nv);
 }
 
 static const struct hs_reg ehrpwm_regs[] = {
@@ -440,38 +446,66 @@ static double ehrpwm_frequency(const void *ctx, unsigned channel)
 
 static const struct hs_pwm_source_ops ehrpwm_ops = { ehrpwm_low_fraction, ehrpwm_frequency };
 
-/* Creates the EHRPWM1 region and state. */
-static ER ehrpwm_create(const struct hs_board_cfg *cfg, void **ctx)
+/* One eHRPWM module: its region name, base and outputs. */
+struct ehrpwm_instance {
+	const char *name;
+	uint32_t phys;
+	enum hs_pwm_output out[2];
+};
+
+static const struct ehrpwm_instance ehrpwm_instances[] = {
+	{ "EHRPWM0", HS_EHRPWM0_BASE, { HS_PWM_EHRPWM0_A, HS_PWM_EHRPWM0_B } },
+	{ "EHRPWM1", HS_EHRPWM1_BASE, { HS_PWM_EHRPWM1_A, HS_PWM_EHRPWM1_B } },
+};
+
+/* Creates an eHRPWM region and state (both modules share PSC1 LPSC 17). */
+static ER ehrpwm_create(const struct ehrpwm_instance *in, void **ctx)
 {
 	struct ehrpwm *e = calloc(1, sizeof(*e));
 
 	if (!e)
 		return E_NOMEM;
-	e->r = hs_region_add(&(struct hs_region_cfg){ .name = "EHRPWM1", .phys = HS_EHRPWM1_BASE,
+	e->r = hs_region_add(&(struct hs_region_cfg){ .name = in->name, .phys = in->phys,
 		.size = 0x1000, .regs = ehrpwm_regs, .nregs = HS_ARRAY_SIZE(ehrpwm_regs),
 		.power = HS_PSC1_MODULE(HS_LPSC1_EHRPWM), .ctx = e });
 	if (!e->r) {
 		free(e);
 		return E_PAR;
 	}
+	e->name = in->name;
+	e->out[0] = in->out[0];
+	e->out[1] = in->out[1];
 	e->low[0] = e->low[1] = 1.0;    /* outputs low after reset */
 	e->syscfg_watch = hs_syscfg_watch(ehrpwm_syscfg_changed, e);
-	hs_pwm_output_attach(HS_PWM_EHRPWM1_A, &ehrpwm_ops, e, 0);
-	hs_pwm_output_attach(HS_PWM_EHRPWM1_B, &ehrpwm_ops, e, 1);
+	hs_pwm_output_attach(e->out[0], &ehrpwm_ops, e, 0);
+	hs_pwm_output_attach(e->out[1], &ehrpwm_ops, e, 1);
 	*ctx = e;
 	return E_OK;
 }
 
-/* Frees EHRPWM1. */
+static ER ehrpwm0_create(const struct hs_board_cfg *cfg, void **ctx)
+{
+	(void)cfg;
+	return ehrpwm_create(&ehrpwm_instances[0], ctx);
+}
+
+static ER ehrpwm1_create(const struct hs_board_cfg *cfg, void **ctx)
+{
+	(void)cfg;
+	return ehrpwm_create(&ehrpwm_instances[1], ctx);
+}
+
+/* Frees an eHRPWM module. */
 static void ehrpwm_destroy(void *ctx)
 {
 	struct ehrpwm *e = ctx;
 
 	hs_event_cancel(&e->load_ev);
 	hs_syscfg_unwatch(e->syscfg_watch);
-	hs_pwm_output_attach(HS_PWM_EHRPWM1_A, NULL, NULL, 0);
-	hs_pwm_output_attach(HS_PWM_EHRPWM1_B, NULL, NULL, 0);
+	hs_pwm_output_attach(e->out[0], NULL, NULL, 0);
+	hs_pwm_output_attach(e->out[1], NULL, NULL, 0);
 	free(e);
 }
 
-const struct hs_device hs_ehrpwm1_device = { "EHRPWM1", ehrpwm_create, NULL, ehrpwm_destroy };
+const struct hs_device hs_ehrpwm0_device = { "EHRPWM0", ehrpwm0_create, NULL, ehrpwm_destroy };
+const struct hs_device hs_ehrpwm1_device = { "EHRPWM1", ehrpwm1_create, NULL, ehrpwm_destroy };

@@ -102,6 +102,16 @@ static bool pin_mux_field(unsigned pin, unsigned *reg, unsigned *shift)
 	return true;
 }
 
+/* Muxes pin to GPIO in SYSCFG0, as board code does before a driver loads. */
+void hs_gpio_mux_as_gpio(unsigned pin)
+{
+	struct hs_region *syscfg0 = hs_region_by_name("SYSCFG0");
+	unsigned reg, shift;
+
+	if (syscfg0 && pin_mux_field(pin, &reg, &shift))
+		hs_reg_update(syscfg0, 0x120U + 4U * reg, 0xFU << shift, GPIO_MUX_FUNC << shift);
+}
+
 /* true if pin is muxed to GPIO (or its mux is not known here). */
 static bool pin_muxed(unsigned pin)
 {

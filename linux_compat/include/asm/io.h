@@ -1,10 +1,12 @@
 /*
  * asm/io.h — memory-mapped I/O: ioremap and the register accessors.
  *
- * Every accessor is one TOPPERS SIL access of exactly the named width
- * (sil_reb/reh/rew_mem, sil_wrb/wrh/wrw_mem): on the AM1808 a volatile load
- * or store; on the host the access goes to the MMIO handler host_sim
- * installed, which gives each register its declared semantics.  Registers
+ * Every accessor is one access of exactly the named width, the same as the
+ * TOPPERS SIL's sil_reb/reh/rew_mem and sil_wrb/wrh/wrw_mem: on the AM1808 a
+ * volatile load or store; on the host the access goes to the MMIO handler
+ * host_sim installed (sil_host_read/sil_host_write, declared here with C
+ * types so that no TOPPERS name reaches a driver), which gives each register
+ * its declared semantics.  Registers
  * are little-endian like the CPU, so no byte swapping.  readX/writeX order
  * against normal memory with a compiler barrier (one in-order CPU, device
  * memory strongly ordered); the _relaxed and __raw_ forms omit it.
@@ -20,7 +22,19 @@
 #include <linux/types.h>
 #include <linux/compiler.h>
 #include <asm/page.h>
-#include <sil.h>
+
+#ifdef EV3LX_HOST
+uint32_t sil_host_read(const volatile void *mem, unsigned int width);
+void sil_host_write(volatile void *mem, unsigned int width, uint32_t data);
+#define __lx_mmio_read(type, addr) \
+	((type)sil_host_read((__force const volatile void *)(addr), sizeof(type)))
+#define __lx_mmio_write(type, value, addr) \
+	sil_host_write((__force volatile void *)(addr), sizeof(type), (type)(value))
+#else
+#define __lx_mmio_read(type, addr)	(*(__force const volatile type *)(addr))
+#define __lx_mmio_write(type, value, addr) \
+	((void)(*(__force volatile type *)(addr) = (type)(value)))
+#endif
 
 #ifndef mb
 #define mb()		__asm__ __volatile__("" : : : "memory")
@@ -35,32 +49,32 @@
 
 static inline u8 __raw_readb(const volatile void __iomem *addr)
 {
-	return sil_reb_mem((const uint8_t *)(__force const void *)addr);
+	return __lx_mmio_read(u8, addr);
 }
 
 static inline u16 __raw_readw(const volatile void __iomem *addr)
 {
-	return sil_reh_mem((const uint16_t *)(__force const void *)addr);
+	return __lx_mmio_read(u16, addr);
 }
 
 static inline u32 __raw_readl(const volatile void __iomem *addr)
 {
-	return sil_rew_mem((const uint32_t *)(__force const void *)addr);
+	return __lx_mmio_read(u32, addr);
 }
 
 static inline void __raw_writeb(u8 value, volatile void __iomem *addr)
 {
-	sil_wrb_mem((uint8_t *)(__force void *)addr, value);
+	__lx_mmio_write(u8, value, addr);
 }
 
 static inline void __raw_writew(u16 value, volatile void __iomem *addr)
 {
-	sil_wrh_mem((uint16_t *)(__force void *)addr, value);
+	__lx_mmio_write(u16, value, addr);
 }
 
 static inline void __raw_writel(u32 value, volatile void __iomem *addr)
 {
-	sil_wrw_mem((uint32_t *)(__force void *)addr, value);
+	__lx_mmio_write(u32, value, addr);
 }
 
 #define readb_relaxed(c)	__raw_readb(c)

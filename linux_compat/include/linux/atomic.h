@@ -1,6 +1,6 @@
 /*
  * linux/atomic.h — atomic_t operations, atomic against interrupts on one
- * CPU: each read-modify-write runs with interrupts masked (SIL_LOC_INT).
+ * CPU: each read-modify-write runs with interrupts masked (local_irq_save).
  * Legal in any context.  Plain reads and writes are single accesses.
  */
 #ifndef _LINUX_ATOMIC_H
@@ -8,10 +8,11 @@
 
 #include <linux/types.h>
 #include <linux/compiler.h>
-#include <sil.h>
+#include <linux/irqflags.h>
 
-/* The lock around every read-modify-write: the target's SIL interrupt lock. */
-#define __lx_atomic_rmw(stmt) ({ SIL_PRE_LOC; SIL_LOC_INT(); stmt; SIL_UNL_INT(); })
+/* The lock around every read-modify-write: interrupts masked, as on a UP Linux kernel. */
+#define __lx_atomic_rmw(stmt) \
+	({ unsigned long __lx_flags; local_irq_save(__lx_flags); stmt; local_irq_restore(__lx_flags); })
 
 static inline int atomic_read(const atomic_t *v)	{ return READ_ONCE(v->counter); }
 static inline void atomic_set(atomic_t *v, int i)	{ WRITE_ONCE(v->counter, i); }

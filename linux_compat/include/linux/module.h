@@ -38,7 +38,7 @@
 #include <linux/export.h>
 #include <linux/moduleparam.h>
 #include <linux/kernel.h>
-#include <t_stddef.h>
+#include <linux/errno.h>       /* as Linux's, through linux/err.h */
 
 enum module_state {
 	MODULE_STATE_UNFORMED,  /* linked, init not run yet */
@@ -93,15 +93,34 @@ static struct module __this_module __maybe_unused = {
 
 #ifdef KBUILD_MODNAME
 #define __lx_define_initcall(fn, lvl)	__lx_initcall_entry(fn, fn, NULL, lvl)
-#define module_exit(fn)			__lx_initcall_entry(fn, NULL, fn, LX_INITCALL_DEVICE)
+#define __lx_module_exit(fn)		__lx_initcall_entry(fn, NULL, fn, LX_INITCALL_DEVICE)
 #else
 #define __lx_define_initcall(fn, lvl) \
 	_Static_assert(0, "define KBUILD_MODNAME before using module_init/initcalls")
-#define module_exit(fn) \
+#define __lx_module_exit(fn) \
 	_Static_assert(0, "define KBUILD_MODNAME before using module_exit")
 #endif
 
-#define module_init(fn)		__lx_define_initcall(fn, LX_INITCALL_DEVICE)
+#define __lx_module_init(fn)	__lx_define_initcall(fn, LX_INITCALL_DEVICE)
+
+/*
+ * A hack file includes its driver after naming, with these macros, the
+ * pointers through which it calls the driver's init and exit itself; the
+ * driver's module_init/module_exit then define those pointers instead of
+ * registering.  The hack defines nothing else before the driver, so the
+ * driver's own `#define pr_fmt` and names come first, as under kbuild;
+ * driver_common.h, included after the driver, restores the registering forms.
+ */
+#ifdef LX_HACK_DRIVER_EXIT
+#define module_exit(fn)		static void (*const LX_HACK_DRIVER_EXIT)(void) = fn
+#else
+#define module_exit(fn)		__lx_module_exit(fn)
+#endif
+#ifdef LX_HACK_DRIVER_INIT
+#define module_init(fn)		static int (*const LX_HACK_DRIVER_INIT)(void) = fn
+#else
+#define module_init(fn)		__lx_module_init(fn)
+#endif
 #define core_initcall(fn)	__lx_define_initcall(fn, LX_INITCALL_CORE)
 #define postcore_initcall(fn)	__lx_define_initcall(fn, LX_INITCALL_POSTCORE)
 #define arch_initcall(fn)	__lx_define_initcall(fn, LX_INITCALL_ARCH)

@@ -16,7 +16,6 @@
 #include <linux/types.h>
 #include <linux/compiler.h>
 #include <linux/stringify.h>
-#include <t_stddef.h>
 
 enum lx_param_type {
 	LX_PARAM_charp,
@@ -56,18 +55,6 @@ struct lx_module_param {
 
 /* The linker section holding pointers to every struct lx_module_param. */
 #define LX_MODULE_PARAM_SECTION	"lx_module_params"
-
-/*
- * Sets parameter `param` of module `module` from text before the module is
- * initialised.  charp keeps the pointer (the text must stay valid: a string
- * literal or static storage).  Returns E_OK; E_PAR for NULL arguments or text
- * the type does not accept; E_NOEXS if no such module parameter is linked;
- * E_OBJ if the module has already been initialised.
- */
-ER lx_module_param_set(const char *module, const char *param, const char *value);
-
-/* Writes the value of a parameter as text into buf; returns E_OK, E_NOEXS or E_PAR. */
-ER lx_module_param_get(const char *module, const char *param, char *buf, SIZE len);
 
 #define __lx_param_entry(pname, var, type, perm)				\
 	static inline __lx_param_ctype_##type * __maybe_unused			\

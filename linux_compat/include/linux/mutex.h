@@ -16,12 +16,12 @@
 struct mutex {
 	unsigned int free;           /* 1 = unlocked */
 	struct lx_waitlist waiters;
-	ID owner;                    /* the holding task, TSK_NONE if unlocked */
+	int owner;                   /* the holding task (a TOPPERS ID), 0 (TSK_NONE) if unlocked */
 	const char *name;
 };
 
 #define __MUTEX_INITIALIZER(lockname) \
-	{ .free = 1, .waiters = { NULL, NULL }, .owner = TSK_NONE, .name = #lockname }
+	{ .free = 1, .waiters = { NULL, NULL }, .owner = 0, .name = #lockname }
 #define DEFINE_MUTEX(mutexname)	struct mutex mutexname = __MUTEX_INITIALIZER(mutexname)
 
 /* Initialises lock as unlocked. */

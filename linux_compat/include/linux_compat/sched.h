@@ -15,12 +15,12 @@
 #define _LINUX_COMPAT_SCHED_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
-#include <kernel.h>
 
 struct lx_waiter {
 	struct lx_waiter *next;
-	ID tskid;                /* the sleeping task */
+	int tskid;               /* the sleeping task (a TOPPERS ID) */
 	volatile bool woken;     /* set by the waker, under the interrupt lock */
 	bool exclusive;          /* wake_up wakes one exclusive waiter, all others */
 };
@@ -31,11 +31,11 @@ struct lx_waitlist {
 };
 
 /* The calling task's ID (TSK_NONE in non-task context). */
-ID lx_current_tskid(void);
+int lx_current_tskid(void);
 
 /* Wakes task tskid from any context (with the CPU/interrupts locked: deferred
  * until linux_compat unmasks them, or the next tick for a raw CPU lock). */
-void lx_wake_task(ID tskid);
+void lx_wake_task(int tskid);
 /* Delivers wakeups deferred while locked (the tick ISR; the irqrestore paths). */
 void lx_deferred_wakeups_run(void);
 /* Forgets deferred wakeups and bottom-half state (boot). */

@@ -5,6 +5,7 @@
  */
 #include "analog_test.h"
 #include <linux/moduleparam.h>
+#include <linux_compat/modparam.h>
 
 static void param_body(void)
 {

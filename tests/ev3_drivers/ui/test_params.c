@@ -5,6 +5,7 @@
  */
 #include <linux/moduleparam.h>
 #include "ui_test.h"
+#include <linux_compat/modparam.h>
 
 static ER param_ercd[4];
 

@@ -16,6 +16,7 @@
 #include <linux/time64.h>
 #include <linux_compat/sched.h>
 #include <kernel.h>
+#include <linux_compat/modparam.h>
 
 static char *HwId = "in";
 static int count = 3;

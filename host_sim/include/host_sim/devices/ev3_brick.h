@@ -23,18 +23,22 @@
 #include "host_sim/devices/uart_sensor.h"
 
 /* Every EV3 peripheral model (eHRPWM1, eCAP0/1, SPI0 + ADC, the four port
- * UARTs, the ports, the brick buttons and LEDs of ev3_ui.h), NULL-terminated,
+ * UARTs, the ports, the brick buttons and LEDs of ev3_ui.h, the battery and
+ * power pins of ev3_power.h), NULL-terminated,
  * for hs_board_cfg.devices. */
 extern const struct hs_device *const ev3_board_devices[];
 /* The ports' model (input pins, sensor links, motors, faults), one of them. */
 extern const struct hs_device ev3_ports_device;
 
-/* Battery voltage in mV (default EV3_BATTERY_MV_DEFAULT); motors and the ADC follow it. */
+/* Battery EMF (open-circuit voltage) in mV (default EV3_BATTERY_MV_DEFAULT): the motors run
+ * from it; the ADC sees the terminal voltage, which sags with the current (ev3_power.h). */
 #define EV3_BATTERY_MV_DEFAULT	9000U
 uint32_t ev3_battery_mv(void);
 void ev3_set_battery_mv(uint32_t mv);
 /* Records the voltage without telling anyone (the ports model does the telling). */
 void ev3_battery_store(uint32_t mv);
+/* Sum of the motors' currents now, amperes (the battery model of ev3_power.h adds the brick's draw). */
+double ev3_motors_current_a(void);
 
 /* ---- input ports (0..3 = ports 1..4) ---- */
 

@@ -1,8 +1,8 @@
 /*
- * pwm.h — eHRPWM1 and eCAP0/eCAP1 (APWM mode) of the AM1808 as the motor
+ * pwm.h — eHRPWM0/1 and eCAP0/eCAP1 (APWM mode) of the AM1808 as the motor
  * PWM outputs the EV3 drives its motors with.  Host only.
  *
- * eHRPWM1 (0x01F02000, 16-bit registers): time base (TBCTL, TBPRD with its
+ * eHRPWM0 (0x01F00000, the speaker) and eHRPWM1 (0x01F02000), 16-bit registers: time base (TBCTL, TBPRD with its
  * shadow, TBCNT computed from the virtual clock), counter-compare CMPA/CMPB
  * with shadow registers loaded at counter zero and/or period as CMPCTL
  * says, action qualifier AQCTLA/B and the software forces.  Dead band, PWM
@@ -16,7 +16,7 @@
  *
  * The models know nothing of what their outputs drive: the board connects
  * a peer to each output (hs_pwm_connect), which is told whenever the
- * output's low fraction changes and reads it back with hs_pwm_low_fraction.
+ * output's low fraction or frequency changes and reads it back with hs_pwm_low_fraction.
  */
 #ifndef HOST_SIM_DEVICES_PWM_H
 #define HOST_SIM_DEVICES_PWM_H
@@ -29,8 +29,10 @@ enum hs_pwm_output {
 	HS_PWM_EHRPWM1_B,
 	HS_PWM_ECAP0,
 	HS_PWM_ECAP1,
+	HS_PWM_EHRPWM0_A,
+	HS_PWM_EHRPWM0_B,       /* the EV3's speaker (through its amplifier) */
 };
-#define HS_PWM_OUTPUTS	4U
+#define HS_PWM_OUTPUTS	6U
 
 /* What an output drives: changed(ctx, out) runs after out's low fraction changed. */
 struct hs_pwm_peer {
@@ -42,6 +44,7 @@ struct hs_pwm_peer {
 void hs_pwm_connect(enum hs_pwm_output out, const struct hs_pwm_peer *peer);
 
 /* The peripheral models (for hs_board_cfg.devices). */
+extern const struct hs_device hs_ehrpwm0_device;
 extern const struct hs_device hs_ehrpwm1_device;
 extern const struct hs_device hs_ecap0_device;
 extern const struct hs_device hs_ecap1_device;

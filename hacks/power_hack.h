@@ -1,0 +1,41 @@
+/*
+ * power_hack.h — d_power's interface on the RTOS: extended service calls
+ * (function codes 64..71 are d_power's) and the configuration fragment that
+ * defines them.  Plain TOPPERS C: applications and the api include it.
+ *
+ * The battery's voltage and currents need no service call: they are raw
+ * counts in d_analog's shared ANALOG area (analog_hack.h).
+ *
+ * Every call returns a TOPPERS code:
+ *   E_PAR   a test-pin level other than 0 or 1
+ *   E_CTX   called from non-task context
+ *   E_OBJ   the driver is not loaded (its module_init failed)
+ */
+#ifndef EV3LX_POWER_HACK_H
+#define EV3LX_POWER_HACK_H
+
+#include "kernel.h"
+#include "rtos_cfg.h"
+#include "lms_power.h"
+
+#define POWER_FN_RECHARGEABLE  64  /* (): read() of /dev/lms_power -> 1 rechargeable pack, 0 AA cells */
+#define POWER_FN_TEST_PIN      65  /* (uint_t level): write() of one byte, 0 or 1 */
+#define POWER_FN_FIRST         64
+#define POWER_FN_LAST          71  /* the range reserved for d_power */
+
+/* The DEF_SVC rows (INCLUDE it in the application's configuration). */
+extern const struct rtos_cfg power_hack_cfg;
+
+/* 1 when a rechargeable pack is fitted, 0 for AA cells, or an error code. */
+static inline ER_UINT power_svc_rechargeable(void)
+{
+	return cal_svc(POWER_FN_RECHARGEABLE, 0, 0, 0, 0, 0);
+}
+
+/* Drives the board's test pin to level (0 or 1). */
+static inline ER power_svc_test_pin(uint_t level)
+{
+	return (ER)cal_svc(POWER_FN_TEST_PIN, (intptr_t)level, 0, 0, 0, 0);
+}
+
+#endif /* EV3LX_POWER_HACK_H */

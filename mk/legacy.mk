@@ -1,0 +1,47 @@
+# Modules brought by users (tests/legacy): each module — a hack file that
+# includes its driver verbatim — is compiled as kbuild compiles an external
+# module (Linux headers, kbuild's code generation, kbuild's default warnings,
+# not fatal) and linked as one relocatable object with a private namespace:
+# compiled -fvisibility=hidden, `ld -r`, then every hidden symbol localized, so
+# only EXPORT_SYMBOL*s and the hack's interface (declared visibility
+# "default") stay global.  Two modules defining the same global names then
+# link into one program, as two .ko files load into one kernel.
+
+LEGACY_MODULES := $(patsubst tests/legacy/%_hack.c,%,$(wildcard tests/legacy/*_hack.c))
+
+# kbuild's default warnings for C (Linux 6.1 top-level Makefile, W= unset).
+KBUILD_WARN := -Wall -Wundef -Werror=strict-prototypes -Wno-trigraphs \
+	-Werror=implicit-function-declaration -Werror=implicit-int -Werror=return-type \
+	-Wno-format-security -Wno-pointer-sign -Wno-unused-but-set-variable \
+	-Wno-unused-const-variable -Wno-dangling-pointer -Wvla -Wno-main \
+	-Wno-address-of-packed-member -Wno-stringop-truncation -Wno-array-bounds
+
+LD_host := ld
+LD_host-san := ld
+LD_arm926-test := arm-linux-gnueabi-ld
+OBJCOPY_host := objcopy
+OBJCOPY_host-san := objcopy
+OBJCOPY_arm926-test := arm-linux-gnueabi-objcopy
+
+# $(1) = config
+define legacy_module_rules
+$(BUILD)/$(1)/legacy/%.mod.o: tests/legacy/%_hack.c
+	@mkdir -p $$(@D)
+	$$(quiet) MOD $(1) $$@
+	$(Q)$$(CC_$(1)) -std=gnu11 $(LINUX_INC) $(LINUX_CODEGEN) -Itests/legacy $(KBUILD_WARN) \
+		$$(CFLAGS_$(1)) $(KERNEL_DEFS) -fvisibility=hidden -MMD -MP -MT $$@ -MF $$(@:.mod.o=.d) -c $$< -o $$(@:.mod.o=.o)
+	$(Q)$$(LD_$(1)) -r -o $$(@:.mod.o=.r.o) $$(@:.mod.o=.o)
+	$(Q)$$(OBJCOPY_$(1)) --localize-hidden $$(@:.mod.o=.r.o) $$@
+
+LEGACY_OBJS_$(1) := $$(patsubst %,$(BUILD)/$(1)/legacy/%.mod.o,$(LEGACY_MODULES))
+
+$(BUILD)/$(1)/tests/legacy/test_lms_modules.t: $(BUILD)/$(1)/obj/tests/legacy/test_lms_modules.o \
+		$$(LEGACY_OBJS_$(1)) $$(SUPPORT_OBJS_$(1)) $$(LIB_$(1))
+	@mkdir -p $$(@D)
+	$$(quiet) LD $(1) $$@
+	$(Q)$$(CC_$(1)) $$(CFLAGS_$(1)) $$(LDFLAGS_$(1)) -o $$@ $$< $$(LEGACY_OBJS_$(1)) $$(SUPPORT_OBJS_$(1)) \
+		-Wl,--start-group $$(LIB_$(1)) -Wl,--end-group -lm
+
+-include $$(LEGACY_OBJS_$(1):.mod.o=.d)
+endef
+$(foreach c,$(HOST_CONFIGS),$(eval $(call legacy_module_rules,$(c))))

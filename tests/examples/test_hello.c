@@ -1,0 +1,96 @@
+/*
+ * test_hello.c — examples/hello: the battery logged before and after the
+ * tune, and the tune as the speaker played it (--audio): A4, C#5 and E5
+ * for 200 ms each with 50 ms rests, then A5 held for 400 ms until stopped,
+ * at volume 50 (25 % duty).
+ */
+#include <stdio.h>
+#include "ev3api.h"
+#include "example_test.h"
+#include "host_sim/devices/ev3_speaker.h"
+
+#define WAV "hello_test.wav"
+
+/* Notes found in the recording: frequency and length of each run of sound. */
+struct note { double hz, ms; };
+
+static unsigned find_notes(const int16_t *s, size_t n, struct note *out, unsigned max)
+{
+	unsigned count = 0;
+	size_t i = 0;
+
+	while (i < n && count < max) {
+		size_t start, last, e0 = 0, e1 = 0, edges = 0, gap = 0;
+
+		while (i < n && s[i] == 0)
+			i++;
+		if (i == n)
+			break;
+		start = last = i;
+		for (; i < n && gap < 640; i++) {       /* a note ends after 20 ms of silence */
+			gap = s[i] ? 0 : gap + 1;
+			if (s[i])
+				last = i;
+			if (s[i - 1] < EV3_SPEAKER_FULL / 2 && s[i] >= EV3_SPEAKER_FULL / 2) {
+				if (!edges++)
+					e0 = i;
+				e1 = i;
+			}
+		}
+		out[count].ms = (double)(last + 1 - start) * 1000.0 / EV3_SPEAKER_RATE;
+		out[count].hz = edges > 1 ? (double)(edges - 1) * EV3_SPEAKER_RATE / (double)(e1 - e0) : 0;
+		count++;
+	}
+	return count;
+}
+
+int main(void)
+{
+	static const struct note want[] = { { 440.0, 200 }, { 554.37, 200 }, { 659.25, 200 }, { 880.0, 400 } };
+	struct ev3sim_run_opts o;
+	struct ev3sim_run_result r;
+	struct note got[8];
+	const int16_t *s;
+	const char *line;
+	unsigned n;
+	int mv = 0, ma = 0;
+	FILE *f;
+
+	ev3sim_run_defaults(&o, EV3SIM_ROBOT_BARE);
+	o.app_name = "hello";
+	o.seconds = 2;
+	o.audio_path = WAV;
+	if (!ok(ex_run(&o, &r), "hello runs with --audio"))
+		return tap_done();
+	line = ex_logged("hello: battery");
+	if (line)
+		sscanf(line, "hello: battery %d mV, %d mA", &mv, &ma);
+	in_range(mv, 8900, 9000, "the battery logged: %d mV", mv);
+	in_range(ma, 95, 105, "and the brick's %d mA", ma);
+	ok(ex_logged("hello: tune played") != NULL, "the tune ended");
+	is_int(r.warnings + r.errors + r.bugs, 0, "no warnings, errors or bugs");
+
+	{
+		size_t len = ev3_speaker_samples(&s);
+
+		n = find_notes(s, len, got, 8);
+	}
+	is_int(n, 4, "four notes in the recording");
+	for (unsigned i = 0; i < n && i < 4; i++) {
+		in_range(got[i].hz, want[i].hz * 0.995, want[i].hz * 1.005, "note %u: %.2f Hz", i + 1, got[i].hz);
+		/* from the first rising edge to the end of the last high part: within one period */
+		in_range(got[i].ms, want[i].ms - 1000.0 / want[i].hz, want[i].ms + 1.0, "note %u: %.2f ms", i + 1,
+			 got[i].ms);
+	}
+	f = fopen(WAV, "rb");
+	ok(f != NULL, "the WAV file was written");
+	if (f) {
+		unsigned char h[44];
+
+		ok(fread(h, 1, sizeof(h), f) == sizeof(h) && h[0] == 'R' && h[8] == 'W' && h[22] == 1 &&
+		   (h[24] | h[25] << 8) == EV3_SPEAKER_RATE && h[34] == 16, "RIFF WAVE, mono, 32 kHz, 16 bits");
+		fclose(f);
+		remove(WAV);
+	}
+	return tap_done();
+}

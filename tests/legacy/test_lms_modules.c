@@ -1,0 +1,122 @@
+/*
+ * test_lms_modules.c — two modules written in the 2.6-era idiom (tests/legacy/
+ * drivers/), each included verbatim by its hack and linked as one relocatable
+ * object with a private namespace, run together at the configuration's -O2
+ * on the simulated EV3: both define Hw, HwId, InitGpio, PinTable and GpioBase
+ * and keep their own; a HwId module parameter selects a board table; GPIO
+ * registers through plain `volatile unsigned long *` and struct-of-ULONG
+ * pointers with compound read-modify-write statements; a GPIO edge interrupt;
+ * eHRPWM1 as 16-bit registers through one 0x2854-byte ioremap window.
+ */
+#include <stdio.h>
+
+#include "tap.h"
+#include "sil.h"
+#include "rtos_host.h"
+#include "host_sim/board.h"
+#include "host_sim/gpio.h"
+#include "host_sim/psc.h"
+#include "host_sim/scenario.h"
+#include "host_sim/devices/ev3_brick.h"
+#include <linux_compat/config.h>
+#include <linux_compat/modparam.h>
+
+#include "lms_gpio_hack.h"
+#include "lms_motor_hack.h"
+
+#define MS            1000000ULL
+#define GPIO_OUT_EP2  HS_GPIO(3, 13)   /* lms_gpio's output on board EP2 */
+#define GPIO_IN_EP2   HS_GPIO(0, 3)    /* and its edge input */
+#define MOTOR_EN      HS_GPIO(2, 1)    /* lms_motor's enable pin on board FINAL */
+#define PWM1_PHYS     0x01F02000U
+
+static volatile bool started, done;
+
+static bool output(unsigned pin)
+{
+	bool level = false;
+
+	return hs_gpio_soc_output(pin, &level) && level;
+}
+
+static uint16_t pwm_reg(unsigned offset)
+{
+	return sil_reh_mem(rtos_host_map_io(PWM1_PHYS + offset, 2));
+}
+
+static void body(void)
+{
+	while (!started)
+		dly_tsk(1);
+	is_int(lx_module_param_set("lms_gpio", "HwId", "1"), E_OK, "lms_gpio.HwId=1 (board EP2) before init");
+	is_int(lms_gpio_load(), 0, "lms_gpio's init succeeds");
+	is_int(lms_motor_load(), 0, "lms_motor's init succeeds");
+	is_int(lms_gpio_board(), 1, "lms_gpio's Hw is its own: board EP2");
+	is_int(lms_motor_board(), 0, "lms_motor's Hw is its own: board FINAL");
+
+	ok(!output(GPIO_OUT_EP2), "lms_gpio: its EP2 output pin is an output, low (CLR_DATA, DIR &= ~m)");
+	for (int i = 0; i < 3; i++) {
+		hs_gpio_set_input(GPIO_IN_EP2, 1);
+		dly_tsk(1);
+		hs_gpio_set_input(GPIO_IN_EP2, 0);
+		dly_tsk(1);
+	}
+	is_int((int)lms_gpio_edges(), 3, "lms_gpio: three rising edges, three interrupts");
+	ok(output(GPIO_OUT_EP2), "the handler's OUT_DATA |= m left the output high after an odd count");
+	hs_gpio_set_input(GPIO_IN_EP2, 1);
+	dly_tsk(1);
+	ok(!output(GPIO_OUT_EP2), "and p[i] = (p[i] & ~m) | 0 cleared it on the fourth");
+
+	ok(output(MOTOR_EN), "lms_motor: enable pin driven high (SET_DATA, then DIR &= ~m)");
+	is_int(pwm_reg(0x0A), 9999, "lms_motor: TBPRD written through a u16 pointer");
+	is_int(pwm_reg(0x00) & 0x33, 0x30, "TBCTL &= ~3; TBCTL |= 0x30 (16-bit read-modify-write)");
+	lms_motor_duty(2500);
+	is_int(pwm_reg(0x12), 2500, "SetDuty: CMPA");
+	is_int(pwm_reg(0x16), 0x21, "AQCTLA = (AQCTLA & ~0xFFF) | 0x21");
+
+	lms_motor_unload();
+	lms_gpio_unload();
+	hs_gpio_set_input(GPIO_IN_EP2, 0);
+	dly_tsk(1);
+	hs_gpio_set_input(GPIO_IN_EP2, 1);
+	dly_tsk(1);
+	is_int((int)lms_gpio_edges(), 4, "after unload the interrupt is released: no more edges counted");
+	done = true;
+}
+
+static void test_task(intptr_t exinf)
+{
+	(void)exinf;
+	body();
+}
+
+int main(void)
+{
+	const struct rtos_task_cfg tasks[] = {
+		{ 1, TA_ACT, 0, test_task, 8, 64 * 1024, TDOM_KERNEL, "lms_test" },
+	};
+	static const struct rtos_cfg *const includes[] = { &linux_compat_cfg, NULL };
+	const struct rtos_cfg cfg = { .name = "lms_modules", .tasks = tasks, .ntasks = 1, .includes = includes };
+	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
+	struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 1 };
+
+	tap_plan(16);
+	if (hs_sim_boot(&scn) != E_OK)
+		tap_bail_out(rtos_host_boot_error());
+	if (!hs_board_traps_pointers()) {
+		char why[200];
+
+		snprintf(why, sizeof(why), "%s", hs_board_trap_unavailable_reason());
+		hs_sim_shutdown();
+		tap_skip(16, why);
+		return tap_done();
+	}
+	/* The boot loader's part on the brick: PSC1 powers eHRPWM1. */
+	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_EHRPWM), HS_PSC_ENABLE);
+	started = true;
+	for (int i = 0; i < 100 && !done; i++)
+		hs_sim_run_for(10 * MS);
+	ok(done, "the test body ran to its end");
+	hs_sim_shutdown();
+	return tap_done();
+}
