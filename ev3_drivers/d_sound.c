@@ -8,10 +8,9 @@
  *         CMPB = TBPRD * level / 200: the PWM itself makes the square wave; a timed tone ends
  *         with a one-shot hrtimer;
  *   PCM   an undivided time base with TBPRD = 132 MHz / 64 kHz (a 64 kHz carrier, 8 periods per
- *         sample) and a 125 us hrtimer writing CMPB = level * sample for each sample.  Which
- *         sample is due comes from the clock: when the timer is served late (a coarse timer
- *         tick, whose resolution also bounds the interval) the samples that fell due meanwhile
- *         are skipped, so that playback keeps its pace and pitch.  Running dry ends playback.
+ *         sample) and a 125 us hrtimer writing CMPB = level * sample for each sample.  When the
+ *         timer is served late (a coarse timer tick) the samples that fell due meanwhile are
+ *         skipped, so that playback keeps its pace and pitch.  Running dry ends playback.
  * Both modes: CMPB shadowed and loaded at counter zero, AQCTLB = output high at zero, low at
  * CMPB while counting up, so that the duty is CMPB / (TBPRD + 1).  Stopping freezes the counter
  * and switches the amplifier off.
@@ -37,7 +36,6 @@
 #include <linux/gpio.h>
 #include <linux/hrtimer.h>
 #include <linux/ktime.h>
-#include <linux/math64.h>
 #include <linux/spinlock.h>
 #include <linux/uaccess.h>
 
@@ -117,8 +115,8 @@ static struct {
 	struct sound_slot slot[LMS_SOUND_SLOTS];
 	unsigned int play_slot, play_pos, write_slot;
 	struct hrtimer sample_timer;	/* 125 us while PCM plays */
-	ktime_t pcm_start;		/* PLAY: sample k falls due at pcm_start + (k + 1) * 125 us */
-	u64 pcm_taken;			/* samples taken from the slots since PLAY */
+	ktime_t pcm_start;		/* when PCM playback started */
+	u64 pcm_played;			/* samples taken since then */
 	struct hrtimer tone_timer;	/* ends a timed tone */
 } snd;
 
@@ -181,9 +179,9 @@ static enum hrtimer_restart sound_sample_due(struct hrtimer *timer)
 {
 	enum hrtimer_restart ret = HRTIMER_RESTART;
 	unsigned long flags;
-	bool dry = false;
 	u64 due;
-	int sample = -1;
+	int sample = 0;
+	bool took = false;
 
 	spin_lock_irqsave(&snd.lock, flags);
 	if (snd.mode != SOUND_PCM) {
@@ -191,29 +189,23 @@ static enum hrtimer_restart sound_sample_due(struct hrtimer *timer)
 		goto unlock;
 	}
 	/*
-	 * Every sample that has fallen due is taken, the newest is played.  The
-	 * count comes from the clock, not from the overruns hrtimer_forward reports:
-	 * it raises an interval below hrtimer_resolution to the resolution.
+	 * One sample per SAMPLE_NS since playback started, the newest one played.  They are
+	 * counted from the clock, not from hrtimer_forward's overruns: where the timers'
+	 * resolution is coarser than a sample (hrtimer_resolution is a tick without
+	 * high-resolution timers) the period is rounded up and each expiry covers several.
 	 */
-	due = div_u64(ktime_to_ns(ktime_sub(ktime_get(), snd.pcm_start)), SAMPLE_NS);
-	while (snd.pcm_taken < due) {
-		int next = sound_next_sample();
-
-		if (next < 0) {
-			dry = true;	/* a sample was due and none was queued: the end */
-			break;
-		}
-		sample = next;
-		snd.pcm_taken++;
+	due = div_u64(ktime_to_ns(ktime_sub(hrtimer_cb_get_time(timer), snd.pcm_start)), SAMPLE_NS);
+	for (; snd.pcm_played < due && sample >= 0; snd.pcm_played++) {
+		sample = sound_next_sample();
+		took = true;
 	}
-	if (dry) {
+	hrtimer_forward_now(timer, ns_to_ktime(SAMPLE_NS));
+	if (sample < 0) {
 		sound_stop_locked();
 		ret = HRTIMER_NORESTART;
-		goto unlock;
-	}
-	if (sample >= 0)
+	} else if (took) {
 		writew(min_t(u32, (u32)snd.level * (u32)sample, U16_MAX), snd.pwm + EPWM_CMPB);
-	hrtimer_forward_now(timer, ns_to_ktime(SAMPLE_NS));
+	}
 unlock:
 	spin_unlock_irqrestore(&snd.lock, flags);
 	return ret;
@@ -271,10 +263,10 @@ static void sound_play(u8 level)
 	snd.level = level;
 	memset(snd.slot, 0, sizeof(snd.slot));
 	snd.play_slot = snd.play_pos = snd.write_slot = 0;
-	snd.pcm_taken = 0;
-	snd.pcm_start = ktime_get();
 	sound_pwm_setup(TBCTL_PCM, pwm_clock_hz / PCM_CARRIER_HZ, 0);
 	sound_amp(level != 0);
+	snd.pcm_start = ktime_get();
+	snd.pcm_played = 0;
 	spin_unlock_irq(&snd.lock);
 	hrtimer_start(&snd.sample_timer, ns_to_ktime(SAMPLE_NS), HRTIMER_MODE_REL);
 }
