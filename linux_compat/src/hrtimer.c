@@ -233,8 +233,10 @@ u64 hrtimer_forward(struct hrtimer *timer, ktime_t now, ktime_t interval)
 			  (long long)interval);
 		interval = 1;
 	}
-	/* Unlike Linux's clamp to hrtimer_resolution: an interval below the tick
-	 * keeps its rate through overruns (d_sound's 8 kHz samples rely on it). */
+	/* As Linux: no interval is shorter than the clock's resolution (here the
+	 * tick), so a sub-tick period is delivered once per tick, without overrun. */
+	if (interval < (ktime_t)hrtimer_resolution)
+		interval = (ktime_t)hrtimer_resolution;
 	/* One period is the usual case: no 64-bit division (a library call on the
 	 * ARM926); only an overrun of several periods needs it, as in Linux. */
 	if (now - timer->lx_expires < interval) {

@@ -12,10 +12,9 @@
  * still due is served at the next tick, not in a loop.
  *
  * Difference from Linux: expiry resolution is the tick (hrtimer_resolution),
- * and the SOFT modes also run in hard-IRQ context.  hrtimer_forward does not
- * clamp an interval below hrtimer_resolution (Linux does): a periodic timer
- * asking for less than a tick is called once per tick with an overrun count
- * of several periods, so its average rate is kept.
+ * and the SOFT modes also run in hard-IRQ context.  As in Linux,
+ * hrtimer_forward clamps an interval below hrtimer_resolution to it: a
+ * periodic timer asking for less than a tick is called once per tick.
  */
 #ifndef _LINUX_HRTIMER_H
 #define _LINUX_HRTIMER_H

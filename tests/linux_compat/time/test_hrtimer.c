@@ -337,10 +337,10 @@ static void test_forward_math(void)
 	is_int(hrtimer_get_expires(&t), 11 * r, "...expiry moved one interval");
 	is_u64(hrtimer_forward(&t, 14 * r + r / 2, r), 4, "forward 3.5 intervals late: 4 intervals");
 	is_int(hrtimer_get_expires(&t), 15 * r, "...expiry after now, on the grid");
-	/* No clamp to hrtimer_resolution (docs/linux-api.md): a sub-tick period keeps its rate. */
-	is_u64(hrtimer_forward(&t, 15 * r, r / 4), 1, "a quarter-tick interval at the expiry: 1 overrun");
-	is_u64(hrtimer_forward(&t, 16 * r, r / 4), 4, "one tick later: 4 quarter-tick overruns (rate kept)");
-	is_int(hrtimer_get_expires(&t), 16 * r + r / 4, "...the expiry after now, on the quarter-tick grid");
+	/* Linux clamps an interval below hrtimer_resolution to it. */
+	is_u64(hrtimer_forward(&t, 15 * r, 100), 1, "a 100 ns interval at the expiry: 1 overrun, not 1 per 100 ns");
+	is_int(hrtimer_get_expires(&t), 16 * r, "...the expiry moved by hrtimer_resolution");
+	is_u64(hrtimer_forward(&t, 18 * r, r / 4), 3, "a quarter-tick interval 2 ticks late: 3 (tick) intervals");
 	is_int(ktime_set(2, 5), 2000000005LL, "ktime_set");
 	is_int(ktime_to_us(ms_to_ktime(3)), 3000, "ms_to_ktime / ktime_to_us");
 	is_int(ktime_to_ms(ktime_sub(ktime_set(1, 0), us_to_ktime(1500))), 998, "ktime_sub / ktime_to_ms");
