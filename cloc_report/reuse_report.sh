@@ -11,7 +11,8 @@
 # sha256 of every driver file its compiler read (record_driver_hashes.sh, and
 # kbuild-check for kbuild); a record missing in any of BUILD_CONFIGS or a hash
 # differing from the tree's is reported and makes the script exit 1.
-# Environment: HACK_DIRS, DRIVER_DIRS (find_drivers.sh), BUILD_CONFIGS.
+# Environment: HACK_DIRS, DRIVER_DIRS (find_drivers.sh), BUILD_CONFIGS, RECORDS_ROOT
+# (where the builds are, default build/).
 set -euo pipefail
 out=$1; shift
 mkdir -p "$out"
@@ -40,8 +41,8 @@ hash_of() { [ -n "$1" ] && [ -f "$1" ] && sha256sum "$1" | cut -c1-64 || echo "-
 configs=(${BUILD_CONFIGS:-host host-san arm926-test am1808 kbuild})
 # The hash configuration $1 recorded at compile time for driver $2 ("-" if none).
 recorded_hash() {
-	local recs=build/$1/obj
-	[ "$1" = kbuild ] && recs=build/kbuild/drivers.sha256
+	local recs=${RECORDS_ROOT:-build}/$1/obj
+	[ "$1" = kbuild ] && recs=${RECORDS_ROOT:-build}/kbuild/drivers.sha256
 	[ -e "$recs" ] || { echo "-"; return; }
 	{ grep -rh --include='*.drivers' --include='drivers.sha256' -E "  (\./)?$2\$" "$recs" 2>/dev/null || true; } |
 		awk '{ print $1 }' | sort -u | paste -sd/ | sed 's/^$/-/'

@@ -115,6 +115,8 @@ static struct {
 	struct sound_slot slot[LMS_SOUND_SLOTS];
 	unsigned int play_slot, play_pos, write_slot;
 	struct hrtimer sample_timer;	/* 125 us while PCM plays */
+	ktime_t pcm_start;		/* when PCM playback started */
+	u64 pcm_played;			/* samples taken since then */
 	struct hrtimer tone_timer;	/* ends a timed tone */
 } snd;
 
@@ -178,23 +180,30 @@ static enum hrtimer_restart sound_sample_due(struct hrtimer *timer)
 	enum hrtimer_restart ret = HRTIMER_RESTART;
 	unsigned long flags;
 	u64 due;
-	int sample = -1;
+	int sample = 0;
+	bool took = false;
 
 	spin_lock_irqsave(&snd.lock, flags);
 	if (snd.mode != SOUND_PCM) {
 		ret = HRTIMER_NORESTART;
 		goto unlock;
 	}
-	/* one sample per period that has passed: the newest one is played */
-	for (due = hrtimer_forward_now(timer, ns_to_ktime(SAMPLE_NS)); due; due--) {
+	/*
+	 * One sample per SAMPLE_NS since playback started, the newest one played.  They are
+	 * counted from the clock, not from hrtimer_forward's overruns: where the timers'
+	 * resolution is coarser than a sample (hrtimer_resolution is a tick without
+	 * high-resolution timers) the period is rounded up and each expiry covers several.
+	 */
+	due = div_u64(ktime_to_ns(ktime_sub(hrtimer_cb_get_time(timer), snd.pcm_start)), SAMPLE_NS);
+	for (; snd.pcm_played < due && sample >= 0; snd.pcm_played++) {
 		sample = sound_next_sample();
-		if (sample < 0)
-			break;
+		took = true;
 	}
+	hrtimer_forward_now(timer, ns_to_ktime(SAMPLE_NS));
 	if (sample < 0) {
 		sound_stop_locked();
 		ret = HRTIMER_NORESTART;
-	} else {
+	} else if (took) {
 		writew(min_t(u32, (u32)snd.level * (u32)sample, U16_MAX), snd.pwm + EPWM_CMPB);
 	}
 unlock:
@@ -256,6 +265,8 @@ static void sound_play(u8 level)
 	snd.play_slot = snd.play_pos = snd.write_slot = 0;
 	sound_pwm_setup(TBCTL_PCM, pwm_clock_hz / PCM_CARRIER_HZ, 0);
 	sound_amp(level != 0);
+	snd.pcm_start = ktime_get();
+	snd.pcm_played = 0;
 	spin_unlock_irq(&snd.lock);
 	hrtimer_start(&snd.sample_timer, ns_to_ktime(SAMPLE_NS), HRTIMER_MODE_REL);
 }

@@ -18,6 +18,7 @@ report: deps-check
 
 report-check: report
 	@bash cloc_report/check_totals.sh $(REPORT_DIR)
+	@bash cloc_report/check_proof.sh
 
 TEST_SUITE_EXTRA += report-check
 
