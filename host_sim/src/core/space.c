@@ -275,7 +275,7 @@ static bool map_elem(int16_t *map, const struct hs_region *r, const struct hs_el
 	for (unsigned b = 0; b < e->width; b++) {
 		uint32_t off = e->offset + b;
 		/* Only the start byte maps to the element; the other bytes are claimed
-		 * with a marker so overlaps are found and mid-register accesses rejected. */
+		 * with a marker so overlaps are found and a narrow access finds its byte lane. */
 		int16_t want = b == 0 ? idx : (int16_t)(-2 - idx);
 
 		if (map[off] != HS_NO_ELEM)
@@ -465,6 +465,30 @@ static inline struct hs_elem *elem_at(const struct hs_region *r, uint32_t offset
 	return i >= 0 ? &r->elems[i] : NULL;
 }
 
+/*
+ * Element whose bytes include offset in one direction, with the byte lane of
+ * offset in it (*lane, 0 at its start): a narrow access to a wider register
+ * at a byte lane, as the AM1808's 32-bit peripheral bus carries it (byte
+ * enables select the lanes); NULL where no element of that direction is.
+ */
+static inline struct hs_elem *elem_lane_at(const struct hs_region *r, uint32_t offset, bool write, unsigned *lane)
+{
+	int16_t i;
+	struct hs_elem *e;
+
+	*lane = 0;
+	if (offset >= r->map_len)
+		return NULL;
+	i = write ? r->wr_map[offset] : r->rd_map[offset];
+	if (i >= 0)
+		return &r->elems[i];
+	if (i == HS_NO_ELEM)
+		return NULL;
+	e = &r->elems[-2 - i];
+	*lane = offset - e->offset;
+	return e;
+}
+
 /* Element at offset in either direction (the readable one first), for the
  * model-side accessors; NULL after a bug report. */
 static inline struct hs_elem *elem_any(const struct hs_region *r, uint32_t offset, const char *what)
@@ -579,6 +603,9 @@ static void elem_bug(const struct hs_region *r, const struct hs_elem *e, uint32_
 			rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR " (%s+0x%03" PRIx32
 				      "): no register there", write ? "write" : "read", width, val, phys,
 				      r->cfg.name, off);
+	} else if (off - e->offset + width > e->width) {
+		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": crosses the end of %s.%s, a %u-byte register",
+			      write ? "write" : "read", width, val, phys, r->cfg.name, elem_name(r, e), e->width);
 	} else if (!(e->widths & width)) {
 		rtos_host_bug("host_sim", "%s of %u bytes%s at 0x%08" PRIxPTR ": %s.%s is a %u-byte register",
 			      write ? "write" : "read", width, val, phys, r->cfg.name, elem_name(r, e), e->width);
@@ -600,11 +627,13 @@ static inline void access_cost(void)
 static inline __attribute__((always_inline)) uint32_t region_read(struct hs_region *r, uint32_t off, unsigned width)
 {
 	struct hs_elem *e;
+	unsigned lane;
 	uint32_t v = 0;
 
 	if (!*r->power_live) {
 		region_bug(r, r->cfg.phys + off, width, false, 0);
-	} else if ((e = elem_at(r, off, false)) == NULL || !(e->ok_widths & width)) {
+	} else if ((e = elem_lane_at(r, off, false, &lane)) == NULL || !(e->ok_widths & width) ||
+		   lane + width > e->width) {
 		elem_bug(r, e, off, width, false, 0);
 	} else {
 		if (e->before_read) {
@@ -612,9 +641,9 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 
 			e->before_read(r->cfg.ctx, &a, e->value);
 		}
-		v = *e->value & width_mask(width);
+		v = (*e->value >> (8U * lane)) & width_mask(width);
 		if (e->kind == HS_COR)
-			*e->value &= ~e->mask;
+			*e->value &= ~(e->mask & (width_mask(width) << (8U * lane)));
 		if (r->logged)
 			reglog(r, e, r->cfg.phys + off, false, width, v);
 	}
@@ -629,15 +658,20 @@ static inline __attribute__((always_inline)) void region_write(struct hs_region 
 								uint32_t value)
 {
 	struct hs_elem *e;
+	unsigned lane;
 
 	if (!*r->power_live) {
 		region_bug(r, r->cfg.phys + off, width, true, value);
-	} else if ((e = elem_at(r, off, true)) == NULL || !(e->ok_widths & width)) {
+	} else if ((e = elem_lane_at(r, off, true, &lane)) == NULL || !(e->ok_widths & width) ||
+		   lane + width > e->width) {
 		elem_bug(r, e, off, width, true, value);
 	} else {
 		uint32_t old = *e->value;
-		uint32_t bits = e->mask & width_mask(width);
+		uint32_t bits = e->mask & (width_mask(width) << (8U * lane));
+		uint32_t cpu_value = value;
 		uint32_t nv;
+
+		value <<= 8U * lane;    /* the byte lanes the access drives */
 
 		switch (e->kind) {
 		case HS_W1S:
@@ -652,7 +686,7 @@ static inline __attribute__((always_inline)) void region_write(struct hs_region 
 		}
 		*e->value = nv;
 		if (r->logged)
-			reglog(r, e, r->cfg.phys + off, true, width, value);
+			reglog(r, e, r->cfg.phys + off, true, width, cpu_value);
 		if (e->after_write) {
 			struct hs_access a = { e->reg, e->index, e->offset, width, true };
 

@@ -105,7 +105,7 @@ int main(void)
 	size_t loglen = 0;
 	FILE *log;
 
-	tap_plan(43);
+	tap_plan(49);
 	if (hs_sim_boot(&scn) != E_OK)
 		tap_bail_out("boot failed");
 	ok(hs_region_add(&(struct hs_region_cfg){ .name = "TDEV", .phys = TDEV_PHYS, .size = 0x1000,
@@ -153,6 +153,13 @@ int main(void)
 	sil_wrb_mem(w + 0x48, 0xAA);
 	is_int(sil_rew_mem((uint32_t *)(w + 0x48)), 0x112233AA, "narrow write replaces the low byte only");
 	is_int(sil_reh_mem((uint16_t *)(w + 0x48)), 0x33AA, "narrow read returns the low half");
+	/* Byte lanes: a narrow access inside a wider register reaches the lanes it addresses */
+	sil_wrh_mem((uint16_t *)(w + 0x4A), 0x5566);
+	is_int(sil_rew_mem((uint32_t *)(w + 0x48)), 0x556633AA, "16-bit write at +2 replaces the upper half only");
+	is_int(sil_reh_mem((uint16_t *)(w + 0x4A)), 0x5566, "16-bit read at +2 returns the upper half");
+	sil_wrb_mem(w + 0x49, 0x77);
+	is_int(sil_rew_mem((uint32_t *)(w + 0x48)), 0x556677AA, "8-bit write at +1 replaces byte 1 only");
+	is_int(sil_reb_mem(w + 0x4B), 0x55, "8-bit read at +3 returns byte 3");
 	/* Model side */
 	hs_reg_set(hs_region_by_name("TDEV"), 0x14, 0x5);
 	is_int(sil_rew_mem((uint32_t *)(w + 0x14)), 0x5, "hs_reg_set changes the value without hooks");
@@ -193,6 +200,8 @@ int main(void)
 	EXPECT_BUG((void)sil_rew_mem((uint32_t *)(w + 0x18)), "TDEV.RES is reserved", "reserved register");
 	EXPECT_BUG((void)sil_reh_mem((uint16_t *)(w + 0x04)), "is a 4-byte register", "wrong width");
 	EXPECT_BUG((void)sil_reb_mem(w + 0x45), "no register there", "access inside no register");
+	EXPECT_BUG((void)sil_reh_mem((uint16_t *)(w + 0x06)), "is a 4-byte register", "narrow access at a lane of a register that takes only 32 bits");
+	EXPECT_BUG((void)sil_rew_mem((uint32_t *)(w + 0x40)), "crosses the end of TDEV.H16", "an access crossing a register's end");
 	EXPECT_BUG((void)sil_rew_mem((uint32_t *)(w + 0x50)), "TDEV.GO is write-only", "read of a write-only register");
 	EXPECT_BUG((void)hs_cpu_read(0x01E03000, 4), "no modelled device there", "unmodelled physical address");
 	ok(rtos_host_map_io(0x01E03000, 4) == NULL, "map of an unmodelled range is NULL");
