@@ -108,16 +108,27 @@ for l in $LAYERS; do
 done
 
 # ---- 2. link edges ----
+# The objects of OBJDIR whose sources still exist (OBJDIR/path/x.o, or an x.o.*.o made from
+# it, comes from path/x.c, relative to the directory the check runs in), NUL-separated: an
+# object an old build tree keeps of a moved or deleted file is no part of the build.
+current_objects() {
+	(cd "$1" && find . -name '*.o' -print0 | sort -z) |
+		while IFS= read -r -d '' o; do
+			src=${o#./}
+			[ -f "${src%%.o*}.c" ] && printf '%s\0' "$o"
+		done
+}
+
 nedges=0
 for objdir in "$@"; do
 	[ -d "$objdir" ] || { violation "no objects in $objdir (build first)"; continue; }
 	defs=$(mktemp)
 	undefs=$(mktemp)
 	# "symbol layer object" lines, one nm run each over every object of the configuration
-	(cd "$objdir" && find . -name '*.o' -print0 | sort -z | xargs -0 -r nm -A --defined-only -g 2>/dev/null) |
+	(current_objects "$objdir" | (cd "$objdir" && xargs -0 -r nm -A --defined-only -g 2>/dev/null)) |
 		awk '{ split($1, p, ":"); o = substr(p[1], 3); split(o, d, "/");
 		       if (NF >= 3 && $(NF-1) !~ /^[wWvV]$/) print $NF, d[1], o }' > "$defs"
-	(cd "$objdir" && find . -name '*.o' -print0 | sort -z | xargs -0 -r nm -A -u 2>/dev/null) |
+	(current_objects "$objdir" | (cd "$objdir" && xargs -0 -r nm -A -u 2>/dev/null)) |
 		awk '{ split($1, p, ":"); o = substr(p[1], 3); split(o, d, "/"); print $NF, d[1], o }' > "$undefs"
 	# symbol user-layer user-object defining-layer defining-object, one line per cross-layer use
 	while read -r sym from user to def; do
