@@ -9,6 +9,7 @@
 #include <kernel.h>
 #include <rtos_cfg.h>
 #include <linux_compat/irq.h>
+#include <linux_compat/uaccess_fault.h>
 
 /* Tasks running with the address limit KERNEL_DS (set_fs), by task ID. */
 static bool task_kernel_ds[TNUM_TSKID + 1];
@@ -43,15 +44,13 @@ void lx_uaccess_boot(void)
 
 /*
  * How many bytes from p on the calling task may access with mode, after the
- * one probe of the whole range failed: n under KERNEL_DS, else the length of
- * the accessible prefix by bisection (accessibility of prefixes is monotonic).
+ * one probe of the whole range failed: the length of the accessible prefix
+ * by bisection (accessibility of prefixes is monotonic).
  */
 static size_t accessible_prefix_slow(const void *p, size_t n, MODE mode)
 {
 	size_t ok = 0, bad = n;
 
-	if (uaccess_kernel())
-		return n;
 	while (bad - ok > 1) {
 		size_t mid = ok + (bad - ok) / 2;
 
@@ -63,12 +62,36 @@ static size_t accessible_prefix_slow(const void *p, size_t n, MODE mode)
 	return ok;
 }
 
-/* How many bytes from p on the calling task may access with mode (one probe when all). */
-static size_t accessible_prefix(const void *p, size_t n, MODE mode)
+/*
+ * How many bytes from p on the calling task may access with mode (one probe
+ * when all).  *unverified is set when that answer says nothing about the
+ * memory map (a kernel-domain task, or KERNEL_DS): the access must then be
+ * the fault-safe one.
+ */
+static size_t accessible_prefix(const void *p, size_t n, MODE mode, bool *unverified)
 {
-	if (n == 0 || prb_mem(p, (SIZE)n, TSK_SELF, mode) == E_OK)
+	*unverified = false;
+	if (n == 0)
+		return 0;
+	if (prb_mem(p, (SIZE)n, TSK_SELF, mode) == E_OK) {
+		*unverified = lx_uaccess_unverified();
 		return n;
+	}
+	if (uaccess_kernel()) {
+		*unverified = true;
+		return n;
+	}
 	return accessible_prefix_slow(p, n, mode);
+}
+
+/* Copies the accessible prefix; returns the bytes copied (fewer if an unverified range faults). */
+static size_t copy_prefix(void *to, const void *from, size_t ok, bool unverified)
+{
+	if (unverified)
+		return lx_uaccess_copy(to, from, ok);
+	if (ok)
+		memcpy(to, from, ok);
+	return ok;
 }
 
 /*
@@ -86,14 +109,17 @@ static bool user_copy_allowed(const char *what)
 /*
  * The common case costs one probe and the copy: prb_mem(TSK_SELF) accepts the
  * whole range only for a calling task (outside task context it fails), so the
- * context is asked only when the probe fails.
+ * context is asked only when the probe fails.  A kernel-domain caller's range
+ * is accepted unchecked, so its copy is the fault-safe one.
  */
 unsigned long copy_from_user(void *to, const void __user *from, unsigned long n)
 {
 	size_t ok;
+	bool unverified;
 
 	lx_might_sleep("copy_from_user()", NULL, 0);
-	if (likely(n != 0 && prb_mem((__force const void *)from, (SIZE)n, TSK_SELF, TPM_READ) == E_OK)) {
+	if (likely(n != 0 && prb_mem((__force const void *)from, (SIZE)n, TSK_SELF, TPM_READ) == E_OK &&
+		   !lx_uaccess_unverified())) {
 		memcpy(to, (__force const void *)from, n);
 		return 0;
 	}
@@ -103,9 +129,8 @@ unsigned long copy_from_user(void *to, const void __user *from, unsigned long n)
 		memset(to, 0, n);
 		return n;
 	}
-	ok = accessible_prefix_slow((__force const void *)from, n, TPM_READ);
-	if (ok)
-		memcpy(to, (__force const void *)from, ok);
+	ok = accessible_prefix((__force const void *)from, n, TPM_READ, &unverified);
+	ok = copy_prefix(to, (__force const void *)from, ok, unverified);
 	if (ok < n)
 		memset((char *)to + ok, 0, n - ok);
 	return n - ok;
@@ -115,9 +140,11 @@ unsigned long copy_from_user(void *to, const void __user *from, unsigned long n)
 unsigned long copy_to_user(void __user *to, const void *from, unsigned long n)
 {
 	size_t ok;
+	bool unverified;
 
 	lx_might_sleep("copy_to_user()", NULL, 0);
-	if (likely(n != 0 && prb_mem((__force const void *)to, (SIZE)n, TSK_SELF, TPM_WRITE) == E_OK)) {
+	if (likely(n != 0 && prb_mem((__force const void *)to, (SIZE)n, TSK_SELF, TPM_WRITE) == E_OK &&
+		   !lx_uaccess_unverified())) {
 		memcpy((__force void *)to, from, n);
 		return 0;
 	}
@@ -125,35 +152,47 @@ unsigned long copy_to_user(void __user *to, const void *from, unsigned long n)
 		return 0;
 	if (sns_ctx())
 		return n;
-	ok = accessible_prefix_slow((__force const void *)to, n, TPM_WRITE);
-	if (ok)
-		memcpy((__force void *)to, from, ok);
-	return n - ok;
+	ok = accessible_prefix((__force const void *)to, n, TPM_WRITE, &unverified);
+	return n - copy_prefix((__force void *)to, from, ok, unverified);
 }
 
 unsigned long clear_user(void __user *to, unsigned long n)
 {
 	size_t ok;
+	bool unverified;
 
 	if (!user_copy_allowed("clear_user()"))
 		return n;
-	ok = accessible_prefix((__force const void *)to, n, TPM_WRITE);
-	if (ok)
+	ok = accessible_prefix((__force const void *)to, n, TPM_WRITE, &unverified);
+	if (unverified)
+		ok = lx_uaccess_clear((__force void *)to, ok);
+	else if (ok)
 		memset((__force void *)to, 0, ok);
 	return n - ok;
 }
 
+/* strnlen over the accessible prefix; *hit_end set when inaccessible memory came before a NUL. */
+static size_t user_strnlen(const char *s, size_t n, MODE mode, bool *hit_end)
+{
+	bool unverified, faulted = false;
+	size_t ok = accessible_prefix(s, n, mode, &unverified);
+	size_t len = unverified ? lx_uaccess_strnlen(s, ok, &faulted) : strnlen(s, ok);
+
+	*hit_end = faulted || (len == ok && ok < n);
+	return len;
+}
+
 long strncpy_from_user(char *dst, const char __user *src, long count)
 {
-	size_t ok, len;
+	size_t len;
+	bool hit_end;
 
 	if (count <= 0)
 		return 0;
 	if (!user_copy_allowed("strncpy_from_user()"))
 		return -EFAULT;
-	ok = accessible_prefix((__force const void *)src, (size_t)count, TPM_READ);
-	len = strnlen((__force const char *)src, ok);
-	if (len == ok && ok < (size_t)count)
+	len = user_strnlen((__force const char *)src, (size_t)count, TPM_READ, &hit_end);
+	if (hit_end)
 		return -EFAULT;     /* ran into inaccessible memory before a NUL */
 	if (len < (size_t)count) {
 		memcpy(dst, (__force const char *)src, len + 1);
@@ -165,15 +204,15 @@ long strncpy_from_user(char *dst, const char __user *src, long count)
 
 long strnlen_user(const char __user *str, long n)
 {
-	size_t ok, len;
+	size_t len;
+	bool hit_end;
 
 	if (n <= 0)
 		return 0;
 	if (!user_copy_allowed("strnlen_user()"))
 		return 0;
-	ok = accessible_prefix((__force const void *)str, (size_t)n, TPM_READ);
-	len = strnlen((__force const char *)str, ok);
-	if (len == ok && ok < (size_t)n)
+	len = user_strnlen((__force const char *)str, (size_t)n, TPM_READ, &hit_end);
+	if (hit_end)
 		return 0;
 	return len < (size_t)n ? (long)len + 1 : n + 1;
 }
