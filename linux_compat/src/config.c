@@ -10,7 +10,26 @@
 static const struct rtos_task_cfg lx_tasks[] = {
 	{ LX_WORKER_TSKID, TA_ACT, 0, lx_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
 	  TDOM_KERNEL, "lx_worker" },
+#if LX_NR_POOL_WORKERS >= 1
+	{ LX_POOL_WORKER_TSKID_BASE, TA_ACT, 1, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
+	  TDOM_KERNEL, "lx_pool_worker1" },
+#endif
+#if LX_NR_POOL_WORKERS >= 2
+	{ LX_POOL_WORKER_TSKID_BASE + 1, TA_ACT, 2, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
+	  TDOM_KERNEL, "lx_pool_worker2" },
+#endif
+#if LX_NR_POOL_WORKERS >= 3
+	{ LX_POOL_WORKER_TSKID_BASE + 2, TA_ACT, 3, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
+	  TDOM_KERNEL, "lx_pool_worker3" },
+#endif
+#if LX_NR_POOL_WORKERS >= 4
+	{ LX_POOL_WORKER_TSKID_BASE + 3, TA_ACT, 4, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
+	  TDOM_KERNEL, "lx_pool_worker4" },
+#endif
 };
+#if LX_NR_POOL_WORKERS > 4
+#error "config.c configures at most 4 pool workers"
+#endif
 
 static const struct rtos_isr_cfg lx_isrs[] = {
 	{ TA_NULL, 0, INTNO_TICK, lx_tick_isr, 1 },

@@ -1,8 +1,9 @@
 /*
- * worker.c — the kernel worker task and the modules' life cycle: at boot it
- * runs every module_init, then serves the work FIFO (workqueue.c); when an
- * unload is requested (linux_compat's termination, lx_compat_unload) it runs
- * every module_exit and goes on serving work.
+ * worker.c — the kernel worker tasks and the modules' life cycle: at boot the
+ * main worker runs every module_init, then serves the work FIFO
+ * (workqueue.c) with the pool workers; when an unload is requested
+ * (linux_compat's termination, lx_compat_unload) it runs every module_exit
+ * and goes on serving work.
  */
 #include <linux/kernel.h>
 #include <linux/module.h>
@@ -29,10 +30,28 @@ void lx_worker_reset(void)
 	lx_init_waitqueue_head(&unload_waiters, "unload_waiters");
 }
 
-/* True in the worker task. */
+/* The task ID of worker index (0 = the main worker). */
+ID lx_worker_tskid(unsigned int index)
+{
+	return index == 0 ? LX_WORKER_TSKID : (ID)(LX_POOL_WORKER_TSKID_BASE + (int)index - 1);
+}
+
+/* The calling worker's index, or -1. */
+int lx_worker_index(void)
+{
+	ID tid = lx_current_tskid();
+
+	if (tid == LX_WORKER_TSKID)
+		return 0;
+	if (tid >= LX_POOL_WORKER_TSKID_BASE && tid < LX_POOL_WORKER_TSKID_BASE + LX_NR_POOL_WORKERS)
+		return tid - LX_POOL_WORKER_TSKID_BASE + 1;
+	return -1;
+}
+
+/* True in a worker task. */
 bool lx_in_worker(void)
 {
-	return lx_current_tskid() == LX_WORKER_TSKID;
+	return lx_worker_index() >= 0;
 }
 
 /* True once module inits are done. */
@@ -90,7 +109,15 @@ static void unload_modules(void)
 	(void)chg_pri(TSK_SELF, pri);
 }
 
-/* The worker task: every module_init, then work until the modules are unloaded, then work. */
+/* Sleeps the calling worker until queue_work (or an unload request) wakes it. */
+static void wait_for_work(void)
+{
+	if (lx_workqueue_set_idle(true))
+		(void)slp_tsk();
+	(void)lx_workqueue_set_idle(false);
+}
+
+/* The main worker task: every module_init, then work until the modules are unloaded, then work. */
 void lx_worker_task(intptr_t exinf)
 {
 	(void)exinf;
@@ -100,6 +127,16 @@ void lx_worker_task(intptr_t exinf)
 		if (READ_ONCE(worker.unload_requested) && !worker.unloaded)
 			unload_modules();
 		else if (!lx_workqueue_run_one())
-			(void)slp_tsk();
+			wait_for_work();
+	}
+}
+
+/* A pool worker: runs work while the others sleep in theirs. */
+void lx_pool_worker_task(intptr_t exinf)
+{
+	(void)exinf;
+	for (;;) {
+		if (!lx_workqueue_run_one())
+			wait_for_work();
 	}
 }

@@ -1,5 +1,11 @@
 /*
- * workqueue.c — the one FIFO of work the worker task serves (worker.c).
+ * workqueue.c — the one FIFO of work the worker tasks serve (worker.c).
+ *
+ * Several workers serve it, as the kworkers of one CPU's pool in Linux: each
+ * takes the oldest item it may run, so when one sleeps inside a work item
+ * another runs the rest (a sleeping item on one workqueue does not stall the
+ * others).  An item never runs on two workers at once, and an ordered
+ * workqueue (alloc_ordered_workqueue, max_active 1) runs one item at a time.
  *
  * A work item's identity while queued or running is its queueing sequence
  * number, so flushes wait for exactly the instance that was there when they
@@ -29,11 +35,22 @@ struct workqueue_struct *system_freezable_power_efficient_wq = &default_wq;
 
 static struct workqueue_struct wq_pool[LX_NR_WORKQUEUES];
 
+/* How deep a worker may nest items (a flush inside a work runs others in place). */
+#define LX_WORK_NESTING 8
+
+/* What one worker runs: its stack of items, innermost last. */
+struct worker_running {
+	const struct work_struct *work[LX_WORK_NESTING];
+	const struct workqueue_struct *q[LX_WORK_NESTING];
+	u64 seq[LX_WORK_NESTING];
+	unsigned int depth;
+	bool idle;                   /* sleeping in its loop, waiting for work */
+};
+
 static struct {
 	struct work_struct *head, *tail;
 	u64 next_seq;                /* sequence numbers start at 1; 0 = none */
-	u64 running_seq;             /* the instance running now, or 0 */
-	const struct work_struct *running;
+	struct worker_running workers[LX_NR_WORKERS];
 } wq;
 
 static DECLARE_WAIT_QUEUE_HEAD(flush_waiters);
@@ -77,6 +94,46 @@ void lx_init_delayed_work(struct delayed_work *dwork, work_func_t func)
 	lx_init_work(&dwork->work, func);
 	timer_setup(&dwork->timer, lx_delayed_work_timer_fn, 0);
 	dwork->wq = NULL;
+}
+
+/* Wakes one idle worker, the main one first (none if all are busy: each takes more work when it is done). */
+static void wake_idle_worker(void)
+{
+	unsigned int i;
+
+	for (i = 0; i < LX_NR_WORKERS; i++) {
+		if (READ_ONCE(wq.workers[i].idle)) {
+			WRITE_ONCE(wq.workers[i].idle, false);
+			lx_wake_task(lx_worker_tskid(i));
+			return;
+		}
+	}
+}
+
+/* Where work runs: WORK_RUNS_HERE (the calling worker's stack), WORK_RUNS_ELSEWHERE, or WORK_IDLE. */
+enum work_place { WORK_IDLE, WORK_RUNS_HERE, WORK_RUNS_ELSEWHERE };
+
+/* Where the item (or, for an ordered q, any of q's items) runs; interrupts locked or a snapshot. */
+static enum work_place running_place(const struct work_struct *work, const struct workqueue_struct *q)
+{
+	int self = lx_worker_index();
+	unsigned int i, d;
+
+	for (i = 0; i < LX_NR_WORKERS; i++) {
+		const struct worker_running *w = &wq.workers[i];
+
+		for (d = 0; d < w->depth; d++) {
+			if (w->work[d] == work || (q != NULL && w->q[d] == q))
+				return (int)i == self ? WORK_RUNS_HERE : WORK_RUNS_ELSEWHERE;
+		}
+	}
+	return WORK_IDLE;
+}
+
+/* The workqueue an item of q blocks while it runs: q itself if ordered, else none. */
+static const struct workqueue_struct *ordering_of(const struct workqueue_struct *q)
+{
+	return q != NULL && q->ordered ? q : NULL;
 }
 
 /* Appends work to the FIFO; interrupts locked. */
@@ -142,7 +199,7 @@ bool queue_work(struct workqueue_struct *q, struct work_struct *work)
 	}
 	SIL_UNL_INT();
 	if (queued)
-		lx_wake_task(LX_WORKER_TSKID);
+		wake_idle_worker();
 	return queued;
 }
 
@@ -188,69 +245,144 @@ bool cancel_work(struct work_struct *work)
 }
 
 /*
- * Runs the first queued work in the calling (worker) task; false if the FIFO
- * is empty.  Nests (a flush inside a work runs others in place), so the
- * running state is saved and restored.
+ * Runs the oldest queued work the calling worker may run (not running on any
+ * worker, and its ordered workqueue idle); false if there is none.  Nests (a
+ * flush inside a work runs others in place): the worker's running stack.
  */
 bool lx_workqueue_run_one(void)
 {
-	struct work_struct *work;
-	const struct work_struct *outer_running;
-	u64 outer_seq;
+	struct work_struct *work, *prev = NULL;
+	struct worker_running *self;
+	int index = lx_worker_index();
 	work_func_t func;
+	bool more;
 	SIL_PRE_LOC;
 
+	if (index < 0)
+		return false;
+	self = &wq.workers[index];
 	SIL_LOC_INT();
-	work = wq.head;
-	if (work == NULL) {
+	for (work = wq.head; work != NULL; prev = work, work = work->lx_next) {
+		if (running_place(work, ordering_of(work->lx_wq)) == WORK_IDLE)
+			break;
+	}
+	if (work == NULL || self->depth == LX_WORK_NESTING) {
 		SIL_UNL_INT();
 		return false;
 	}
-	wq.head = work->lx_next;
-	if (wq.head == NULL)
-		wq.tail = NULL;
+	if (prev != NULL)
+		prev->lx_next = work->lx_next;
+	else
+		wq.head = work->lx_next;
+	if (wq.tail == work)
+		wq.tail = prev;
 	work->lx_next = NULL;
 	work->lx_pending = 0;
-	outer_running = wq.running;
-	outer_seq = wq.running_seq;
-	wq.running = work;
-	wq.running_seq = work->lx_seq;
+	self->work[self->depth] = work;
+	self->q[self->depth] = ordering_of(work->lx_wq);
+	self->seq[self->depth] = work->lx_seq;
+	self->depth++;
 	func = work->func;
+	more = wq.head != NULL;
 	SIL_UNL_INT();
 
+	if (more)
+		wake_idle_worker();      /* the rest must not wait if this one sleeps */
 	func(work);    /* work may be freed or re-queued from here on */
 
 	SIL_LOC_INT();
-	wq.running = outer_running;
-	wq.running_seq = outer_seq;
+	self->depth--;
 	SIL_UNL_INT();
 	wake_up_all(&flush_waiters);
 	return true;
 }
 
+/*
+ * Marks the calling worker idle (about to sleep in its loop, so queue_work
+ * wakes it) or busy again; marking it idle fails (false) if an item it may
+ * run was queued meanwhile.
+ */
+bool lx_workqueue_set_idle(bool idle)
+{
+	int index = lx_worker_index();
+	const struct work_struct *work;
+	SIL_PRE_LOC;
+
+	if (index < 0)
+		return false;
+	SIL_LOC_INT();
+	for (work = wq.head; idle && work != NULL; work = work->lx_next) {
+		if (running_place(work, ordering_of(work->lx_wq)) == WORK_IDLE)
+			idle = false;
+	}
+	wq.workers[index].idle = idle;
+	SIL_UNL_INT();
+	return idle;
+}
+
+/* True if an instance with sequence seq runs on a worker; *here set if on the calling one. */
+static bool seq_running(u64 seq, bool *here)
+{
+	int self = lx_worker_index();
+	unsigned int i, d;
+
+	for (i = 0; i < LX_NR_WORKERS; i++) {
+		for (d = 0; d < READ_ONCE(wq.workers[i].depth); d++) {
+			if (READ_ONCE(wq.workers[i].seq[d]) == seq) {
+				*here = (int)i == self;
+				return true;
+			}
+		}
+	}
+	*here = false;
+	return false;
+}
+
 /* True while the instance seq of work is queued or running. */
 static bool instance_alive(const struct work_struct *work, u64 seq)
 {
-	return (READ_ONCE(work->lx_pending) && READ_ONCE(work->lx_seq) == seq) ||
-	       READ_ONCE(wq.running_seq) == seq;
+	bool here;
+
+	return (READ_ONCE(work->lx_pending) && READ_ONCE(work->lx_seq) == seq) || seq_running(seq, &here);
 }
 
-/* Waits until instance seq of work is gone (the caller checked it may sleep);
- * false (reported) if that would deadlock. */
+/* The sequence of work's running instance on any worker, or 0; interrupts locked. */
+static u64 running_seq_of(const struct work_struct *work)
+{
+	unsigned int i, d;
+
+	for (i = 0; i < LX_NR_WORKERS; i++) {
+		for (d = 0; d < wq.workers[i].depth; d++) {
+			if (wq.workers[i].work[d] == work)
+				return wq.workers[i].seq[d];
+		}
+	}
+	return 0;
+}
+
+/*
+ * Waits until instance seq of work is gone (the caller checked it may
+ * sleep); false (reported) if that would deadlock.  A worker runs queued
+ * items in place while it waits, so it never waits for work only it could run.
+ */
 static bool wait_instance(const struct work_struct *work, u64 seq, const char *what,
 			  const char *file, int line)
 {
+	bool here;
+
 	if (!lx_in_worker()) {
 		wait_event(flush_waiters, !instance_alive(work, seq));
 		return true;
 	}
-	/* The worker waits for itself: run the queue in place. */
 	while (instance_alive(work, seq)) {
-		if (READ_ONCE(wq.running_seq) == seq || !lx_workqueue_run_one()) {
+		if ((seq_running(seq, &here) && here) ||
+		    (READ_ONCE(work->lx_pending) && running_place(NULL, ordering_of(work->lx_wq)) == WORK_RUNS_HERE)) {
 			lx_report("workqueue deadlock", file, line,
-				  "%s from the worker while that very work runs", what);
+				  "%s from the worker while that very work (or its ordered workqueue) runs", what);
 			return false;
 		}
+		if (!lx_workqueue_run_one())
+			wait_event(flush_waiters, !instance_alive(work, seq));
 	}
 	return true;
 }
@@ -267,12 +399,7 @@ bool lx_flush_work_at(struct work_struct *work, const char *file, int line)
 	if (work == NULL || work->lx_magic != LX_WORK_MAGIC)
 		return false;
 	SIL_LOC_INT();
-	if (work->lx_pending)
-		seq = work->lx_seq;
-	else if (wq.running == work)
-		seq = wq.running_seq;
-	else
-		seq = 0;
+	seq = work->lx_pending ? work->lx_seq : running_seq_of(work);
 	SIL_UNL_INT();
 	if (seq == 0)
 		return false;
@@ -294,7 +421,7 @@ bool lx_cancel_work_sync_at(struct work_struct *work, const char *file, int line
 		return false;
 	was_pending = cancel_work(work);
 	SIL_LOC_INT();
-	seq = wq.running == work ? wq.running_seq : 0;
+	seq = running_seq_of(work);
 	SIL_UNL_INT();
 	if (seq != 0 && may_sleep)
 		(void)wait_instance(work, seq, "cancel_work_sync()", file, line);
@@ -333,19 +460,31 @@ bool lx_flush_delayed_work_at(struct delayed_work *dwork, const char *file, int 
 	return lx_flush_work_at(&dwork->work, file, line);
 }
 
-/* True while an item queued at or before seq_limit is queued or running. */
-static bool older_work_alive(u64 seq_limit)
+/* True while an item queued at or before seq_limit is queued or running; *here if one runs on the caller. */
+static bool older_work_alive(u64 seq_limit, bool *here)
 {
 	const struct work_struct *head = READ_ONCE(wq.head);
-	u64 running = READ_ONCE(wq.running_seq);
+	int self = lx_worker_index();
+	unsigned int i, d;
+	bool alive = head != NULL && head->lx_seq <= seq_limit;
 
-	return (head != NULL && head->lx_seq <= seq_limit) || (running != 0 && running <= seq_limit);
+	*here = false;
+	for (i = 0; i < LX_NR_WORKERS; i++) {
+		for (d = 0; d < READ_ONCE(wq.workers[i].depth); d++) {
+			if (READ_ONCE(wq.workers[i].seq[d]) <= seq_limit) {
+				alive = true;
+				*here = *here || (int)i == self;
+			}
+		}
+	}
+	return alive;
 }
 
 /* Sleeps until all work queued before the call has run. */
 void lx_flush_workqueue_at(struct workqueue_struct *q, const char *file, int line)
 {
 	u64 limit;
+	bool here;
 	SIL_PRE_LOC;
 
 	(void)q;
@@ -355,17 +494,17 @@ void lx_flush_workqueue_at(struct workqueue_struct *q, const char *file, int lin
 	limit = wq.next_seq - 1;
 	SIL_UNL_INT();
 	if (!lx_in_worker()) {
-		wait_event(flush_waiters, !older_work_alive(limit));
+		wait_event(flush_waiters, !older_work_alive(limit, &here));
 		return;
 	}
-	while (older_work_alive(limit)) {
-		const struct work_struct *head = READ_ONCE(wq.head);
-
-		if (head == NULL || head->lx_seq > limit || !lx_workqueue_run_one()) {
+	while (older_work_alive(limit, &here)) {
+		if (here) {
 			lx_report("workqueue deadlock", file, line,
 				  "flush_workqueue from the work item it would wait for");
 			return;
 		}
+		if (!lx_workqueue_run_one())
+			wait_event(flush_waiters, !older_work_alive(limit, &here));
 	}
 }
 
@@ -402,7 +541,6 @@ struct workqueue_struct *alloc_workqueue(const char *fmt, unsigned int flags, in
 	va_list args;
 	SIL_PRE_LOC;
 
-	(void)max_active;
 	SIL_LOC_INT();
 	for (i = 0; i < LX_NR_WORKQUEUES; i++) {
 		if (!wq_pool[i].in_use) {
@@ -417,6 +555,7 @@ struct workqueue_struct *alloc_workqueue(const char *fmt, unsigned int flags, in
 		return NULL;
 	}
 	q->flags = flags;
+	q->ordered = (flags & __WQ_ORDERED) != 0 || max_active == 1;
 	va_start(args, max_active);
 	vscnprintf(q->name, sizeof(q->name), fmt, args);
 	va_end(args);

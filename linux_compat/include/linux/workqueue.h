@@ -1,10 +1,14 @@
 /*
  * linux/workqueue.h — deferred work in a real kernel task.
  *
- * One worker task (linux_compat/config.h: LX_WORKER_TSKID at
- * LX_WORKER_PRIORITY) serves every workqueue in one FIFO, so work runs in
- * task context, one item at a time, in queueing order (every workqueue is
- * "ordered").  Queueing is legal from any context.  The flush and cancel-sync calls
+ * Worker tasks (linux_compat/config.h: LX_WORKER_TSKID and the
+ * LX_NR_POOL_WORKERS pool workers, at LX_WORKER_PRIORITY) serve every
+ * workqueue from one FIFO as the kworkers of a CPU's pool: work runs in task
+ * context, started in queueing order, and when a work item sleeps another
+ * worker runs the next, as Linux's concurrency-managed workqueues do on one
+ * CPU.  An item never runs on two workers at once; an ordered workqueue
+ * (alloc_ordered_workqueue, create_singlethread_workqueue, max_active 1)
+ * runs one item at a time.  Queueing is legal from any context.  The flush and cancel-sync calls
  * sleep until the work is done; called from the worker itself (a work item,
  * or a module_init, which the worker runs at boot) they run the queued
  * items in place instead, and waiting for the very item that is running is
@@ -46,6 +50,7 @@ struct workqueue_struct {
 	char name[LX_WQ_NAME_LEN];
 	unsigned int flags;
 	bool in_use;
+	bool ordered;               /* one item at a time (max_active 1 or __WQ_ORDERED) */
 };
 
 enum {

@@ -17,7 +17,9 @@
  *     ext_ker has stopped dispatching, a task calls lx_compat_unload first);
  *   - linux_irq_cfg: the Linux interrupt lines (CFG_INT + ATT_ISR rows, see
  *     linux_compat/irq.h) - do not include it a second time.
- * Reserved IDs: task TNUM_TSKID.  No semaphores, eventflags, cyclics or
+ *   - LX_NR_POOL_WORKERS pool workers (below), which serve the workqueues
+ *     with it, so a work item that sleeps does not hold up the others;
+ * Reserved IDs: task TNUM_TSKID and the pool workers' IDs.  No semaphores, eventflags, cyclics or
  * alarms are used (linux_compat's primitives are native).
  *
  * LX_WORKER_PRIORITY and LX_WORKER_STACK may be overridden at build time
@@ -29,6 +31,25 @@
 #include <rtos_cfg.h>
 
 #define LX_WORKER_TSKID		TNUM_TSKID
+
+/*
+ * The pool workers: LX_NR_POOL_WORKERS more worker tasks at
+ * LX_WORKER_PRIORITY with IDs LX_POOL_WORKER_TSKID_BASE.. (default just
+ * below the IDs the platform layers take under TNUM_TSKID).  They run work
+ * while the other workers sleep inside theirs; with all of them asleep in
+ * work items, further work waits.
+ */
+#ifndef LX_NR_POOL_WORKERS
+#define LX_NR_POOL_WORKERS	2
+#endif
+#ifndef LX_POOL_WORKER_TSKID_BASE
+#define LX_POOL_WORKER_TSKID_BASE	(TNUM_TSKID - 8)
+#endif
+#define LX_NR_WORKERS		(1 + LX_NR_POOL_WORKERS)
+#if LX_NR_POOL_WORKERS < 0 || LX_POOL_WORKER_TSKID_BASE < 1 || \
+    LX_POOL_WORKER_TSKID_BASE + LX_NR_POOL_WORKERS > TNUM_TSKID
+#error "the pool workers' task IDs must lie in 1..TNUM_TSKID-1"
+#endif
 
 #ifndef LX_WORKER_PRIORITY
 #define LX_WORKER_PRIORITY	4
@@ -49,6 +70,8 @@ void lx_compat_boot(intptr_t exinf);
 void lx_compat_terminate(intptr_t exinf);
 /* The worker task's body: module inits, then the workqueues (and the unload at shutdown). */
 void lx_worker_task(intptr_t exinf);
+/* A pool worker's body: the workqueues. */
+void lx_pool_worker_task(intptr_t exinf);
 
 /* The boot command line, passed before the kernel starts as a boot loader
  * passes Linux's (the string must stay valid): its "module.param=value" words
