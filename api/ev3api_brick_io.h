@@ -17,15 +17,22 @@
 #include "kernel.h"
 #include "ev3api_fs.h"
 
-#define BRICK_IO_FN_FIRST       112
-#define BRICK_IO_FN_FILE_SIZE   112  /* (const char *path): the file's size; E_NOEXS none, E_OBJ a directory */
-#define BRICK_IO_FN_FILE_READ   113  /* (path, uint_t offset, void *buf, uint_t len): returns bytes read */
-#define BRICK_IO_FN_DIR_OPEN    114  /* (const char *path): a directory ID 1..BRICK_IO_MAX_DIRS; E_NOMEM none free */
-#define BRICK_IO_FN_DIR_READ    115  /* (ID, fileinfo_t *out): the next entry; E_NOEXS at the end, E_ID bad ID */
-#define BRICK_IO_FN_DIR_CLOSE   116  /* (ID): E_ID if not open */
-#define BRICK_IO_FN_SERIAL_WRITE 117 /* (serial_port_t, const void *buf, uint_t len): bytes taken, 0 full; len 0: E_OBJ unless connected */
-#define BRICK_IO_FN_SERIAL_READ 118  /* (serial_port_t, void *buf, uint_t len): returns bytes, 0 none yet, E_OBJ at end */
-#define BRICK_IO_FN_LAST        127  /* the range reserved for the brick's storage and serial ports */
+/* The function codes this module owns: BRICK_IO_FN_FIRST .. + BRICK_IO_FN_COUNT - 1
+ * (a build may move the range with -DBRICK_IO_FN_FIRST=n; boot rejects ranges
+ * that overlap another module's). */
+#ifndef BRICK_IO_FN_FIRST
+#define BRICK_IO_FN_FIRST 112
+#endif
+#define BRICK_IO_FN_COUNT 16
+#define BRICK_IO_FN_LAST  (BRICK_IO_FN_FIRST + BRICK_IO_FN_COUNT - 1)
+
+#define BRICK_IO_FN_FILE_SIZE   (BRICK_IO_FN_FIRST + 0)  /* (const char *path): the file's size; E_NOEXS none, E_OBJ a directory */
+#define BRICK_IO_FN_FILE_READ   (BRICK_IO_FN_FIRST + 1)  /* (path, uint_t offset, void *buf, uint_t len): returns bytes read */
+#define BRICK_IO_FN_DIR_OPEN    (BRICK_IO_FN_FIRST + 2)  /* (const char *path): a directory ID 1..BRICK_IO_MAX_DIRS; E_NOMEM none free */
+#define BRICK_IO_FN_DIR_READ    (BRICK_IO_FN_FIRST + 3)  /* (ID, fileinfo_t *out): the next entry; E_NOEXS at the end, E_ID bad ID */
+#define BRICK_IO_FN_DIR_CLOSE   (BRICK_IO_FN_FIRST + 4)  /* (ID): E_ID if not open */
+#define BRICK_IO_FN_SERIAL_WRITE (BRICK_IO_FN_FIRST + 5) /* (serial_port_t, const void *buf, uint_t len): bytes taken, 0 full; len 0: E_OBJ unless connected */
+#define BRICK_IO_FN_SERIAL_READ (BRICK_IO_FN_FIRST + 6)  /* (serial_port_t, void *buf, uint_t len): returns bytes, 0 none yet, E_OBJ at end */
 
 #define BRICK_IO_MAX_DIRS       8U   /* directories open at once */
 #define BRICK_IO_MAX_PATH       (TMAX_FILENAME_LEN + 1)   /* bytes of a path with its NUL */

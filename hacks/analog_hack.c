@@ -169,4 +169,5 @@ static const struct rtos_svc_cfg analog_svcs[] = {
 const struct rtos_cfg analog_hack_cfg = {
 	.name = "analog_hack",
 	.svcs = RTOS_TABLE(analog_svcs),
+	.svc_first = ANALOG_FN_FIRST, .svc_count = ANALOG_FN_COUNT,
 };

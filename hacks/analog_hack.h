@@ -1,6 +1,6 @@
 /*
  * analog_hack.h — d_analog's interface on the RTOS: extended service calls
- * (function codes 16..31 are d_analog's) and the configuration fragment that
+ * (function codes ANALOG_FN_FIRST.. are d_analog's) and the configuration fragment that
  * defines them.  Plain TOPPERS C: applications and the api include it.
  *
  * Every call checks its arguments and returns a TOPPERS code:
@@ -18,14 +18,21 @@
 #include "rtos_cfg.h"
 #include "lms_analog.h"
 
-#define ANALOG_FN_MAP        16  /* (const struct lms_analog **out): address of ANALOG */
-#define ANALOG_FN_INPUT      17  /* (uint_t port, struct analog_input_state *out) */
-#define ANALOG_FN_OUTPUT     18  /* (uint_t port, struct analog_output_state *out) */
-#define ANALOG_FN_DCM_WRITE  19  /* (const char *cmd, uint_t len): write() of /dev/lms_dcm */
-#define ANALOG_FN_DCM_READ   20  /* (char *buf, uint_t len): read() of /dev/lms_dcm, returns bytes */
-#define ANALOG_FN_TEXT       21  /* (char *buf, uint_t len): the text dump from its start, returns bytes */
-#define ANALOG_FN_FIRST      16
-#define ANALOG_FN_LAST       31  /* the range reserved for d_analog */
+/* The function codes this module owns: ANALOG_FN_FIRST .. + ANALOG_FN_COUNT - 1
+ * (a build may move the range with -DANALOG_FN_FIRST=n; boot rejects ranges
+ * that overlap another module's). */
+#ifndef ANALOG_FN_FIRST
+#define ANALOG_FN_FIRST 16
+#endif
+#define ANALOG_FN_COUNT 16
+#define ANALOG_FN_LAST  (ANALOG_FN_FIRST + ANALOG_FN_COUNT - 1)
+
+#define ANALOG_FN_MAP        (ANALOG_FN_FIRST + 0)  /* (const struct lms_analog **out): address of ANALOG */
+#define ANALOG_FN_INPUT      (ANALOG_FN_FIRST + 1)  /* (uint_t port, struct analog_input_state *out) */
+#define ANALOG_FN_OUTPUT     (ANALOG_FN_FIRST + 2)  /* (uint_t port, struct analog_output_state *out) */
+#define ANALOG_FN_DCM_WRITE  (ANALOG_FN_FIRST + 3)  /* (const char *cmd, uint_t len): write() of /dev/lms_dcm */
+#define ANALOG_FN_DCM_READ   (ANALOG_FN_FIRST + 4)  /* (char *buf, uint_t len): read() of /dev/lms_dcm, returns bytes */
+#define ANALOG_FN_TEXT       (ANALOG_FN_FIRST + 5)  /* (char *buf, uint_t len): the text dump from its start, returns bytes */
 
 /* An input port now: what detection found and the pin voltages. */
 struct analog_input_state {

@@ -104,4 +104,5 @@ static const struct rtos_svc_cfg power_svcs[] = {
 const struct rtos_cfg power_hack_cfg = {
 	.name = "power_hack",
 	.svcs = RTOS_TABLE(power_svcs),
+	.svc_first = POWER_FN_FIRST, .svc_count = POWER_FN_COUNT,
 };

@@ -1,6 +1,6 @@
 /*
  * power_hack.h — d_power's interface on the RTOS: extended service calls
- * (function codes 64..71 are d_power's) and the configuration fragment that
+ * (function codes POWER_FN_FIRST.. are d_power's) and the configuration fragment that
  * defines them.  Plain TOPPERS C: applications and the api include it.
  *
  * The battery's voltage and currents need no service call: they are raw
@@ -18,10 +18,17 @@
 #include "rtos_cfg.h"
 #include "lms_power.h"
 
-#define POWER_FN_RECHARGEABLE  64  /* (): read() of /dev/lms_power -> 1 rechargeable pack, 0 AA cells */
-#define POWER_FN_TEST_PIN      65  /* (uint_t level): write() of one byte, 0 or 1 */
-#define POWER_FN_FIRST         64
-#define POWER_FN_LAST          71  /* the range reserved for d_power */
+/* The function codes this module owns: POWER_FN_FIRST .. + POWER_FN_COUNT - 1
+ * (a build may move the range with -DPOWER_FN_FIRST=n; boot rejects ranges
+ * that overlap another module's). */
+#ifndef POWER_FN_FIRST
+#define POWER_FN_FIRST 64
+#endif
+#define POWER_FN_COUNT 8
+#define POWER_FN_LAST  (POWER_FN_FIRST + POWER_FN_COUNT - 1)
+
+#define POWER_FN_RECHARGEABLE  (POWER_FN_FIRST + 0)  /* (): read() of /dev/lms_power -> 1 rechargeable pack, 0 AA cells */
+#define POWER_FN_TEST_PIN      (POWER_FN_FIRST + 1)  /* (uint_t level): write() of one byte, 0 or 1 */
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
 extern const struct rtos_cfg power_hack_cfg;

@@ -152,4 +152,5 @@ static const struct rtos_svc_cfg pwm_svcs[] = {
 const struct rtos_cfg pwm_hack_cfg = {
 	.name = "pwm_hack",
 	.svcs = RTOS_TABLE(pwm_svcs),
+	.svc_first = PWM_FN_FIRST, .svc_count = PWM_FN_COUNT,
 };

@@ -1,6 +1,6 @@
 /*
  * pwm_hack.h — d_pwm's interface on the RTOS: extended service calls
- * (function codes 1..15 are d_pwm's) and the configuration fragment that
+ * (function codes PWM_FN_FIRST.. are d_pwm's) and the configuration fragment that
  * defines them.  Plain TOPPERS C: applications and the api include it.
  *
  * Every call checks its arguments and returns a TOPPERS code:
@@ -16,15 +16,22 @@
 #include "rtos_cfg.h"
 #include "lms_pwm.h"
 
-#define PWM_FN_COMMAND     1   /* (const void *cmd, uint_t len): one command written to /dev/lms_pwm */
-#define PWM_FN_COMMAND2    2   /* (cmd_a, len_a, cmd_b, len_b): two commands, the second only if the first succeeded */
-#define PWM_FN_READ        3   /* (char *buf, uint_t len): read() of /dev/lms_pwm ("R T "), returns bytes */
-#define PWM_FN_BUSY        4   /* (): the busy (ReadyStatus) port mask, 0..15 */
-#define PWM_FN_SET_BUSY    5   /* (uint_t mask): write() of one byte to /dev/lms_motor */
-#define PWM_FN_MOTOR_DATA  6   /* (uint_t port, struct lms_motor_data *out): one port's MOTORDATA */
-#define PWM_FN_MOTOR_MAP   7   /* (const struct lms_motor_data **out): address of MOTORDATA[4] */
-#define PWM_FN_FIRST       1
-#define PWM_FN_LAST        15  /* the range reserved for d_pwm */
+/* The function codes this module owns: PWM_FN_FIRST .. + PWM_FN_COUNT - 1
+ * (a build may move the range with -DPWM_FN_FIRST=n; boot rejects ranges
+ * that overlap another module's). */
+#ifndef PWM_FN_FIRST
+#define PWM_FN_FIRST 1
+#endif
+#define PWM_FN_COUNT 15
+#define PWM_FN_LAST  (PWM_FN_FIRST + PWM_FN_COUNT - 1)
+
+#define PWM_FN_COMMAND     (PWM_FN_FIRST + 0)   /* (const void *cmd, uint_t len): one command written to /dev/lms_pwm */
+#define PWM_FN_COMMAND2    (PWM_FN_FIRST + 1)   /* (cmd_a, len_a, cmd_b, len_b): two commands, the second only if the first succeeded */
+#define PWM_FN_READ        (PWM_FN_FIRST + 2)   /* (char *buf, uint_t len): read() of /dev/lms_pwm ("R T "), returns bytes */
+#define PWM_FN_BUSY        (PWM_FN_FIRST + 3)   /* (): the busy (ReadyStatus) port mask, 0..15 */
+#define PWM_FN_SET_BUSY    (PWM_FN_FIRST + 4)   /* (uint_t mask): write() of one byte to /dev/lms_motor */
+#define PWM_FN_MOTOR_DATA  (PWM_FN_FIRST + 5)   /* (uint_t port, struct lms_motor_data *out): one port's MOTORDATA */
+#define PWM_FN_MOTOR_MAP   (PWM_FN_FIRST + 6)   /* (const struct lms_motor_data **out): address of MOTORDATA[4] */
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
 extern const struct rtos_cfg pwm_hack_cfg;

@@ -181,4 +181,5 @@ static const struct rtos_svc_cfg sound_svcs[] = {
 const struct rtos_cfg sound_hack_cfg = {
 	.name = "sound_hack",
 	.svcs = RTOS_TABLE(sound_svcs),
+	.svc_first = SOUND_FN_FIRST, .svc_count = SOUND_FN_COUNT,
 };

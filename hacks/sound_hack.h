@@ -1,6 +1,6 @@
 /*
  * sound_hack.h — d_sound's interface on the RTOS: extended service calls
- * (function codes 72..79 are d_sound's) and the configuration fragment that
+ * (function codes SOUND_FN_FIRST.. are d_sound's) and the configuration fragment that
  * defines them.  Plain TOPPERS C: applications and the api include it.
  *
  * SOUND_FN_WRITE is write() of one command (lms_sound.h); before a TONE or
@@ -21,11 +21,18 @@
 #include "rtos_cfg.h"
 #include "lms_sound.h"
 
-#define SOUND_FN_WRITE    72  /* (const uint8_t *cmd, uint_t len): write(), returns its count */
-#define SOUND_FN_STATUS   73  /* (): the status byte, LMS_SOUND_OK or LMS_SOUND_BUSY */
-#define SOUND_FN_PLAY_PCM 74  /* (const uint8_t *samples, uint_t len, uint_t level): PCM playback */
-#define SOUND_FN_FIRST    72
-#define SOUND_FN_LAST     79  /* the range reserved for d_sound */
+/* The function codes this module owns: SOUND_FN_FIRST .. + SOUND_FN_COUNT - 1
+ * (a build may move the range with -DSOUND_FN_FIRST=n; boot rejects ranges
+ * that overlap another module's). */
+#ifndef SOUND_FN_FIRST
+#define SOUND_FN_FIRST 72
+#endif
+#define SOUND_FN_COUNT 8
+#define SOUND_FN_LAST  (SOUND_FN_FIRST + SOUND_FN_COUNT - 1)
+
+#define SOUND_FN_WRITE    (SOUND_FN_FIRST + 0)  /* (const uint8_t *cmd, uint_t len): write(), returns its count */
+#define SOUND_FN_STATUS   (SOUND_FN_FIRST + 1)  /* (): the status byte, LMS_SOUND_OK or LMS_SOUND_BUSY */
+#define SOUND_FN_PLAY_PCM (SOUND_FN_FIRST + 2)  /* (const uint8_t *samples, uint_t len, uint_t level): PCM playback */
 #define SOUND_MAX_COMMAND (1 + LMS_SOUND_SLOT_SAMPLES)
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */

@@ -195,5 +195,6 @@ static const struct rtos_ini_cfg uart_inis[] = {
 const struct rtos_cfg uart_hack_cfg = {
 	.name = "uart_hack",
 	.svcs = RTOS_TABLE(uart_svcs),
+	.svc_first = UART_FN_FIRST, .svc_count = UART_FN_COUNT,
 	.inis = RTOS_TABLE(uart_inis),
 };

@@ -1,6 +1,6 @@
 /*
  * uart_hack.h — d_uart's interface on the RTOS: extended service calls
- * (function codes 32..47 are d_uart's) and the configuration fragment that
+ * (function codes UART_FN_FIRST.. are d_uart's) and the configuration fragment that
  * defines them.  Plain TOPPERS C: applications and the api include it.
  *
  * Reading a value needs no service call: uart_svc_map() gives the driver's
@@ -23,14 +23,21 @@
 #include "rtos_cfg.h"
 #include "lms_uart.h"
 
-#define UART_FN_SET_MODE      32  /* (uint_t port, uint_t mode): start the port / select the mode */
-#define UART_FN_STOP          33  /* (uint_t port): stop the port, withdraw its data */
-#define UART_FN_MODE_INFO     34  /* (uint_t port, uint_t mode, struct lms_uart_types *out) */
-#define UART_FN_CLEAR_CHANGED 35  /* (uint_t port): accept the sensor's description (data flows) */
-#define UART_FN_WRITE         36  /* (uint_t port, const void *data, uint_t len): WRITE, 1..32 bytes */
-#define UART_FN_MAP           37  /* (const struct lms_uart_shm **out): the shared memory */
-#define UART_FN_FIRST         32
-#define UART_FN_LAST          47  /* the range reserved for d_uart */
+/* The function codes this module owns: UART_FN_FIRST .. + UART_FN_COUNT - 1
+ * (a build may move the range with -DUART_FN_FIRST=n; boot rejects ranges
+ * that overlap another module's). */
+#ifndef UART_FN_FIRST
+#define UART_FN_FIRST 32
+#endif
+#define UART_FN_COUNT 16
+#define UART_FN_LAST  (UART_FN_FIRST + UART_FN_COUNT - 1)
+
+#define UART_FN_SET_MODE      (UART_FN_FIRST + 0)  /* (uint_t port, uint_t mode): start the port / select the mode */
+#define UART_FN_STOP          (UART_FN_FIRST + 1)  /* (uint_t port): stop the port, withdraw its data */
+#define UART_FN_MODE_INFO     (UART_FN_FIRST + 2)  /* (uint_t port, uint_t mode, struct lms_uart_types *out) */
+#define UART_FN_CLEAR_CHANGED (UART_FN_FIRST + 3)  /* (uint_t port): accept the sensor's description (data flows) */
+#define UART_FN_WRITE         (UART_FN_FIRST + 4)  /* (uint_t port, const void *data, uint_t len): WRITE, 1..32 bytes */
+#define UART_FN_MAP           (UART_FN_FIRST + 5)  /* (const struct lms_uart_shm **out): the shared memory */
 
 /* The DEF_SVC rows and the board settings (INCLUDE it in the application's configuration). */
 extern const struct rtos_cfg uart_hack_cfg;

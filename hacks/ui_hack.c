@@ -168,4 +168,5 @@ static const struct rtos_svc_cfg ui_svcs[] = {
 const struct rtos_cfg ui_hack_cfg = {
 	.name = "ui_hack",
 	.svcs = RTOS_TABLE(ui_svcs),
+	.svc_first = UI_FN_FIRST, .svc_count = UI_FN_COUNT,
 };

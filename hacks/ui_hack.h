@@ -1,6 +1,6 @@
 /*
  * ui_hack.h — d_ui's interface on the RTOS: extended service calls
- * (function codes 48..63 are d_ui's) and the configuration fragment that
+ * (function codes UI_FN_FIRST.. are d_ui's) and the configuration fragment that
  * defines them.  Plain TOPPERS C: applications and the api include it.
  *
  * Reading a button needs no service call: ui_svc_map() gives d_ui's shared
@@ -22,11 +22,18 @@
 #include "rtos_cfg.h"
 #include "lms_ui.h"
 
-#define UI_FN_LED         48  /* (uint_t pattern): write() of LMS_UI_LED_* ('0'..'9') */
-#define UI_FN_MAP         49  /* (const struct lms_ui **out): address of the shared page */
-#define UI_FN_WAIT_CLICK  50  /* (struct lms_ui_click *out, TMO tmout): the oldest click */
-#define UI_FN_FIRST       48
-#define UI_FN_LAST        63  /* the range reserved for d_ui */
+/* The function codes this module owns: UI_FN_FIRST .. + UI_FN_COUNT - 1
+ * (a build may move the range with -DUI_FN_FIRST=n; boot rejects ranges
+ * that overlap another module's). */
+#ifndef UI_FN_FIRST
+#define UI_FN_FIRST 48
+#endif
+#define UI_FN_COUNT 16
+#define UI_FN_LAST  (UI_FN_FIRST + UI_FN_COUNT - 1)
+
+#define UI_FN_LED         (UI_FN_FIRST + 0)  /* (uint_t pattern): write() of LMS_UI_LED_* ('0'..'9') */
+#define UI_FN_MAP         (UI_FN_FIRST + 1)  /* (const struct lms_ui **out): address of the shared page */
+#define UI_FN_WAIT_CLICK  (UI_FN_FIRST + 2)  /* (struct lms_ui_click *out, TMO tmout): the oldest click */
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
 extern const struct rtos_cfg ui_hack_cfg;

@@ -28,10 +28,13 @@ LINUX_INC  := -D__KERNEL__ -Wno-missing-field-initializers -Ilinux_compat/includ
 LINUX_CODEGEN := -fno-strict-aliasing -fno-common -fno-delete-null-pointer-checks \
 	-fno-strict-overflow -fno-allow-store-data-races
 
-# Build-time kernel settings (TIC_NUME/TIC_DENO: tick length in ms).
+# Build-time kernel settings (TIC_NUME/TIC_DENO: tick length in ms; TNUM_FNCD:
+# the highest extended service call function code, for the library and every
+# configuration alike).
 TIC_NUME ?= 1
 TIC_DENO ?= 5
-KERNEL_DEFS := -DTIC_NUME=$(TIC_NUME)U -DTIC_DENO=$(TIC_DENO)U
+TNUM_FNCD ?= 128
+KERNEL_DEFS := -DTIC_NUME=$(TIC_NUME)U -DTIC_DENO=$(TIC_DENO)U -DTNUM_FNCD=$(TNUM_FNCD)
 
 CC_host        := gcc
 CFLAGS_host    := -O2 -g -DEV3LX_HOST=1

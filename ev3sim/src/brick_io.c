@@ -354,4 +354,5 @@ static const struct rtos_svc_cfg brick_io_svcs[] = {
 const struct rtos_cfg brick_io_cfg = {
 	.name = "brick_io",
 	.svcs = RTOS_TABLE(brick_io_svcs),
+	.svc_first = BRICK_IO_FN_FIRST, .svc_count = BRICK_IO_FN_COUNT,
 };

@@ -88,4 +88,5 @@ static const struct rtos_svc_cfg serial_log_svcs[] = {
 const struct rtos_cfg serial_log_cfg = {
 	.name = "serial_log",
 	.svcs = RTOS_TABLE(serial_log_svcs),
+	.svc_first = SERIAL_LOG_FN_WRITE, .svc_count = 1,
 };

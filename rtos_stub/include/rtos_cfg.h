@@ -26,7 +26,12 @@
 #define TNUM_DTQID   16
 #define TNUM_PDQID   16
 #define TNUM_MTXID   16
-#define TNUM_FNCD    128    /* extended service calls: function codes 1..TNUM_FNCD */
+/* Extended service calls: function codes 1..TNUM_FNCD.  A build setting
+ * (make TNUM_FNCD=n passes -DTNUM_FNCD=n to every unit, library and
+ * configurations alike), as the TOPPERS configurator sets it for HRP2. */
+#ifndef TNUM_FNCD
+#define TNUM_FNCD    128
+#endif
 #define TNUM_DOMID   4      /* user protection domains 1..TNUM_DOMID */
 #define TMAX_INTNO   127U   /* interrupt numbers 0..TMAX_INTNO (AINTC system interrupts) */
 
@@ -160,6 +165,11 @@ struct rtos_cfg {
 	const struct rtos_dtq_cfg  *dtqs;    uint_t ndtqs;
 	const struct rtos_pdq_cfg  *pdqs;    uint_t npdqs;
 	const struct rtos_mtx_cfg  *mtxs;    uint_t nmtxs;
+	/* The function codes this configuration owns: svc_first..svc_first+svc_count-1
+	 * (svc_count 0: none declared).  Boot rejects ranges that overlap another
+	 * configuration's, naming both, and DEF_SVC rows outside the range. */
+	FN     svc_first;
+	uint_t svc_count;
 	/* INCLUDE(): other configurations merged in, e.g. linux_compat's. NULL-terminated. */
 	const struct rtos_cfg *const *includes;
 };

@@ -299,6 +299,50 @@ static ER check_cycs_alms(const struct rtos_cfg *cfg)
 	return E_OK;
 }
 
+/* True if configuration cfg declares a function-code range. */
+static bool svc_range_declared(const struct rtos_cfg *cfg)
+{
+	return cfg->svc_count != 0;
+}
+
+/*
+ * Checks the function-code range cfg declares: inside 1..TNUM_FNCD and
+ * disjoint from the ranges of the configurations checked before it (index <
+ * self), whose name the error gives.
+ */
+static ER check_svc_range(uint_t self)
+{
+	const struct rtos_cfg *cfg = configs[self];
+	long first = cfg->svc_first, last = first + (long)cfg->svc_count - 1;
+
+	if (!svc_range_declared(cfg))
+		return E_OK;
+	if (first < 1 || last > TNUM_FNCD)
+		return boot_fail(cfg, "DEF_SVC", 0, NULL, E_PAR,
+				 "function codes %ld..%ld out of range 1..%d (TNUM_FNCD is a build setting)",
+				 first, last, TNUM_FNCD);
+	for (uint_t i = 0; i < self; i++) {
+		const struct rtos_cfg *other = configs[i];
+		long ofirst = other->svc_first, olast = ofirst + (long)other->svc_count - 1;
+
+		if (svc_range_declared(other) && first <= olast && ofirst <= last)
+			return boot_fail(cfg, "DEF_SVC", 0, NULL, E_OBJ,
+					 "function codes %ld..%ld overlap those of config \"%s\" (%ld..%ld)",
+					 first, last, other->name != NULL ? other->name : "?", ofirst, olast);
+	}
+	return E_OK;
+}
+
+/* The configuration that defined fncd (boot), for the duplicate report. */
+static const struct rtos_cfg *svc_owner(FN fncd)
+{
+	for (uint_t c = 0; c < nconfigs; c++)
+		for (uint_t i = 0; i < configs[c]->nsvcs; i++)
+			if (configs[c]->svcs[i].fncd == fncd)
+				return configs[c];
+	return NULL;
+}
+
 /* Checks ATT_ISR, DEF_SVC, memory-region and ATT_INI rows and applies them. */
 static ER check_isrs_svcs_mems_inis(const struct rtos_cfg *cfg)
 {
@@ -327,8 +371,16 @@ static ER check_isrs_svcs_mems_inis(const struct rtos_cfg *cfg)
 		if (r->fncd < 1 || r->fncd > TNUM_FNCD)
 			return boot_fail(cfg, "DEF_SVC", i, NULL, E_PAR, "fncd %d out of range 1..%d",
 					 r->fncd, TNUM_FNCD);
-		if (svc_defined(r->fncd))
-			return boot_fail(cfg, "DEF_SVC", i, NULL, E_OBJ, "fncd %d defined twice", r->fncd);
+		if (svc_range_declared(cfg) &&
+		    (r->fncd < cfg->svc_first || r->fncd > cfg->svc_first + (FN)cfg->svc_count - 1))
+			return boot_fail(cfg, "DEF_SVC", i, NULL, E_PAR, "fncd %d outside the configuration's codes %d..%d",
+					 r->fncd, cfg->svc_first, cfg->svc_first + (FN)cfg->svc_count - 1);
+		if (svc_defined(r->fncd)) {
+			const struct rtos_cfg *owner = svc_owner(r->fncd);
+
+			return boot_fail(cfg, "DEF_SVC", i, NULL, E_OBJ, "fncd %d already defined by config \"%s\"",
+					 r->fncd, owner != NULL && owner->name != NULL ? owner->name : "?");
+		}
 		if (r->extsvc == NULL)
 			return boot_fail(cfg, "DEF_SVC", i, NULL, E_PAR, "fncd %d: NULL routine", r->fncd);
 		svc_define(r->fncd, r->extsvc);
@@ -451,6 +503,8 @@ ER rtos_host_boot(const struct rtos_cfg *cfg)
 	ercd = collect_configs(cfg, cfg, 0);
 	for (uint_t i = 0; ercd == E_OK && i < nconfigs; i++)
 		ercd = check_ints(configs[i]);
+	for (uint_t i = 0; ercd == E_OK && i < nconfigs; i++)
+		ercd = check_svc_range(i);
 	for (uint_t i = 0; ercd == E_OK && i < nconfigs; i++)
 		if ((ercd = check_tasks(configs[i])) == E_OK && (ercd = check_sems(configs[i])) == E_OK &&
 		    (ercd = check_flgs(configs[i])) == E_OK && (ercd = check_dtqs_pdqs_mtxs(configs[i])) == E_OK &&

@@ -1,0 +1,132 @@
+/*
+ * test_fncd_ranges.c — function codes as modules own them: every hack's
+ * configuration declares its range (FIRST/COUNT in its header), the ranges
+ * are disjoint and inside 1..TNUM_FNCD, a new module takes a free range and
+ * boots beside all of them with no edit to theirs, and boot rejects a range
+ * that overlaps another module's naming both, a DEF_SVC row outside its own
+ * range, a range beyond TNUM_FNCD, and a code defined twice naming its owner.
+ */
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+#include "tap.h"
+#include "kernel.h"
+#include "rtos_cfg.h"
+#include "rtos_host.h"
+#include "pwm_hack.h"
+#include "analog_hack.h"
+#include "uart_hack.h"
+#include "ui_hack.h"
+#include "power_hack.h"
+#include "sound_hack.h"
+
+/* A new module, as a user adds one: its own header's range, nothing else touched. */
+#define NEWDRV_FN_FIRST 80
+#define NEWDRV_FN_COUNT 8
+#define NEWDRV_FN_ECHO  (NEWDRV_FN_FIRST + 0)
+
+static ER_UINT svc_echo(intptr_t a, intptr_t b, intptr_t c, intptr_t d, intptr_t e, ID cdmid)
+{
+	(void)b, (void)c, (void)d, (void)e, (void)cdmid;
+	return (ER_UINT)a;
+}
+
+static const struct rtos_svc_cfg newdrv_svcs[] = { { NEWDRV_FN_ECHO, svc_echo, 1024 } };
+static const struct rtos_cfg newdrv_cfg = {
+	.name = "newdrv", .svcs = RTOS_TABLE(newdrv_svcs),
+	.svc_first = NEWDRV_FN_FIRST, .svc_count = NEWDRV_FN_COUNT,
+};
+
+static const struct rtos_cfg *const modules[] = {
+	&pwm_hack_cfg, &analog_hack_cfg, &uart_hack_cfg, &ui_hack_cfg, &power_hack_cfg, &sound_hack_cfg,
+	&newdrv_cfg, NULL,
+};
+
+static ER_UINT echo_result;
+
+static void app_task(intptr_t exinf)
+{
+	(void)exinf;
+	echo_result = cal_svc(NEWDRV_FN_ECHO, 4242, 0, 0, 0, 0);
+}
+
+static const struct rtos_task_cfg app_tasks[] = { { 1, TA_ACT, 0, app_task, 5, 4096, TDOM_KERNEL, "app" } };
+static const struct rtos_cfg app_cfg = { .name = "app", .tasks = RTOS_TABLE(app_tasks), .includes = modules };
+
+/* Bad modules, each booted beside the project's. */
+static const struct rtos_svc_cfg overlap_svcs[] = { { 20, svc_echo, 1024 } };
+static const struct rtos_cfg overlap_cfg = {
+	.name = "overlapper", .svcs = RTOS_TABLE(overlap_svcs), .svc_first = 20, .svc_count = 4,
+};
+static const struct rtos_svc_cfg outside_svcs[] = { { 90, svc_echo, 1024 } };
+static const struct rtos_cfg outside_cfg = {
+	.name = "outsider", .svcs = RTOS_TABLE(outside_svcs), .svc_first = 80, .svc_count = 8,
+};
+static const struct rtos_cfg beyond_cfg = { .name = "beyond", .svc_first = TNUM_FNCD, .svc_count = 2 };
+static const struct rtos_svc_cfg squatter_svcs[] = { { PWM_FN_COMMAND, svc_echo, 1024 } };
+static const struct rtos_cfg squatter_cfg = { .name = "squatter", .svcs = RTOS_TABLE(squatter_svcs) };
+
+/* Boots the project's hack configurations plus bad; returns the boot's code. */
+static ER boot_with(const struct rtos_cfg *bad)
+{
+	static const struct rtos_cfg *includes[9];
+	static struct rtos_cfg cfg = { .name = "app" };
+	unsigned int i;
+
+	for (i = 0; i < 6; i++)
+		includes[i] = modules[i];
+	includes[6] = bad;
+	includes[7] = NULL;
+	cfg.includes = includes;
+	return rtos_host_boot(&cfg);
+}
+
+int main(void)
+{
+	unsigned int i, j;
+	bool disjoint = true, inside = true;
+	int saved_stderr;
+	FILE *devnull;
+
+	tap_plan(13);
+	for (i = 0; modules[i] != NULL; i++) {
+		const struct rtos_cfg *a = modules[i];
+
+		if (a->svc_count == 0 || a->svc_first < 1 || a->svc_first + (FN)a->svc_count - 1 > TNUM_FNCD)
+			inside = false;
+		for (j = 0; j < i; j++) {
+			const struct rtos_cfg *b = modules[j];
+
+			if (a->svc_first < b->svc_first + (FN)b->svc_count && b->svc_first < a->svc_first + (FN)a->svc_count)
+				disjoint = false;
+		}
+	}
+	ok(inside, "every module declares its range, inside 1..TNUM_FNCD (%d)", TNUM_FNCD);
+	ok(disjoint, "the ranges are disjoint");
+	is_int(PWM_FN_COMMAND, PWM_FN_FIRST, "a module's codes count from its FIRST");
+
+	is_int(rtos_host_boot(&app_cfg), E_OK, "a new module at 80..87 boots beside the six, none edited");
+	rtos_host_run_for(1000000);
+	is_int((int)echo_result, 4242, "and its service call works");
+	rtos_host_shutdown();
+
+	fflush(stderr);
+	saved_stderr = dup(2);
+	devnull = fopen("/dev/null", "w");
+	if (devnull != NULL)
+		dup2(fileno(devnull), 2);
+	is_int(boot_with(&overlap_cfg), E_OBJ, "a range overlapping another module's fails the boot");
+	ok(strstr(rtos_host_boot_error(), "\"overlapper\"") && strstr(rtos_host_boot_error(), "\"analog_hack\"") &&
+	   strstr(rtos_host_boot_error(), "20..23") && strstr(rtos_host_boot_error(), "16..31"),
+	   "naming both modules and ranges: %s", rtos_host_boot_error());
+	is_int(boot_with(&outside_cfg), E_PAR, "a DEF_SVC row outside its module's range fails");
+	ok(strstr(rtos_host_boot_error(), "fncd 90 outside") != NULL, "%s", rtos_host_boot_error());
+	is_int(boot_with(&beyond_cfg), E_PAR, "a range beyond TNUM_FNCD fails");
+	ok(strstr(rtos_host_boot_error(), "TNUM_FNCD") != NULL, "%s", rtos_host_boot_error());
+	is_int(boot_with(&squatter_cfg), E_OBJ, "a code another module defined fails");
+	ok(strstr(rtos_host_boot_error(), "already defined by config \"pwm_hack\"") != NULL, "naming the owner: %s",
+	   rtos_host_boot_error());
+	fflush(stderr);
+	dup2(saved_stderr, 2);
+	return tap_done();
+}
