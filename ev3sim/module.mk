@@ -6,3 +6,10 @@
 HOST_SRCS     += $(sort $(wildcard ev3sim/src/*.c))
 HOST_PROGRAMS += ev3sim
 ev3sim_SRCS   := ev3sim/main.c
+
+# `ev3sim balance` runs examples/gyroboy, an EV3RT app, built by the
+# configurator like any app (mk/ev3rt_examples.mk) under its own configuration
+# symbol and with every other symbol made local, so the library's copy never
+# meets a test's own gyroboy.
+EV3SIM_GYROBOY_OBJ = $(BUILD)/$(1)/ev3rt/ev3sim_gyroboy/ev3sim_gyroboy.lib.o
+$(foreach c,$(HOST_CONFIGS),$(eval HOST_LIB_EXTRA_$(c) += $(call EV3SIM_GYROBOY_OBJ,$(c))))

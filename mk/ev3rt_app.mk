@@ -12,6 +12,9 @@
 #   RUNNER  optional: objects with main() (booting ev3rt_app_cfg); the app is
 #           then also linked as the program $(BUILD)/CONFIG/ev3rt/NAME/NAME
 #
+# EV3RT_SYMBOL_NAME (optional, set before the call) names the configuration
+# symbol instead of ev3rt_app_cfg.
+#
 # It produces gen/kernel_cfg.h and gen/kernel_cfg.c (the ID macros, and the
 # tables as `const struct rtos_cfg ev3rt_app_cfg`), and NAME.o: one
 # relocatable object holding the app's objects, every ATT_MOD object relinked
@@ -29,6 +32,7 @@ $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg $$
 	@mkdir -p $$(@D)
 	$$(quiet) CFG $(2) $(3)
 	$(Q)$$(EV3CFG) -o $$(@D) --cpp '$$(CC_$(2)) -E' $$(EV3RT_INC_$(1)_$(2)) $(KERNEL_DEFS) \
+		$(if $(EV3RT_SYMBOL_$(1)),--symbol $(EV3RT_SYMBOL_$(1))) \
 		$$(addprefix --object ,$$(EV3RT_OBJS_$(1)_$(2))) $(3)
 
 $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c ;

@@ -77,3 +77,19 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
 
 TEST_SUITE_EXTRA += ev3sim-run-check
+
+# ev3sim's copy of examples/gyroboy (ev3sim/module.mk): the configuration as
+# ev3sim_gyroboy_cfg, the app's settings and counters renamed ev3sim_gyroboy_*,
+# everything else local.
+EV3RT_SYMBOL_ev3sim_gyroboy := ev3sim_gyroboy_cfg
+define ev3sim_gyroboy_rules
+$(call ev3rt_app,ev3sim_gyroboy,$(1),examples/gyroboy/app.cfg,examples/gyroboy/app.c)
+
+$(call EV3SIM_GYROBOY_OBJ,$(1)): $(BUILD)/$(1)/ev3rt/ev3sim_gyroboy/ev3sim_gyroboy.o
+	$$(quiet) OBJCOPY $(1) $$@
+	$(Q)$$(if $$(filter arm926-test,$(1)),arm-linux-gnueabi-objcopy,objcopy) \
+		--redefine-sym gyroboy_params=ev3sim_gyroboy_params \
+		--redefine-sym gyroboy_stats=ev3sim_gyroboy_stats \
+		-G ev3sim_gyroboy_cfg -G ev3sim_gyroboy_params -G ev3sim_gyroboy_stats $$< $$@
+endef
+$(foreach c,$(HOST_CONFIGS),$(eval $(call ev3sim_gyroboy_rules,$(c))))

@@ -2,6 +2,7 @@
 #
 # Components append to:
 #   HOST_SRCS      sources of libev3lx.a in every host configuration
+#   HOST_LIB_EXTRA_<config>  objects built otherwise that go into that library
 #   TEST_SUPPORT_SRCS  sources linked into every test (tests/lib/, with its headers)
 #   HOST_PROGRAMS  programs built in build/host/ (each NAME with NAME_SRCS)
 # Tests are every tests/**/test_*.c: one TAP program each, linked against
@@ -18,7 +19,7 @@ TESTS_$(1)     := $$(patsubst %.c,$(BUILD)/$(1)/%.t,$$(TEST_SRCS))
 
 $(call obj_rule,$(1),$(BUILD)/$(1))
 
-$$(LIB_$(1)): $$(OBJS_$(1))
+$$(LIB_$(1)): $$(OBJS_$(1)) $$(HOST_LIB_EXTRA_$(1))
 	@mkdir -p $$(@D)
 	$$(quiet) AR $(1) $$@
 	$(Q)rm -f $$@

@@ -9,16 +9,80 @@
 #include "rtos_host.h"
 #include "host_sim/scenario.h"
 #include "host_sim/devices/ev3_brick.h"
+#include "host_sim/devices/ev3_ui.h"
+#include "uart_hack.h"
 #include "ev3sim/apps.h"
 #include "ev3sim/balance_run.h"
+#include "ev3sim/brick_io.h"
 #include "ev3sim/serial_log.h"
+#include "../../examples/gyroboy/app.h"
 
 #define LEFT_PORT   0U      /* A */
 #define RIGHT_PORT  3U      /* D */
 #define GYRO_PORT   1U      /* input port 2 */
 #define CHUNK_NS    50000000ULL             /* run in 50 ms slices (progress, fall check) */
-#define DRAIN_NS    20000000ULL             /* after the run: the tasks finish their work */
+#define DRAIN_NS    40000000ULL             /* after BACK: the app stops, its tasks finish their work */
 #define PI 3.14159265358979323846
+
+/* The library's copy of examples/gyroboy (ev3sim/module.mk): its configuration,
+ * settings and counters under ev3sim's names. */
+extern const struct rtos_cfg ev3sim_gyroboy_cfg;
+extern struct gyroboy_params ev3sim_gyroboy_params;
+extern struct gyroboy_stats ev3sim_gyroboy_stats;
+
+/*
+ * The harness's own kernel-domain task: once d_uart is loaded it maps the
+ * driver's shared memory, so the summary can give the gyro port's link
+ * counters (what the app cannot see through EV3RT's API).
+ */
+#define LINK_WATCH_TSKID  (TNUM_TSKID - 2)
+#define LINK_WATCH_TRIES  200
+
+static const struct lms_uart_shm *uart_link;
+
+static void link_watch_task(intptr_t exinf)
+{
+	const struct lms_uart_shm *map = NULL;   /* on the task's stack */
+
+	(void)exinf;
+	for (int i = 0; i < LINK_WATCH_TRIES && uart_svc_map(&map) != E_OK; i++)
+		(void)dly_tsk(10);
+	uart_link = map;
+}
+
+static const struct rtos_task_cfg harness_tasks[] = {
+	{ LINK_WATCH_TSKID, TA_ACT, 0, link_watch_task, TMIN_TPRI, 16 * 1024, TDOM_KERNEL, "ev3sim link watch" },
+};
+static const struct rtos_cfg *const harness_includes[] = { &ev3sim_gyroboy_cfg, &brick_io_cfg, NULL };
+static const struct rtos_cfg harness_cfg = {
+	.name = "ev3sim_balance",
+	.tasks = RTOS_TABLE(harness_tasks),
+	.includes = harness_includes,
+};
+
+/* The app's counters and the gyro link's, as the summary reports them. */
+static struct ev3sim_balance_stats app_stats(void)
+{
+	const struct gyroboy_stats *a = &ev3sim_gyroboy_stats;
+	struct ev3sim_balance_stats s = {
+		.calibrated = a->calibrated, .gyro_offset_dps = a->gyro_offset_dps,
+		.tilt_est_deg = a->tilt_est_deg, .power = a->power, .releases = a->releases, .runs = a->runs,
+		.deadline_misses = a->deadline_misses, .overlaps = a->overlaps, .late_starts = a->late_starts,
+		.max_start_delay_ns = (uint64_t)a->max_start_delay_us * 1000U, .api_errors = a->api_errors,
+		.api_blocked = a->api_blocked, .logger_lines = a->logger_lines, .logger_skipped = a->logger_skipped,
+	};
+
+	if (uart_link) {
+		const struct lms_uart_port_ext *x = &uart_link->ext.port[GYRO_PORT];
+
+		s.gyro_frames = x->frames;
+		s.gyro_check_errors = x->check_errors;
+		s.gyro_size_errors = x->size_errors;
+		s.gyro_resyncs = x->resyncs;
+		s.gyro_reconnects = x->reconnects;
+	}
+	return s;
+}
 
 static struct recorder {
 	struct ev3sim_balance_result *res;
@@ -33,7 +97,7 @@ static struct recorder {
 static void observe(const struct ev3sim_robot_sample *s, void *ctx)
 {
 	struct ev3sim_balance_result *res = rec.res;
-	const struct ev3sim_balance_stats *app = ev3sim_balance_stats();
+	const struct gyroboy_stats *app = &ev3sim_gyroboy_stats;
 	double travel;
 
 	(void)ctx;
@@ -107,7 +171,7 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 {
 	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
 	struct ev3sim_push pushes[EV3SIM_MAX_PUSHES];
-	struct hs_scenario scn = { .rtos = &ev3sim_balance_app_cfg, .board = &board };
+	struct hs_scenario scn = { .rtos = &harness_cfg, .board = &board };
 	struct ev3sim_robot_cfg robot = {
 		.left_port = LEFT_PORT, .right_port = RIGHT_PORT, .gyro_port = GYRO_PORT,
 		.release_ns = EV3SIM_RELEASE_NS, .pushes = pushes, .observer = observe,
@@ -124,10 +188,14 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 		snprintf(err, errlen, "bad run options");
 		return E_PAR;
 	}
-	if (ev3sim_balance_setup(&o->app) != E_OK) {
+	if (o->app.logger_hz > EV3SIM_LOGGER_MAX_HZ) {
 		snprintf(err, errlen, "logger rate must be 0..%u Hz", EV3SIM_LOGGER_MAX_HZ);
 		return E_PAR;
 	}
+	ev3sim_gyroboy_params = (struct gyroboy_params){
+		.balancer = o->app.balancer, .logger_hz = o->app.logger_hz, .logger_above = o->app.logger_above,
+	};
+	uart_link = NULL;
 	if (serial_log_setup(o->log_baud ? o->log_baud : SERIAL_LOG_DEFAULT_BAUD, o->log_out) != E_OK) {
 		snprintf(err, errlen, "bad serial log baud");
 		return E_PAR;
@@ -146,6 +214,9 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 	scn.vcd_path = o->trace_path;
 
 	wall0 = ev3sim_wall_seconds();
+	if (brick_io_setup(NULL, NULL, err, errlen) != E_OK)
+		return E_SYS;
+	brick_io_serial_to_uart();
 	if (hs_sim_boot(&scn) != E_OK) {
 		snprintf(err, errlen, "boot failed: %s", rtos_host_boot_error());
 		return E_SYS;
@@ -157,6 +228,7 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 	}
 	if (ercd != E_OK) {
 		hs_sim_shutdown();
+		brick_io_teardown();
 		return ercd;
 	}
 	end = EV3SIM_RELEASE_NS + (uint64_t)llround(o->seconds * 1e9);
@@ -183,16 +255,18 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 	res->rms_tilt_deg = rec.samples ? sqrt(rec.sum_sq / (double)rec.samples) : 0.0;
 	res->wall_s = ev3sim_wall_seconds() - wall0;
 	res->sim_virtual_s = rtos_host_now() * 1e-9;
-	/* let the application's tasks finish their work (the logger its last line) before the
-	 * summary's counts are taken and the drivers unload */
-	ev3sim_balance_stop();
+	/* BACK ends the app: it stops its cyclic handlers and the motors, its tasks finish
+	 * their work (the logger its last line) before the summary's counts are taken and
+	 * the drivers unload */
+	(void)ev3_ui_button_set(EV3_UI_BUTTON_BACK, true);
 	hs_sim_run_for(DRAIN_NS);
-	res->app = *ev3sim_balance_stats();
+	res->app = app_stats();
 	log = serial_log_get_stats();
 	res->log_bytes = log->bytes;
 	res->log_spin_ms = log->spin_ns / 1000000U;
 	res->bugs = rtos_host_bug_count();
 	res->trace_failed = hs_sim_shutdown() != E_OK;
+	brick_io_teardown();
 	return E_OK;
 }
 

@@ -18,12 +18,14 @@
 #include <unistd.h>
 #include "ev3api_brick_io.h"
 #include "ev3sim/brick_io.h"
+#include "ev3sim/serial_log.h"
 
 static struct {
 	char *root;                         /* realpath of the card, NULL: none */
 	DIR *dirs[BRICK_IO_MAX_DIRS];
 	char *dir_paths[BRICK_IO_MAX_DIRS]; /* host paths of the open directories */
 	int serial_fd;                      /* -1: not connected */
+	bool serial_is_uart;                /* the port is serial_log's polled UART model */
 	bool serial_is_file;                /* a regular file: output only */
 } io = { .serial_fd = -1 };
 
@@ -41,6 +43,15 @@ void brick_io_teardown(void)
 	if (io.serial_fd >= 0)
 		close(io.serial_fd);
 	io.serial_fd = -1;
+	io.serial_is_uart = false;
+}
+
+void brick_io_serial_to_uart(void)
+{
+	if (io.serial_fd >= 0)
+		close(io.serial_fd);
+	io.serial_fd = -1;
+	io.serial_is_uart = true;
 }
 
 ER brick_io_setup(const char *sd_dir, const char *serial_path, char *err, size_t errlen)
@@ -302,7 +313,7 @@ static ER serial_check(intptr_t port, intptr_t p_buf, intptr_t p_len, MODE acces
 		return E_ID;
 	if (p_len < 0 || p_len > (intptr_t)BRICK_IO_MAX_XFER)
 		return E_PAR;
-	if (io.serial_fd < 0)
+	if (io.serial_fd < 0 && !io.serial_is_uart)
 		return E_OBJ;
 	if (p_len > 0 && ((void *)p_buf == NULL || prb_mem((void *)p_buf, (SIZE)p_len, TSK_SELF, access) != E_OK))
 		return E_MACV;
@@ -318,6 +329,8 @@ static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, i
 	(void)p4; (void)p5; (void)cdmid;
 	if ((ercd = serial_check(port, p_buf, p_len, TPM_READ)) != E_OK || p_len == 0)
 		return ercd;
+	if (io.serial_is_uart)
+		return serial_log_send((const char *)p_buf, (uint_t)p_len);
 	put = write(io.serial_fd, (const void *)p_buf, (size_t)p_len);
 	if (put < 0)
 		return errno == EAGAIN || errno == EWOULDBLOCK ? 0 : E_OBJ;
@@ -333,8 +346,8 @@ static ER_UINT svc_serial_read(intptr_t port, intptr_t p_buf, intptr_t p_len, in
 	(void)p4; (void)p5; (void)cdmid;
 	if ((ercd = serial_check(port, p_buf, p_len, TPM_WRITE)) != E_OK || p_len == 0)
 		return ercd;
-	if (io.serial_is_file)
-		return E_OBJ;       /* an output file: the far end says nothing */
+	if (io.serial_is_file || io.serial_is_uart)
+		return E_OBJ;       /* output only: the far end says nothing */
 	got = read(io.serial_fd, (void *)p_buf, (size_t)p_len);
 	if (got < 0)
 		return errno == EAGAIN || errno == EWOULDBLOCK ? 0 : E_OBJ;

@@ -52,6 +52,24 @@ static void wait_holding_register(void)
 	}
 }
 
+/* The polled write of buf[0..len) by the calling task (checked by the caller). */
+ER_UINT serial_log_send(const char *buf, uint_t len)
+{
+	for (uint_t i = 0; i < len; i++) {
+		uint64_t now;
+
+		wait_holding_register();
+		now = rtos_host_now();
+		port.line_free_at = (port.line_free_at > now ? port.line_free_at : now) + port.byte_ns;
+		rtos_host_consume(SERIAL_LOG_ACCESS_NS);
+		if (port.out)
+			fputc(buf[i], port.out);
+		port.stats.bytes++;
+	}
+	port.stats.writes++;
+	return (ER_UINT)len;
+}
+
 /* Extended service call: the polled write of buf[0..len). */
 static ER_UINT svc_write(intptr_t p_buf, intptr_t p_len, intptr_t p3, intptr_t p4, intptr_t p5,
 			 ID cdmid)
@@ -66,19 +84,7 @@ static ER_UINT svc_write(intptr_t p_buf, intptr_t p_len, intptr_t p3, intptr_t p
 		return E_PAR;
 	if (buf == NULL || prb_mem(buf, len, TSK_SELF, TPM_READ) != E_OK)
 		return E_MACV;
-	for (uint_t i = 0; i < len; i++) {
-		uint64_t now;
-
-		wait_holding_register();
-		now = rtos_host_now();
-		port.line_free_at = (port.line_free_at > now ? port.line_free_at : now) + port.byte_ns;
-		rtos_host_consume(SERIAL_LOG_ACCESS_NS);
-		if (port.out)
-			fputc(buf[i], port.out);
-		port.stats.bytes++;
-	}
-	port.stats.writes++;
-	return (ER_UINT)len;
+	return serial_log_send(buf, len);
 }
 
 static const struct rtos_svc_cfg serial_log_svcs[] = {

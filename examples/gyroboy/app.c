@@ -1,17 +1,25 @@
 /*
- * app.c — gyroboy: a two-wheeled robot balanced by EV3RT's API.
+ * app.c — gyroboy: a two-wheeled robot balanced by EV3RT's API, with a gyro
+ * logger beside it (the experiment `ev3sim balance` runs).
  *
  * Large motors on A (left) and D (right), gyro on port 2.  The main task
  * waits for the gyro, estimates its offset while the robot is held still,
- * then starts BALANCE_CYC: every 4 ms, in task context, one control step
- * reads the gyro rate and the wheel counts and sets the same power on both
- * motors with ev3_motor_set_power (a regulated speed on large motors).
+ * then starts BALANCE_CYC: every 4 ms it releases the balance task, whose
+ * control step reads the gyro rate and the wheel counts and sets the same
+ * power on both motors with ev3_motor_set_power (a regulated speed on large
+ * motors).  With gyroboy_params.logger_hz set, LOGGER_CYC wakes the logger
+ * task that often to write "<ms>,<rate>,<tilt cdeg>" lines to the default
+ * serial port; the app counts its deadline misses itself (get_utm).
  *
  * Control: state feedback on the body angle (the integrated, offset-corrected
  * rate), its rate, the wheel angle and the wheel rate.  The offset keeps being
  * tracked slowly: a balancing robot's mean body rate is zero, so a drifting
  * gyro bias is followed instead of being integrated into the angle.
+ *
+ * It stops when it falls over or when BACK is pressed.
  */
+#include <stdio.h>
+#include <string.h>
 #include "ev3api.h"
 #include "app.h"
 #include "kernel_cfg.h"
@@ -31,18 +39,45 @@
 #define OFFSET_TRACKING     0.0005f   /* per period: a time constant of 8 s */
 #define WHEEL_RATE_WINDOW   5         /* periods the wheel rate is averaged over */
 #define FALLEN_DEG          40.0f
+#define BLOCKED_US          200U      /* an API call longer than this waited somewhere */
+
+struct gyroboy_params gyroboy_params = { true, 0, false };
+struct gyroboy_stats gyroboy_stats;
 
 static float gyro_offset;           /* deg/s */
 static float tilt;                  /* body angle, deg */
 static float wheel_history[WHEEL_RATE_WINDOW];
 static int history_len, history_pos;
-static bool_t fallen;
+static bool_t fallen, stepping, released;
+static SYSUTM first_release_us;
+static uint32_t step_release;       /* the release the pending step answers (0 = the first) */
+static uint32_t logger_phase;       /* logger rate accumulator, in Hz-milliseconds */
+static FILE *serial;
+
+/* Counts a failed call of the control step, and one that took longer than BLOCKED_US. */
+static void count_call(ER ercd, SYSUTM since)
+{
+	SYSUTM now;
+
+	get_utm(&now);
+	if (ercd != E_OK)
+		gyroboy_stats.api_errors++;
+	if (now - since > BLOCKED_US)
+		gyroboy_stats.api_blocked++;
+}
 
 void main_task(intptr_t exinf)
 {
 	float sum = 0.0f;
 	int i;
 
+	/* a fresh start (a launcher may run the app again without reloading it) */
+	memset(&gyroboy_stats, 0, sizeof(gyroboy_stats));
+	fallen = stepping = released = false;
+	tilt = 0.0f;
+	history_len = history_pos = 0;
+	logger_phase = 0;
+	serial = NULL;
 	ev3_motor_config(LEFT_MOTOR, LARGE_MOTOR);
 	ev3_motor_config(RIGHT_MOTOR, LARGE_MOTOR);
 	ev3_sensor_config(GYRO, GYRO_SENSOR);
@@ -55,29 +90,72 @@ void main_task(intptr_t exinf)
 		tslp_tsk(CALIBRATION_GAP_MS);
 	}
 	gyro_offset = sum / CALIBRATION_SAMPLES;
+	gyroboy_stats.gyro_offset_dps = gyro_offset;
 	ev3_motor_reset_counts(LEFT_MOTOR);
 	ev3_motor_reset_counts(RIGHT_MOTOR);
+	gyroboy_stats.calibrated = true;
 	syslog(LOG_NOTICE, "gyroboy: gyro offset %d mdeg/s, balancing", (int)(gyro_offset * 1000.0f));
-	ev3_led_set_color(LED_GREEN);
-	ev3_sta_cyc(BALANCE_CYC);
 
-	while (!fallen)
-		tslp_tsk(100);
+	if (gyroboy_params.logger_hz > 0 && gyroboy_params.logger_hz <= LOGGER_MAX_HZ &&
+	    (serial = ev3_serial_open_file(EV3_SERIAL_DEFAULT)) != NULL) {
+		act_tsk(LOGGER_TASK);
+		/* after act_tsk: a dormant task's priority cannot be changed (E_OBJ) */
+		if (gyroboy_params.logger_above)
+			chg_pri(LOGGER_TASK, LOGGER_ABOVE_PRIORITY);
+		ev3_sta_cyc(LOGGER_CYC);
+	}
+	ev3_led_set_color(LED_GREEN);
+	if (gyroboy_params.balancer)
+		ev3_sta_cyc(BALANCE_CYC);
+
+	while (!fallen && !ev3_button_is_pressed(BACK_BUTTON))
+		tslp_tsk(10);
 	ev3_stp_cyc(BALANCE_CYC);
+	ev3_stp_cyc(LOGGER_CYC);
 	ev3_motor_stop(LEFT_MOTOR, false);
 	ev3_motor_stop(RIGHT_MOTOR, false);
 	ev3_led_set_color(LED_RED);
-	syslog(LOG_NOTICE, "gyroboy: fell over");
+	if (fallen)
+		syslog(LOG_NOTICE, "gyroboy: fell over");
 }
 
+/* Every 4 ms: releases the control step, counting a release while the last one is unfinished. */
 void balance_cyc(intptr_t exinf)
 {
+	if (fallen)
+		return;
+	if (!released) {
+		get_utm(&first_release_us);
+		released = true;
+	}
+	gyroboy_stats.releases++;
+	if (stepping) {
+		gyroboy_stats.overlaps++;
+		gyroboy_stats.deadline_misses++;
+		return;
+	}
+	stepping = true;
+	step_release = gyroboy_stats.releases - 1;
+	act_tsk(BALANCE_TASK);
+}
+
+/* One control step. */
+void balance_task(intptr_t exinf)
+{
 	const float dt = BALANCE_PERIOD_MS / 1000.0f;
+	/* the nominal release of this step: the cyclic's period from the first one */
+	SYSUTM release = first_release_us + step_release * BALANCE_PERIOD_MS * 1000U;
+	SYSUTM start, t0;
 	float rate, wheel, wheel_rate, u;
 	int power;
 
-	if (fallen)
-		return;
+	get_utm(&start);
+	if (start - release > gyroboy_stats.max_start_delay_us)
+		gyroboy_stats.max_start_delay_us = start - release;
+	if (start - release > START_BOUND_US) {
+		gyroboy_stats.late_starts++;
+		gyroboy_stats.deadline_misses++;
+	}
 	rate = ev3_gyro_sensor_get_rate(GYRO);
 	wheel = (ev3_motor_get_counts(LEFT_MOTOR) + ev3_motor_get_counts(RIGHT_MOTOR)) / 2.0f;
 
@@ -100,8 +178,41 @@ void balance_cyc(intptr_t exinf)
 	else if (u < -100.0f)
 		u = -100.0f;
 	power = (int)(u + (u < 0 ? -0.5f : 0.5f));
-	ev3_motor_set_power(LEFT_MOTOR, power);
-	ev3_motor_set_power(RIGHT_MOTOR, power);
+	get_utm(&t0);
+	count_call(ev3_motor_set_power(LEFT_MOTOR, power), t0);
+	get_utm(&t0);
+	count_call(ev3_motor_set_power(RIGHT_MOTOR, power), t0);
 	if (tilt > FALLEN_DEG || tilt < -FALLEN_DEG)
 		fallen = true;
+	gyroboy_stats.power = power;
+	gyroboy_stats.tilt_est_deg = tilt;
+	gyroboy_stats.gyro_offset_dps = gyro_offset;
+	gyroboy_stats.runs++;
+	stepping = false;
+}
+
+/* Every 1 ms: wakes the logger logger_hz times a second. */
+void logger_cyc(intptr_t exinf)
+{
+	logger_phase += gyroboy_params.logger_hz;
+	if (logger_phase < 1000U)
+		return;
+	logger_phase -= 1000U;
+	if (wup_tsk(LOGGER_TASK) == E_QOVR)
+		gyroboy_stats.logger_skipped++;
+}
+
+/* One line per wakeup: "<ms>,<rate deg/s>,<tilt estimate cdeg>\r\n". */
+void logger_task(intptr_t exinf)
+{
+	SYSTIM now;
+
+	for (;;) {
+		if (slp_tsk() != E_OK)
+			continue;
+		get_tim(&now);
+		if (fprintf(serial, "%lu,%d,%ld\r\n", (unsigned long)now, ev3_gyro_sensor_get_rate(GYRO),
+			    (long)(gyroboy_stats.tilt_est_deg * 100.0f)) > 0 && fflush(serial) == 0)
+			gyroboy_stats.logger_lines++;
+	}
 }

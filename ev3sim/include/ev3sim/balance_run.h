@@ -1,9 +1,11 @@
 /*
  * balance_run.h — one run of the balancing experiment: boots the simulated
- * brick with the balance application, plugs in the robot (large motors on A
- * and D, gyro on port 2), holds it upright while the application calibrates,
- * lets go at EV3SIM_RELEASE_NS and runs for the requested virtual time or
- * until the robot falls.  Host only.
+ * brick with the EV3RT app examples/gyroboy (a 4 ms control step and a gyro
+ * logger on the default serial port, which is the simulated polled UART of
+ * serial_log.h), plugs in the robot (large motors on A and D, gyro on port
+ * 2), holds it upright while the app calibrates, lets go at
+ * EV3SIM_RELEASE_NS and runs for the requested virtual time or until the
+ * robot falls; then presses BACK, which ends the app.  Host only.
  *
  * Times in options (pushes, faults) and in results count from the release.
  */
@@ -14,11 +16,34 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
-#include "ev3sim/balance_app.h"
+#include "kernel.h"
 #include "ev3sim/fault_spec.h"
 #include "ev3sim/robot.h"
 
 #define EV3SIM_RELEASE_NS     3000000000ULL   /* the hand lets go 3 s after boot */
+#define EV3SIM_LOGGER_MAX_HZ  1000U
+
+/* What the app does (its settings, set before boot). */
+struct ev3sim_balance_cfg {
+	bool balancer;              /* false: calibrate, never drive (negative control) */
+	unsigned logger_hz;         /* 0..EV3SIM_LOGGER_MAX_HZ; 0: no logger */
+	bool logger_above;          /* the logger's priority above the balancer's */
+};
+
+/* What the app counted, and d_uart's link counters of the gyro's port (lms_uart.h). */
+struct ev3sim_balance_stats {
+	bool calibrated;
+	double gyro_offset_dps, tilt_est_deg;
+	int power;
+	uint32_t releases, runs, deadline_misses, overlaps, late_starts;
+	uint64_t max_start_delay_ns;
+	uint32_t api_errors, api_blocked, logger_lines, logger_skipped;
+	uint32_t gyro_frames;       /* valid DATA frames */
+	uint32_t gyro_check_errors; /* losses of sync on a bad check byte */
+	uint32_t gyro_size_errors;  /* losses of sync on a header of impossible length */
+	uint32_t gyro_resyncs;      /* losses of frame sync, each ended by the next valid frame */
+	uint32_t gyro_reconnects;   /* handshakes restarted after errors, unplug or silence */
+};
 #define EV3SIM_MAX_FAULTS     16U
 #define EV3SIM_MAX_SECONDS    3600.0
 

@@ -25,6 +25,11 @@ extern const struct rtos_cfg brick_io_cfg;
  * be opened.  Replaces an earlier setup. */
 ER brick_io_setup(const char *sd_dir, const char *serial_path, char *err, size_t errlen);
 
+/* After brick_io_setup: the serial port is serial_log's polled UART model
+ * (serial_log.h), output only, so each byte a task writes costs it the
+ * port's time as on the brick. */
+void brick_io_serial_to_uart(void);
+
 /* Closes what brick_io_setup opened (directories the app left open too). */
 void brick_io_teardown(void);
 

@@ -43,6 +43,11 @@ struct serial_log_stats {
 /* Counters since serial_log_setup. */
 const struct serial_log_stats *serial_log_get_stats(void);
 
+/* The polled write of len bytes by the calling task, as the service call
+ * does after its checks (brick_io's serial port uses it when it is this
+ * port, brick_io_serial_to_uart). */
+ER_UINT serial_log_send(const char *buf, uint_t len);
+
 /* Writes len (1..SERIAL_LOG_MAX_WRITE) bytes; returns len once the last one
  * is in the port (not yet on the wire).  E_CTX outside a task, E_PAR for a
  * bad length, E_MACV for a buffer the caller may not read. */

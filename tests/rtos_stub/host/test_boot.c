@@ -93,7 +93,7 @@ static const struct bad_case cases[] = {
 	{ CFG1(ints, int_dup), E_OBJ, "intno 30 configured twice" },
 	{ CFG1(ints, int_tick), E_OBJ, "kernel tick" },
 	{ CFG1(isrs, isr_unc), E_OBJ, "intno 31 has no CFG_INT" },
-	{ CFG1(svcs, svc_dup), E_OBJ, "fncd 4 defined twice" },
+	{ CFG1(svcs, svc_dup), E_OBJ, "fncd 4 already defined by config \"bad\"" },
 	{ CFG1(svcs, svc_rng), E_PAR, "fncd 0 out of range" },
 	{ CFG1(mems, mem_dom), E_ID, "ATT_MEM[0]" },
 	{ CFG1(inis, ini_null), E_PAR, "ATT_INI[0]" },
