@@ -80,6 +80,9 @@ TEST_SUITE_EXTRA_DEPS += $(PROD_TEST_BINS)
 .PHONY: bench bench-quick
 bench: deps-check $(BENCH_DEPS)
 	@bash bench/run_bench.sh full $(BENCH_OUT) $(BUILD)
+	@bash bench/readme_table.sh $(BENCH_OUT)/bench.csv > $(BENCH_OUT)/readme.md
+	@bash bench/update_readme.sh README.md $(BENCH_OUT)/readme.md
+	@echo "bench: README.md's table regenerated from $(BENCH_OUT)/bench.csv"
 
 bench-quick: deps-check $(BENCH_DEPS)
 	@bash bench/run_bench.sh quick $(BENCH_OUT)/quick $(BUILD)
