@@ -294,9 +294,10 @@ static const struct hs_reg gpio_regs[] = {
 	PAIR_REG("INTSTAT",      0x24, HS_W1C),
 };
 
-/* EV3 pins Linux muxes to GPIO at boot (the port pin tables of LEGO's d_pwm.c/d_analog.c). */
+/* EV3 pins Linux muxes to GPIO at boot (the port pin tables of LEGO's d_pwm.c/d_analog.c,
+ * and the I2C clock pads of input ports 3 and 4, which no UART shares). */
 static const uint8_t ev3_gpio_pins[] = {
-	HS_GPIO(1, 14), HS_GPIO(1, 15), HS_GPIO(2, 1), HS_GPIO(2, 2), HS_GPIO(2, 5), HS_GPIO(2, 8),
+	HS_GPIO(1, 11), HS_GPIO(1, 12), HS_GPIO(1, 14), HS_GPIO(1, 15), HS_GPIO(2, 1), HS_GPIO(2, 2), HS_GPIO(2, 5), HS_GPIO(2, 8),
 	HS_GPIO(2, 9), HS_GPIO(3, 6), HS_GPIO(3, 8), HS_GPIO(3, 14), HS_GPIO(3, 15), HS_GPIO(5, 3),
 	HS_GPIO(5, 4), HS_GPIO(5, 8), HS_GPIO(5, 9), HS_GPIO(5, 10), HS_GPIO(5, 11), HS_GPIO(5, 13),
 	HS_GPIO(5, 15), HS_GPIO(6, 4), HS_GPIO(6, 8), HS_GPIO(6, 9),
