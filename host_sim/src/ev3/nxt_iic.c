@@ -208,9 +208,8 @@ static void on_start(struct bus *b)
 	b->stats.starts++;
 	if (b->in_transaction)
 		b->stats.repeated_starts++;
-	if (b->state == SL_ADDRESS || b->state == SL_WRITE || b->state == SL_READ)
-		if (b->bits)
-			b->stats.aborted_bytes++;
+	if ((b->state == SL_ADDRESS || b->state == SL_WRITE) && b->bits > 1)
+		b->stats.aborted_bytes++;
 	b->in_transaction = true;
 	slave_pull(b, false);
 	b->byte_in_reg = 0;
@@ -223,7 +222,7 @@ static void on_start(struct bus *b)
 static void on_stop(struct bus *b)
 {
 	b->stats.stops++;
-	if ((b->state == SL_ADDRESS || b->state == SL_WRITE) && b->bits)
+	if ((b->state == SL_ADDRESS || b->state == SL_WRITE) && b->bits > 1)
 		b->stats.aborted_bytes++;
 	b->in_transaction = false;
 	slave_pull(b, false);
