@@ -205,6 +205,7 @@ struct iic_port {
 	bool identified;
 	struct iic_bus bus;
 	/* IIC_SET */
+	bool configured;	/* IIC_SET given: go on from the ID to setup and polling */
 	u16 time_ms;
 	u8 setup_lng, poll_lng;
 	u8 setup[LMS_IIC_STRING_SIZE], poll[LMS_IIC_STRING_SIZE];
@@ -732,7 +733,9 @@ static void port_tick(unsigned int index)
 		port_identified(index, p);
 		break;
 	case LMS_IIC_STATE_SETUP_WAIT:
-		if (p->req_state == REQ_PENDING) {
+		if (p->configured) {
+			port_enter(p, LMS_IIC_STATE_SETUP_START);
+		} else if (p->req_state == REQ_PENDING) {
 			port_enter(p, LMS_IIC_STATE_WAITING);
 		} else if (p->timer >= SETUP_WAIT_TICKS) {
 			/* nobody took the sensor: start over, it may have been exchanged */
@@ -796,6 +799,7 @@ static void port_tick(unsigned int index)
 		shm->status[index] = 0;
 		shm->changed[index] = 0;
 		p->identified = false;
+		p->configured = false;
 		port_enter(p, LMS_IIC_STATE_IDLE);
 		break;
 	default:
@@ -890,7 +894,9 @@ static long iic_set(void __user *argp)
 	unpack_string(p->setup, s.setup_string, p->setup_lng);
 	unpack_string(p->poll, s.poll_string, p->poll_lng);
 	p->read_lng = s.read_lng;
-	if (p->state >= LMS_IIC_STATE_TEMP_START && p->state <= LMS_IIC_STATE_REPEAT) {
+	p->configured = true;
+	/* once probed, at once; while probing, SETUP_WAIT goes on to it */
+	if (p->state >= LMS_IIC_STATE_SETUP_WAIT && p->state <= LMS_IIC_STATE_REPEAT) {
 		bus_abort(s.port);
 		iic.shm->status[s.port] &= ~LMS_IIC_DATA_READY;
 		port_enter(p, LMS_IIC_STATE_SETUP_START);
