@@ -18,8 +18,9 @@ LIB_$(1)       := $(BUILD)/$(1)/libev3lx.a
 TESTS_$(1)     := $$(patsubst %.c,$(BUILD)/$(1)/%.t,$$(TEST_SRCS))
 
 $(call obj_rule,$(1),$(BUILD)/$(1))
+$(call module_link_rule,$(1),$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(HOST_SRCS)))
 
-$$(LIB_$(1)): $$(OBJS_$(1)) $$(HOST_LIB_EXTRA_$(1))
+$$(LIB_$(1)): $$(call module_objs,$$(OBJS_$(1))) $$(HOST_LIB_EXTRA_$(1))
 	@mkdir -p $$(@D)
 	$$(quiet) AR $(1) $$@
 	$(Q)rm -f $$@

@@ -19,7 +19,6 @@
 #include <linux_compat/report.h>
 #include <kernel.h>
 #include <linux_compat/platform.h>
-#include <stdio.h>
 
 #define LX_IRQ_NEST_MAX	16
 

@@ -155,7 +155,7 @@ void lx_waiter_init(struct lx_waiter *w)
 uint64_t lx_deadline_after_ms(long ms)
 {
 	if (ms < 0)
-		return UINT64_MAX;
+		return U64_MAX;
 	return lx_clock_now_ns() + (uint64_t)ms * 1000000U;
 }
 
@@ -170,7 +170,7 @@ int lx_waiter_sleep(struct lx_waiter *w, uint64_t deadline_ns)
 	for (;;) {
 		if (w->woken)
 			return 0;
-		if (deadline_ns == UINT64_MAX) {
+		if (deadline_ns == U64_MAX) {
 			er = slp_tsk();
 		} else {
 			now = lx_clock_now_ns();

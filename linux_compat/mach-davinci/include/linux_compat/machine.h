@@ -12,7 +12,7 @@
 #ifndef _LINUX_COMPAT_MACHINE_H
 #define _LINUX_COMPAT_MACHINE_H
 
-#include <stdint.h>
+#include <linux/types.h>
 #include <mach/irqs.h>
 #include <linux_compat/irq.h>
 
