@@ -22,6 +22,7 @@
 
 #include "kernel.h"
 #include "rtos_cfg.h"
+#include "hack_interface.h"
 #include "lms_iic.h"
 
 /* The function codes this module owns: IIC_FN_FIRST .. + IIC_FN_COUNT - 1
@@ -42,7 +43,7 @@
 #define IIC_FN_STATE     (IIC_FN_FIRST + 6)  /* (uint_t port): the port's LMS_IIC_STATE_* */
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
-extern const struct rtos_cfg iic_hack_cfg;
+extern HACK_INTERFACE const struct rtos_cfg iic_hack_cfg;
 
 /* Hands input port (0..3) to d_iic (mode: a changed mode re-sends the setup string). */
 static inline ER iic_svc_start(uint_t port, uint_t mode)
