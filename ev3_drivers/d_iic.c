@@ -371,6 +371,25 @@ static void bus_abort(unsigned int port)
 	sda_set(port, true);
 }
 
+/* Drops the port's transaction; a SETUP request that was on the bus is sent again. */
+static void port_abort(unsigned int port)
+{
+	struct iic_port *p = &iic.port[port];
+
+	bus_abort(port);
+	if (p->request && p->req_state == REQ_RUNNING)
+		p->req_state = REQ_PENDING;
+	p->request = false;
+}
+
+/* Forgets a SETUP request (the port starts or stops). */
+static void port_forget_request(struct iic_port *p)
+{
+	p->req_state = REQ_NONE;
+	p->request = false;
+	p->req_answered = false;
+}
+
 /* What follows a byte written and ACKed. */
 static enum bus_step bus_after_write(struct iic_bus *b)
 {
@@ -662,6 +681,7 @@ static void port_tick(unsigned int index)
 		shm->repeat[index][shm->actual[index]] += PORT_TICK_MS;
 	switch (p->state) {
 	case LMS_IIC_STATE_INIT:
+		port_forget_request(p);
 		p->manufacturer[0] = p->sensor_type[0] = '\0';
 		p->identified = false;
 		shm->changed[index] = 0;
@@ -795,6 +815,7 @@ static void port_tick(unsigned int index)
 	}
 	case LMS_IIC_STATE_EXIT:
 		bus_abort(index);
+		port_forget_request(p);
 		iic_port_disable(index);
 		shm->status[index] = 0;
 		shm->changed[index] = 0;
@@ -841,7 +862,7 @@ static long iic_set_conn(void __user *argp)
 			} else if (p->identified && p->mode != (u8)dc.mode[i]) {
 				p->mode = (u8)dc.mode[i];
 				if (p->state >= LMS_IIC_STATE_SETUP_WAIT) {
-					bus_abort(i);
+					port_abort(i);
 					port_enter(p, LMS_IIC_STATE_SETUP_START);
 				}
 			}
@@ -897,7 +918,7 @@ static long iic_set(void __user *argp)
 	p->configured = true;
 	/* once probed, at once; while probing, SETUP_WAIT goes on to it */
 	if (p->state >= LMS_IIC_STATE_SETUP_WAIT && p->state <= LMS_IIC_STATE_REPEAT) {
-		bus_abort(s.port);
+		port_abort(s.port);
 		iic.shm->status[s.port] &= ~LMS_IIC_DATA_READY;
 		port_enter(p, LMS_IIC_STATE_SETUP_START);
 	}

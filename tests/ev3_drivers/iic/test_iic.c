@@ -102,6 +102,19 @@ static void test_setup(void)
 	ok((int8_t)d.rd_data[1] == -2 && (int8_t)d.rd_data[0] == 1, "Y upper then X upper (reversed)");
 	d.wr_data[0] = 0x22;
 	is_int(it_setup(&d, 500), LMS_IIC_FAIL, "nobody at 0x22: FAIL");
+	/* a request on the bus when IIC_SET restarts the port's setup is sent again */
+	d.wr_data[0] = 0x01;
+	d.wr_data[1] = 0x08;
+	d.rd_lng = -8;
+	ok(iic_svc_setup(&d) == E_OK && d.result == LMS_IIC_BUSY, "request latched");
+	dly_tsk(4);
+	{
+		struct lms_iic_str s = it_poll(0, 0, 0, 0x01420000U, 2, -6, 100);
+
+		ok(iic_svc_set(&s) == E_OK, "IIC_SET while the request is under way");
+	}
+	is_int(it_setup(&d, 500), LMS_IIC_OK, "the request still completes");
+	ok(!memcmp(d.rd_data, "HITECHNC", 8), "with its answer");
 }
 
 static void test_errors(void)
@@ -135,7 +148,24 @@ static void test_unplug(void)
 	ok(ev3_attach_nxt_iic(0, NXT_IIC_HT_COLOR, &(struct nxt_iic_scene){ .color_number = 9, .rgb = { 1, 2, 3 } }) == E_OK,
 	   "a HiTechnic colour sensor plugged in instead");
 	ok(it_wait_conn(0, LMS_CONN_NXT_IIC, 1000), "detected again");
-	ok(iic_svc_start(0, 0) == E_OK && it_wait_state(0, LMS_IIC_STATE_SETUP_WAIT, 200), "re-probed");
+	{
+		struct lms_iic_dat d;
+
+		memset(&d, 0, sizeof(d));
+		d.port = 0;
+		d.repeat = 1;
+		d.wr_lng = 2;
+		d.wr_data[0] = 0x01;
+		d.wr_data[1] = 0x08;
+		d.rd_lng = -8;
+		ok(iic_svc_start(0, 0) == E_OK && iic_svc_setup(&d) == E_OK && d.result == LMS_IIC_BUSY,
+		   "started, a request latched at once");
+		ok(iic_svc_stop(0) == E_OK && iic_svc_start(0, 0) == E_OK, "stopped and started again");
+		is_int(it_setup(&d, 500), LMS_IIC_OK, "a new request after the restart completes (the old one forgotten)");
+		ok(!memcmp(d.rd_data, "HiTechnc", 8), "read from the new sensor");
+	}
+	dly_tsk(5);
+	ok(iic_svc_state(0) == LMS_IIC_STATE_WAITING, "probed, then the request ran (state WAITING)");
 	memset(&s, 0, sizeof(s));
 	iic_svc_type_info(0, &s);
 	is_str(s.manufacturer, "HiTechnc", "manufacturer HiTechnc");
@@ -163,7 +193,7 @@ static void body(void)
 
 int main(void)
 {
-	tap_plan(58);
+	tap_plan(66);
 	ok(it_run(body, 1), "test body finished");
 	return tap_done();
 }
