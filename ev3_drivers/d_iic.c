@@ -18,7 +18,9 @@
  *   after an ACKed byte the master holds SCL low for 5 more ticks (3 after a byte it read);
  *   write->read   not a repeated START: SDA low, SCL high, SDA high (a STOP), one more SCL
  *                 low/high period with SDA high, then a START and the address with R = 1;
- *   the end       SDA low with SCL low, SCL high, SDA released: a STOP.
+ *   the end       SDA low with SCL low, SCL high, SDA released: a STOP;
+ *   bus clear     a START finding SDA held low (a slave still sending after an aborted
+ *                 transaction) first gives up to 9 clocks until the slave lets go.
  * SCL is driven push-pull; SDA is open-drain (driven low, or released to the sensor's pull-up),
  * so a port with nothing on it never reads as ACK.
  *
@@ -127,6 +129,7 @@ MODULE_PARM_DESC(timer_irq, "IRQ of Timer64P1's TINT34 (default AINTC 24)");
 #define ID_LENGTH		8
 #define WRITE_HOLD_TICKS	5	/* SCL low after an ACKed byte written */
 #define READ_HOLD_TICKS		3	/* SCL low after a byte read */
+#define RECOVER_CLOCKS		9	/* bus clear: clocks until a slave lets SDA go */
 
 struct iic_pins {
 	unsigned int buffer;	/* TX buffer enable, low = on */
@@ -149,6 +152,7 @@ static const struct iic_pins iic_pins[LMS_IIC_PORTS] = {
 enum bus_step {
 	BUS_IDLE,
 	BUS_START,		/* both lines high */
+	BUS_RECOVER,		/* SCL low: one clock for a slave holding SDA */
 	BUS_START_SDA,		/* SDA falls with SCL high: START */
 	BUS_BIT_LOW,		/* SCL low, next data bit on SDA (or SDA released to read) */
 	BUS_BIT_HIGH,		/* SCL high: the bit is valid */
@@ -182,6 +186,7 @@ struct iic_bus {
 	u8 bit;			/* bits of the current byte done */
 	u8 shift;		/* the byte being sent or received */
 	u8 hold;		/* ticks left in BUS_HOLD */
+	u8 recover;		/* bus-clear clocks given before this START */
 	bool reading;		/* the address went with R = 1 */
 	bool addr_byte;		/* the byte on the bus is the address */
 	u8 data[LMS_IIC_DATA_SIZE];	/* written bytes; the read bytes overwrite them from 0 */
@@ -416,7 +421,18 @@ static void bus_tick(unsigned int port)
 	case BUS_START:
 		scl_set(port, true);
 		sda_set(port, true);
+		if (!pin_level(iic_pins[port].sda) && b->recover < RECOVER_CLOCKS) {
+			/* a slave still holds SDA (an aborted read): clock it out (bus clear) */
+			b->recover++;
+			b->step = BUS_RECOVER;
+			break;
+		}
+		b->recover = 0;
 		b->step = BUS_START_SDA;
+		break;
+	case BUS_RECOVER:
+		scl_set(port, false);
+		b->step = BUS_START;
 		break;
 	case BUS_START_SDA:
 		sda_set(port, false);
@@ -681,6 +697,7 @@ static void port_tick(unsigned int index)
 		shm->repeat[index][shm->actual[index]] += PORT_TICK_MS;
 	switch (p->state) {
 	case LMS_IIC_STATE_INIT:
+		bus_abort(index);
 		port_forget_request(p);
 		p->manufacturer[0] = p->sensor_type[0] = '\0';
 		p->identified = false;
@@ -821,6 +838,7 @@ static void port_tick(unsigned int index)
 		shm->changed[index] = 0;
 		p->identified = false;
 		p->configured = false;
+		p->setup_lng = p->poll_lng = 0;
 		port_enter(p, LMS_IIC_STATE_IDLE);
 		break;
 	default:
