@@ -38,6 +38,8 @@ int lx_current_tskid(void);
 void lx_wake_task(int tskid);
 /* Delivers wakeups deferred while locked (the tick ISR; the irqrestore paths). */
 void lx_deferred_wakeups_run(void);
+/* True while a deferred wakeup waits (cheap test before lx_deferred_wakeups_run). */
+extern bool lx_deferred_wake_pending;
 /* Forgets deferred wakeups and bottom-half state (boot). */
 void lx_sched_reset(void);
 
