@@ -25,6 +25,7 @@ static void (*it_body)(void);
 static bool it_done;
 static const struct lms_iic *it_shm;
 static const struct lms_analog *it_analog;
+static ID it_domain = TDOM_KERNEL;	/* the test task's protection domain */
 
 static void it_task(intptr_t exinf)
 {
@@ -42,11 +43,11 @@ static void it_task(intptr_t exinf)
 	it_done = true;
 }
 
-/* Boots the brick with seed, runs body in a kernel-domain task, shuts down. */
+/* Boots the brick with seed, runs body in a task of it_domain, shuts down. */
 static inline bool it_run(void (*body)(void), uint64_t seed)
 {
 	const struct rtos_task_cfg task = {
-		IT_TASK_ID, TA_ACT, 0, it_task, 8, IT_STACK, TDOM_KERNEL, "iic_test",
+		IT_TASK_ID, TA_ACT, 0, it_task, 8, IT_STACK, it_domain, "iic_test",
 	};
 	static const struct rtos_cfg *const includes[] = {
 		&linux_compat_cfg, &analog_hack_cfg, &iic_hack_cfg, NULL,
