@@ -184,6 +184,27 @@ static void test_unplug(void)
 	is_int(st.stops - before.stops, st.starts - before.starts, "every START ended by a STOP");
 }
 
+/* Probed but not taken by user space within 1 s: the port is reset and probed again. */
+static void test_setup_wait_restart(void)
+{
+	struct nxt_iic_stats a, b;
+	bool restarted = false;
+
+	ok(ev3_attach_nxt_iic(2, NXT_IIC_HT_COLOR_V2, NULL) == E_OK && iic_svc_start(2, 0) == E_OK &&
+	   it_wait_state(2, LMS_IIC_STATE_SETUP_WAIT, 200), "port 3 probed, nobody reacts");
+	ev3_nxt_iic_stats(2, &a);
+	for (unsigned ms = 0; ms < 1100 && !restarted; ms++) {
+		restarted = iic_svc_state(2) == LMS_IIC_STATE_RESTART;
+		dly_tsk(1);
+	}
+	ok(restarted, "reset after 1 s (RESTART)");
+	ok(it_wait_state(2, LMS_IIC_STATE_SETUP_WAIT, 200), "probed again");
+	ev3_nxt_iic_stats(2, &b);
+	in_range(b.address_acks - a.address_acks, 4, 8, "the ID strings were read again (%u addresses ACKed)",
+		 b.address_acks - a.address_acks);
+	ok(iic_svc_stop(2) == E_OK, "port 3 stopped");
+}
+
 static void body(void)
 {
 	test_detect_and_probe();
@@ -191,12 +212,13 @@ static void body(void)
 	test_temperature();
 	test_setup();
 	test_errors();
+	test_setup_wait_restart();
 	test_unplug();
 }
 
 int main(void)
 {
-	tap_plan(67);
+	tap_plan(72);
 	ok(it_run(body, 1), "test body finished");
 	return tap_done();
 }
