@@ -24,7 +24,8 @@ static void test_detect_and_probe(void)
 	t0 = rtos_host_now();
 	ok(iic_svc_start(0, 0) == E_OK, "port 1 started");
 	ok(it_wait_state(0, LMS_IIC_STATE_SETUP_WAIT, 500), "probed: waiting for setup");
-	in_range((rtos_host_now() - t0) / IT_MS, 10, 100, "probe took 10..100 ms (temperature try, then 0x01)");
+	in_range((rtos_host_now() - t0) / IT_MS, 10, 100, "probe took %.1f ms (temperature try, then 0x01)",
+		 (double)(rtos_host_now() - t0) / (double)IT_MS);
 	ok(it_shm->changed[0] == 1 && (it_shm->status[0] & LMS_IIC_PORT_CHANGED), "changed flagged");
 	memset(&s, 0, sizeof(s));
 	ok(iic_svc_type_info(0, &s) == E_OK, "type info");
@@ -48,6 +49,23 @@ static void test_poll(void)
 	is_int(v[0] * 4 + (v[3] & 3), 100, "X");
 	is_int(v[1] * 4 + (v[4] & 3), -200, "Y");
 	is_int(v[2] * 4 + (v[5] & 3), 300, "Z");
+	{
+		/* one poll's bus time: its first START to its second STOP (write, turnaround, read) */
+		struct nxt_iic_stats st0, st1;
+		uint64_t t_start = 0, t_stop = 0;
+
+		ev3_nxt_iic_stats(0, &st0);
+		while (!t_stop) {
+			ev3_nxt_iic_stats(0, &st1);
+			if (!t_start && st1.starts > st0.starts)
+				t_start = rtos_host_now();
+			if (t_start && st1.stops >= st0.stops + 2)
+				t_stop = rtos_host_now();
+			dly_tsk(1);
+		}
+		in_range((t_stop - t_start) / 100000U, 80, 130, "a poll of 6 bytes takes %.1f ms on the bus (1 ms steps)",
+			 (double)(t_stop - t_start) / (double)IT_MS);
+	}
 	first = it_shm->actual[0];
 	ev3_set_nxt_iic_scene(0, &accel);
 	dly_tsk(250);
@@ -218,7 +236,7 @@ static void body(void)
 
 int main(void)
 {
-	tap_plan(72);
+	tap_plan(73);
 	ok(it_run(body, 1), "test body finished");
 	return tap_done();
 }
