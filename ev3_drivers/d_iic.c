@@ -831,15 +831,7 @@ static void port_tick(unsigned int index)
 		break;
 	}
 	case LMS_IIC_STATE_EXIT:
-		bus_abort(index);
-		port_forget_request(p);
-		iic_port_disable(index);
-		shm->status[index] = 0;
-		shm->changed[index] = 0;
-		p->identified = false;
-		p->configured = false;
-		p->setup_lng = p->poll_lng = 0;
-		port_enter(p, LMS_IIC_STATE_IDLE);
+		port_enter(p, LMS_IIC_STATE_IDLE);	/* port_stop() did the work */
 		break;
 	default:
 		break;
@@ -860,6 +852,25 @@ static enum hrtimer_restart iic_port_timer(struct hrtimer *t)
 }
 
 /* ---- ioctls ---- */
+
+/*
+ * Gives a port's pins back at once, so that the driver taking the port next (d_uart drives the
+ * same TX buffer) never sees them changed after it has started; the tick then goes to IDLE.
+ */
+static void port_stop(unsigned int index)
+{
+	struct iic_port *p = &iic.port[index];
+
+	bus_abort(index);
+	port_forget_request(p);
+	iic_port_disable(index);
+	iic.shm->status[index] = 0;
+	iic.shm->changed[index] = 0;
+	p->identified = false;
+	p->configured = false;
+	p->setup_lng = p->poll_lng = 0;
+	port_enter(p, LMS_IIC_STATE_EXIT);
+}
 
 static long iic_set_conn(void __user *argp)
 {
@@ -884,8 +895,8 @@ static long iic_set_conn(void __user *argp)
 					port_enter(p, LMS_IIC_STATE_SETUP_START);
 				}
 			}
-		} else if (p->state != LMS_IIC_STATE_IDLE) {
-			port_enter(p, LMS_IIC_STATE_EXIT);
+		} else if (p->state != LMS_IIC_STATE_IDLE && p->state != LMS_IIC_STATE_EXIT) {
+			port_stop(i);
 		}
 	}
 	spin_unlock_irqrestore(&iic.lock, flags);

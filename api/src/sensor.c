@@ -117,14 +117,15 @@ ER ev3lx_sensor_config(sensor_port_t port, sensor_type_t type)
 	if (ercd != E_OK)
 		return ercd;
 	old = sensor_type[port];
-	ercd = api_iic_config((unsigned)port, (int)old, (int)type);
-	if (ercd != E_OK)
-		return ercd;
+	/* The driver leaving the port first: d_uart and d_iic both drive its TX buffer. */
 	if (lms_type_of(old) != 0 && lms_type_of(type) == 0) {
 		ercd = uart_svc_stop((uint_t)port);
 		if (ercd != E_OK)
 			return ercd;
 	}
+	ercd = api_iic_config((unsigned)port, (int)old, (int)type);
+	if (ercd != E_OK)
+		return ercd;
 	if (lms_type_of(type) != 0) {
 		/* Mode 0 first; the readers select what they need. */
 		ercd = uart_svc_set_mode((uint_t)port, 0);

@@ -73,11 +73,23 @@ static void body(void)
 	dly_tsk(5);
 	is_int(iic_svc_state(0), LMS_IIC_STATE_IDLE, "d_iic gave the port back");
 	is_int(ev3lx_ht_nxt_accel_sensor_measure(EV3_PORT_1, axes), E_OBJ, "not an accelerometer any more: E_OBJ");
+
+	/* a UART sensor's port becomes an I2C port and back: the TX buffer changes hands */
+	ev3_attach_uart_sensor(0, UART_SENSOR_TYPE_GYRO, NULL);
+	is_int(ev3_sensor_config(EV3_PORT_1, GYRO_SENSOR), E_OK, "port 1: a gyro");
+	ok(ev3lx_gyro_sensor_get_angle(EV3_PORT_1, &axes[0]) == E_OK, "gyro read (handshake done)");
+	ev3_attach_nxt_iic(0, NXT_IIC_HT_ACCEL, &(struct nxt_iic_scene){ .accel = { 1, 2, 3 } });
+	is_int(ev3_sensor_config(EV3_PORT_1, HT_NXT_ACCEL_SENSOR), E_OK, "replaced by an accelerometer");
+	ok(ht_nxt_accel_sensor_measure(EV3_PORT_1, axes) && axes[0] == 1 && axes[1] == 2 && axes[2] == 3,
+	   "read through the TX buffer d_uart gave up");
+	ev3_attach_uart_sensor(0, UART_SENSOR_TYPE_GYRO, NULL);
+	is_int(ev3_sensor_config(EV3_PORT_1, GYRO_SENSOR), E_OK, "a gyro again");
+	ok(ev3lx_gyro_sensor_get_angle(EV3_PORT_1, &axes[0]) == E_OK, "gyro read: d_iic left the buffer alone");
 }
 
 int main(void)
 {
-	tap_plan(29);
+	tap_plan(35);
 	ok(at_run(attach, body, 5, 20), "app finished");
 	return tap_done();
 }
