@@ -4,9 +4,11 @@
  * registers).  Host only.
  */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 #include "rtos_host.h"
 #include "host_sim/gpio.h"
+#include "host_sim/trace.h"
 #include "host_sim/devices/ev3_ports.h"
 #include "host_sim/devices/nxt_iic.h"
 #include "nxt_iic_bus.h"
@@ -51,6 +53,8 @@ struct bus {
 	unsigned byte_in_reg;       /* temperature sensor: byte of a 16-bit register */
 	uint8_t regs[REGS];
 	struct nxt_iic_stats stats;
+	/* traces (scope "in<N>.iic"): the connector's lines and each byte as it completes */
+	struct hs_signal *sig_scl, *sig_sda, *sig_byte;
 };
 
 static struct bus buses[EV3_INPUT_PORTS];
@@ -239,6 +243,7 @@ static void on_scl_rise(struct bus *b)
 		b->bits++;
 		break;
 	case SL_MASTER_ACK:
+		hs_trace_set(b->sig_byte, b->shift);
 		/* low: the master wants more; high: NACK, the end of the read */
 		b->state = b->sda ? SL_IGNORE : SL_READ_NEXT;
 		break;
@@ -250,6 +255,7 @@ static void on_scl_rise(struct bus *b)
 /* A byte came in: the address or a data byte.  Returns whether the slave ACKs it. */
 static bool byte_received(struct bus *b)
 {
+	hs_trace_set(b->sig_byte, b->shift);
 	if (b->state == SL_ADDRESS) {
 		if ((b->shift >> 1) != b->address) {
 			b->stats.address_nacks++;
@@ -366,6 +372,7 @@ static void bus_update(struct bus *b)
 		hs_gpio_drive(pins->pin5, scl ? HS_EXT_HIGH : HS_EXT_LOW);
 		b->updating = false;
 		b->scl = scl;
+		hs_trace_set(b->sig_scl, scl);
 		if (scl)
 			on_scl_rise(b);
 		else
@@ -374,6 +381,7 @@ static void bus_update(struct bus *b)
 	sda = hs_gpio_level(pins->pin6);
 	if (sda != b->sda) {
 		b->sda = sda;
+		hs_trace_set(b->sig_sda, sda);
 		if (b->scl) {
 			if (sda)
 				on_stop(b);
@@ -391,6 +399,7 @@ static void pin_changed(void *ctx, unsigned pin, const struct hs_pin_state *st)
 	if (b->updating) {
 		/* our own drive: only remember where SDA is now */
 		b->sda = hs_gpio_level(ev3_input_pins[b->port].pin6);
+		hs_trace_set(b->sig_sda, b->sda);
 		return;
 	}
 	bus_update(b);
@@ -422,6 +431,8 @@ void nxt_iic_bus_apply(unsigned port, bool plugged)
 	b->updating = false;
 	apply_sda(b);
 	b->sda = hs_gpio_level(pins->pin6);
+	hs_trace_set(b->sig_scl, b->scl);
+	hs_trace_set(b->sig_sda, b->sda);
 }
 
 void nxt_iic_bus_detach(unsigned port)
@@ -451,6 +462,14 @@ bool nxt_iic_bus_attach(unsigned port, enum nxt_iic_kind kind, const struct nxt_
 	if (!b->watch[0] || !b->watch[1] || !b->watch[2]) {
 		nxt_iic_bus_detach(port);
 		return false;
+	}
+	{
+		char scope[16];
+
+		snprintf(scope, sizeof(scope), "in%u.iic", port + 1U);
+		b->sig_scl = hs_trace_signal(scope, "scl", 1);
+		b->sig_sda = hs_trace_signal(scope, "sda", 1);
+		b->sig_byte = hs_trace_signal(scope, "byte", 8);
 	}
 	b->present = true;
 	return true;

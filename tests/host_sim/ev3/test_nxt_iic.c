@@ -12,6 +12,7 @@
 #include <string.h>
 #include "devtest.h"
 #include "host_sim/intc.h"
+#include "host_sim/trace.h"
 #include "host_sim/devices/nxt_iic.h"
 
 #define HALF_NS 50000U              /* half an SCL period, as d_iic */
@@ -158,6 +159,10 @@ static void test_ids(void)
 	is_int((int8_t)id[1] * 4 + (id[4] & 3), -100, "Y = -100");
 	is_int((int8_t)id[2] * 4 + (id[5] & 3), 511, "Z = 511");
 	is_int(stats(0).repeated_starts, 1, "one repeated START seen");
+	ok(hs_trace_find("in1.iic", "byte") && hs_signal_value(hs_trace_find("in1.iic", "byte")) == (uint8_t)(511 & 3),
+	   "trace in1.iic.byte: the last byte on the bus (Z's lower bits)");
+	ok(hs_trace_find("in1.iic", "scl") && hs_signal_changes(hs_trace_find("in1.iic", "scl")) > 100,
+	   "trace in1.iic.scl follows the clock");
 	ok(stats(0).stops >= 3, "STOPs seen");
 }
 
@@ -272,7 +277,7 @@ static void test_timer64p1(void)
 
 int main(void)
 {
-	tap_plan(50);
+	tap_plan(52);
 	devtest_boot(3, NULL);
 	test_ids();
 	test_nacks();
