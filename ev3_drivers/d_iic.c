@@ -20,7 +20,9 @@
  *                 low/high period with SDA high, then a START and the address with R = 1;
  *   the end       SDA low with SCL low, SCL high, SDA released: a STOP;
  *   bus clear     a START finding SDA held low (a slave still sending after an aborted
- *                 transaction) first gives up to 9 clocks until the slave lets go.
+ *                 transaction) first gives up to 9 clocks until the slave lets go; if SDA
+ *                 stays low (no sensor, so no pull-up) the transaction fails at once.
+ * A poll that fails withdraws the port's data (DATA_READY cleared) until an answer comes.
  * SCL is driven push-pull; SDA is open-drain (driven low, or released to the sensor's pull-up),
  * so a port with nothing on it never reads as ACK.
  *
@@ -229,7 +231,7 @@ struct iic_port {
 	u8 req_wr[LMS_IIC_DATA_SIZE];
 	s8 req_rd_lng;
 	u8 req_answer[LMS_IIC_DATA_SIZE];
-	u32 nacks, timeouts, transfers;
+	u32 nacks, timeouts, transfers, stuck;
 };
 
 static struct {
@@ -421,10 +423,18 @@ static void bus_tick(unsigned int port)
 	case BUS_START:
 		scl_set(port, true);
 		sda_set(port, true);
-		if (!pin_level(iic_pins[port].sda) && b->recover < RECOVER_CLOCKS) {
-			/* a slave still holds SDA (an aborted read): clock it out (bus clear) */
-			b->recover++;
-			b->step = BUS_RECOVER;
+		if (!pin_level(iic_pins[port].sda)) {
+			if (b->recover < RECOVER_CLOCKS) {
+				/* a slave still holds SDA (an aborted read): clock it out (bus clear) */
+				b->recover++;
+				b->step = BUS_RECOVER;
+				break;
+			}
+			/* SDA stays low: no sensor's pull-up (unplugged), or a slave that hangs */
+			b->recover = 0;
+			b->result = BUS_DONE_NACK;
+			iic.port[port].stuck++;
+			b->step = BUS_IDLE;
 			break;
 		}
 		b->recover = 0;
@@ -682,6 +692,9 @@ static void port_transfer_done(unsigned int index, struct iic_port *p, bool ok)
 
 		store_answer(answer, p->bus.data, p->read_lng);
 		log_sample(index, answer);
+	} else {
+		/* no answer (unplugged?): the data is withdrawn until the sensor answers again */
+		iic.shm->status[index] &= ~LMS_IIC_DATA_READY;
 	}
 }
 

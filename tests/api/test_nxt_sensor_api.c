@@ -59,6 +59,13 @@ static void body(void)
 	dly_tsk(300);
 	ok(nxt_temp_sensor_measure(EV3_PORT_3, &temp) && temp == -20.0f, "-20 C within 300 ms");
 
+	/* unplugged: the driver withdraws the data, the reading times out; plugged in again: values */
+	ev3_detach_input(2);
+	dly_tsk(150);
+	is_int(ev3lx_nxt_temp_sensor_measure(EV3_PORT_3, &temp), E_TMOUT, "unplugged: E_TMOUT, no stale value");
+	ev3_attach_nxt_iic(2, NXT_IIC_TEMP, &(struct nxt_iic_scene){ .temp_c = 30.0 });
+	ok(nxt_temp_sensor_measure(EV3_PORT_3, &temp) && temp == 30.0f, "plugged in again: 30 C");
+
 	/* errors */
 	is_int(ev3lx_ht_nxt_accel_sensor_measure(EV3_PORT_2, axes), E_OBJ, "accelerometer read on a colour port: E_OBJ");
 	ok(!ht_nxt_accel_sensor_measure(EV3_PORT_2, axes), "EV3RT form: false");
@@ -89,7 +96,7 @@ static void body(void)
 
 int main(void)
 {
-	tap_plan(35);
+	tap_plan(37);
 	ok(at_run(attach, body, 5, 20), "app finished");
 	return tap_done();
 }

@@ -223,6 +223,24 @@ static void test_setup_wait_restart(void)
 	ok(iic_svc_stop(2) == E_OK, "port 3 stopped");
 }
 
+/* Nothing on the port (pin 6 pulled down, no pull-up): every probe fails at its START. */
+static void test_empty_port(void)
+{
+	struct lms_iic_str s;
+	uint64_t t0 = rtos_host_now();
+
+	ok(iic_svc_start(3, 0) == E_OK, "port 4 started with nothing plugged in");
+	ok(it_wait_state(3, LMS_IIC_STATE_WAITING, 2000), "three scan rounds, no ID: waiting");
+	in_range((rtos_host_now() - t0) / IT_MS, 200, 2000, "the scan took %.0f ms",
+		 (double)(rtos_host_now() - t0) / (double)IT_MS);
+	memset(&s, 0x55, sizeof(s));
+	s.port = 3;
+	ok(iic_svc_type_info(3, &s) == E_OK && s.manufacturer[0] == 0 && s.sensor_type[0] == 0,
+	   "no strings (no phantom \"LEGO\"/\"Store\" from a floating SDA)");
+	is_int(it_shm->status[3] & LMS_IIC_DATA_READY, 0, "no data");
+	ok(iic_svc_stop(3) == E_OK, "port 4 stopped");
+}
+
 static void body(void)
 {
 	test_detect_and_probe();
@@ -231,12 +249,13 @@ static void body(void)
 	test_setup();
 	test_errors();
 	test_setup_wait_restart();
+	test_empty_port();
 	test_unplug();
 }
 
 int main(void)
 {
-	tap_plan(73);
+	tap_plan(79);
 	ok(it_run(body, 1), "test body finished");
 	return tap_done();
 }
