@@ -22,7 +22,8 @@
  *   bus clear     a START finding SDA held low (a slave still sending after an aborted
  *                 transaction) first gives up to 9 clocks until the slave lets go; if SDA
  *                 stays low (no sensor, so no pull-up) the transaction fails at once.
- * A poll that fails withdraws the port's data (DATA_READY cleared) until an answer comes.
+ * A poll that fails withdraws the port's data (DATA_READY cleared) until an answer comes; a
+ * sensor answering again after failed polls (plugged in again) gets its setup string again.
  * SCL is driven push-pull; SDA is open-drain (driven low, or released to the sensor's pull-up),
  * so a port with nothing on it never reads as ACK.
  *
@@ -213,6 +214,8 @@ struct iic_port {
 	struct iic_bus bus;
 	/* IIC_SET */
 	bool configured;	/* IIC_SET given: go on from the ID to setup and polling */
+	bool poll_failed;	/* the last poll got no answer (the sensor may be re-plugged) */
+	bool resetup;		/* answering again after failing: send the setup string again */
 	u16 time_ms;
 	u8 setup_lng, poll_lng;
 	u8 setup[LMS_IIC_STRING_SIZE], poll[LMS_IIC_STRING_SIZE];
@@ -692,9 +695,13 @@ static void port_transfer_done(unsigned int index, struct iic_port *p, bool ok)
 
 		store_answer(answer, p->bus.data, p->read_lng);
 		log_sample(index, answer);
+		if (p->poll_failed && p->setup_lng)
+			p->resetup = true;	/* plugged in again, its settings at power-up values */
+		p->poll_failed = false;
 	} else {
 		/* no answer (unplugged?): the data is withdrawn until the sensor answers again */
 		iic.shm->status[index] &= ~LMS_IIC_DATA_READY;
+		p->poll_failed = true;
 	}
 }
 
@@ -817,7 +824,8 @@ static void port_tick(unsigned int index)
 	case LMS_IIC_STATE_READING:
 		if (bus_done(p)) {
 			port_transfer_done(index, p, p->bus.result == BUS_DONE_OK);
-			port_enter(p, LMS_IIC_STATE_REPEAT);
+			port_enter(p, p->resetup ? LMS_IIC_STATE_SETUP_START : LMS_IIC_STATE_REPEAT);
+			p->resetup = false;
 		} else if (p->timer >= READ_TIMEOUT_TICKS) {
 			bus_abort(index);
 			p->timeouts++;

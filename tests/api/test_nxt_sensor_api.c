@@ -63,8 +63,11 @@ static void body(void)
 	ev3_detach_input(2);
 	dly_tsk(150);
 	is_int(ev3lx_nxt_temp_sensor_measure(EV3_PORT_3, &temp), E_TMOUT, "unplugged: E_TMOUT, no stale value");
-	ev3_attach_nxt_iic(2, NXT_IIC_TEMP, &(struct nxt_iic_scene){ .temp_c = 30.0 });
-	ok(nxt_temp_sensor_measure(EV3_PORT_3, &temp) && temp == 30.0f, "plugged in again: 30 C");
+	ev3_attach_nxt_iic(2, NXT_IIC_TEMP, &(struct nxt_iic_scene){ .temp_c = 30.0625 });
+	ok(nxt_temp_sensor_measure(EV3_PORT_3, &temp), "plugged in again: measured");
+	dly_tsk(250);
+	ok(nxt_temp_sensor_measure(EV3_PORT_3, &temp) && temp == 30.0625f,
+	   "30.0625 C: the driver sent the 12-bit setup again (%.4f)", (double)temp);
 
 	/* errors */
 	is_int(ev3lx_ht_nxt_accel_sensor_measure(EV3_PORT_2, axes), E_OBJ, "accelerometer read on a colour port: E_OBJ");
@@ -96,7 +99,7 @@ static void body(void)
 
 int main(void)
 {
-	tap_plan(37);
+	tap_plan(38);
 	ok(at_run(attach, body, 5, 20), "app finished");
 	return tap_done();
 }
