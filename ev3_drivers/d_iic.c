@@ -234,7 +234,6 @@ struct iic_port {
 	u8 req_wr[LMS_IIC_DATA_SIZE];
 	s8 req_rd_lng;
 	u8 req_answer[LMS_IIC_DATA_SIZE];
-	u32 nacks, timeouts, transfers, stuck;
 };
 
 static struct {
@@ -365,7 +364,6 @@ static void bus_start(unsigned int port, u8 addr, const u8 *data, u8 wr_len, u8 
 	memcpy(b->data, data, wr_len);
 	b->step = BUS_START;
 	b->reading = false;
-	iic.port[port].transfers++;
 	tick_start();
 }
 
@@ -436,7 +434,6 @@ static void bus_tick(unsigned int port)
 			/* SDA stays low: no sensor's pull-up (unplugged), or a slave that hangs */
 			b->recover = 0;
 			b->result = BUS_DONE_NACK;
-			iic.port[port].stuck++;
 			b->step = BUS_IDLE;
 			break;
 		}
@@ -483,7 +480,6 @@ static void bus_tick(unsigned int port)
 		scl_set(port, true);
 		if (pin_level(iic_pins[port].sda)) {
 			b->result = BUS_DONE_NACK;
-			iic.port[port].nacks++;
 			b->step = BUS_STOP_LOW;
 			break;
 		}
@@ -753,7 +749,6 @@ static void port_tick(unsigned int index)
 			port_enter(p, p->state + 1);
 		} else if (p->timer > PROBE_TIMEOUT_TICKS) {
 			bus_abort(index);
-			p->timeouts++;
 			port_enter(p, p->state + 1);
 		}
 		break;
@@ -828,7 +823,6 @@ static void port_tick(unsigned int index)
 			p->resetup = false;
 		} else if (p->timer >= READ_TIMEOUT_TICKS) {
 			bus_abort(index);
-			p->timeouts++;
 			if (p->request) {
 				p->req_state = REQ_NONE;
 				p->request = false;
