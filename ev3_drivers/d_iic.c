@@ -985,7 +985,8 @@ static long iic_setup(void __user *argp)
 	p = &iic.port[d.port];
 	status = &iic.shm->status[d.port];
 	spin_lock_irqsave(&iic.lock, flags);
-	if (p->state == LMS_IIC_STATE_IDLE || p->state == LMS_IIC_STATE_ERROR) {
+	if (p->state == LMS_IIC_STATE_IDLE || p->state == LMS_IIC_STATE_EXIT ||
+	    p->state == LMS_IIC_STATE_ERROR) {
 		d.result = LMS_IIC_FAIL;
 	} else if (p->req_state == REQ_NONE) {
 		p->req_left = d.repeat ? (u8)(d.repeat - 1) : 0;
