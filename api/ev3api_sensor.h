@@ -8,7 +8,6 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include "kernel.h"
-#include "ev3api_not_yet.h"
 
 typedef enum {
 	EV3_PORT_1 = 0, EV3_PORT_2 = 1, EV3_PORT_3 = 2, EV3_PORT_4 = 3,
@@ -22,9 +21,9 @@ typedef enum {
 	TOUCH_SENSOR = 3,        /* EV3 touch (analog) */
 	COLOR_SENSOR = 4,        /* EV3 colour (UART type 29) */
 	INFRARED_SENSOR = 5,     /* EV3 infrared (UART type 33) */
-	HT_NXT_ACCEL_SENSOR = 6, /* HiTechnic NXT acceleration (I2C): no driver yet */
-	HT_NXT_COLOR_SENSOR = 7, /* HiTechnic NXT colour V2 (I2C): no driver yet */
-	NXT_TEMP_SENSOR = 8,     /* LEGO NXT temperature (I2C): no driver yet */
+	HT_NXT_ACCEL_SENSOR = 6, /* HiTechnic NXT acceleration (I2C, d_iic) */
+	HT_NXT_COLOR_SENSOR = 7, /* HiTechnic NXT colour, v1 or V2 (I2C, d_iic) */
+	NXT_TEMP_SENSOR = 8,     /* LEGO NXT temperature (I2C, d_iic) */
 	TNUM_SENSOR_TYPE = 9
 } sensor_type_t;
 
@@ -82,20 +81,19 @@ ir_remote_t ev3_infrared_sensor_get_remote(sensor_port_t port);
 
 bool_t ev3_touch_sensor_is_pressed(sensor_port_t port);
 
-/* NXT I2C sensors: ev3lx has no I2C sensor driver yet. */
-bool_t ht_nxt_accel_sensor_measure(sensor_port_t port, int16_t axes[3])
-	EV3API_NOT_YET(nxt_i2c_sensors, ht_nxt_accel_sensor_measure);
-bool_t ht_nxt_color_sensor_measure_color(sensor_port_t port, uint8_t *color)
-	EV3API_NOT_YET(nxt_i2c_sensors, ht_nxt_color_sensor_measure_color);
-bool_t ht_nxt_color_sensor_measure_rgb(sensor_port_t port, rgb_raw_t *val)
-	EV3API_NOT_YET(nxt_i2c_sensors, ht_nxt_color_sensor_measure_rgb);
-bool_t nxt_temp_sensor_measure(sensor_port_t port, float *temp)
-	EV3API_NOT_YET(nxt_i2c_sensors, nxt_temp_sensor_measure);
+/* NXT I2C sensors (true when measured): acceleration X, Y, Z in counts (10-bit,
+ * about 200 per g); HiTechnic colour number (0..17) and RGB (0..255 each);
+ * temperature in degrees Celsius (1/16 degree steps). */
+bool_t ht_nxt_accel_sensor_measure(sensor_port_t port, int16_t axes[3]);
+bool_t ht_nxt_color_sensor_measure_color(sensor_port_t port, uint8_t *color);
+bool_t ht_nxt_color_sensor_measure_rgb(sensor_port_t port, rgb_raw_t *val);
+bool_t nxt_temp_sensor_measure(sensor_port_t port, float *temp);
 
 /* ---- ev3lx's checked forms ---- */
 
-/* Declares what is on an input port and starts it.  E_ID, E_PAR, E_NOSPT
- * (the NXT I2C types), E_CTX. */
+/* Declares what is on an input port and starts it (an NXT I2C type: d_iic
+ * probes the sensor and polls it).  E_ID, E_PAR, E_OBJ (a driver is not
+ * loaded), E_CTX. */
 ER ev3lx_sensor_config(sensor_port_t port, sensor_type_t type);
 /* The configured type.  E_ID, E_MACV. */
 ER ev3lx_sensor_get_type(sensor_port_t port, sensor_type_t *p_type);
@@ -128,6 +126,15 @@ ER ev3lx_color_sensor_get_rgb_raw(sensor_port_t port, rgb_raw_t *p_rgb);
 ER ev3lx_infrared_sensor_get_distance(sensor_port_t port, int8_t *p_pct);
 ER ev3lx_infrared_sensor_seek(sensor_port_t port, ir_seek_t *p_seek);
 ER ev3lx_infrared_sensor_get_remote(sensor_port_t port, ir_remote_t *p_remote);
+
+/* NXT I2C sensors: the newest polled answer.  The first reading after
+ * ev3lx_sensor_config waits for the probe and the first poll (E_TMOUT after
+ * 1 s) and checks the probed identification (E_OBJ if it is not the
+ * configured sensor's). */
+ER ev3lx_ht_nxt_accel_sensor_measure(sensor_port_t port, int16_t axes[3]);
+ER ev3lx_ht_nxt_color_sensor_measure_color(sensor_port_t port, uint8_t *p_color);
+ER ev3lx_ht_nxt_color_sensor_measure_rgb(sensor_port_t port, rgb_raw_t *p_rgb);
+ER ev3lx_nxt_temp_sensor_measure(sensor_port_t port, float *p_temp);
 
 /* Any UART sensor: the newest raw sample of its current mode (at most 32 bytes). */
 ER ev3lx_uart_sensor_get_raw(sensor_port_t port, void *buf, uint_t size);

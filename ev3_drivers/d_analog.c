@@ -233,6 +233,7 @@ struct analog_port {
 	enum analog_dcm_state state;
 	unsigned int state_ms;		/* time spent in the state */
 	u8 events;			/* the events being stabilised */
+	bool bus_pins;			/* input: an NXT I2C device, pins 5 and 6 are its bus */
 	u8 recent[DCM_HOLD_PERIODS - 1];	/* events of the previous periods, newest first */
 	unsigned int first_mv;		/* output: pin 5 before pulling pin 6 low */
 };
@@ -470,6 +471,7 @@ static void analog_set_input(unsigned int port, enum analog_device dev)
 {
 	analog.shm->in_dcm[port] = analog_device_codes[dev].type;
 	analog.shm->in_conn[port] = analog_device_codes[dev].conn;
+	analog.in[port].bus_pins = dev == DEV_NXT_IIC;
 }
 
 /* Publishes what an output port has, or DEV_NONE. */
@@ -643,13 +645,27 @@ static void analog_input_evaluate(unsigned int port)
 	analog_input_connect(port, dev);
 }
 
+/*
+ * Connection events of an input port as detection weighs them.  While an NXT I2C device is
+ * connected, pins 5 and 6 are its bus, toggled by d_iic: only pin 2 (grounded by every NXT
+ * device) tells that the device is still there.
+ */
+static u8 analog_input_weighed_events(unsigned int port)
+{
+	u8 events = analog_input_events(port);
+
+	if (analog.in[port].state == DCM_CONNECTED && analog.in[port].bus_pins)
+		events &= DCM_IN_PIN2_LOW;
+	return events;
+}
+
 /* Advances the detection of one input port by one DCM period. */
 static void analog_input_tick(unsigned int port)
 {
 	struct analog_port *p = &analog.in[port];
 	unsigned int pin1;
 
-	switch (analog_dcm_step(p, analog_input_events(port))) {
+	switch (analog_dcm_step(p, analog_input_weighed_events(port))) {
 	case DCM_STEP_EVALUATE:
 		analog_input_evaluate(port);
 		break;

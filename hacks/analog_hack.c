@@ -137,7 +137,7 @@ static ER_UINT analog_read_from_start(struct file *file, intptr_t buf, intptr_t 
 
 	if (sns_ctx())
 		return E_CTX;
-	if (len < 0 || len > INT32_MAX)		/* the count must fit the ER_UINT result */
+	if (len < 0 || len > S32_MAX)		/* the count must fit the ER_UINT result */
 		return E_PAR;
 	ret = lx_dev_read(file, (char __user *)buf, (size_t)len, &pos);
 	return ret < 0 ? lx_errno_to_er(ret) : (ER_UINT)ret;

@@ -16,6 +16,7 @@
 
 #include "kernel.h"
 #include "rtos_cfg.h"
+#include "hack_interface.h"
 #include "lms_analog.h"
 
 /* The function codes this module owns: ANALOG_FN_FIRST .. + ANALOG_FN_COUNT - 1
@@ -50,7 +51,7 @@ struct analog_output_state {
 };
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
-extern const struct rtos_cfg analog_hack_cfg;
+extern HACK_INTERFACE const struct rtos_cfg analog_hack_cfg;
 
 /* The shared ANALOG area (sampled every 1 ms), for callers allowed to read it. */
 static inline ER analog_map(const struct lms_analog **out)

@@ -16,6 +16,7 @@
 
 #include "kernel.h"
 #include "rtos_cfg.h"
+#include "hack_interface.h"
 #include "lms_power.h"
 
 /* The function codes this module owns: POWER_FN_FIRST .. + POWER_FN_COUNT - 1
@@ -31,7 +32,7 @@
 #define POWER_FN_TEST_PIN      (POWER_FN_FIRST + 1)  /* (uint_t level): write() of one byte, 0 or 1 */
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
-extern const struct rtos_cfg power_hack_cfg;
+extern HACK_INTERFACE const struct rtos_cfg power_hack_cfg;
 
 /* 1 when a rechargeable pack is fitted, 0 for AA cells, or an error code. */
 static inline ER_UINT power_svc_rechargeable(void)

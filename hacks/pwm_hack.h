@@ -14,6 +14,7 @@
 
 #include "kernel.h"
 #include "rtos_cfg.h"
+#include "hack_interface.h"
 #include "lms_pwm.h"
 
 /* The function codes this module owns: PWM_FN_FIRST .. + PWM_FN_COUNT - 1
@@ -34,7 +35,7 @@
 #define PWM_FN_MOTOR_MAP   (PWM_FN_FIRST + 6)   /* (const struct lms_motor_data **out): address of MOTORDATA[4] */
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
-extern const struct rtos_cfg pwm_hack_cfg;
+extern HACK_INTERFACE const struct rtos_cfg pwm_hack_cfg;
 
 /* Writes one command of lms_pwm.h's protocol. */
 static inline ER pwm_command(const void *cmd, uint_t len)

@@ -19,6 +19,7 @@
 
 #include "kernel.h"
 #include "rtos_cfg.h"
+#include "hack_interface.h"
 #include "lms_sound.h"
 
 /* The function codes this module owns: SOUND_FN_FIRST .. + SOUND_FN_COUNT - 1
@@ -36,7 +37,7 @@
 #define SOUND_MAX_COMMAND (1 + LMS_SOUND_SLOT_SAMPLES)
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
-extern const struct rtos_cfg sound_hack_cfg;
+extern HACK_INTERFACE const struct rtos_cfg sound_hack_cfg;
 
 /* Writes one command; returns what write() returned (bytes taken) or an error code. */
 static inline ER_UINT sound_svc_write(const uint8_t *cmd, uint_t len)

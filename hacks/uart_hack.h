@@ -21,6 +21,7 @@
 
 #include "kernel.h"
 #include "rtos_cfg.h"
+#include "hack_interface.h"
 #include "lms_uart.h"
 
 /* The function codes this module owns: UART_FN_FIRST .. + UART_FN_COUNT - 1
@@ -40,7 +41,7 @@
 #define UART_FN_MAP           (UART_FN_FIRST + 5)  /* (const struct lms_uart_shm **out): the shared memory */
 
 /* The DEF_SVC rows and the board settings (INCLUDE it in the application's configuration). */
-extern const struct rtos_cfg uart_hack_cfg;
+extern HACK_INTERFACE const struct rtos_cfg uart_hack_cfg;
 
 /* Hands input port (0..3) to d_uart in mode (0..7): starts the handshake, or selects the mode. */
 static inline ER uart_svc_set_mode(uint_t port, uint_t mode)

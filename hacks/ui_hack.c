@@ -124,7 +124,7 @@ static ER_UINT svc_ui_wait_click(intptr_t out, intptr_t tmout, intptr_t p3, intp
 				 intptr_t p5, ID cdmid)
 {
 	struct ui_poller p = { .queue = NULL };
-	uint64_t deadline = UINT64_MAX;
+	uint64_t deadline = U64_MAX;
 	ssize_t ret;
 	ER ercd = ui_hack_check();
 

@@ -20,6 +20,7 @@
 
 #include "kernel.h"
 #include "rtos_cfg.h"
+#include "hack_interface.h"
 #include "lms_ui.h"
 
 /* The function codes this module owns: UI_FN_FIRST .. + UI_FN_COUNT - 1
@@ -36,7 +37,7 @@
 #define UI_FN_WAIT_CLICK  (UI_FN_FIRST + 2)  /* (struct lms_ui_click *out, TMO tmout): the oldest click */
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
-extern const struct rtos_cfg ui_hack_cfg;
+extern HACK_INTERFACE const struct rtos_cfg ui_hack_cfg;
 
 /* Shows LED pattern LMS_UI_LED_OFF..LMS_UI_LED_ORANGE_PULSE on both LEDs. */
 static inline ER ui_svc_led(uint_t pattern)

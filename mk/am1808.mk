@@ -20,8 +20,9 @@ FW_OBJS := $(AM1808)/startup.o $(AM1808)/fw_main.o $(AM1808)/hrp2_link_provider.
 SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null || echo 0)
 
 $(eval $(call obj_rule,am1808,$(AM1808)))
+$(eval $(call module_link_rule,am1808,$(AM1808_OBJS)))
 
-$(AM1808_LIB): $(AM1808_OBJS)
+$(AM1808_LIB): $(call module_objs,$(AM1808_OBJS))
 	@mkdir -p $(@D)
 	$(quiet) AR am1808 $@
 	$(Q)rm -f $@

@@ -56,9 +56,33 @@ $(BENCH_LOG_SHIM): bench/qemu_log_buffer.c
 BENCH_DEPS := $(BUILD)/host/bench_host $(BUILD)/host/insn_count $(BENCH_ARM).syms \
 	$(BENCH_ARM).stripped $(BENCH_PROD_ARM).syms $(BENCH_PROD_ARM).stripped $(BENCH_LOG_SHIM)
 
+# The production build's inline locking fast path has a test of its own:
+# test_irqsave, which every configuration runs checked, runs again against
+# the production library under qemu-arm (in `make test`).
+PROD_TESTS       := tests/linux_compat/locking/test_irqsave
+PROD_TEST_BINS   := $(patsubst %,$(BENCH_PROD)/%.t,$(PROD_TESTS))
+PROD_SUPPORT_OBJS := $(patsubst %.c,$(BENCH_PROD)/obj/%.o,$(TEST_SUPPORT_SRCS))
+
+$(BENCH_PROD)/%.t: $(BENCH_PROD)/obj/%.o $(PROD_SUPPORT_OBJS) $(BENCH_PROD_LIB)
+	@mkdir -p $(@D)
+	$(quiet) LD bench-prod $@
+	$(Q)$(CC_arm926-test) $(CFLAGS_arm926-test) $(LDFLAGS_arm926-test) -o $@ $< $(PROD_SUPPORT_OBJS) \
+		-Wl,--start-group $(BENCH_PROD_LIB) -Wl,--end-group -lm
+
+.PHONY: prod-tests
+prod-tests: $(PROD_TEST_BINS)
+	@echo "=== prove: production build (arm926, checks off) ==="
+	@prove --exec '$(RUN_arm926-test)' $(PROD_TEST_BINS)
+
+TEST_SUITE_EXTRA += prod-tests
+TEST_SUITE_EXTRA_DEPS += $(PROD_TEST_BINS)
+
 .PHONY: bench bench-quick
 bench: deps-check $(BENCH_DEPS)
 	@bash bench/run_bench.sh full $(BENCH_OUT) $(BUILD)
+	@bash bench/readme_table.sh $(BENCH_OUT)/bench.csv > $(BENCH_OUT)/readme.md
+	@bash bench/update_readme.sh README.md $(BENCH_OUT)/readme.md
+	@echo "bench: README.md's table regenerated from $(BENCH_OUT)/bench.csv"
 
 bench-quick: deps-check $(BENCH_DEPS)
 	@bash bench/run_bench.sh quick $(BENCH_OUT)/quick $(BUILD)
@@ -66,4 +90,5 @@ bench-quick: deps-check $(BENCH_DEPS)
 TEST_SUITE_EXTRA += bench-quick
 TEST_SUITE_EXTRA_DEPS += $(BENCH_DEPS)
 
--include $(BENCH_ARM_OBJS:.o=.d) $(patsubst %.c,$(BENCH_PROD)/obj/%.d,$(BENCH_PROD_LX_SRCS))
+-include $(BENCH_ARM_OBJS:.o=.d) $(patsubst %.c,$(BENCH_PROD)/obj/%.d,$(BENCH_PROD_LX_SRCS)) \
+	$(PROD_SUPPORT_OBJS:.o=.d) $(patsubst %,$(BENCH_PROD)/obj/%.d,$(PROD_TESTS))

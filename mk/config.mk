@@ -58,9 +58,53 @@ src_flags = $(if $(call is_linux_src,$(1)),-std=gnu11 $(LINUX_INC) $(LINUX_CODEG
 # warnings for one source file: kernel code keeps GNU void-pointer arithmetic, as kbuild's W=1 does
 warn_flags = $(if $(call is_linux_src,$(1)),$(filter-out -Wpointer-arith,$(WARN)),$(WARN))
 
+# Linux code proper — the modules (hacks with their drivers), linux_compat's
+# portable implementation and every header under linux_compat — is compiled as
+# kbuild compiles it: -nostdinc, with only the compiler's own include
+# directory (stddef.h, stdarg.h, stdbool.h) beside the layers' headers, so a
+# C library name never reaches a driver and a header linux_compat lacks is an
+# error instead of the host's /usr/include/linux one.  Only the host's
+# platform glue (linux_compat/src/host: signals, the simulated hardware's side)
+# and the test programs, which speak TAP through stdio, use the C library.
+NOSTDINC_DIRS := hacks linux_compat/src linux_compat/mach-davinci linux_compat/include tests/legacy
+is_nostdinc_src = $(filter-out linux_compat/src/host/%,$(filter $(addsuffix /%,$(NOSTDINC_DIRS)),$(filter-out tests/legacy/test_%,$(1))))
+# the compiler's own include directory, per configuration (CC_am1808 is set in mk/am1808.mk)
+cc_include = $(or $(CC_INCLUDE_$(1)),$(eval CC_INCLUDE_$(1) := $(shell $(CC_$(1)) -print-file-name=include))$(CC_INCLUDE_$(1)))
+nostdinc_flags = $(if $(call is_nostdinc_src,$(2)),-nostdinc -isystem $(call cc_include,$(1)))
+
+# Modules.  Each hack file with the driver it includes is one module, linked
+# as one relocatable object with a private namespace, as a .ko is: compiled
+# -fvisibility=hidden, `ld -r`, then every hidden symbol localized, so only the
+# module's EXPORT_SYMBOL*s and the hack's interface (declared with visibility
+# "default" in its header) stay global.  Two modules defining the same global
+# names then link into one library, as two .ko files load into one kernel.
+is_module_src = $(filter hacks/%_hack.c,$(1))
+module_flags = $(if $(call is_module_src,$(2)),-fvisibility=hidden)
+# a library's object list with each module's object replaced by its linked one
+module_objs = $(foreach o,$(1),$(if $(and $(filter %_hack.o,$(o)),$(findstring /obj/hacks/,$(o))),$(o:.o=.mod.o),$(o)))
+LD_host := ld
+LD_host-san := ld
+LD_arm926-test := arm-linux-gnueabi-ld
+LD_am1808 := arm-none-eabi-ld
+OBJCOPY_host := objcopy
+OBJCOPY_host-san := objcopy
+OBJCOPY_arm926-test := arm-linux-gnueabi-objcopy
+OBJCOPY_am1808 := arm-none-eabi-objcopy
+
+# The module link rule of configuration $(1) for the library objects $(2)
+# (a static pattern rule: the linked modules are targets in their own right,
+# remade when missing).
+define module_link_rule
+$(filter %.mod.o,$(call module_objs,$(2))): %.mod.o: %.o
+	$$(quiet) MOD $(1) $$@
+	$(Q)$$(LD_$(1)) -r -o $$(@:.mod.o=.r.o) $$<
+	$(Q)$$(OBJCOPY_$(1)) --localize-hidden $$(@:.mod.o=.r.o) $$@
+endef
+
 # The one compile command of configuration $(1) for source (or header) $(2):
 # every object, firmware file and header check is compiled through it.
-compile = $(CC_$(1)) $(call src_flags,$(2)) $(call warn_flags,$(2)) $(CFLAGS_$(1)) $(KERNEL_DEFS)
+compile = $(CC_$(1)) $(call nostdinc_flags,$(1),$(2)) $(call src_flags,$(2)) $(call warn_flags,$(2)) \
+	$(call module_flags,$(1),$(2)) $(CFLAGS_$(1)) $(KERNEL_DEFS)
 
 # The object rule of configuration $(1) for the objects under $(2)/obj.
 define obj_rule

@@ -16,26 +16,21 @@ KBUILD_WARN := -Wall -Wundef -Werror=strict-prototypes -Wno-trigraphs \
 	-Wno-unused-const-variable -Wno-dangling-pointer -Wvla -Wno-main \
 	-Wno-address-of-packed-member -Wno-stringop-truncation -Wno-array-bounds
 
-LD_host := ld
-LD_host-san := ld
-LD_arm926-test := arm-linux-gnueabi-ld
-OBJCOPY_host := objcopy
-OBJCOPY_host-san := objcopy
-OBJCOPY_arm926-test := arm-linux-gnueabi-objcopy
+# (LD_<config>, OBJCOPY_<config>: mk/config.mk)
 
 # $(1) = config
 define legacy_module_rules
 $(BUILD)/$(1)/legacy/%.mod.o: tests/legacy/%_hack.c
 	@mkdir -p $$(@D)
 	$$(quiet) MOD $(1) $$@
-	$(Q)$$(CC_$(1)) -std=gnu11 $(LINUX_INC) $(LINUX_CODEGEN) -Itests/legacy $(KBUILD_WARN) \
+	$(Q)$$(CC_$(1)) $$(call nostdinc_flags,$(1),$$<) -std=gnu11 $(LINUX_INC) $(LINUX_CODEGEN) -Itests/legacy $(KBUILD_WARN) \
 		$$(CFLAGS_$(1)) $(KERNEL_DEFS) -fvisibility=hidden -MMD -MP -MT $$@ -MF $$(@:.mod.o=.d) -c $$< -o $$(@:.mod.o=.o)
 	$(Q)$$(LD_$(1)) -r -o $$(@:.mod.o=.r.o) $$(@:.mod.o=.o)
 	$(Q)$$(OBJCOPY_$(1)) --localize-hidden $$(@:.mod.o=.r.o) $$@
 
 LEGACY_OBJS_$(1) := $$(patsubst %,$(BUILD)/$(1)/legacy/%.mod.o,$(LEGACY_MODULES))
 
-$(BUILD)/$(1)/tests/legacy/test_lms_modules.t: $(BUILD)/$(1)/obj/tests/legacy/test_lms_modules.o \
+$(BUILD)/$(1)/tests/legacy/%.t: $(BUILD)/$(1)/obj/tests/legacy/%.o \
 		$$(LEGACY_OBJS_$(1)) $$(SUPPORT_OBJS_$(1)) $$(LIB_$(1))
 	@mkdir -p $$(@D)
 	$$(quiet) LD $(1) $$@
@@ -44,4 +39,8 @@ $(BUILD)/$(1)/tests/legacy/test_lms_modules.t: $(BUILD)/$(1)/obj/tests/legacy/te
 
 -include $$(LEGACY_OBJS_$(1):.mod.o=.d)
 endef
-$(foreach c,$(HOST_CONFIGS),$(eval $(call legacy_module_rules,$(c))))
+$(foreach c,$(HOST_CONFIGS) am1808,$(eval $(call legacy_module_rules,$(c))))
+
+# On the AM1808 the modules are built and given their private namespaces too
+# (no test runs there: host_sim is not on the brick).
+TEST_SUITE_EXTRA_DEPS += $(LEGACY_OBJS_am1808)

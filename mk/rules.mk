@@ -10,6 +10,11 @@
 
 TEST_SRCS := $(sort $(shell find tests -name 'test_*.c' 2>/dev/null))
 
+# Test programs run in parallel, two per CPU: every test boots its own
+# simulated brick in its own process and virtual time (the qemu-arm runs wait
+# on the emulator's translation as much as on the CPU).
+PROVE_JOBS ?= $(shell echo $$(( $(NPROC) * 2 )))
+
 # $(1) = config
 define host_config_rules
 OBJS_$(1)      := $$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$$(HOST_SRCS))
@@ -18,8 +23,9 @@ LIB_$(1)       := $(BUILD)/$(1)/libev3lx.a
 TESTS_$(1)     := $$(patsubst %.c,$(BUILD)/$(1)/%.t,$$(TEST_SRCS))
 
 $(call obj_rule,$(1),$(BUILD)/$(1))
+$(call module_link_rule,$(1),$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(HOST_SRCS)))
 
-$$(LIB_$(1)): $$(OBJS_$(1)) $$(HOST_LIB_EXTRA_$(1))
+$$(LIB_$(1)): $$(call module_objs,$$(OBJS_$(1))) $$(HOST_LIB_EXTRA_$(1))
 	@mkdir -p $$(@D)
 	$$(quiet) AR $(1) $$@
 	$(Q)rm -f $$@
@@ -36,7 +42,7 @@ tests-$(1): $$(TESTS_$(1))
 
 prove-$(1): tests-$(1)
 	@echo "=== prove: $(1) ==="
-	@cd $(BUILD)/$(1) && prove --exec '$$(RUN_$(1))' -r tests
+	@cd $(BUILD)/$(1) && prove -j$(PROVE_JOBS) --exec '$$(RUN_$(1))' -r tests
 
 -include $$(OBJS_$(1):.o=.d) $$(SUPPORT_OBJS_$(1):.o=.d) $$(patsubst %.c,$(BUILD)/$(1)/obj/%.d,$$(TEST_SRCS))
 endef

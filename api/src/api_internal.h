@@ -57,6 +57,13 @@ void api_brick_boot(void);
 void api_battery_boot(void);
 void api_speaker_boot(void);
 
+/* The NXT I2C sensors (nxt_sensor.c), for sensor.c: the port leaves its I2C type old
+ * and becomes type (either may be an I2C type or not); E_OK or the error. */
+ER api_iic_config(unsigned port, int old_type, int type);
+void api_iic_boot(void);
+/* sensor.c's check of a reading: context, port, configured type, out pointer. */
+ER api_sensor_check(unsigned port, int type, ER out_check);
+
 /* The button task's body (CRE_TSK EV3_BUTTON_TSKID in config.c): runs click handlers. */
 void api_button_task(intptr_t exinf);
 

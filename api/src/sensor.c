@@ -1,6 +1,6 @@
 /*
  * sensor.c — the EV3 sensor API: UART sensors over d_uart, the touch sensor
- * over d_analog.
+ * over d_analog (the NXT I2C sensors over d_iic are in nxt_sensor.c).
  *
  * A value is read from the drivers' shared memory with no service call when
  * the newest sample is valid data of the wanted mode (lms_uart_sample).  Only
@@ -99,6 +99,7 @@ void api_sensor_boot(void)
 	memset(sensor_type, 0, sizeof(sensor_type));
 	uart_shm = NULL;
 	analog_shm = NULL;
+	api_iic_boot();
 }
 
 ER ev3lx_sensor_config(sensor_port_t port, sensor_type_t type)
@@ -112,17 +113,19 @@ ER ev3lx_sensor_config(sensor_port_t port, sensor_type_t type)
 		return E_ID;
 	if ((unsigned)type >= TNUM_SENSOR_TYPE)
 		return E_PAR;
-	if (type == HT_NXT_ACCEL_SENSOR || type == HT_NXT_COLOR_SENSOR || type == NXT_TEMP_SENSOR)
-		return E_NOSPT;	/* I2C sensors: no driver yet */
 	ercd = map_shared_memory();
 	if (ercd != E_OK)
 		return ercd;
 	old = sensor_type[port];
+	/* The driver leaving the port first: d_uart and d_iic both drive its TX buffer. */
 	if (lms_type_of(old) != 0 && lms_type_of(type) == 0) {
 		ercd = uart_svc_stop((uint_t)port);
 		if (ercd != E_OK)
 			return ercd;
 	}
+	ercd = api_iic_config((unsigned)port, (int)old, (int)type);
+	if (ercd != E_OK)
+		return ercd;
 	if (lms_type_of(type) != 0) {
 		/* Mode 0 first; the readers select what they need. */
 		ercd = uart_svc_set_mode((uint_t)port, 0);
@@ -152,13 +155,18 @@ ER ev3lx_sensor_get_type(sensor_port_t port, sensor_type_t *p_type)
  * (out_check: its API_CHECK_OUT) may take the value. */
 static ER check_sensor(sensor_port_t port, sensor_type_t type, ER out_check)
 {
+	return api_sensor_check((unsigned)port, (int)type, out_check);
+}
+
+ER api_sensor_check(unsigned port, int type, ER out_check)
+{
 	ER ercd = api_may_read();
 
 	if (ercd != E_OK)
 		return ercd;
-	if ((unsigned)port >= TNUM_SENSOR_PORT)
+	if (port >= TNUM_SENSOR_PORT)
 		return E_ID;
-	if (sensor_type[port] != type)
+	if ((int)sensor_type[port] != type)
 		return E_OBJ;
 	return out_check;
 }

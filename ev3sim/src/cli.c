@@ -98,7 +98,8 @@ static const char sensors_usage[] =
 	"the touch sensor is pressed every other second, the colour sensor sees a red\n"
 	"surface (reflect 40 %), obstacles are 50 cm away.\n"
 	"\n"
-	"  --in1 .. --in4 DEV   none, touch, nxt-touch, nxt-light, gyro, color, ultrasonic, ir\n"
+	"  --in1 .. --in4 DEV   none, touch, nxt-touch, nxt-light, gyro, color, ultrasonic, ir,\n"
+	"                       ht-accel, ht-color, nxt-temp\n"
 	"                       (default: touch, gyro, color, ultrasonic)\n"
 	"  --outA .. --outD DEV none, large, medium (default: large, medium, none, large)\n"
 	"  --seconds N          live values for this long (default 3, max 3600)\n"
@@ -570,7 +571,7 @@ static int cmd_sensors(struct args *a)
 			   a->name[5] == '\0') {
 			if (!ev3sim_input_device_parse(v, &o.in[a->name[4] - '1']))
 				return usage_error(a, "bad input device '%s' (none, touch, nxt-touch, "
-						   "nxt-light, gyro, color, ultrasonic, ir)", v);
+						   "nxt-light, gyro, color, ultrasonic, ir, ht-accel, ht-color, nxt-temp)", v);
 		} else if (strncmp(a->name, "--out", 5) == 0 && a->name[5] >= 'A' && a->name[5] <= 'D' &&
 			   a->name[6] == '\0') {
 			if (!ev3sim_output_device_parse(v, &o.out[a->name[5] - 'A']))

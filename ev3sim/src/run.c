@@ -241,6 +241,11 @@ static ER plug_in(const struct ev3sim_run_opts *o)
 			if (ercd == E_OK)
 				ercd = ev3_set_light(p, 40);
 			break;
+		case EV3SIM_IN_HT_ACCEL:
+		case EV3SIM_IN_HT_COLOR:
+		case EV3SIM_IN_NXT_TEMP:
+			ercd = ev3sim_attach_nxt_iic(p, o->in[p]);
+			break;
 		default:
 			if (o->in[p] == EV3SIM_IN_GYRO)
 				gyro_options(o, &uopt);

@@ -108,7 +108,7 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 	} else if (strncmp(name, "--in", 4) == 0 && name[4] >= '1' && name[4] <= '4' && name[5] == '\0') {
 		if (!ev3sim_input_device_parse(v, &o->in[name[4] - '1']))
 			return usage("bad input device '%s' (none, touch, nxt-touch, nxt-light, gyro, "
-				     "color, ultrasonic, ir)", v);
+				     "color, ultrasonic, ir, ht-accel, ht-color, nxt-temp)", v);
 	} else if (strncmp(name, "--out", 5) == 0 && name[5] >= 'A' && name[5] <= 'D' && name[6] == '\0') {
 		if (!ev3sim_output_device_parse(v, &o->out[name[5] - 'A']))
 			return usage("bad output device '%s' (none, large, medium)", v);

@@ -7,6 +7,7 @@
 #include "analog_hack.h"
 #include "rtos_host.h"
 #include "host_sim/scenario.h"
+#include "host_sim/devices/nxt_iic.h"
 #include "ev3sim/apps.h"
 
 #define SENSORS_TSKID  1
@@ -16,6 +17,7 @@
 
 static const char *const in_names[EV3SIM_IN_COUNT] = {
 	"none", "touch", "nxt-touch", "nxt-light", "gyro", "color", "ultrasonic", "ir",
+	"ht-accel", "ht-color", "nxt-temp",
 };
 static const char *const out_names[EV3SIM_OUT_COUNT] = { "none", "large", "medium" };
 
@@ -27,6 +29,21 @@ const char *ev3sim_input_device_name(enum ev3sim_input_device d)
 const char *ev3sim_output_device_name(enum ev3sim_output_device d)
 {
 	return (unsigned)d < EV3SIM_OUT_COUNT ? out_names[d] : "?";
+}
+
+ER ev3sim_attach_nxt_iic(unsigned port, enum ev3sim_input_device d)
+{
+	static const struct nxt_iic_scene scene = {
+		.accel = { 0, 0, 200 }, .color_number = 17, .rgb = { 255, 255, 255 }, .white = 255,
+		.temp_c = 22.5,
+	};
+
+	switch (d) {
+	case EV3SIM_IN_HT_ACCEL: return ev3_attach_nxt_iic(port, NXT_IIC_HT_ACCEL, &scene);
+	case EV3SIM_IN_HT_COLOR: return ev3_attach_nxt_iic(port, NXT_IIC_HT_COLOR_V2, &scene);
+	case EV3SIM_IN_NXT_TEMP: return ev3_attach_nxt_iic(port, NXT_IIC_TEMP, &scene);
+	default:                 return E_PAR;
+	}
 }
 
 bool ev3sim_input_device_parse(const char *s, enum ev3sim_input_device *d)
@@ -158,6 +175,9 @@ static sensor_type_t api_type(enum ev3sim_input_device d)
 	case EV3SIM_IN_COLOR:      return COLOR_SENSOR;
 	case EV3SIM_IN_ULTRASONIC: return ULTRASONIC_SENSOR;
 	case EV3SIM_IN_IR:         return INFRARED_SENSOR;
+	case EV3SIM_IN_HT_ACCEL:   return HT_NXT_ACCEL_SENSOR;
+	case EV3SIM_IN_HT_COLOR:   return HT_NXT_COLOR_SENSOR;
+	case EV3SIM_IN_NXT_TEMP:   return NXT_TEMP_SENSOR;
 	default:                   return NONE_SENSOR;
 	}
 }
@@ -172,6 +192,8 @@ static void print_value(unsigned p)
 	colorid_t color = COLOR_NONE;
 	int8_t prox = 0;
 	bool pressed = false;
+	int16_t axes[3] = { 0, 0, 0 };
+	float temp = 0;
 
 	switch (run.o.in[p]) {
 	case EV3SIM_IN_TOUCH:
@@ -195,6 +217,18 @@ static void print_value(unsigned p)
 	case EV3SIM_IN_IR:
 		if (check(ev3lx_infrared_sensor_get_distance(port, &prox)) == E_OK)
 			fprintf(run.out, "  in%u prox=%d", p + 1, prox);
+		break;
+	case EV3SIM_IN_HT_ACCEL:
+		if (check(ev3lx_ht_nxt_accel_sensor_measure(port, axes)) == E_OK)
+			fprintf(run.out, "  in%u accel=%d,%d,%d", p + 1, axes[0], axes[1], axes[2]);
+		break;
+	case EV3SIM_IN_HT_COLOR:
+		if (check(ev3lx_ht_nxt_color_sensor_measure_color(port, &pct)) == E_OK)
+			fprintf(run.out, "  in%u ht_color=%u", p + 1, pct);
+		break;
+	case EV3SIM_IN_NXT_TEMP:
+		if (check(ev3lx_nxt_temp_sensor_measure(port, &temp)) == E_OK)
+			fprintf(run.out, "  in%u temp_c=%.4f", p + 1, (double)temp);
 		break;
 	case EV3SIM_IN_NXT_TOUCH:
 	case EV3SIM_IN_NXT_LIGHT:
@@ -308,6 +342,11 @@ static ER plug_in(const struct ev3sim_sensors_opts *o)
 			ercd = ev3_attach_analog(p, EV3_INPUT_NXT_LIGHT, NULL);
 			if (ercd == E_OK)
 				ercd = ev3_set_light(p, 40);
+			break;
+		case EV3SIM_IN_HT_ACCEL:
+		case EV3SIM_IN_HT_COLOR:
+		case EV3SIM_IN_NXT_TEMP:
+			ercd = ev3sim_attach_nxt_iic(p, o->in[p]);
 			break;
 		default:
 			ercd = ev3_attach_uart_sensor(p, uart_type[o->in[p]], NULL);

@@ -75,7 +75,7 @@ static unsigned long jiffies_left(uint64_t deadline)
 /* Sleeps until completed. */
 void lx_wait_for_completion_at(struct completion *x, const char *file, int line)
 {
-	(void)wait_common(x, UINT64_MAX, false, "wait_for_completion()", file, line);
+	(void)wait_common(x, U64_MAX, false, "wait_for_completion()", file, line);
 }
 
 /* Sleeps at most timeout jiffies; jiffies left (>= 1) or 0. */
@@ -92,7 +92,7 @@ unsigned long lx_wait_for_completion_timeout_at(struct completion *x, unsigned l
 /* Sleeps until completed or released: 0 or -ERESTARTSYS. */
 int lx_wait_for_completion_interruptible_at(struct completion *x, const char *file, int line)
 {
-	return wait_common(x, UINT64_MAX, true, "wait_for_completion_interruptible()", file, line)
+	return wait_common(x, U64_MAX, true, "wait_for_completion_interruptible()", file, line)
 		== 0 ? 0 : -ERESTARTSYS;
 }
 

@@ -19,86 +19,70 @@
 #include <linux_compat/report.h>
 #include <kernel.h>
 #include <linux_compat/platform.h>
-#include <stdio.h>
 
-#define LX_IRQ_NEST_MAX	16
 
-static struct {
-#if LX_DEBUG_ATOMIC_SLEEP
-	unsigned int task_atomic;      /* atomic sections opened by the running task */
-	unsigned int task_spin;        /* ... of which spin locks */
-	unsigned int isr_atomic;       /* atomic sections opened in interrupt context */
-	unsigned int isr_spin;
-#else
-	unsigned int preempt;          /* atomic sections open, in all contexts */
-#endif
-	bool dispatch_disabled_by_us;  /* the outermost section called dis_dsp */
-	unsigned int irqs_off;         /* local_irq_save/disable nesting */
-	int irq_stack[LX_IRQ_NEST_MAX];
-	unsigned int irq_depth;
-	unsigned int hrtimer_cb;       /* hrtimer callbacks running (nesting: 0 or 1) */
-	unsigned int timer_cb;         /* timer_list callbacks running */
-	const void *running_hrtimer;
-} ctx;
+/* The CPU's context state (linux_compat/context.h; the production build's
+ * inline spin_lock_irqsave updates its counters directly). */
+struct lx_context_state lx_ctx;
 
 /* Forgets all tracked state. */
 void lx_context_reset(void)
 {
-	memset(&ctx, 0, sizeof(ctx));
+	memset(&lx_ctx, 0, sizeof(lx_ctx));
 }
 
 /* Records that a Linux handler for irq starts. */
 void lx_irq_enter(int irq)
 {
-	if (ctx.irq_depth < LX_IRQ_NEST_MAX)
-		ctx.irq_stack[ctx.irq_depth] = irq;
-	ctx.irq_depth++;
+	if (lx_ctx.irq_depth < LX_IRQ_NEST_MAX)
+		lx_ctx.irq_stack[lx_ctx.irq_depth] = irq;
+	lx_ctx.irq_depth++;
 }
 
 /* Records that the innermost Linux handler returned. */
 void lx_irq_exit(void)
 {
-	if (ctx.irq_depth == 0) {
+	if (lx_ctx.irq_depth == 0) {
 		lx_report("unbalanced lx_irq_exit", NULL, 0, "no IRQ handler is running");
 		return;
 	}
-	ctx.irq_depth--;
+	lx_ctx.irq_depth--;
 }
 
 /* The IRQ whose handler is running, or -1. */
 int lx_current_irq(void)
 {
-	if (ctx.irq_depth == 0)
+	if (lx_ctx.irq_depth == 0)
 		return -1;
-	return ctx.irq_depth <= LX_IRQ_NEST_MAX ? ctx.irq_stack[ctx.irq_depth - 1] : -1;
+	return lx_ctx.irq_depth <= LX_IRQ_NEST_MAX ? lx_ctx.irq_stack[lx_ctx.irq_depth - 1] : -1;
 }
 
 /* Records that a timer callback starts (an hrtimer's: timer is the running hrtimer). */
 void lx_timer_callback_enter(bool hrtimer, const void *timer)
 {
 	if (hrtimer) {
-		ctx.hrtimer_cb++;
-		ctx.running_hrtimer = timer;
+		lx_ctx.hrtimer_cb++;
+		lx_ctx.running_hrtimer = timer;
 	} else {
-		ctx.timer_cb++;
+		lx_ctx.timer_cb++;
 	}
 }
 
 /* Records that the running timer callback returned (hrtimer first, as nesting allows). */
 void lx_timer_callback_exit(void)
 {
-	if (ctx.hrtimer_cb > 0) {
-		ctx.hrtimer_cb--;
-		ctx.running_hrtimer = NULL;
-	} else if (ctx.timer_cb > 0) {
-		ctx.timer_cb--;
+	if (lx_ctx.hrtimer_cb > 0) {
+		lx_ctx.hrtimer_cb--;
+		lx_ctx.running_hrtimer = NULL;
+	} else if (lx_ctx.timer_cb > 0) {
+		lx_ctx.timer_cb--;
 	}
 }
 
 /* The hrtimer whose callback runs now, or NULL. */
 const void *lx_running_hrtimer(void)
 {
-	return ctx.running_hrtimer;
+	return lx_ctx.running_hrtimer;
 }
 
 #if LX_DEBUG_ATOMIC_SLEEP
@@ -106,43 +90,43 @@ const void *lx_running_hrtimer(void)
 void lx_atomic_enter(bool spinlock)
 {
 	if (sns_ctx()) {
-		ctx.isr_atomic++;
+		lx_ctx.isr_atomic++;
 		if (spinlock)
-			ctx.isr_spin++;
+			lx_ctx.isr_spin++;
 		return;
 	}
-	if (ctx.task_atomic++ == 0) {
+	if (lx_ctx.task_atomic++ == 0) {
 		/* With the CPU or interrupts locked, no dispatch can happen (and HRP2
 		 * forbids service calls under SIL_LOC_INT). */
-		ctx.dispatch_disabled_by_us = !sns_loc() && ctx.irqs_off == 0 && !sns_dsp();
-		if (ctx.dispatch_disabled_by_us)
+		lx_ctx.dispatch_disabled_by_us = !sns_loc() && lx_ctx.irqs_off == 0 && !sns_dsp();
+		if (lx_ctx.dispatch_disabled_by_us)
 			(void)dis_dsp();
 	}
 	if (spinlock)
-		ctx.task_spin++;
+		lx_ctx.task_spin++;
 }
 
 /* Closes an atomic section; the outermost one in a task re-enables dispatching. */
 void lx_atomic_exit(bool spinlock)
 {
 	if (sns_ctx()) {
-		if (ctx.isr_atomic == 0) {
+		if (lx_ctx.isr_atomic == 0) {
 			lx_report("unbalanced unlock", NULL, 0, "no atomic section open in interrupt context");
 			return;
 		}
-		ctx.isr_atomic--;
-		if (spinlock && ctx.isr_spin > 0)
-			ctx.isr_spin--;
+		lx_ctx.isr_atomic--;
+		if (spinlock && lx_ctx.isr_spin > 0)
+			lx_ctx.isr_spin--;
 		return;
 	}
-	if (ctx.task_atomic == 0) {
+	if (lx_ctx.task_atomic == 0) {
 		lx_report("unbalanced unlock", NULL, 0, "no atomic section open in task context");
 		return;
 	}
-	if (spinlock && ctx.task_spin > 0)
-		ctx.task_spin--;
-	if (--ctx.task_atomic == 0 && ctx.dispatch_disabled_by_us) {
-		ctx.dispatch_disabled_by_us = false;
+	if (spinlock && lx_ctx.task_spin > 0)
+		lx_ctx.task_spin--;
+	if (--lx_ctx.task_atomic == 0 && lx_ctx.dispatch_disabled_by_us) {
+		lx_ctx.dispatch_disabled_by_us = false;
 		(void)ena_dsp();
 	}
 }
@@ -150,20 +134,20 @@ void lx_atomic_exit(bool spinlock)
 /* Atomic depth of the current context. */
 unsigned int lx_preempt_count(void)
 {
-	return sns_ctx() ? ctx.isr_atomic : ctx.task_atomic;
+	return sns_ctx() ? lx_ctx.isr_atomic : lx_ctx.task_atomic;
 }
 
 /* Counts one local_irq_save/disable level. */
 void lx_irqs_off_enter(void)
 {
-	ctx.irqs_off++;
+	lx_ctx.irqs_off++;
 }
 
 /* Uncounts one local_irq_restore/enable level. */
 void lx_irqs_off_exit(void)
 {
-	if (ctx.irqs_off > 0)
-		ctx.irqs_off--;
+	if (lx_ctx.irqs_off > 0)
+		lx_ctx.irqs_off--;
 }
 
 /* Interrupts just masked: one local_irq_save level, then a spin lock's atomic section. */
@@ -186,12 +170,12 @@ void lx_irqs_off_atomic_exit(void)
 void lx_atomic_enter(bool spinlock)
 {
 	(void)spinlock;
-	if (ctx.preempt++ != 0)
+	if (lx_ctx.preempt++ != 0)
 		return;
 	/* With interrupts or the CPU locked no dispatch can happen (and HRP2
 	 * forbids service calls under SIL_LOC_INT); an interrupt cannot dispatch. */
-	ctx.dispatch_disabled_by_us = ctx.irqs_off == 0 && !sns_ctx() && !sns_loc() && !sns_dsp();
-	if (ctx.dispatch_disabled_by_us)
+	lx_ctx.dispatch_disabled_by_us = lx_ctx.irqs_off == 0 && !sns_ctx() && !sns_loc() && !sns_dsp();
+	if (lx_ctx.dispatch_disabled_by_us)
 		(void)dis_dsp();
 }
 
@@ -199,12 +183,12 @@ void lx_atomic_enter(bool spinlock)
 void lx_atomic_exit(bool spinlock)
 {
 	(void)spinlock;
-	if (ctx.preempt == 0) {
+	if (lx_ctx.preempt == 0) {
 		lx_report("unbalanced unlock", NULL, 0, "no atomic section is open");
 		return;
 	}
-	if (--ctx.preempt == 0 && ctx.dispatch_disabled_by_us) {
-		ctx.dispatch_disabled_by_us = false;
+	if (--lx_ctx.preempt == 0 && lx_ctx.dispatch_disabled_by_us) {
+		lx_ctx.dispatch_disabled_by_us = false;
 		(void)ena_dsp();
 	}
 }
@@ -212,57 +196,57 @@ void lx_atomic_exit(bool spinlock)
 /* Atomic sections open (in an interrupt: with those of what it interrupted, as Linux counts). */
 unsigned int lx_preempt_count(void)
 {
-	return ctx.preempt;
+	return lx_ctx.preempt;
 }
 
 /* Counts one local_irq_save/disable level. */
 void lx_irqs_off_enter(void)
 {
-	ctx.irqs_off++;
+	lx_ctx.irqs_off++;
 }
 
 /* Uncounts one local_irq_restore/enable level. */
 void lx_irqs_off_exit(void)
 {
-	if (ctx.irqs_off > 0)
-		ctx.irqs_off--;
+	if (lx_ctx.irqs_off > 0)
+		lx_ctx.irqs_off--;
 }
 
 /* Interrupts just masked: one local_irq_save level and an atomic section (which
  * needs no dispatcher call, interrupts being masked). */
 void lx_irqs_off_atomic_enter(void)
 {
-	ctx.irqs_off++;
-	if (ctx.preempt++ == 0)
-		ctx.dispatch_disabled_by_us = false;
+	lx_ctx.irqs_off++;
+	if (lx_ctx.preempt++ == 0)
+		lx_ctx.dispatch_disabled_by_us = false;
 }
 
 /* The atomic section ends, then the local_irq_save level (interrupts still masked). */
 void lx_irqs_off_atomic_exit(void)
 {
 	lx_atomic_exit(true);
-	if (ctx.irqs_off > 0)
-		ctx.irqs_off--;
+	if (lx_ctx.irqs_off > 0)
+		lx_ctx.irqs_off--;
 }
 #endif /* LX_DEBUG_ATOMIC_SLEEP */
 
 /* True in interrupt context (ISRs, handlers, timer callbacks). */
 bool lx_in_interrupt(void)
 {
-	return sns_ctx() || ctx.irq_depth > 0 || ctx.hrtimer_cb > 0 || ctx.timer_cb > 0;
+	return sns_ctx() || lx_ctx.irq_depth > 0 || lx_ctx.hrtimer_cb > 0 || lx_ctx.timer_cb > 0;
 }
 
 /* True in hard-IRQ context: a Linux handler, an hrtimer callback, or an ISR
  * outside a timer_list callback (which Linux runs as a softirq). */
 bool lx_in_hardirq(void)
 {
-	return ctx.irq_depth > 0 || ctx.hrtimer_cb > 0 || (sns_ctx() && ctx.timer_cb == 0);
+	return lx_ctx.irq_depth > 0 || lx_ctx.hrtimer_cb > 0 || (sns_ctx() && lx_ctx.timer_cb == 0);
 }
 
 /* True in softirq context: a timer_list callback is running. */
 bool lx_in_softirq(void)
 {
-	return ctx.timer_cb > 0;
+	return lx_ctx.timer_cb > 0;
 }
 
 /* True if the calling code must not sleep. */
@@ -272,16 +256,16 @@ bool lx_in_atomic(void)
 	/* The context is asked once: outside interrupt context the depth is the task's. */
 	if (lx_in_interrupt())
 		return true;
-	return ctx.task_atomic > 0 || ctx.irqs_off > 0 || sns_loc() || sns_dsp();
+	return lx_ctx.task_atomic > 0 || lx_ctx.irqs_off > 0 || sns_loc() || sns_dsp();
 #else
-	return ctx.preempt > 0 || ctx.irqs_off > 0 || lx_in_interrupt() || sns_loc() || sns_dsp();
+	return lx_ctx.preempt > 0 || lx_ctx.irqs_off > 0 || lx_in_interrupt() || sns_loc() || sns_dsp();
 #endif
 }
 
 /* True with interrupts masked by linux_compat or by the CPU lock. */
 bool lx_irqs_masked(void)
 {
-	return ctx.irqs_off > 0 || sns_loc();
+	return lx_ctx.irqs_off > 0 || sns_loc();
 }
 
 /* Linux's irqs_disabled: masked, or in hard-IRQ context (where Linux runs
@@ -312,11 +296,11 @@ bool lx_context_forbids_sleep(char *buf, unsigned int len)
 	if (buf == NULL || len == 0)
 		return lx_in_atomic();
 	buf[0] = '\0';
-	if (ctx.hrtimer_cb > 0)
+	if (lx_ctx.hrtimer_cb > 0)
 		append_reason(buf, len, "hrtimer callback");
-	if (ctx.timer_cb > 0)
+	if (lx_ctx.timer_cb > 0)
 		append_reason(buf, len, "timer callback");
-	if (ctx.irq_depth > 0) {
+	if (lx_ctx.irq_depth > 0) {
 		snprintf(item, sizeof(item), "hard IRQ %d", lx_current_irq());
 		append_reason(buf, len, item);
 	}
@@ -325,17 +309,17 @@ bool lx_context_forbids_sleep(char *buf, unsigned int len)
 		append_reason(buf, len, item);
 	}
 #if LX_DEBUG_ATOMIC_SLEEP
-	spin = sns_ctx() ? ctx.isr_spin : ctx.task_spin;
+	spin = sns_ctx() ? lx_ctx.isr_spin : lx_ctx.task_spin;
 	atomic = lx_preempt_count();
 	if (spin > 0)
 		append_reason(buf, len, "spinlock held");
 	if (atomic > spin)
 		append_reason(buf, len, "preemption disabled");
 #else
-	if (ctx.preempt > 0)
+	if (lx_ctx.preempt > 0)
 		append_reason(buf, len, "spinlock held or preemption disabled");
 #endif
-	if (ctx.irqs_off > 0)
+	if (lx_ctx.irqs_off > 0)
 		append_reason(buf, len, "interrupts disabled");
 	else if (sns_loc())
 		append_reason(buf, len, "CPU locked");

@@ -102,7 +102,7 @@ void lx_usleep_range_at(unsigned long min, unsigned long max, const char *file, 
 	lx_waiter_init(&s.waiter);
 	hrtimer_setup(&s.timer, sleeper_wake, CLOCK_MONOTONIC, HRTIMER_MODE_REL);
 	hrtimer_start(&s.timer, us_to_ktime(min), HRTIMER_MODE_REL);
-	while (lx_waiter_sleep(&s.waiter, UINT64_MAX) != 0)
+	while (lx_waiter_sleep(&s.waiter, U64_MAX) != 0)
 		;
 	(void)hrtimer_cancel(&s.timer);
 }

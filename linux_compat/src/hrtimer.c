@@ -1,12 +1,16 @@
 /*
  * hrtimer.c — hrtimers on the RTOS tick.
  *
- * One list (linux/list.h) sorted by (expiry, queueing sequence).  The tick
- * ISR compares the head's expiry with the tick's time - the whole cost of a
- * tick with nothing due - and runs due callbacks one after another in its
- * own interrupt context.  Insertion scans from the tail: a periodic timer
- * re-queued by its callback usually expires after the others.  Queue updates are made under SIL_LOC_INT, so
- * timers may be started and cancelled from any context.
+ * One priority queue ordered by (expiry, queueing sequence): a pairing heap
+ * (linux_compat/timerheap.h), O(1) to insert and O(log n) amortized to take
+ * the first or cancel any, as Linux's rbtree timerqueue.  The tick ISR
+ * compares the first timer's expiry with the tick's time - the whole cost of
+ * a tick with nothing due - and runs due callbacks one after another in its
+ * own interrupt context.  A timer queued during that pass at a time already
+ * due waits on a FIFO for the pass to end and runs at the next tick, so a
+ * callback that re-arms itself in the past cannot hold the ISR.  Queue
+ * updates are made under SIL_LOC_INT, so timers may be started and cancelled
+ * from any context.
  */
 #include <linux/hrtimer.h>
 #include <linux/kernel.h>
@@ -21,46 +25,48 @@
 const unsigned int hrtimer_resolution = (unsigned int)LX_TICK_NS;
 
 static struct {
-	struct list_head head;
-	u64 next_seq;
+	struct lx_heap heap;
+	bool in_pass;                  /* the tick runs the due timers (those due at pass_now) */
+	u64 pass_now;
 	/* The timer whose callback runs; the timer itself is not touched after a
 	 * callback returning HRTIMER_NORESTART (it may have freed it). */
 	struct hrtimer *running;
-} queue = { .head = LIST_HEAD_INIT(queue.head) };
+} queue;
 
 /* Empties the queue (boot). */
 void lx_hrtimer_reset(void)
 {
-	INIT_LIST_HEAD(&queue.head);
-	queue.next_seq = 0;
+	lx_heap_init(&queue.heap);
+	queue.in_pass = false;
 	queue.running = NULL;
 }
 
 /* The first queued timer, or NULL. */
 static inline struct hrtimer *queue_first(void)
 {
-	return list_first_entry_or_null(&queue.head, struct hrtimer, lx_node);
+	struct lx_heap_node *first = lx_heap_first(&queue.heap);
+
+	return first != NULL ? container_of(first, struct hrtimer, lx_node) : NULL;
 }
 
-/* Inserts timer in (expiry, sequence) order: after every timer expiring no
- * later (its sequence is the largest); interrupts locked by the caller. */
+/* Queues timer after every timer expiring no later (its sequence is the
+ * largest); during the tick's pass a due one waits for the pass to end.
+ * Interrupts locked by the caller. */
 static void enqueue_locked(struct hrtimer *timer)
 {
-	struct list_head *pos;
-
-	timer->lx_seq = queue.next_seq++;
-	for (pos = queue.head.prev; pos != &queue.head; pos = pos->prev)
-		if (list_entry(pos, struct hrtimer, lx_node)->lx_expires <= timer->lx_expires)
-			break;
-	list_add(&timer->lx_node, pos);
+	timer->lx_node.key = (u64)timer->lx_expires;
 	timer->lx_queued = 1;
+	if (unlikely(queue.in_pass && timer->lx_expires <= (ktime_t)queue.pass_now))
+		lx_heap_defer(&queue.heap, &timer->lx_node);
+	else
+		lx_heap_insert(&queue.heap, &timer->lx_node);
 }
 
 /* Unlinks a queued timer; interrupts locked by the caller. */
 static void dequeue_locked(struct hrtimer *timer)
 {
-	list_del(&timer->lx_node);
 	timer->lx_queued = 0;
+	lx_heap_remove(&queue.heap, &timer->lx_node);
 }
 
 /* Prepares timer; reports re-initialisation of a queued timer (which is dequeued first). */
@@ -82,9 +88,8 @@ void hrtimer_init(struct hrtimer *timer, clockid_t clock_id, enum hrtimer_mode m
 		SIL_LOC_INT();
 	}
 	timer->function = NULL;
-	INIT_LIST_HEAD(&timer->lx_node);
+	timer->lx_node.child = timer->lx_node.next = timer->lx_node.prev = NULL;
 	timer->lx_expires = 0;
-	timer->lx_seq = 0;
 	timer->lx_clockid = clock_id;
 	timer->lx_queued = 0;
 	timer->lx_cancelled = 0;
@@ -280,26 +285,20 @@ ktime_t hrtimer_get_remaining(const struct hrtimer *timer)
 }
 
 /*
- * Takes the first due timer queued before this tick's pass began (limit) off the
- * queue and marks it running; NULL if none.  Timers a callback re-queues at a time
- * already due wait for the next tick instead of looping.  Interrupts locked by
- * the caller.
+ * Takes the first due timer off the queue and marks it running; NULL if none.
+ * (Timers queued due during the pass wait on the deferred FIFO, not here.)
+ * Interrupts locked by the caller.
  */
-static struct hrtimer *take_due_locked(u64 now, u64 limit)
+static struct hrtimer *take_due_locked(u64 now)
 {
-	struct hrtimer *t;
+	struct hrtimer *t = queue_first();
 
-	list_for_each_entry(t, &queue.head, lx_node) {
-		if (t->lx_expires > (ktime_t)now)
-			return NULL;
-		if (t->lx_seq < limit) {
-			dequeue_locked(t);
-			t->lx_cancelled = 0;
-			queue.running = t;
-			return t;
-		}
-	}
-	return NULL;
+	if (t == NULL || t->lx_expires > (ktime_t)now)
+		return NULL;
+	dequeue_locked(t);
+	t->lx_cancelled = 0;
+	queue.running = t;
+	return t;
 }
 
 /*
@@ -312,16 +311,16 @@ void lx_hrtimer_run_due(uint64_t now)
 {
 	struct hrtimer *t;
 	enum hrtimer_restart ret;
-	u64 limit;
 	SIL_PRE_LOC;
 
 	/* The per-tick fast path: nothing due. */
 	t = queue_first();
 	if (t == NULL || t->lx_expires > (ktime_t)now)
 		return;
-	limit = queue.next_seq;
 	SIL_LOC_INT();
-	while ((t = take_due_locked(now, limit)) != NULL) {
+	queue.in_pass = true;
+	queue.pass_now = now;
+	while ((t = take_due_locked(now)) != NULL) {
 		SIL_UNL_INT();
 		lx_timer_callback_enter(true, t);
 		ret = t->function(t);
@@ -340,5 +339,7 @@ void lx_hrtimer_run_due(uint64_t now)
 		if (ret == HRTIMER_RESTART)
 			t->lx_cancelled = 0;
 	}
+	queue.in_pass = false;
+	lx_heap_flush_deferred(&queue.heap);
 	SIL_UNL_INT();
 }

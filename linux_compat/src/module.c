@@ -13,7 +13,6 @@
 #include <linux/errno.h>
 #include <linux_compat/platform.h>
 #include <linux_compat/report.h>
-#include <stdio.h>
 #include <sil.h>
 #include <linux_compat/modparam.h>
 

@@ -44,7 +44,7 @@ static int lock_common(struct mutex *lock, bool interruptible, const char *what,
 			  (int)self, lock->name ? lock->name : "?");
 		return -EDEADLK;
 	}
-	ret = lx_count_acquire(&lock->free, &lock->waiters, UINT64_MAX, interruptible,
+	ret = lx_count_acquire(&lock->free, &lock->waiters, U64_MAX, interruptible,
 			       what, file, line);
 	if (ret == 0)
 		lock->owner = self;

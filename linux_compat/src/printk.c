@@ -3,7 +3,6 @@
  */
 #include <linux/kernel.h>
 #include <linux/printk.h>
-#include <stdio.h>
 #include <t_syslog.h>
 
 /* Syslog priority of a Linux log level digit; no level: LOG_WARNING (Linux's default). */

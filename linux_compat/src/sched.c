@@ -18,7 +18,8 @@
 
 /* Tasks whose wakeup is waiting for the interrupt lock to be released. */
 static uint32_t deferred_wake[(TNUM_TSKID + 32) / 32];
-static bool any_deferred_wake;
+/* A wakeup is deferred (read inline by the production spin_unlock_irqrestore). */
+bool lx_deferred_wake_pending;
 static unsigned int bh_disable_depth;
 static struct task_struct tasks[TNUM_TSKID + 1];
 
@@ -26,7 +27,7 @@ static struct task_struct tasks[TNUM_TSKID + 1];
 void lx_sched_reset(void)
 {
 	memset(deferred_wake, 0, sizeof(deferred_wake));
-	any_deferred_wake = false;
+	lx_deferred_wake_pending = false;
 	bh_disable_depth = 0;
 	memset(tasks, 0, sizeof(tasks));
 }
@@ -48,7 +49,7 @@ static void defer_wake(ID tskid)
 
 	SIL_LOC_INT();
 	deferred_wake[(tskid - 1) / 32] |= 1U << ((tskid - 1) % 32);
-	any_deferred_wake = true;
+	lx_deferred_wake_pending = true;
 	SIL_UNL_INT();
 }
 
@@ -76,7 +77,7 @@ void lx_deferred_wakeups_run(void)
 	bool in_isr;
 	SIL_PRE_LOC;
 
-	if (!any_deferred_wake || lx_irqs_masked())
+	if (!lx_deferred_wake_pending || lx_irqs_masked())
 		return;
 	in_isr = sns_ctx();
 	for (word = 0; word < sizeof(deferred_wake) / sizeof(deferred_wake[0]); word++) {
@@ -90,10 +91,10 @@ void lx_deferred_wakeups_run(void)
 					      : wup_tsk((ID)(word * 32 + bit + 1)));
 	}
 	SIL_LOC_INT();
-	any_deferred_wake = false;
+	lx_deferred_wake_pending = false;
 	for (word = 0; word < sizeof(deferred_wake) / sizeof(deferred_wake[0]); word++)
 		if (deferred_wake[word])
-			any_deferred_wake = true;
+			lx_deferred_wake_pending = true;
 	SIL_UNL_INT();
 }
 
@@ -155,7 +156,7 @@ void lx_waiter_init(struct lx_waiter *w)
 uint64_t lx_deadline_after_ms(long ms)
 {
 	if (ms < 0)
-		return UINT64_MAX;
+		return U64_MAX;
 	return lx_clock_now_ns() + (uint64_t)ms * 1000000U;
 }
 
@@ -170,7 +171,7 @@ int lx_waiter_sleep(struct lx_waiter *w, uint64_t deadline_ns)
 	for (;;) {
 		if (w->woken)
 			return 0;
-		if (deadline_ns == UINT64_MAX) {
+		if (deadline_ns == U64_MAX) {
 			er = slp_tsk();
 		} else {
 			now = lx_clock_now_ns();

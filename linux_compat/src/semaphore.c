@@ -24,13 +24,13 @@ void sema_init(struct semaphore *sem, int val)
 /* down with the caller's location for reports. */
 void lx_down_at(struct semaphore *sem, const char *file, int line)
 {
-	(void)lx_count_acquire(&sem->count, &sem->waiters, UINT64_MAX, false, "down()", file, line);
+	(void)lx_count_acquire(&sem->count, &sem->waiters, U64_MAX, false, "down()", file, line);
 }
 
 /* down_interruptible with the caller's location: 0 or -EINTR. */
 int lx_down_interruptible_at(struct semaphore *sem, const char *file, int line)
 {
-	return lx_count_acquire(&sem->count, &sem->waiters, UINT64_MAX, true,
+	return lx_count_acquire(&sem->count, &sem->waiters, U64_MAX, true,
 				"down_interruptible()", file, line);
 }
 

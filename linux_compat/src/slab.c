@@ -31,9 +31,13 @@
 #include <sil.h>
 
 #if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/asan_interface.h>
-#define lx_poison(addr, size)	ASAN_POISON_MEMORY_REGION((addr), (size))
-#define lx_unpoison(addr, size)	ASAN_UNPOISON_MEMORY_REGION((addr), (size))
+/* AddressSanitizer's run-time interface (what <sanitizer/asan_interface.h>
+ * declares; that header needs the C library's <stdint.h>, which Linux code
+ * does not see): free blocks are poisoned, so a use after kfree is caught. */
+void __asan_poison_memory_region(void const volatile *addr, size_t size);
+void __asan_unpoison_memory_region(void const volatile *addr, size_t size);
+#define lx_poison(addr, size)	__asan_poison_memory_region((addr), (size))
+#define lx_unpoison(addr, size)	__asan_unpoison_memory_region((addr), (size))
 #else
 #define lx_poison(addr, size)	((void)(addr), (void)(size))
 #define lx_unpoison(addr, size)	((void)(addr), (void)(size))
@@ -57,7 +61,7 @@ struct free_link {
 	uint32_t next;
 	uint32_t prev;
 };
-#define NO_BLOCK	UINT32_MAX
+#define NO_BLOCK	U32_MAX
 
 static uint8_t block_state[LX_NR_GRANULES];
 static uint32_t free_head[LX_MAX_ORDERS];

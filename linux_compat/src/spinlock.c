@@ -9,42 +9,19 @@
 #include <linux/spinlock.h>
 #include <linux/kernel.h>
 #include <linux_compat/context.h>
+#include <linux_compat/irqmask.h>
 #include <linux_compat/report.h>
 #include <linux_compat/sched.h>
 #include <sil.h>
 
-#if defined(EV3LX_AM1808)
-/* CPSR interrupt mask bits (ARM Architecture Reference Manual, ARMv5: I = IRQ, F = FIQ). */
-#define CPSR_IRQ_MASK	0x80U
-#define CPSR_FIQ_MASK	0x40U
-
-/* Saves the CPSR and masks interrupts with mrs/orr/msr, as Linux's ARMv5
- * arch_local_irq_save does; FIQ is masked too, as SIL_LOC_INT masks every
- * interrupt.  (SIL_LOC_INT's saved state is private to each TOPPERS target
- * port, so it cannot be carried in flags.) */
-static inline unsigned long irq_mask_save(void)
-{
-	unsigned long cpsr, masked;
-
-	__asm__ volatile("mrs %0, cpsr" : "=r"(cpsr));
-	masked = cpsr | CPSR_IRQ_MASK | CPSR_FIQ_MASK;
-	__asm__ volatile("msr cpsr_c, %0" : : "r"(masked) : "memory", "cc");
-	return cpsr;
-}
-
-/* Restores the CPSR control byte irq_mask_save returned. */
-static inline void irq_mask_restore(unsigned long cpsr)
-{
-	__asm__ volatile("msr cpsr_c, %0" : : "r"(cpsr) : "memory", "cc");
-}
-#else
+#if !defined(EV3LX_AM1808)
 /* Host: the host kernel's interrupt mask (sil.h's host target). */
-static inline unsigned long irq_mask_save(void)
+unsigned long lx_irq_mask_save(void)
 {
 	return sil_host_loc_int();
 }
 
-static inline void irq_mask_restore(unsigned long saved)
+void lx_irq_mask_restore(unsigned long saved)
 {
 	sil_host_unl_int((uint_t)saved);
 }
@@ -56,7 +33,7 @@ static unsigned long irq_disable_saved; /* state to return to at local_irq_enabl
 /* Masks all interrupts; returns the previous state. */
 unsigned long arch_local_irq_save(void)
 {
-	unsigned long flags = irq_mask_save();
+	unsigned long flags = lx_irq_mask_save();
 
 	lx_irqs_off_enter();
 	return flags;
@@ -66,7 +43,7 @@ unsigned long arch_local_irq_save(void)
 void arch_local_irq_restore(unsigned long flags)
 {
 	lx_irqs_off_exit();
-	irq_mask_restore(flags);
+	lx_irq_mask_restore(flags);
 	lx_deferred_wakeups_run();
 }
 
@@ -171,7 +148,7 @@ int lx_spin_trylock(spinlock_t *lock)
 /* Interrupts masked, then the lock. */
 unsigned long lx_spin_lock_irqsave(spinlock_t *lock, const char *file, int line)
 {
-	unsigned long flags = irq_mask_save();
+	unsigned long flags = lx_irq_mask_save();
 
 	lx_irqs_off_atomic_enter();
 	take(lock, file, line);
@@ -183,7 +160,7 @@ void lx_spin_unlock_irqrestore(spinlock_t *lock, unsigned long flags, const char
 {
 	give(lock, file, line);
 	lx_irqs_off_atomic_exit();
-	irq_mask_restore(flags);
+	lx_irq_mask_restore(flags);
 	/* A wake_up under the lock takes effect here, Linux's preemption point. */
 	lx_deferred_wakeups_run();
 }

@@ -1,5 +1,11 @@
 /*
  * timer.c — jiffies and timer_list timers, served by the tick ISR.
+ *
+ * Pending timers are in a pairing heap (linux_compat/timerheap.h) ordered by
+ * expiry (wrap-safe, as time_before) and queueing sequence: O(1) to add,
+ * O(log n) amortized to take the first or delete any, where Linux uses its
+ * timer wheel.  A timer queued at a time already due while the tick runs the
+ * due ones waits for the next tick.
  */
 #include <linux/timer.h>
 #include <linux/jiffies.h>
@@ -8,6 +14,7 @@
 #include <linux_compat/context.h>
 #include <linux_compat/report.h>
 #include <linux_compat/sched.h>
+#include <linux_compat/timerheap.h>
 #include <kernel.h>
 #include <sil.h>
 
@@ -21,20 +28,29 @@ u64 jiffies_64 = INITIAL_JIFFIES;
  * the ARM926, which has no divide instruction. */
 static u64 next_jiffy_ns = TICK_NSEC;
 
-/* Pending timers in expiry order, FIFO among equal expiries (linux/list.h). */
+/* Pending timers in expiry order, FIFO among equal expiries. */
 static struct {
-	struct list_head head;
-	u64 next_seq;
+	struct lx_heap heap;
+	bool in_pass;                  /* the tick runs the timers due at pass_now */
+	u64 pass_now;                  /* jiffies_64 */
 	/* The timer whose callback runs (the timer is not touched after its
 	 * callback: the callback may free it). */
 	const struct timer_list *running;
-} tq = { .head = LIST_HEAD_INIT(tq.head) };
+} tq;
+
+/* The first pending timer, or NULL. */
+static inline struct timer_list *queue_first(void)
+{
+	struct lx_heap_node *first = lx_heap_first(&tq.heap);
+
+	return first != NULL ? container_of(first, struct timer_list, lx_node) : NULL;
+}
 
 /* Empties the queue and restarts jiffies (boot). */
 void lx_timers_reset(void)
 {
-	INIT_LIST_HEAD(&tq.head);
-	tq.next_seq = 0;
+	lx_heap_init(&tq.heap);
+	tq.in_pass = false;
 	tq.running = NULL;
 	jiffies_64 = INITIAL_JIFFIES;
 	jiffies = (unsigned long)jiffies_64;
@@ -71,24 +87,25 @@ u64 get_jiffies_64(void)
 	return j;
 }
 
-/* Inserts timer sorted by expiry (wrap-safe), after every timer expiring no
- * later (FIFO among equals), scanning from the tail; locked by the caller. */
+/* Queues timer after every timer expiring no later (FIFO among equals); during
+ * the tick's pass a due one waits for the pass to end.  The heap's key is the
+ * expiry on the 64-bit jiffies count (expires is jiffies' wrapping value, and
+ * its distance from now fits a long, as time_before assumes).  Locked by the
+ * caller. */
 static void enqueue_locked(struct timer_list *timer)
 {
-	struct list_head *pos;
-
-	timer->lx_seq = tq.next_seq++;
-	for (pos = tq.head.prev; pos != &tq.head; pos = pos->prev)
-		if (!time_before(timer->expires, list_entry(pos, struct timer_list, lx_node)->expires))
-			break;
-	list_add(&timer->lx_node, pos);
+	timer->lx_node.key = jiffies_64 + (u64)(s64)(long)(timer->expires - (unsigned long)jiffies_64);
 	timer->lx_pending = 1;
+	if (unlikely(tq.in_pass && timer->lx_node.key <= tq.pass_now))
+		lx_heap_defer(&tq.heap, &timer->lx_node);
+	else
+		lx_heap_insert(&tq.heap, &timer->lx_node);
 }
 
 /* Unlinks a pending timer; locked by the caller. */
 static void dequeue_locked(struct timer_list *timer)
 {
-	list_del(&timer->lx_node);
+	lx_heap_remove(&tq.heap, &timer->lx_node);
 	timer->lx_pending = 0;
 }
 
@@ -106,8 +123,7 @@ void timer_setup(struct timer_list *timer, void (*fn)(struct timer_list *), unsi
 	timer->expires = 0;
 	timer->function = fn;
 	timer->flags = flags;
-	INIT_LIST_HEAD(&timer->lx_node);
-	timer->lx_seq = 0;
+	timer->lx_node.child = timer->lx_node.next = timer->lx_node.prev = NULL;
 	timer->lx_pending = 0;
 	timer->lx_magic = TIMER_MAGIC;
 }
@@ -201,38 +217,34 @@ int (del_timer_sync)(struct timer_list *timer)
 	return lx_del_timer_sync_at(timer, NULL, 0);
 }
 
-/* Takes the first due timer queued before this pass (limit) off the queue
- * (marked running), or NULL; interrupts locked by the caller. */
-static struct timer_list *take_due_locked(unsigned long now, u64 limit)
+/* Takes the first due timer off the queue (marked running), or NULL; (timers
+ * queued due during the pass wait on the deferred FIFO); interrupts locked by
+ * the caller. */
+static struct timer_list *take_due_locked(u64 now)
 {
-	struct timer_list *t;
+	struct timer_list *t = queue_first();
 
-	list_for_each_entry(t, &tq.head, lx_node) {
-		if (!time_after_eq(now, t->expires))
-			return NULL;
-		if (t->lx_seq < limit) {
-			dequeue_locked(t);
-			tq.running = t;
-			return t;
-		}
-	}
-	return NULL;
+	if (t == NULL || t->lx_node.key > now)
+		return NULL;
+	dequeue_locked(t);
+	tq.running = t;
+	return t;
 }
 
 /* Runs the due timer_list callbacks (tick ISR), unless bottom halves are disabled. */
 void lx_timers_run_due(void)
 {
 	struct timer_list *t;
-	const struct timer_list *first = list_first_entry_or_null(&tq.head, struct timer_list, lx_node);
-	unsigned long now = jiffies;
-	u64 limit;
+	const struct timer_list *first = queue_first();
+	u64 now = jiffies_64;
 	SIL_PRE_LOC;
 
-	if (first == NULL || time_before(now, first->expires) || lx_bh_disabled())
+	if (first == NULL || first->lx_node.key > now || lx_bh_disabled())
 		return;
-	limit = tq.next_seq;
 	SIL_LOC_INT();
-	while ((t = take_due_locked(now, limit)) != NULL) {
+	tq.in_pass = true;
+	tq.pass_now = now;
+	while ((t = take_due_locked(now)) != NULL) {
 		SIL_UNL_INT();
 		lx_timer_callback_enter(false, t);
 		t->function(t);
@@ -240,5 +252,7 @@ void lx_timers_run_due(void)
 		SIL_LOC_INT();
 		tq.running = NULL;
 	}
+	tq.in_pass = false;
+	lx_heap_flush_deferred(&tq.heap);
 	SIL_UNL_INT();
 }

@@ -21,7 +21,6 @@
 #include <linux_compat/report.h>
 #include <linux_compat/sched.h>
 #include <linux_compat/workqueue.h>
-#include <stdio.h>
 #include <sil.h>
 
 static struct workqueue_struct default_wq = { .name = "events", .in_use = true };

@@ -13,7 +13,6 @@
 #define RTOS_HOST_H
 
 #include <stdbool.h>
-#include <stdint.h>
 #include "kernel.h"
 #include "rtos_cfg.h"
 

@@ -8,7 +8,29 @@
 #define TOPPERS_T_STDDEF_H
 
 #include <stddef.h>
+
+#if __STDC_HOSTED__ && !defined(__KERNEL__)
 #include <stdint.h>
+#else
+/*
+ * Without a C library — a freestanding build, or Linux code, which is
+ * compiled -nostdinc as kbuild compiles it and may reach this header only
+ * after its driver (the service calls a hack defines) — the fixed-width types
+ * come from the compiler's predefined ones, as TOPPERS's t_stddef.h defines
+ * them where <stdint.h> is missing.  They are the C library's own types on
+ * every build, so the definitions agree where both are seen.
+ */
+typedef __INT8_TYPE__		int8_t;
+typedef __INT16_TYPE__		int16_t;
+typedef __INT32_TYPE__		int32_t;
+typedef __INT64_TYPE__		int64_t;
+typedef __UINT8_TYPE__		uint8_t;
+typedef __UINT16_TYPE__		uint16_t;
+typedef __UINT32_TYPE__		uint32_t;
+typedef __UINT64_TYPE__		uint64_t;
+typedef __INTPTR_TYPE__		intptr_t;
+typedef __UINTPTR_TYPE__	uintptr_t;
+#endif
 
 typedef int             bool_t;
 typedef signed int      int_t;

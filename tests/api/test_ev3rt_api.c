@@ -201,8 +201,8 @@ static void sensor_body(void)
 	is_int(ev3_sensor_config(EV3_PORT_4, INFRARED_SENSOR), E_OK, "config IR on 4");
 	is_int(ev3_sensor_get_type(EV3_PORT_3), COLOR_SENSOR, "get_type returns the type");
 	is_int(ev3_sensor_get_type((sensor_port_t)4), E_ID, "get_type bad port: E_ID");
-	is_int(ev3_sensor_config(EV3_PORT_1, HT_NXT_ACCEL_SENSOR), E_NOSPT,
-	       "an NXT I2C sensor: E_NOSPT (no driver yet)");
+	is_int(ev3_sensor_config(EV3_PORT_1, TNUM_SENSOR_TYPE), E_PAR,
+	       "an unknown sensor type: E_PAR");
 	is_int(ev3_sensor_get_type(EV3_PORT_1), TOUCH_SENSOR, "and the port keeps its type");
 
 	/* gyro: the first read waits for the handshake */

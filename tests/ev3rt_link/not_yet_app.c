@@ -12,11 +12,9 @@ void main_task(intptr_t exinf)
 {
 	memfile_t file = { NULL, 0, 0 };
 	image_t image;
-	int16_t axes[3];
 
 	ev3_lcd_draw_string("hello", 0, 0);
 	ev3_image_load(&file, &image);
-	ht_nxt_accel_sensor_measure(EV3_PORT_1, axes);
 	(void)exinf;
 }
 

@@ -128,6 +128,22 @@ static void test_sensors(void)
 	is_int(et_number(line, "api_errors"), 0, "no API errors");
 }
 
+/* The NXT I2C sensors on three ports: d_analog calls them NXT IIC, the API reads ev3sim's scene. */
+static void test_nxt_iic_sensors(void)
+{
+	const char *args[] = { "sensors", "--seconds", "1", "--in1", "ht-accel", "--in2", "ht-color",
+			       "--in3", "nxt-temp", NULL };
+	char line[1024];
+
+	ok(et_run(&run, args) && run.status == 0, "sensors with ht-accel, ht-color, nxt-temp on 1..3");
+	et_last_line(&run, line, sizeof(line));
+	ok(strstr(run.out, "/dev/lms_dcm: in 123 123 123") != NULL, "d_analog: three NXT IIC devices (123)");
+	ok(strstr(run.out, "in1 accel=0,0,200") && strstr(run.out, "in2 ht_color=17") &&
+	   strstr(run.out, "in3 temp_c=22.5000"), "live values through the API");
+	ok(strstr(line, "in1=ht-accel/NXT_IIC") && strstr(line, "in3=nxt-temp/NXT_IIC"), "summary per port");
+	is_int(et_number(line, "api_errors"), 0, "no API errors");
+}
+
 static void test_files(void)
 {
 	char csv[] = "/tmp/ev3sim-test-XXXXXX", log[] = "/tmp/ev3sim-test-XXXXXX",
@@ -225,11 +241,12 @@ static void test_output_errors(void)
 
 int main(void)
 {
-	tap_plan(5 + 29 * 2 + 9 + 10 + 8 + 4 * 4 + 2);
+	tap_plan(5 + 29 * 2 + 9 + 10 + 5 + 8 + 4 * 4 + 2);
 	test_help();
 	test_bad_input();
 	test_motor();
 	test_sensors();
+	test_nxt_iic_sensors();
 	test_files();
 	test_output_errors();
 	return tap_done();

@@ -19,6 +19,7 @@
 #include "ui_hack.h"
 #include "power_hack.h"
 #include "sound_hack.h"
+#include "iic_hack.h"
 
 /* A new module, as a user adds one: its own header's range, nothing else touched. */
 #define NEWDRV_FN_FIRST 80
@@ -39,6 +40,7 @@ static const struct rtos_cfg newdrv_cfg = {
 
 static const struct rtos_cfg *const modules[] = {
 	&pwm_hack_cfg, &analog_hack_cfg, &uart_hack_cfg, &ui_hack_cfg, &power_hack_cfg, &sound_hack_cfg,
+	&iic_hack_cfg,
 	&newdrv_cfg, NULL,
 };
 

@@ -17,7 +17,7 @@ static void from_irq(void *arg)
 
 static void body(void)
 {
-	struct lms_uart_types t;
+	struct lms_uart_types t = { 0 };
 	const struct lms_uart_shm *map = NULL;
 	uint8_t data[40] = { 1, 2, 3 };
 	unsigned fn;

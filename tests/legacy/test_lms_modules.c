@@ -6,9 +6,13 @@
  * and keep their own; a HwId module parameter selects a board table; GPIO
  * registers through plain `volatile unsigned long *` and struct-of-ULONG
  * pointers with compound read-modify-write statements; a GPIO edge interrupt;
- * eHRPWM1 as 16-bit registers through one 0x2854-byte ioremap window.
+ * eHRPWM1 as 16-bit registers through one 0x2854-byte ioremap window; SPI0
+ * frames to the EV3's converter (SPIBUF's data half read as 16 bits), UART0
+ * in loopback polled by 8-bit LSR reads, eCAP0's 32-bit CAP1 written as two
+ * 16-bit halves.
  */
 #include <stdio.h>
+#include <string.h>
 
 #include "tap.h"
 #include "sil.h"
@@ -23,6 +27,8 @@
 
 #include "lms_gpio_hack.h"
 #include "lms_motor_hack.h"
+#include "lms_serial_hack.h"
+#include "host_sim/devices/spi_adc.h"
 
 #define MS            1000000ULL
 #define GPIO_OUT_EP2  HS_GPIO(3, 13)   /* lms_gpio's output on board EP2 */
@@ -81,6 +87,23 @@ static void body(void)
 	hs_gpio_set_input(GPIO_IN_EP2, 1);
 	dly_tsk(1);
 	is_int((int)lms_gpio_edges(), 4, "after unload the interrupt is released: no more edges counted");
+
+	/* lms_serial: SPI0 and the converter, UART0 in loopback, eCAP0's 32-bit CAP1 in 16-bit halves */
+	is_int(lx_module_param_set("lms_serial", "HwId", "2"), E_OK, "lms_serial.HwId=2");
+	is_int(lms_serial_load(), 0, "lms_serial's init succeeds");
+	is_int(lms_serial_board(), 2, "lms_serial's Hw is its own too");
+	is_int((int)(lms_serial_adc_answer(2) >> 12), 5,
+	       "SPI0: the third frame answers the channel the first one asked for (ADS7957 pipeline)");
+	is_int((int)lms_serial_adc_answer(2), (int)ads7957_word(5, ev3_adc_channel_mv(5)),
+	       "with the converter's value for it (SPIBUF's data half read as 16 bits)");
+	{
+		char echo[8] = "";
+
+		is_int(lms_serial_echo(echo, sizeof(echo)), 3, "UART0 loopback: three bytes came back");
+		ok(memcmp(echo, "EV3", 3) == 0, "the bytes sent, polled by 8-bit reads of LSR");
+	}
+	is_int((int)lms_serial_pwm_period(), 0x12345, "eCAP0 CAP1 written as two 16-bit halves reads back whole");
+	lms_serial_unload();
 	done = true;
 }
 
@@ -100,7 +123,7 @@ int main(void)
 	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
 	struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 1 };
 
-	tap_plan(16);
+	tap_plan(24);
 	if (hs_sim_boot(&scn) != E_OK)
 		tap_bail_out(rtos_host_boot_error());
 	if (!hs_board_traps_pointers()) {
@@ -108,11 +131,14 @@ int main(void)
 
 		snprintf(why, sizeof(why), "%s", hs_board_trap_unavailable_reason());
 		hs_sim_shutdown();
-		tap_skip(16, why);
+		tap_skip(24, why);
 		return tap_done();
 	}
 	/* The boot loader's part on the brick: PSC1 powers eHRPWM1. */
 	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_EHRPWM), HS_PSC_ENABLE);
+	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_ECAP), HS_PSC_ENABLE);
+	hs_psc_force(HS_PSC0_MODULE(HS_LPSC0_SPI0), HS_PSC_ENABLE);
+	hs_psc_force(HS_PSC0_MODULE(HS_LPSC0_UART0), HS_PSC_ENABLE);
 	started = true;
 	for (int i = 0; i < 100 && !done; i++)
 		hs_sim_run_for(10 * MS);

@@ -31,6 +31,7 @@ ER ev3sim_motor_app(const struct ev3sim_motor_opts *o, FILE *out, char *err, siz
 enum ev3sim_input_device {
 	EV3SIM_IN_NONE, EV3SIM_IN_TOUCH, EV3SIM_IN_NXT_TOUCH, EV3SIM_IN_NXT_LIGHT,
 	EV3SIM_IN_GYRO, EV3SIM_IN_COLOR, EV3SIM_IN_ULTRASONIC, EV3SIM_IN_IR,
+	EV3SIM_IN_HT_ACCEL, EV3SIM_IN_HT_COLOR, EV3SIM_IN_NXT_TEMP,     /* NXT I2C sensors */
 	EV3SIM_IN_COUNT
 };
 enum ev3sim_output_device {
@@ -42,6 +43,10 @@ const char *ev3sim_input_device_name(enum ev3sim_input_device d);
 const char *ev3sim_output_device_name(enum ev3sim_output_device d);
 bool ev3sim_input_device_parse(const char *s, enum ev3sim_input_device *d);
 bool ev3sim_output_device_parse(const char *s, enum ev3sim_output_device *d);
+/* Plugs NXT I2C sensor device d into input port (0..3) as ev3sim shows them: an accelerometer
+ * lying flat (1 g on Z, about 200 counts), a colour sensor V2 seeing white, a temperature
+ * sensor at 22.5 C.  E_PAR if d is not an NXT I2C device. */
+ER ev3sim_attach_nxt_iic(unsigned port, enum ev3sim_input_device d);
 
 struct ev3sim_sensors_opts {
 	enum ev3sim_input_device in[4];

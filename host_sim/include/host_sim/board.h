@@ -39,6 +39,10 @@
 #define HS_ECAP0_BASE      0x01F06000U
 #define HS_ECAP1_BASE      0x01F07000U
 #define HS_TIMER64P3_BASE  0x01F0D000U
+#define HS_TIMER64P1_BASE  0x01C21000U
+#define HS_TIMER64P1_INPUT_HZ HS_OSCIN_HZ  /* TIMER64P0/P1 count the 24 MHz oscillator */
+#define HS_TIMER64P1_TINT12 23U            /* AINTC lines of TIMER64P1's period interrupts */
+#define HS_TIMER64P1_TINT34 24U
 #define HS_AINTC_BASE      0xFFFEE000U
 
 /* Clocks of the modelled board (EV3: 24 MHz crystal, PLL0 300 MHz, PLL1 132 MHz as LEGO sets it). */

@@ -21,4 +21,12 @@ uint32_t hs_timer64p3_tim34(void);
 /* Frequency TIM34 counts at under the current TGCR/TCR (0 if stopped). */
 uint64_t hs_timer64p3_tim34_hz(void);
 
+/*
+ * TIMER64P1 counts the 24 MHz oscillator and pulses TINT12_1 / TINT34_1
+ * (AINTC 23 / 24) when a half matches its period with INTCTLSTAT's
+ * PRDINTENxx set: the tick of the NXT I2C bit engine.  Its TIM34 rate now
+ * (0 if stopped).
+ */
+uint64_t hs_timer64p1_tim34_hz(void);
+
 #endif /* HOST_SIM_TIMER64_H */

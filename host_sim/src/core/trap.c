@@ -16,8 +16,16 @@
  * modify-write is one read and one write on the bus, as on the ARM (LDR,
  * ORR, STR); compares and bit tests only read.  Faults outside
  * the window space go to the handler installed before ours (ASan's, or the
- * default action).  Elsewhere (qemu-arm user mode) accesses are not
- * emulated: a fault in the window space is reported clearly and aborts.
+ * default action).
+ *
+ * On ARM Linux (the arm926 configuration under qemu-arm, whose `unsigned
+ * long` and pointers are the target's 32 bits) the handler performs the
+ * faulting A32 load/store with hs_arm_emulate (host_sim/arm_decode.h: LDR/
+ * STR/LDRB/STRB, LDRH/STRH/LDRSB/LDRSH/LDRD/STRD, LDM/STM, SWP, every
+ * addressing mode and write-back) on the same accessor path, updating the
+ * saved registers and the PC.  An instruction neither decoder handles stops
+ * the run with a report naming the instruction, its address and the
+ * register's physical address — never a bare crash.
  */
 #define _GNU_SOURCE
 #include <signal.h>
@@ -29,6 +37,7 @@
 
 #include "rtos_host.h"
 #include "sil.h"
+#include "host_sim/arm_decode.h"
 #include "core_parts.h"
 #include "space_internal.h"
 
@@ -352,6 +361,37 @@ static void emulate_alu(mcontext_t *mc, const struct insn *in, uintptr_t addr)
 	}
 	mc->gregs[REG_EFL] = (greg_t)flags;
 }
+#elif defined(__arm__) && defined(__linux__)
+#define HS_TRAP_EMULATES 1
+
+static uint32_t bus_read(void *ctx, uint32_t addr, unsigned width)
+{
+	(void)ctx;
+	return sil_host_read((const volatile void *)(uintptr_t)addr, width);
+}
+
+static void bus_write(void *ctx, uint32_t addr, unsigned width, uint32_t value)
+{
+	(void)ctx;
+	sil_host_write((volatile void *)(uintptr_t)addr, width, value);
+}
+
+/* Performs the faulting ARM instruction on the saved context; false (why set) if it is not a load/store form. */
+static bool emulate_arm(mcontext_t *mc, char *why, size_t whylen)
+{
+	static const struct hs_arm_bus bus = { .read = bus_read, .write = bus_write };
+	unsigned long *saved = &mc->arm_r0;          /* r0..r10, fp, ip, sp, lr, pc: consecutive */
+	uint32_t regs[16], cpsr = (uint32_t)mc->arm_cpsr;
+
+	for (unsigned r = 0; r < 16U; r++)
+		regs[r] = (uint32_t)saved[r];
+	if (hs_arm_emulate(*(const uint32_t *)(uintptr_t)regs[HS_ARM_PC], regs, &cpsr, &bus, why, whylen) != 0)
+		return false;
+	for (unsigned r = 0; r < 16U; r++)
+		saved[r] = regs[r];
+	mc->arm_cpsr = cpsr;
+	return true;
+}
 #else
 #define HS_TRAP_EMULATES 0
 #endif
@@ -380,7 +420,7 @@ static void trap_handler(int sig, siginfo_t *si, void *uctx)
 		chain(sig, si, uctx);
 		return;
 	}
-#if HS_TRAP_EMULATES
+#if HS_TRAP_EMULATES && defined(__x86_64__)
 	{
 		ucontext_t *uc = uctx;
 		mcontext_t *mc = &uc->uc_mcontext;
@@ -403,6 +443,18 @@ static void trap_handler(int sig, siginfo_t *si, void *uctx)
 		else
 			reg_put(mc, &in, sil_host_read((const volatile void *)addr, in.width));
 		mc->gregs[REG_RIP] += (greg_t)in.len;
+	}
+#elif HS_TRAP_EMULATES
+	{
+		ucontext_t *uc = uctx;
+		char why[160];
+
+		if (!emulate_arm(&uc->uc_mcontext, why, sizeof(why))) {
+			rtos_host_bug("host_sim", "plain pointer access to register window address %p (physical 0x%08lx): "
+				      "the instruction at %p is %s", (void *)addr, (unsigned long)hs_space_to_phys(addr),
+				      (const void *)uc->uc_mcontext.arm_pc, why);
+			abort();
+		}
 	}
 #else
 	(void)uctx;
@@ -445,6 +497,6 @@ const char *hs_trap_reason(void)
 #if HS_TRAP_EMULATES
 	return "";
 #else
-	return "trapping plain pointer accesses needs x86-64 Linux (not available here, e.g. qemu-arm user mode)";
+	return "trapping plain pointer accesses needs x86-64 or ARM Linux";
 #endif
 }

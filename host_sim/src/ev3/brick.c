@@ -22,6 +22,7 @@
 #include "host_sim/devices/uart16550.h"
 #include "host_sim/devices/ev3_ui.h"
 #include "host_sim/devices/ev3_power.h"
+#include "nxt_iic_bus.h"
 
 #define PULLUP_OHMS       10000U
 #define EV3_TOUCH_ID_OHMS 2200U
@@ -108,9 +109,16 @@ static void input_apply_pins(struct in_port *p)
 	case EV3_INPUT_UART:
 		pin6 = p->line_high ? HS_EXT_HIGH : HS_EXT_LOW;
 		break;
+	case EV3_INPUT_NXT_IIC:
+		/* pins 5 and 6 are the bus: the sensor's pull-ups and its SDA */
+		hs_gpio_drive(pins->pin2, HS_EXT_LOW);
+		nxt_iic_bus_apply(p->index, true);
+		return;
 	default:
 		break;
 	}
+	if (p->kind == EV3_INPUT_NXT_IIC)
+		nxt_iic_bus_apply(p->index, false);
 	hs_gpio_drive(pins->pin2, pin2);
 	hs_gpio_drive(pins->pin5, pin5);
 	hs_gpio_drive(pins->pin6, pin6);
@@ -279,6 +287,8 @@ static void input_clear(struct in_port *p)
 	struct hs_uart *u = ev3_input_uart(p->index);
 
 	hs_event_cancel(&p->bounce_ev);
+	if (p->kind == EV3_INPUT_NXT_IIC)
+		nxt_iic_bus_detach(p->index);
 	if (p->sensor) {
 		uart_sensor_destroy(p->sensor);
 		p->sensor = NULL;
@@ -346,6 +356,26 @@ ER ev3_attach_uart_sensor(unsigned port, uint8_t type, const struct uart_sensor_
 		hs_uart_set_peer(u, &peer);
 	}
 	uart_sensor_power(p->sensor, true);
+	return E_OK;
+}
+
+ER ev3_attach_nxt_iic(unsigned port, enum nxt_iic_kind kind, const struct nxt_iic_scene *scene)
+{
+	struct in_port *p;
+
+	if (!brick.ready)
+		return E_OBJ;
+	if (port >= EV3_INPUT_PORTS)
+		return E_ID;
+	if (kind < NXT_IIC_HT_ACCEL || kind > NXT_IIC_TEMP)
+		return E_PAR;
+	p = &brick.in[port];
+	input_clear(p);
+	if (!nxt_iic_bus_attach(port, kind, scene))
+		return E_NOMEM;
+	p->kind = EV3_INPUT_NXT_IIC;
+	p->plugged = true;
+	input_apply_pins(p);
 	return E_OK;
 }
 

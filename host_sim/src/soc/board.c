@@ -65,6 +65,8 @@ static ER core_create(bool cold)
 	if (er == E_OK)
 		er = hs_timer64p3_create(cold);
 	if (er == E_OK)
+		er = hs_timer64p1_create(cold);
+	if (er == E_OK)
 		er = hs_gpio_create(cold, !board.cfg.no_pinmux_check);
 	return er;
 }
@@ -131,6 +133,7 @@ void hs_board_shutdown(void)
 	hs_space_remove_handler();
 	hs_gpio_destroy();
 	hs_timer64p3_destroy();
+	hs_timer64p1_destroy();
 	hs_aintc_destroy();
 	hs_syscfg_destroy();
 	hs_psc_destroy();

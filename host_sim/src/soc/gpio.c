@@ -90,7 +90,10 @@ static bool pin_mux_field(unsigned pin, unsigned *reg, unsigned *shift)
 {
 	unsigned bank = pin / 16U, bit = pin % 16U;
 
-	if (bank < 1U || bank > 6U)
+	/* Bank 1 bits 8..15 do not follow the pattern: PINMUX3 holds SPI0, UART0 and eHRPWM0
+	 * pins (EPWM0B at [7:4], UART0_TXD/GP8_3 at [23:20], LEGO's d_sound and d_iic), so
+	 * their fields are not known here. */
+	if (bank < 1U || bank > 6U || (bank == 1U && bit >= 8U))
 		return false;
 	if (bit >= 8U) {
 		*reg = 2U * bank + 1U;

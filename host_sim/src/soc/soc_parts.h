@@ -19,6 +19,8 @@ ER hs_gpio_create(bool cold, bool pinmux_check);
 void hs_gpio_destroy(void);
 ER hs_timer64p3_create(bool cold);
 void hs_timer64p3_destroy(void);
+ER hs_timer64p1_create(bool cold);
+void hs_timer64p1_destroy(void);
 ER hs_pllc_create(bool cold);
 
 #endif /* HOST_SIM_SOC_PARTS_H */

@@ -19,7 +19,7 @@
 #include <linux/types.h>
 #include <linux/compiler.h>
 #include <linux/errno.h>
-#include <limits.h>
+#include <linux/limits.h>
 #include <linux/limits.h>
 #include <linux/kdev_t.h>
 #include <linux/fcntl.h>

@@ -25,6 +25,7 @@
 #include <linux/time.h>
 #include <linux/init.h>
 #include <linux/kernel.h>
+#include <linux_compat/timerheap.h>
 
 enum hrtimer_mode {
 	HRTIMER_MODE_ABS	= 0x00,
@@ -54,9 +55,8 @@ struct hrtimer {
 	/* Public, as in Linux: the callback. */
 	enum hrtimer_restart (*function)(struct hrtimer *);
 	/* Private to the engine. */
-	struct list_head lx_node;            /* in the queue (while lx_queued) */
+	struct lx_heap_node lx_node;         /* in the queue (while lx_queued) */
 	ktime_t lx_expires;                  /* expiry, absolute ns */
-	u64 lx_seq;                          /* queueing order, FIFO among equal expiries */
 	clockid_t lx_clockid;
 	u32 lx_magic;                        /* set by hrtimer_init/setup */
 	u8 lx_queued;                        /* in the queue */

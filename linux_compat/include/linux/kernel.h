@@ -7,7 +7,6 @@
 #define _LINUX_KERNEL_H
 
 #include <stdarg.h>
-#include <limits.h>
 #include <linux/stddef.h>
 #include <linux/types.h>
 #include <linux/compiler.h>
@@ -46,10 +45,14 @@
 #define upper_16_bits(n)	((u16)((n) >> 16))
 #define lower_16_bits(n)	((u16)((n) & 0xffff))
 
-/* |x| of a signed value, in its own type.  (The C library's abs is declared
- * first so that a later <stdlib.h> does not collide with the macro.) */
+/* |x| of a signed value, in its own type.  Linux code sees no C library; a
+ * hosted test program that has one on its include path gets <stdlib.h>'s abs
+ * declared first, so that its own later <stdlib.h> does not collide with the
+ * macro. */
+#if __has_include(<stdlib.h>)
 #include <stdlib.h>
 #undef abs
+#endif
 #define abs(x) ({ __typeof__(x) __lx_abs = (x); __lx_abs < 0 ? -__lx_abs : __lx_abs; })
 
 #define _RET_IP_		((unsigned long)__builtin_return_address(0))

@@ -20,6 +20,9 @@
 #include <linux/bottom_half.h>
 #include <linux/spinlock_types.h>
 #include <linux/atomic.h>
+#include <linux_compat/context.h>
+#include <linux_compat/irqmask.h>
+#include <linux_compat/sched.h>
 
 /* Initialises lock as unlocked. */
 void lx_spin_lock_init(spinlock_t *lock, const char *name);
@@ -43,12 +46,56 @@ void lx_spin_unlock_bh(spinlock_t *lock, const char *file, int line);
 #define spin_lock(lock)			lx_spin_lock((lock), __FILE__, __LINE__)
 #define spin_unlock(lock)		lx_spin_unlock((lock), __FILE__, __LINE__)
 #define spin_trylock(lock)		lx_spin_trylock(lock)
+#if LX_DEBUG_SPINLOCK || LX_DEBUG_ATOMIC_SLEEP
 #define spin_lock_irqsave(lock, flags) \
 	do { typecheck(unsigned long, flags); \
 	     (flags) = lx_spin_lock_irqsave((lock), __FILE__, __LINE__); } while (0)
 #define spin_unlock_irqrestore(lock, flags) \
 	do { typecheck(unsigned long, flags); \
 	     lx_spin_unlock_irqrestore((lock), (flags), __FILE__, __LINE__); } while (0)
+#else
+/*
+ * The production build (no lock checks, one preempt count, as a non-debug
+ * uniprocessor Linux): spin_lock_irqsave is inline — interrupts masked, the
+ * interrupt-off depth and the preempt count up (with interrupts masked no
+ * dispatcher call is needed) — and so is the common unlock; an unbalanced one
+ * takes the out-of-line path, which reports it.
+ */
+static __always_inline unsigned long lx_spin_lock_irqsave_up(spinlock_t *lock)
+{
+	unsigned long flags = lx_irq_mask_save();
+
+	lx_ctx.irqs_off++;
+	if (lx_ctx.preempt++ == 0)
+		lx_ctx.dispatch_disabled_by_us = false;
+	lock->locked = 1;
+	return flags;
+}
+
+static __always_inline void lx_spin_unlock_irqrestore_up(spinlock_t *lock, unsigned long flags,
+							  const char *file, int line)
+{
+	if (unlikely(lx_ctx.irqs_off == 0 || lx_ctx.preempt == 0 ||
+		     (lx_ctx.preempt == 1 && lx_ctx.dispatch_disabled_by_us))) {
+		lx_spin_unlock_irqrestore(lock, flags, file, line);
+		return;
+	}
+	lock->locked = 0;
+	lx_ctx.preempt--;
+	lx_ctx.irqs_off--;
+	lx_irq_mask_restore(flags);
+	/* a wake_up under the lock takes effect here, Linux's preemption point */
+	if (unlikely(lx_deferred_wake_pending))
+		lx_deferred_wakeups_run();
+}
+
+#define spin_lock_irqsave(lock, flags) \
+	do { typecheck(unsigned long, flags); \
+	     (flags) = lx_spin_lock_irqsave_up(lock); } while (0)
+#define spin_unlock_irqrestore(lock, flags) \
+	do { typecheck(unsigned long, flags); \
+	     lx_spin_unlock_irqrestore_up((lock), (flags), __FILE__, __LINE__); } while (0)
+#endif
 #define spin_lock_irq(lock)		lx_spin_lock_irq((lock), __FILE__, __LINE__)
 #define spin_unlock_irq(lock)		lx_spin_unlock_irq((lock), __FILE__, __LINE__)
 #define spin_lock_bh(lock)		lx_spin_lock_bh((lock), __FILE__, __LINE__)

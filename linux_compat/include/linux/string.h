@@ -1,12 +1,36 @@
 /*
- * linux/string.h — the C library's string functions plus the kernel's own.
+ * linux/string.h — the string functions, declared here as Linux declares
+ * them (its lib/string.c role is played by the C library's implementations,
+ * which the compiler may also expand inline), plus the kernel's own.
  */
 #ifndef _LINUX_STRING_H
 #define _LINUX_STRING_H
 
-#include <string.h>
 #include <linux/types.h>
 #include <linux/compiler.h>
+
+void *memcpy(void *dest, const void *src, size_t count);
+void *memmove(void *dest, const void *src, size_t count);
+void *memset(void *s, int c, size_t count);
+int memcmp(const void *cs, const void *ct, size_t count);
+void *memchr(const void *s, int c, size_t n);
+size_t strlen(const char *s);
+size_t strnlen(const char *s, size_t count);
+char *strcpy(char *dest, const char *src);
+char *strncpy(char *dest, const char *src, size_t count);
+char *strcat(char *dest, const char *src);
+char *strncat(char *dest, const char *src, size_t count);
+int strcmp(const char *cs, const char *ct);
+int strncmp(const char *cs, const char *ct, size_t count);
+int strcasecmp(const char *s1, const char *s2);
+int strncasecmp(const char *s1, const char *s2, size_t len);
+char *strchr(const char *s, int c);
+char *strrchr(const char *s, int c);
+char *strstr(const char *s1, const char *s2);
+char *strpbrk(const char *cs, const char *ct);
+char *strsep(char **s, const char *ct);
+size_t strspn(const char *s, const char *accept);
+size_t strcspn(const char *s, const char *reject);
 
 /* Copies src into dest (size bytes, NUL-terminated); returns the length
  * copied, or -E2BIG if src was truncated (size 0: -E2BIG). */

@@ -5,9 +5,15 @@
 #ifndef _LINUX_TIME_H
 #define _LINUX_TIME_H
 
-#include <sys/types.h>      /* clockid_t, whose type the C library fixes (int / unsigned long) */
 #include <linux/types.h>
 #include <linux/time64.h>
+
+/* As Linux's __kernel_clockid_t, and as glibc's: a hosted test program may
+ * include both (the C libraries' __clockid_t_defined guard). */
+#ifndef __clockid_t_defined
+#define __clockid_t_defined 1
+typedef int clockid_t;
+#endif
 
 #define CLOCK_REALTIME		0
 #define CLOCK_MONOTONIC		1

@@ -15,14 +15,14 @@
 #include <linux/jiffies.h>
 #include <linux/ktime.h>
 #include <linux/kernel.h>
+#include <linux_compat/timerheap.h>
 
 struct timer_list {
 	unsigned long expires;                  /* in jiffies */
 	void (*function)(struct timer_list *);
 	u32 flags;
 	/* Private to the engine. */
-	struct list_head lx_node;               /* in the queue (while lx_pending) */
-	u64 lx_seq;
+	struct lx_heap_node lx_node;            /* in the queue (while lx_pending) */
 	u32 lx_magic;
 	u8 lx_pending;
 };

@@ -1,9 +1,11 @@
 /*
  * linux/types.h — the kernel's basic types.
  *
- * ssize_t, loff_t and friends are declared so that they agree with the C
- * library's own definitions on every build (glibc x86_64 and armel, newlib):
- * a translation unit may see both.  Addresses (phys_addr_t, dma_addr_t) are
+ * Linux code is compiled without the C library's headers (-nostdinc), so the
+ * C99 fixed-width names are defined here, as Linux's own linux/types.h does,
+ * from the compiler's predefined types.  They, ssize_t, loff_t and friends
+ * agree with the C library's own definitions on every build (glibc x86_64 and
+ * armel, newlib): a hosted test program may see both.  Addresses (phys_addr_t, dma_addr_t) are
  * as wide as a pointer: 32 bits on the AM1808, 64 on a 64-bit host where the
  * "physical" address of a buffer is its host address.
  */
@@ -11,7 +13,6 @@
 #define _LINUX_TYPES_H
 
 #include <stddef.h>
-#include <stdint.h>
 #include <stdbool.h>
 #include <asm/types.h>
 #include <asm/bitsperlong.h>
@@ -23,6 +24,20 @@
 #define __bitwise
 #endif
 #define __bitwise__	__bitwise
+
+typedef __INT8_TYPE__		int8_t;
+typedef __INT16_TYPE__		int16_t;
+typedef __INT32_TYPE__		int32_t;
+typedef __INT64_TYPE__		int64_t;
+typedef __UINT8_TYPE__		uint8_t;
+typedef __UINT16_TYPE__		uint16_t;
+typedef __UINT32_TYPE__		uint32_t;
+typedef __UINT64_TYPE__		uint64_t;
+typedef __INTPTR_TYPE__		intptr_t;
+typedef __UINTPTR_TYPE__	uintptr_t;
+typedef __u8			u_int8_t;
+typedef __u16			u_int16_t;
+typedef __u32			u_int32_t;
 
 typedef __u16 __bitwise __le16;
 typedef __u16 __bitwise __be16;

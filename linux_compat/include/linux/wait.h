@@ -57,7 +57,7 @@ bool waitqueue_active(struct wait_queue_head *wq_head);
 /*
  * The steps behind wait_event (also usable directly):
  * lx_wait_prepare puts w (the calling task) on the queue, unmarked;
- * lx_wait_block sleeps until w is woken, the deadline (ns; UINT64_MAX none)
+ * lx_wait_block sleeps until w is woken, the deadline (ns; U64_MAX none)
  * or, if interruptible, rel_wai - 0, -ETIME or -ERESTARTSYS - and leaves w
  * re-armed on the queue; lx_wait_finish takes w off the queue.
  */
@@ -91,7 +91,7 @@ long lx_wait_jiffies_left(uint64_t deadline_ns);
 #define wait_event(wq_head, condition) do {					\
 	if (!lx_wait_may_sleep("wait_event()", __FILE__, __LINE__) || (condition)) \
 		break;								\
-	(void)__lx_wait_event(wq_head, condition, UINT64_MAX, false, false);	\
+	(void)__lx_wait_event(wq_head, condition, U64_MAX, false, false);	\
 } while (0)
 
 /* Sleeps until condition is true or rel_wai: 0 or -ERESTARTSYS. */
@@ -100,7 +100,7 @@ long lx_wait_jiffies_left(uint64_t deadline_ns);
 	if (!lx_wait_may_sleep("wait_event_interruptible()", __FILE__, __LINE__)) \
 		__lx_wei = (condition) ? 0 : -ERESTARTSYS;			\
 	else if (!(condition))							\
-		__lx_wei = __lx_wait_event(wq_head, condition, UINT64_MAX, true, false); \
+		__lx_wei = __lx_wait_event(wq_head, condition, U64_MAX, true, false); \
 	__lx_wei; })
 #define wait_event_killable(wq_head, condition)	wait_event_interruptible(wq_head, condition)
 #define wait_event_interruptible_exclusive(wq_head, condition) ({		\
@@ -108,7 +108,7 @@ long lx_wait_jiffies_left(uint64_t deadline_ns);
 	if (!lx_wait_may_sleep("wait_event_interruptible_exclusive()", __FILE__, __LINE__)) \
 		__lx_wei = (condition) ? 0 : -ERESTARTSYS;			\
 	else if (!(condition))							\
-		__lx_wei = __lx_wait_event(wq_head, condition, UINT64_MAX, true, true); \
+		__lx_wei = __lx_wait_event(wq_head, condition, U64_MAX, true, true); \
 	__lx_wei; })
 
 /* Sleeps at most timeout jiffies: 0 if condition is still false at the end,

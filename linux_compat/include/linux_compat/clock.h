@@ -4,7 +4,7 @@
 #ifndef _LINUX_COMPAT_CLOCK_H
 #define _LINUX_COMPAT_CLOCK_H
 
-#include <stdint.h>
+#include <linux/types.h>
 #include <t_stddef.h>
 #include <kernel.h>
 

@@ -83,6 +83,28 @@ bool lx_context_forbids_sleep(char *buf, unsigned int len);
  */
 bool lx_might_sleep_check(const char *what, const char *file, int line);
 
+#define LX_IRQ_NEST_MAX	16
+
+/* What context.c tracks of the one CPU (see there). */
+struct lx_context_state {
+#if LX_DEBUG_ATOMIC_SLEEP
+	unsigned int task_atomic;      /* atomic sections opened by the running task */
+	unsigned int task_spin;        /* ... of which spin locks */
+	unsigned int isr_atomic;       /* atomic sections opened in interrupt context */
+	unsigned int isr_spin;
+#else
+	unsigned int preempt;          /* atomic sections open, in all contexts */
+#endif
+	bool dispatch_disabled_by_us;  /* the outermost section called dis_dsp */
+	unsigned int irqs_off;         /* local_irq_save/disable nesting */
+	int irq_stack[LX_IRQ_NEST_MAX];
+	unsigned int irq_depth;
+	unsigned int hrtimer_cb;       /* hrtimer callbacks running (nesting: 0 or 1) */
+	unsigned int timer_cb;         /* timer_list callbacks running */
+	const void *running_hrtimer;
+};
+extern struct lx_context_state lx_ctx;
+
 /*
  * The annotation of a call that may sleep (Linux's might_sleep): the check
  * above with LX_DEBUG_ATOMIC_SLEEP, nothing without.  Calls that really

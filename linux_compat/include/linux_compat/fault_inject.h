@@ -19,7 +19,7 @@
 #define _LINUX_COMPAT_FAULT_INJECT_H
 
 #include <stdbool.h>
-#include <stdint.h>
+#include <linux/types.h>
 
 /* Fails the nth allocation attempt of every boot (0: off). */
 void lx_fail_alloc_nth(unsigned long nth);

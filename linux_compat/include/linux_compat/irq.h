@@ -22,7 +22,7 @@
 #ifndef _LINUX_COMPAT_IRQ_H
 #define _LINUX_COMPAT_IRQ_H
 
-#include <stdint.h>
+#include <linux/types.h>
 #include <stdbool.h>
 #include <mach/irqs.h>
 

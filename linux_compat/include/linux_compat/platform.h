@@ -8,7 +8,7 @@
 #define _LINUX_COMPAT_PLATFORM_H
 
 #include <stddef.h>
-#include <stdint.h>
+#include <linux/types.h>
 
 /* The CPU-visible window of the physical register range [phys, phys + size),
  * or NULL if there are no registers there.  Host: the window of the

@@ -16,7 +16,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
-#include <stdint.h>
+#include <linux/types.h>
 
 struct lx_waiter {
 	struct lx_waiter *next;
@@ -38,6 +38,8 @@ int lx_current_tskid(void);
 void lx_wake_task(int tskid);
 /* Delivers wakeups deferred while locked (the tick ISR; the irqrestore paths). */
 void lx_deferred_wakeups_run(void);
+/* True while a deferred wakeup waits (cheap test before lx_deferred_wakeups_run). */
+extern bool lx_deferred_wake_pending;
 /* Forgets deferred wakeups and bottom-half state (boot). */
 void lx_sched_reset(void);
 
@@ -52,7 +54,7 @@ void lx_waiter_init(struct lx_waiter *w);
 
 /*
  * Sleeps the calling task until w->woken, the deadline (ns, lx_clock_now_ns
- * scale; UINT64_MAX = none) or rel_wai.  Returns 0 (woken), -ETIME (deadline)
+ * scale; U64_MAX = none) or rel_wai.  Returns 0 (woken), -ETIME (deadline)
  * or -EINTR (released).  The caller re-checks w->woken under its lock.
  */
 int lx_waiter_sleep(struct lx_waiter *w, uint64_t deadline_ns);
@@ -62,7 +64,7 @@ void lx_bh_disable(void);
 void lx_bh_enable(void);
 bool lx_bh_disabled(void);
 
-/* The deadline `ms` milliseconds from now (UINT64_MAX for a negative ms). */
+/* The deadline `ms` milliseconds from now (U64_MAX for a negative ms). */
 uint64_t lx_deadline_after_ms(long ms);
 
 #endif /* _LINUX_COMPAT_SCHED_H */

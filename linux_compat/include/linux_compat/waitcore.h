@@ -7,12 +7,12 @@
 #define _LINUX_COMPAT_WAITCORE_H
 
 #include <stdbool.h>
-#include <stdint.h>
+#include <linux/types.h>
 #include <linux_compat/sched.h>
 
 /*
  * Takes one unit of *count, sleeping on wl until granted one.  deadline_ns as
- * lx_waiter_sleep (UINT64_MAX: none); interruptible: rel_wai ends the wait.
+ * lx_waiter_sleep (U64_MAX: none); interruptible: rel_wai ends the wait.
  * what/file/line name the call for a context report: where sleeping is
  * illegal, only a free unit is taken.  Returns 0, -ETIME or -EINTR.
  */

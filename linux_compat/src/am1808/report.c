@@ -2,7 +2,7 @@
  * report.c (AM1808) — reports are syslog lines at LOG_EMERG; a fatal one
  * stops the CPU with interrupts masked.
  */
-#include <stdio.h>
+#include <linux/kernel.h>
 #include <linux_compat/platform.h>
 #include <kernel.h>
 #include <sil.h>

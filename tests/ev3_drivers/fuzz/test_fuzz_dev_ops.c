@@ -1,10 +1,10 @@
 /*
  * test_fuzz_dev_ops.c — fuzz harness: the write(), read() and ioctl() paths
  * of every device the EV3 drivers register (/dev/lms_analog, lms_dcm,
- * lms_ui, lms_uart, lms_pwm, lms_motor), opened non-blocking (a read that
+ * lms_ui, lms_uart, lms_pwm, lms_motor, lms_iic), opened non-blocking (a read that
  * waits for an event is no hang) and called as a process would, with
  * whatever bytes, lengths and ioctl numbers.  The input is a sequence of
- * operations: a selector byte (device = low 3 bits modulo 6, operation =
+ * operations: a selector byte (device = low 3 bits modulo 7, operation =
  * bits 3-4: write, read, ioctl), for an ioctl a 32-bit command (little
  * endian), then a length byte and that many bytes of data (the ioctl's
  * argument buffer, zero-padded to the largest size an ioctl number can
@@ -19,14 +19,15 @@
 #include "lms_pwm.h"
 #include "lms_uart.h"
 #include "lms_ui.h"
+#include "lms_iic.h"
 
 #define FUZZ_NAME "dev_ops"
-#define NDEV 6
+#define NDEV 7
 #define ARG_SIZE 16384		/* _IOC_SIZE's largest value is 16383 */
 
 static const char *const dev_names[NDEV] = {
 	LMS_ANALOG_DEVICE_NAME, LMS_DCM_DEVICE_NAME, LMS_UI_DEVICE_NAME,
-	LMS_UART_DEVICE_NAME, LMS_PWM_DEVICE_NAME, LMS_MOTOR_DEVICE_NAME,
+	LMS_UART_DEVICE_NAME, LMS_PWM_DEVICE_NAME, LMS_MOTOR_DEVICE_NAME, LMS_IIC_DEVICE_NAME,
 };
 static struct file *files[NDEV];
 static uint8_t arg[ARG_SIZE];

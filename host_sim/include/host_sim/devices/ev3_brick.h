@@ -49,6 +49,7 @@ enum ev3_input_kind {
 	EV3_INPUT_NXT_LIGHT,        /* NXT light: pin 2 grounded, pin 5 pulled low, light on pin 1 */
 	EV3_INPUT_DUMB,             /* any device with an ID resistor on pin 1 */
 	EV3_INPUT_UART,             /* an EV3 UART sensor */
+	EV3_INPUT_NXT_IIC,          /* an NXT I2C sensor (nxt_iic.h): pin 2 grounded, bus on pins 5/6 */
 };
 
 /* Options of an analog device. */

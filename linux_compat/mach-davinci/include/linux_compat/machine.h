@@ -12,7 +12,7 @@
 #ifndef _LINUX_COMPAT_MACHINE_H
 #define _LINUX_COMPAT_MACHINE_H
 
-#include <stdint.h>
+#include <linux/types.h>
 #include <mach/irqs.h>
 #include <linux_compat/irq.h>
 
@@ -31,6 +31,7 @@
 	X(IRQ_DA8XX_EVTOUT5,  lx_irq_dispatch,   IRQ_DA8XX_EVTOUT5)	\
 	X(IRQ_DA8XX_EVTOUT6,  lx_irq_dispatch,   IRQ_DA8XX_EVTOUT6)	\
 	X(IRQ_DA8XX_EVTOUT7,  lx_irq_dispatch,   IRQ_DA8XX_EVTOUT7)	\
+	X(IRQ_DA8XX_TINT34_1, lx_irq_dispatch,   IRQ_DA8XX_TINT34_1)	\
 	X(IRQ_DA8XX_UARTINT0, lx_irq_dispatch,   IRQ_DA8XX_UARTINT0)	\
 	X(IRQ_DA8XX_GPIO0,    lx_gpio_bank_isr,  0)			\
 	X(IRQ_DA8XX_GPIO1,    lx_gpio_bank_isr,  1)			\
