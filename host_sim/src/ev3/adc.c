@@ -55,14 +55,14 @@ static ER adc_create(const struct hs_board_cfg *cfg, void **ctx)
 	adc.next = 0;
 	adc.result = 0;
 	adc.range_5v = true;
-	hs_spi0_connect(&(struct hs_spi_peer){ adc_frame, NULL });
+	hs_spi_connect(0, &(struct hs_spi_peer){ .frame = adc_frame });
 	*ctx = &adc;
 	return E_OK;
 }
 
 static void adc_destroy(void *ctx)
 {
-	hs_spi0_connect(NULL);
+	hs_spi_connect(0, NULL);
 }
 
 const struct hs_device ev3_adc_device = { "ADS7957", adc_create, NULL, adc_destroy };

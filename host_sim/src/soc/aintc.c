@@ -53,6 +53,7 @@ static const char *sysint_name(INTNO n)
 	case 22: return "t64p0_tint34";
 	case 25: return "uart0";
 	case 53: return "uart1";
+	case 56: return "spi1";
 	case 96: return "t64p3_tint";
 	default: return "";
 	}

@@ -106,13 +106,14 @@ static const struct hs_reg psc_regs[] = {
 	{ .name = "MDCTL",   .offset = PSC_MDCTL0, .kind = HS_RW, .count = PSC_NMOD, .mask = 0x80000107 },
 };
 
-/* Modules Linux/U-Boot leave enabled (what the EV3 kernel has running). */
+/* Modules Linux/U-Boot leave enabled (what the EV3 kernel has running; SPI1: the display's SPI
+ * master keeps its clock on from probe). */
 static const unsigned psc0_on[] = {
 	HS_LPSC0_EDMA_CC0, 1, 2, HS_LPSC0_EMIFA, HS_LPSC0_SPI0, HS_LPSC0_MMCSD0, HS_LPSC0_AINTC,
 	HS_LPSC0_ARM_RAMROM, HS_LPSC0_UART0, 10, 11, 12, HS_LPSC0_ARM,
 };
 static const unsigned psc1_on[] = {
-	HS_LPSC1_USB0, HS_LPSC1_GPIO, HS_LPSC1_EMIF3, HS_LPSC1_I2C1, HS_LPSC1_UART1, HS_LPSC1_UART2,
+	HS_LPSC1_USB0, HS_LPSC1_GPIO, HS_LPSC1_EMIF3, HS_LPSC1_SPI1, HS_LPSC1_I2C1, HS_LPSC1_UART1, HS_LPSC1_UART2,
 	21, 24, 25, 26, 27, 28, 29, 30, 31,
 };
 /* Modules running even at TRM reset (always-on or boot-critical). */

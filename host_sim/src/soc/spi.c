@@ -1,7 +1,9 @@
 /*
- * spi.c — SPI0 master transfers in virtual time (see spi_adc.h for the
- * behaviour modelled), answered by whatever the board connects as the
- * slave (hs_spi0_connect; on the EV3 the converter, ev3/adc.c).
+ * spi.c — the AM1808's SPI0 and SPI1 masters, one model instantiated twice
+ * (spi.h for the behaviour modelled): transfers in virtual time, answered
+ * by whatever the board connects as each bus's slave (hs_spi_connect; on the
+ * EV3 the converter on SPI0, ev3/adc.c, and the display controller on SPI1,
+ * ev3/st7586.c).
  */
 #include <stdlib.h>
 #include "rtos_host.h"
@@ -9,7 +11,7 @@
 #include "host_sim/intc.h"
 #include "host_sim/psc.h"
 #include "host_sim/regs.h"
-#include "host_sim/devices/spi_adc.h"
+#include "host_sim/devices/spi.h"
 
 enum {
 	SPIGCR0 = 0x00, SPIGCR1 = 0x04, SPIINT0 = 0x08, SPILVL = 0x0C, SPIFLG = 0x10,
@@ -18,7 +20,6 @@ enum {
 	SPIDEF = 0x4C, SPIFMT0 = 0x50, INTVEC0 = 0x60, INTVEC1 = 0x64,
 };
 
-#define SPI_CLOCK_HZ   HS_PLL0_SYSCLK2_HZ
 #define BUF_RXEMPTY    (1U << 31)
 #define BUF_RXOVR      (1U << 30)
 #define BUF_TXFULL     (1U << 29)
@@ -28,7 +29,24 @@ enum {
 #define INT0_RXINTENA  (1U << 8)
 #define INT0_OVRNINTENA (1U << 6)
 
-struct spi0 {
+/* What differs between SPI0 and SPI1 (AM1808 TRM, memory map, PSC and AINTC chapters). */
+struct spi_instance {
+	const char *name;
+	uint32_t phys;
+	unsigned power;             /* HS_PSC0_MODULE / HS_PSC1_MODULE */
+	unsigned intno;
+	uint32_t clock_hz;          /* module clock: PLL0_SYSCLK2 (SPI0), ASYNC3 (SPI1) */
+};
+
+static const struct spi_instance spi_instances[HS_SPI_BUSES] = {
+	{ "SPI0", HS_SPI0_BASE, HS_PSC0_MODULE(HS_LPSC0_SPI0), EV3_SPI0_INTNO, HS_PLL0_SYSCLK2_HZ },
+	{ "SPI1", HS_SPI1_BASE, HS_PSC1_MODULE(HS_LPSC1_SPI1), HS_SPI1_INTNO, HS_PLL1_SYSCLK2_HZ },
+};
+
+struct spi_module {
+	const struct spi_instance *inst;
+	struct hs_spi_peer slave;   /* what answers the frames (none: the line reads 0) */
+	uint16_t word;              /* the word in flight, for the slave's frame_done */
 	struct hs_region *r;
 	/* stored values of the registers every frame consults (hs_reg_value_ptr) */
 	uint32_t *gcr0, *gcr1, *int0, *flg, *dat1, *delay, *fmt[4];
@@ -49,16 +67,28 @@ struct spi0 {
 	struct ev3_spi_stats stats;
 };
 
-static struct spi0 *spi;
-static struct hs_spi_peer slave;   /* what answers the frames (none: the line reads 0) */
+static struct spi_module *spis[HS_SPI_BUSES];
+/* Slaves connected before their master exists (board models may be created in any order). */
+static struct hs_spi_peer pending[HS_SPI_BUSES];
 
-void hs_spi0_connect(const struct hs_spi_peer *peer)
+void hs_spi_connect(unsigned bus, const struct hs_spi_peer *peer)
 {
-	slave = peer != NULL ? *peer : (struct hs_spi_peer){ 0 };
+	if (bus >= HS_SPI_BUSES)
+		return;
+	pending[bus] = peer != NULL ? *peer : (struct hs_spi_peer){ 0 };
+	if (spis[bus])
+		spis[bus]->slave = pending[bus];
 }
 
-/* Drives the SPI0 interrupt line from SPIFLG and SPIINT0. */
-static void spi_irq_update(struct spi0 *s)
+uint32_t hs_spi_format(unsigned bus)
+{
+	struct spi_module *s = bus < HS_SPI_BUSES ? spis[bus] : NULL;
+
+	return s ? *s->fmt[(*s->dat1 >> 24) & 3U] : 0;
+}
+
+/* Drives the module's interrupt line from SPIFLG and SPIINT0. */
+static void spi_irq_update(struct spi_module *s)
 {
 	uint32_t flg = *s->flg, ena = *s->int0;
 	bool level = ((flg & FLG_RXINT) && (ena & INT0_RXINTENA)) ||
@@ -66,12 +96,12 @@ static void spi_irq_update(struct spi0 *s)
 
 	if (level != s->irq) {
 		s->irq = level;
-		hs_intc_set_level(EV3_SPI0_INTNO, level);
+		hs_intc_set_level(s->inst->intno, level);
 	}
 }
 
 /* Frame length in ns for a data format. */
-static uint64_t frame_ns(struct spi0 *s, unsigned fmt, unsigned *bits)
+static uint64_t frame_ns(struct spi_module *s, unsigned fmt, unsigned *bits)
 {
 	uint32_t f = *s->fmt[fmt];
 	uint32_t delay = *s->delay;
@@ -89,28 +119,30 @@ static uint64_t frame_ns(struct spi0 *s, unsigned fmt, unsigned *bits)
 	s->timing_fmt = f;
 	s->timing_delay = delay;
 	s->timing_bits = charlen;
-	s->timing_ns = hs_cycles_to_ns((uint64_t)charlen * (prescale + 1U) + cs_cycles, SPI_CLOCK_HZ);
+	s->timing_ns = hs_cycles_to_ns((uint64_t)charlen * (prescale + 1U) + cs_cycles, s->inst->clock_hz);
 	*bits = charlen;
 	return s->timing_ns;
 }
 
 /* Sets and clears SPIFLG bits (hs_reg_update on the stored value; SPIFLG is 32 bits wide). */
-static void flg_update(struct spi0 *s, uint32_t clear, uint32_t set)
+static void flg_update(struct spi_module *s, uint32_t clear, uint32_t set)
 {
 	*s->flg = (*s->flg & ~clear) | set;
 }
 
-static void frame_start(struct spi0 *s, uint16_t word, unsigned fmt);
+static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt);
 
 /* Event: a frame ends; SPIBUF gets the answer. */
 static void frame_done(void *arg)
 {
-	struct spi0 *s = arg;
+	struct spi_module *s = arg;
 	uint32_t mask = s->shift_len >= 16 ? 0xFFFFU : (1U << s->shift_len) - 1U;
 
 	s->frame_ev = 0;
 	s->busy = false;
 	s->stats.transfers++;
+	if (s->slave.frame_done != NULL)
+		s->slave.frame_done(s->slave.ctx, s->word);
 	if (!(s->rx & BUF_RXEMPTY)) {
 		s->rx |= BUF_RXOVR;
 		s->stats.rx_overruns++;
@@ -126,25 +158,26 @@ static void frame_done(void *arg)
 }
 
 /* Starts a frame now with the slave answering. */
-static void frame_start(struct spi0 *s, uint16_t word, unsigned fmt)
+static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt)
 {
 	uint64_t ns = frame_ns(s, fmt, &s->shift_len);
 
 	s->busy = true;
-	s->shift_out = slave.frame != NULL ? slave.frame(slave.ctx, word) : 0;
+	s->word = word;
+	s->shift_out = s->slave.frame != NULL ? s->slave.frame(s->slave.ctx, word) : 0;
 	s->frame_end = hs_now() + ns;
 	s->frame_ev = hs_event_at(s->frame_end, frame_done, s);
 }
 
 /* A word written to SPIDAT0/1: transfer now, or park it in the TX buffer. */
-static void spi_send(struct spi0 *s, uint16_t word)
+static void spi_send(struct spi_module *s, uint16_t word)
 {
 	uint32_t gcr1 = *s->gcr1;
 	unsigned fmt = (*s->dat1 >> 24) & 3U;
 
 	if (!(*s->gcr0 & 1U) || !(gcr1 & (1U << 24)) || (gcr1 & 3U) != 3U) {
-		rtos_host_bug("host_sim", "SPI0: word 0x%04x written with the module %s: no transfer",
-			      word, !(hs_reg_get(s->r, SPIGCR0) & 1U) ? "in reset (SPIGCR0.RESET=0)" :
+		rtos_host_bug("host_sim", "%s: word 0x%04x written with the module %s: no transfer",
+			      s->inst->name, word, !(hs_reg_get(s->r, SPIGCR0) & 1U) ? "in reset (SPIGCR0.RESET=0)" :
 			      !(gcr1 & (1U << 24)) ? "disabled (SPIGCR1.ENABLE=0)" :
 			      "not master (SPIGCR1.MASTER/CLKMOD)");
 		return;
@@ -157,7 +190,7 @@ static void spi_send(struct spi0 *s, uint16_t word)
 		s->tx_buf = word;
 		s->tx_buf_fmt = fmt;
 	} else {
-		rtos_host_trace("SPI0", "word 0x%04x overwrites the full TX buffer", word);
+		rtos_host_trace(s->inst->name, "word 0x%04x overwrites the full TX buffer", word);
 		s->tx_buf = word;
 	}
 }
@@ -165,7 +198,7 @@ static void spi_send(struct spi0 *s, uint16_t word)
 /* SPIDAT0/1 writes start a transfer. */
 static void write_dat(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct spi0 *s = ctx;
+	struct spi_module *s = ctx;
 
 	if (a->offset == SPIDAT0) {
 		/* SPIDAT0 and SPIDAT1 share the data half (SPIDAT1 is 32 bits wide) */
@@ -177,7 +210,7 @@ static void write_dat(void *ctx, const struct hs_access *a, uint32_t old, uint32
 }
 
 /* SPIBUF contents with the TXFULL flag. */
-static uint32_t buf_value(const struct spi0 *s)
+static uint32_t buf_value(const struct spi_module *s)
 {
 	return s->rx | (s->tx_full ? BUF_TXFULL : 0U);
 }
@@ -185,7 +218,7 @@ static uint32_t buf_value(const struct spi0 *s)
 /* SPIBUF read: stall while in flight, then consume. */
 static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct spi0 *s = ctx;
+	struct spi_module *s = ctx;
 
 	/* a poll that would see "not yet": the CPU spins until the frame ends */
 	if (s->busy && ((s->rx & BUF_RXEMPTY) || s->tx_full)) {
@@ -207,7 +240,7 @@ static void read_emu(void *ctx, const struct hs_access *a, uint32_t *value)
 /* SPIFLG read: TXINTFLG from the TX buffer. */
 static void read_flg(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct spi0 *s = ctx;
+	struct spi_module *s = ctx;
 
 	*value = (*value & ~FLG_TXINT) | (s->tx_full ? 0U : FLG_TXINT);
 }
@@ -221,7 +254,7 @@ static void write_flg(void *ctx, const struct hs_access *a, uint32_t old, uint32
 /* SPIGCR0: RESET = 0 resets the module. */
 static void write_gcr0(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	struct spi0 *s = ctx;
+	struct spi_module *s = ctx;
 
 	if (!(nv & 1U)) {           /* reset: abort, registers to reset values */
 		hs_event_cancel(&s->frame_ev);
@@ -260,16 +293,17 @@ static const struct hs_reg spi_regs[] = {
 	{ .name = "INTVEC1", .offset = INTVEC1, .kind = HS_RO },
 };
 
-/* Creates the SPI0 region. */
-static ER spi_create(const struct hs_board_cfg *cfg, void **ctx)
+/* Creates one SPI module's region. */
+static ER spi_create(unsigned bus, const struct hs_board_cfg *cfg, void **ctx)
 {
-	struct spi0 *s = calloc(1, sizeof(*s));
+	const struct spi_instance *inst = &spi_instances[bus];
+	struct spi_module *s = calloc(1, sizeof(*s));
 
 	if (!s)
 		return E_NOMEM;
-	s->r = hs_region_add(&(struct hs_region_cfg){ .name = "SPI0", .phys = HS_SPI0_BASE, .size = 0x1000,
-		.regs = spi_regs, .nregs = HS_ARRAY_SIZE(spi_regs),
-		.power = HS_PSC0_MODULE(HS_LPSC0_SPI0), .ctx = s });
+	s->inst = inst;
+	s->r = hs_region_add(&(struct hs_region_cfg){ .name = inst->name, .phys = inst->phys, .size = 0x1000,
+		.regs = spi_regs, .nregs = HS_ARRAY_SIZE(spi_regs), .power = inst->power, .ctx = s });
 	if (!s->r) {
 		free(s);
 		return E_PAR;
@@ -283,31 +317,49 @@ static ER spi_create(const struct hs_board_cfg *cfg, void **ctx)
 	for (unsigned i = 0; i < 4U; i++)
 		s->fmt[i] = hs_reg_value_ptr(s->r, SPIFMT0 + 4U * i);
 	s->rx = BUF_RXEMPTY;
-	/* Linux leaves SPI0 out of reset (EV3RT's driver had to take it out itself) */
+	/* Linux's SPI master leaves the module out of reset (EV3RT's driver had to take SPI0 out itself) */
 	if (!cfg || !cfg->cold_reset)
 		hs_reg_set(s->r, SPIGCR0, 1);
-	spi = s;
+	s->slave = pending[bus];
+	spis[bus] = s;
 	*ctx = s;
 	return E_OK;
 }
 
-/* Frees SPI0. */
+static ER spi0_create(const struct hs_board_cfg *cfg, void **ctx)
+{
+	return spi_create(0, cfg, ctx);
+}
+
+static ER spi1_create(const struct hs_board_cfg *cfg, void **ctx)
+{
+	return spi_create(1, cfg, ctx);
+}
+
+/* Frees a module. */
 static void spi_destroy(void *ctx)
 {
-	struct spi0 *s = ctx;
+	struct spi_module *s = ctx;
 
 	hs_event_cancel(&s->frame_ev);
-	if (spi == s)
-		spi = NULL;
+	for (unsigned bus = 0; bus < HS_SPI_BUSES; bus++)
+		if (spis[bus] == s)
+			spis[bus] = NULL;
 	free(s);
 }
 
-const struct hs_device hs_spi0_device = { "SPI0", spi_create, NULL, spi_destroy };
+const struct hs_device hs_spi0_device = { "SPI0", spi0_create, NULL, spi_destroy };
+const struct hs_device hs_spi1_device = { "SPI1", spi1_create, NULL, spi_destroy };
 
-/* SPI0 counters. */
-const struct ev3_spi_stats *ev3_spi_get_stats(void)
+const struct ev3_spi_stats *hs_spi_stats(unsigned bus)
 {
 	static const struct ev3_spi_stats none;
+	struct spi_module *s = bus < HS_SPI_BUSES ? spis[bus] : NULL;
 
-	return spi ? &spi->stats : &none;
+	return s ? &s->stats : &none;
+}
+
+const struct ev3_spi_stats *ev3_spi_get_stats(void)
+{
+	return hs_spi_stats(0);
 }
