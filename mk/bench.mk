@@ -20,9 +20,13 @@ BENCH_PROD_LX_SRCS  := $(foreach s,$(HOST_SRCS),$(if $(call is_linux_src,$(s)),$
 BENCH_PROD_LIB_OBJS := $(patsubst %.c,$(BENCH_PROD)/obj/%.o,$(BENCH_PROD_LX_SRCS)) \
 	$(patsubst %.c,$(BUILD)/arm926-test/obj/%.o,$(filter-out $(BENCH_PROD_LX_SRCS),$(HOST_SRCS)))
 
-# The production variant is a configuration of its own, compiled by the one recipe.
+# The production variant is a configuration of its own, compiled by the one
+# recipe: the Linux code as the AM1808 library compiles it (-Os, the checks
+# off; mk/am1808.mk), for the ARM926 under Linux.  It differs from the brick's
+# library only where it must: the kernel under it is rtos_stub's host kernel
+# instead of HRP2, and memcpy/memset are glibc's instead of newlib's.
 CC_arm926-bench-prod     := $(CC_arm926-test)
-CFLAGS_arm926-bench-prod := $(CFLAGS_arm926-test) $(LX_DEBUG_OFF)
+CFLAGS_arm926-bench-prod := $(filter-out -O2,$(CFLAGS_arm926-test)) -Os $(LX_DEBUG_OFF)
 $(eval $(call obj_rule,arm926-bench-prod,$(BENCH_PROD)))
 
 $(BENCH_PROD_LIB): $(BENCH_PROD_LIB_OBJS)
