@@ -11,7 +11,7 @@ WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes 
 
 # Directories whose code is written against the Linux kernel API: they see
 # linux_compat/include and use gnu11 (typeof, statement expressions).
-LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers tests/legacy
+LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers tests/legacy bench/timers
 
 # Layers and their include directories.
 include mk/layers.mk
