@@ -16,6 +16,7 @@
 #include "power_hack.h"
 #include "sound_hack.h"
 #include "iic_hack.h"
+#include "lcd_hack.h"
 
 #define SHARED_AREA_ROW(dom) \
 	{ (dom), lx_heap_area, sizeof(lx_heap_area), TPM_READ, "ev3 driver shared memory" }
@@ -27,7 +28,7 @@ _Static_assert(TNUM_DOMID == 4, "one shared-area row per user domain");
 
 static const struct rtos_cfg *const driver_cfgs[] = {
 	&linux_compat_cfg, &pwm_hack_cfg, &analog_hack_cfg, &uart_hack_cfg, &ui_hack_cfg,
-	&power_hack_cfg, &sound_hack_cfg, &iic_hack_cfg, NULL,
+	&power_hack_cfg, &sound_hack_cfg, &iic_hack_cfg, &lcd_hack_cfg, NULL,
 };
 
 const struct rtos_cfg ev3_drivers_cfg = {

@@ -94,4 +94,5 @@ void lx_mach_boot(void)
 {
 	lx_iomap_boot();
 	lx_gpio_boot();
+	lx_davinci_spi_boot();
 }

@@ -17,6 +17,7 @@
 #include <linux/platform_data/spi-davinci.h>
 #include <mach/da8xx.h>
 #include <mach/spi.h>
+#include <linux_compat/machine.h>
 
 /* Registers (TRM SPI chapter, "SPI Registers"). */
 #define SPIGCR0		0x00
@@ -219,4 +220,10 @@ void da8xx_unregister_spi_bus(int instance)
 	iounmap(dspi->base);
 	davinci_spi_buses[instance] = NULL;
 	spi_unregister_controller(ctlr);
+}
+
+/* Forgets the buses of a previous boot (their memory went with the heap). */
+void lx_davinci_spi_boot(void)
+{
+	davinci_spi_buses[0] = davinci_spi_buses[1] = NULL;
 }

@@ -14,6 +14,7 @@
 #include <linux/uaccess.h>
 #include <linux_compat/devfs.h>
 #include <linux_compat/fbdev.h>
+#include <linux_compat/irq.h>
 
 #define FB_MAJOR	29
 
@@ -60,20 +61,14 @@ static int fb_open(struct inode *inode, struct file *file)
 	mutex_unlock(&registration_lock);
 	if (!info)
 		return -ENODEV;
+	/* no module reference: as for every device in the registry, module lifetimes are the
+	 * module list's (a hack holding its own driver's device open could never unload) */
 	mutex_lock(&info->lock);
-	if (!try_module_get(info->fbops->owner)) {
-		res = -ENODEV;
-		goto out;
-	}
 	file->private_data = info;
-	if (info->fbops->fb_open) {
+	if (info->fbops->fb_open)
 		res = info->fbops->fb_open(info, 1);
-		if (res)
-			module_put(info->fbops->owner);
-	}
 	if (!res)
 		info->lx_open_count++;
-out:
 	mutex_unlock(&info->lock);
 	return res;
 }
@@ -85,7 +80,6 @@ static int fb_release(struct inode *inode, struct file *file)
 	mutex_lock(&info->lock);
 	if (info->fbops->fb_release)
 		info->fbops->fb_release(info, 1);
-	module_put(info->fbops->owner);
 	info->lx_open_count--;
 	mutex_unlock(&info->lock);
 	return 0;
@@ -279,4 +273,10 @@ void unregister_framebuffer(struct fb_info *fb_info)
 bool lx_fb_file(struct file *file)
 {
 	return file && file->f_op == &fb_fops;
+}
+
+void lx_fb_boot(void)
+{
+	mutex_init(&registration_lock);
+	memset(registered_fb, 0, sizeof(registered_fb));
 }

@@ -13,6 +13,7 @@
 #include <linux/slab.h>
 #include <linux/string.h>
 #include <linux_compat/context.h>
+#include <linux_compat/irq.h>
 
 #ifndef LX_NR_SPI_BOARD_INFO
 #define LX_NR_SPI_BOARD_INFO	8
@@ -381,4 +382,13 @@ out:
 	if (message->complete)
 		message->complete(message->context);
 	return status;
+}
+
+void lx_spi_boot(void)
+{
+	mutex_init(&spi_lists_lock);
+	INIT_LIST_HEAD(&spi_controllers);
+	INIT_LIST_HEAD(&spi_devices);
+	INIT_LIST_HEAD(&spi_drivers);
+	board_info_count = 0;
 }

@@ -78,6 +78,10 @@ void lx_io_boot(intptr_t exinf);
 void lx_resource_boot(void);
 /* Resets the device registry (lx_io_boot). */
 void lx_devfs_boot(void);
+/* Forgets SPI controllers, devices, drivers and board info (lx_io_boot). */
+void lx_spi_boot(void);
+/* Forgets registered frame buffers (lx_io_boot). */
+void lx_fb_boot(void);
 /* Puts every task back to USER_DS (lx_io_boot). */
 void lx_uaccess_boot(void);
 

@@ -59,6 +59,7 @@ void lx_mach_boot(void);
 /* The machine's parts of lx_mach_boot. */
 void lx_gpio_boot(void);
 void lx_iomap_boot(void);
+void lx_davinci_spi_boot(void);
 
 /* The GPIO pin IRQ chip's operations (gpio.c), for pin = irq - DAVINCI_N_AINTC_IRQ:
  * unmask (trigger edges per type), mask, and check a trigger type. */
