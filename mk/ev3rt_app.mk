@@ -66,7 +66,7 @@ ifneq ($(strip $(5)),)
 $(BUILD)/$(2)/ev3rt/$(1)/$(1): $(BUILD)/$(2)/ev3rt/$(1)/$(1).o $(5) $(BUILD)/$(2)/libev3lx.a
 	$$(quiet) LD $(2) $$@
 	$(Q)$$(CC_$(2)) $$(CFLAGS_$(2)) $$(LDFLAGS_$(2)) -o $$@ $$< $(5) \
-		-Wl,--start-group $(BUILD)/$(2)/libev3lx.a -Wl,--end-group -lm
+		-Wl,--start-group $(BUILD)/$(2)/libev3lx.a -Wl,--end-group -lm $$(EV3RT_LDLIBS_$(1)_$(2))
 endif
 
 -include $$(EV3RT_OBJS_$(1)_$(2):.o=.d) $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.d

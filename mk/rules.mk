@@ -54,7 +54,7 @@ $(BUILD)/host/$(1): $$(patsubst %.c,$(BUILD)/host/obj/%.o,$$($(1)_SRCS)) $$(LIB_
 	@mkdir -p $$(@D)
 	$$(quiet) LD host $$@
 	$(Q)$$(CC_host) $$(CFLAGS_host) -o $$@ $$(patsubst %.c,$(BUILD)/host/obj/%.o,$$($(1)_SRCS)) \
-		-Wl,--start-group $$(LIB_host) -Wl,--end-group -lm
+		-Wl,--start-group $$(LIB_host) -Wl,--end-group -lm $$($(1)_LDLIBS)
 -include $$(patsubst %.c,$(BUILD)/host/obj/%.d,$$($(1)_SRCS))
 endef
 $(foreach p,$(HOST_PROGRAMS),$(eval $(call host_program_rules,$(p))))

@@ -56,6 +56,9 @@ void api_sensor_boot(void);
 void api_brick_boot(void);
 void api_battery_boot(void);
 void api_speaker_boot(void);
+void api_lcd_boot(void);
+/* The frame of the LCD calls (lcd.c), in the format of lcd_draw.h: 7680 bytes. */
+extern uint8_t api_lcd_frame[60 * 128];
 
 /* The NXT I2C sensors (nxt_sensor.c), for sensor.c: the port leaves its I2C type old
  * and becomes type (either may be an I2C type or not); E_OK or the error. */

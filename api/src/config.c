@@ -14,6 +14,7 @@ static void api_boot(intptr_t exinf)
 	api_brick_boot();
 	api_battery_boot();
 	api_speaker_boot();
+	api_lcd_boot();
 }
 
 static const struct rtos_ini_cfg api_inis[] = { { api_boot, 0 } };
@@ -29,12 +30,22 @@ static const struct rtos_sem_cfg api_sems[] = {
 	{ EV3_BUTTON_SEMID, TA_TPRI, 1, 1, "ev3api click handlers" },
 };
 
+/* The frame of the LCD calls: an application task of any user domain draws into it. */
+#define LCD_FRAME_ROW(dom) \
+	{ (dom), api_lcd_frame, sizeof(api_lcd_frame), TPM_READ | TPM_WRITE, "ev3api LCD frame" }
+
+static const struct rtos_mem_cfg api_mems[] = {
+	LCD_FRAME_ROW(1), LCD_FRAME_ROW(2), LCD_FRAME_ROW(3), LCD_FRAME_ROW(4),
+};
+_Static_assert(TNUM_DOMID == 4, "one LCD frame row per user domain");
+
 static const struct rtos_cfg *const api_includes[] = { &ev3_drivers_cfg, NULL };
 
 const struct rtos_cfg ev3api_cfg = {
 	.name = "ev3api_cfg",
 	.tasks = RTOS_TABLE(api_tasks),
 	.sems = RTOS_TABLE(api_sems),
+	.mems = RTOS_TABLE(api_mems),
 	.inis = RTOS_TABLE(api_inis),
 	.includes = api_includes,
 };

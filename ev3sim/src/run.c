@@ -9,12 +9,15 @@
 #include "host_sim/scenario.h"
 #include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/ev3_speaker.h"
+#include "host_sim/devices/ev3_lcd.h"
 #include "host_sim/devices/ev3_ui.h"
 #include "host_sim/devices/uart_sensor.h"
 #include "ev3sim/brick_io.h"
 #include "ev3sim/balance_run.h"
 #include "ev3sim/run.h"
 #include "ev3sim/tribot.h"
+
+ER (*ev3sim_lcd_png_writer)(const char *path);
 
 #define CHUNK_NS        10000000ULL     /* run in 10 ms slices: the CSV's row period */
 #define DRAIN_NS        20000000ULL
@@ -370,6 +373,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	uint64_t end;
 	double wall0;
 	ER ercd, shutdown;
+	bool lcd_failed = false;
 
 	memset(r, 0, sizeof(*r));
 	if (app == NULL || !(o->seconds > 0 && o->seconds <= EV3SIM_MAX_SECONDS) ||
@@ -445,6 +449,17 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	r->wall_s = ev3sim_wall_seconds() - wall0;
 	if (o->audio_path && ev3_speaker_write_wav(o->audio_path) != E_OK)
 		ercd = E_SYS;
+	if (o->lcd_path) {
+		static uint8_t px[EV3_LCD_PANEL_HEIGHT][EV3_LCD_PANEL_WIDTH];
+
+		ev3_lcd_pixels(px);
+		r->lcd_dark = 0;
+		for (unsigned y = 0; y < EV3_LCD_PANEL_HEIGHT; y++)
+			for (unsigned x = 0; x < EV3_LCD_PANEL_WIDTH; x++)
+				r->lcd_dark += px[y][x];
+		if (!ev3sim_lcd_png_writer || ev3sim_lcd_png_writer(o->lcd_path) != E_OK)
+			lcd_failed = true;
+	}
 	(void)iact_tsk(POWER_OFF_TSKID);
 	hs_sim_run_for(DRAIN_NS);
 	rtos_host_trace_set_sink(NULL, NULL);
@@ -456,6 +471,10 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	}
 	if (ercd != E_OK) {
 		snprintf(err, errlen, "cannot write %s completely", o->audio_path);
+		return E_SYS;
+	}
+	if (lcd_failed) {
+		snprintf(err, errlen, "cannot write %s", o->lcd_path);
 		return E_SYS;
 	}
 	return E_OK;
@@ -478,6 +497,11 @@ void ev3sim_run_summary(const struct ev3sim_run_opts *o, const struct ev3sim_run
 			 "line_progress_m=%.3f travel_m=%.3f max_line_error_mm=%.1f rms_line_error_mm=%.1f "
 			 "on_line_pct=%.1f ", r->progress_m, r->travel_m, r->max_line_error_mm,
 			 r->rms_line_error_mm, r->on_line_pct);
+	}
+	if (o->lcd_path) {
+		size_t n = strlen(world);
+
+		snprintf(world + n, sizeof(world) - n, "lcd_dark_pixels=%u ", r->lcd_dark);
 	}
 	snprintf(buf, len, "app=%s robot=%s seconds=%g seed=%llu %slog_lines=%u warnings=%u errors=%u "
 		 "bugs=%u sim_speed=%.0fx",

@@ -1,8 +1,10 @@
 /*
- * app.c — hello: the brick says hello with what ev3lx provides so far: it
- * plays a short tune (A4, C#5, E5, then A5 held until stopped) and logs the
+ * app.c — hello: the brick says hello on its display (a title in the
+ * medium font, a rule, the battery in the small font, a framed box), plays a
+ * short tune (A4, C#5, E5, then A5 held until stopped) and logs the
  * battery's voltage and current before and during the tune.
  */
+#include <stdio.h>
 #include "ev3api.h"
 #include "app.h"
 #include "kernel_cfg.h"
@@ -13,9 +15,24 @@ static const struct { uint16_t hz; int32_t ms; } tune[] = {
 
 void main_task(intptr_t exinf)
 {
+	char battery[32];
+	int32_t font_w, font_h;
+
 	tslp_tsk(100);      /* the analog driver's first battery samples */
-	syslog(LOG_NOTICE, "hello: battery %d mV, %d mA", ev3_battery_voltage_mV(),
-	       ev3_battery_current_mA());
+	snprintf(battery, sizeof(battery), "battery %d mV, %d mA", ev3_battery_voltage_mV(),
+		 ev3_battery_current_mA());
+	syslog(LOG_NOTICE, "hello: %s", battery);
+
+	ev3_lcd_set_font(EV3_FONT_MEDIUM);
+	ev3_font_get_size(EV3_FONT_MEDIUM, &font_w, &font_h);
+	ev3_lcd_draw_string("Hello EV3!", (EV3_LCD_WIDTH - 10 * font_w) / 2, 4);
+	ev3_lcd_draw_line(0, 4 + font_h + 2, EV3_LCD_WIDTH - 1, 4 + font_h + 2);
+	ev3_lcd_set_font(EV3_FONT_SMALL);
+	ev3_lcd_draw_string(battery, 2, 30);
+	ev3_lcd_fill_rect(40, 60, 98, 40, EV3_LCD_BLACK);
+	ev3_lcd_fill_rect(42, 62, 94, 36, EV3_LCD_WHITE);
+	ev3_lcd_draw_string("ev3lx", 74, 76);
+
 	ev3_speaker_set_volume(50);
 	for (unsigned i = 0; i < sizeof(tune) / sizeof(tune[0]); i++) {
 		ev3_speaker_play_tone(tune[i].hz, tune[i].ms);

@@ -1,7 +1,8 @@
 /*
- * not_yet_app.c — an EV3RT app calling one function of every group ev3lx
- * does not provide yet.  It must compile without a warning and fail to link,
- * the linker naming each call (make ev3rt-link-check).
+ * not_yet_app.c — an EV3RT app calling the functions of the group ev3lx
+ * provided last (the LCD).  It must compile without a warning; it links now
+ * (make ev3rt-link-check: while a group is missing, the link fails naming
+ * each call).
  */
 #include <stdio.h>
 #include "ev3api.h"

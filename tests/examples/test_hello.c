@@ -2,14 +2,34 @@
  * test_hello.c — examples/hello: the battery logged before and after the
  * tune, and the tune as the speaker played it (--audio): A4, C#5 and E5
  * for 200 ms each with 50 ms rests, then A5 held for 400 ms until stopped,
- * at volume 50 (25 % duty).
+ * at volume 50 (25 % duty); the display as hello drew it, pixel for pixel
+ * against the API's drawing core run here with the same calls.
  */
 #include <stdio.h>
+#include <string.h>
 #include "ev3api.h"
 #include "example_test.h"
 #include "host_sim/devices/ev3_speaker.h"
+#include "host_sim/devices/ev3_lcd.h"
+#include "../../api/src/lcd_draw.h"
 
 #define WAV "hello_test.wav"
+
+/* The frame hello draws (its calls, in the drawing core), for the battery text it logged. */
+static void hello_frame(uint8_t *frame, const char *battery)
+{
+	static const char title[] = "Hello EV3!";
+
+	for (int i = 0; title[i]; i++)
+		lcd_char(frame, EV3_FONT_MEDIUM, (unsigned char)title[i], (EV3_LCD_WIDTH - 10 * 12) / 2 + 12 * i, 4);
+	lcd_line(frame, 0, 22, EV3_LCD_WIDTH - 1, 22, true);
+	for (int i = 0; battery[i]; i++)
+		lcd_char(frame, EV3_FONT_SMALL, (unsigned char)battery[i], 2 + 6 * i, 30);
+	lcd_fill(frame, 40, 60, 98, 40, true);
+	lcd_fill(frame, 42, 62, 94, 36, false);
+	for (int i = 0; i < 5; i++)
+		lcd_char(frame, EV3_FONT_SMALL, (unsigned char)"ev3lx"[i], 74 + 6 * i, 76);
+}
 
 /* Notes found in the recording: frequency and length of each run of sound. */
 struct note { double hz, ms; };
@@ -67,6 +87,20 @@ int main(void)
 		sscanf(line, "hello: battery %d mV, %d mA", &mv, &ma);
 	in_range(mv, 8900, 9000, "the battery logged: %d mV", mv);
 	in_range(ma, 95, 105, "and the brick's %d mA", ma);
+	{
+		static uint8_t frame[LCD_FRAME_BYTES];
+		unsigned bad = 0, dark = 0;
+
+		hello_frame(frame, line ? line + strlen("hello: ") : "");
+		ok(ev3_lcd_display_on(), "the display is on");
+		for (int y = 0; y < EV3_LCD_HEIGHT; y++)
+			for (int x = 0; x < EV3_LCD_WIDTH; x++) {
+				bad += ev3_lcd_pixel((unsigned)x, (unsigned)y) != lcd_pixel(frame, x, y);
+				dark += lcd_pixel(frame, x, y);
+			}
+		is_int(bad, 0, "the panel shows hello's title, rule, battery line and box exactly (%u dark pixels)",
+		       dark);
+	}
 	ok(ex_logged("hello: tune played") != NULL, "the tune ended");
 	is_int(r.warnings + r.errors + r.bugs, 0, "no warnings, errors or bugs");
 

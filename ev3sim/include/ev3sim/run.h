@@ -58,6 +58,7 @@ struct ev3sim_run_opts {
 	unsigned npushes;
 	const char *trace_path;     /* VCD, NULL: none */
 	const char *audio_path;     /* WAV of what the speaker played, NULL: none */
+	const char *lcd_path;       /* PNG of the display's last frame, NULL: none */
 	const char *sd_dir;         /* the SD card's directory, NULL: no card (brick_io.h) */
 	const char *serial_path;    /* the serial port's far end, NULL: not connected */
 	FILE *csv;                  /* the robot's state every 10 ms, NULL: none */
@@ -77,7 +78,13 @@ struct ev3sim_run_result {
 	/* tribot */
 	double progress_m, travel_m, max_line_error_mm, rms_line_error_mm, on_line_pct;
 	double wall_s;
+	unsigned lcd_dark;          /* dark pixels of the display at the end (with lcd_path) */
 };
+
+/* Writes what the display shows as a 178 x 128 8-bit grey PNG (0 dark, 255
+ * light): E_OK or E_SYS.  The ev3sim program sets it (libpng is linked into
+ * the program only); NULL: --lcd is not available. */
+extern ER (*ev3sim_lcd_png_writer)(const char *path);
 
 /* The robot's devices on the ports, no faults, actions or pushes; for the
  * tribot a touch press at 3 s; the gyro boy let go at 4 s with a 0.5 degree

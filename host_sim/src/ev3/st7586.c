@@ -19,7 +19,7 @@ enum {
 	CMD_MONO_OFF = 0x38, CMD_MONO_ON = 0x39,
 };
 
-#define VISIBLE_COLS  ((EV3_LCD_WIDTH + 2U) / 3U)      /* 60 column units show 180 pixels */
+#define VISIBLE_COLS  ((EV3_LCD_PANEL_WIDTH + 2U) / 3U)      /* 60 column units show 180 pixels */
 /* SPIFMTn fields (AM1808 TRM, SPI chapter): CHARLEN [4:0], PHASE 16, POLARITY 17, SHIFTDIR 20. */
 #define FMT_CHARLEN   0x1FU
 #define FMT_PHASE     (1U << 16)
@@ -201,15 +201,15 @@ bool ev3_lcd_pixel(unsigned x, unsigned y)
 {
 	static const uint8_t dark_bit[3] = { 0x80, 0x10, 0x02 };
 
-	if (x >= EV3_LCD_WIDTH || y >= EV3_LCD_HEIGHT || !ev3_lcd_display_on())
+	if (x >= EV3_LCD_PANEL_WIDTH || y >= EV3_LCD_PANEL_HEIGHT || !ev3_lcd_display_on())
 		return false;
 	return ((lcd.ram[y][x / 3U] & dark_bit[x % 3U]) != 0) != lcd.inverted;
 }
 
-void ev3_lcd_pixels(uint8_t out[EV3_LCD_HEIGHT][EV3_LCD_WIDTH])
+void ev3_lcd_pixels(uint8_t out[EV3_LCD_PANEL_HEIGHT][EV3_LCD_PANEL_WIDTH])
 {
-	for (unsigned y = 0; y < EV3_LCD_HEIGHT; y++)
-		for (unsigned x = 0; x < EV3_LCD_WIDTH; x++)
+	for (unsigned y = 0; y < EV3_LCD_PANEL_HEIGHT; y++)
+		for (unsigned x = 0; x < EV3_LCD_PANEL_WIDTH; x++)
 			out[y][x] = ev3_lcd_pixel(x, y);
 }
 
@@ -254,7 +254,7 @@ static void lcd_destroy(void *ctx)
 	(void)ctx;
 	hs_gpio_unwatch(lcd.watch_reset);
 	hs_spi_connect(EV3_LCD_SPI_BUS, NULL);
-	lcd.ready = false;
+	/* the panel keeps its last picture readable after shutdown (a test reads it then) */
 }
 
 const struct hs_device ev3_lcd_device = { "ST7586", lcd_create, NULL, lcd_destroy };

@@ -48,12 +48,12 @@ static void draw(uint8_t *f, bool (*pix)(unsigned, unsigned))
 /* Pixels of the panel that differ from pix. */
 static unsigned panel_diff(bool (*pix)(unsigned, unsigned))
 {
-	static uint8_t px[EV3_LCD_HEIGHT][EV3_LCD_WIDTH];
+	static uint8_t px[EV3_LCD_PANEL_HEIGHT][EV3_LCD_PANEL_WIDTH];
 	unsigned bad = 0;
 
 	ev3_lcd_pixels(px);
-	for (unsigned y = 0; y < EV3_LCD_HEIGHT; y++)
-		for (unsigned x = 0; x < EV3_LCD_WIDTH; x++)
+	for (unsigned y = 0; y < EV3_LCD_PANEL_HEIGHT; y++)
+		for (unsigned x = 0; x < EV3_LCD_PANEL_WIDTH; x++)
 			bad += px[y][x] != pix(x, y);
 	return bad;
 }

@@ -55,7 +55,7 @@ static void window(uint8_t xs, uint8_t xe, uint8_t ys, uint8_t ye)
 }
 
 static uint8_t frame[128 * 60];
-static uint8_t px[EV3_LCD_HEIGHT][EV3_LCD_WIDTH];
+static uint8_t px[EV3_LCD_PANEL_HEIGHT][EV3_LCD_PANEL_WIDTH];
 
 /* The expected pixels of frame (dark = top bit of a field). */
 static bool frame_pixel(unsigned x, unsigned y)
@@ -117,8 +117,8 @@ int main(void)
 	{
 		unsigned dark = 0;
 
-		for (unsigned y = 0; y < EV3_LCD_HEIGHT; y++)
-			for (unsigned x = 0; x < EV3_LCD_WIDTH; x++)
+		for (unsigned y = 0; y < EV3_LCD_PANEL_HEIGHT; y++)
+			for (unsigned x = 0; x < EV3_LCD_PANEL_WIDTH; x++)
 				dark += px[y][x];
 		is_int(dark, 0, "a cleared RAM shows a white panel");
 	}
@@ -136,8 +136,8 @@ int main(void)
 	in_range((double)dt / 1e6, 7.80, 8.40, "7680 bytes at 9.43 MHz take %.2f ms", (double)dt / 1e6);
 	is_int(ev3_lcd_get_stats()->frames, 2, "the frame fills its window");
 	ev3_lcd_pixels(px);
-	for (unsigned y = 0; y < EV3_LCD_HEIGHT; y++)
-		for (unsigned x = 0; x < EV3_LCD_WIDTH; x++)
+	for (unsigned y = 0; y < EV3_LCD_PANEL_HEIGHT; y++)
+		for (unsigned x = 0; x < EV3_LCD_PANEL_WIDTH; x++)
 			bad += px[y][x] != frame_pixel(x, y);
 	is_int(bad, 0, "all 178 x 128 pixels show the frame (3 pixels a byte, dark = top bit of each field)");
 	is_int(ev3_lcd_pixel(0, 0), (frame[0] & 0x80) != 0, "pixel (0,0) is bit 7 of byte 0");

@@ -29,7 +29,8 @@
  * and 179 are padding) of rows 0..127.  A pixel is dark when the top bit of
  * its field (bit 7, 4 or 1) is set: LEGO's user space writes all bits of a
  * field for black, EV3RT's only the top two, and both satisfy the rule.
- * With the display off, asleep or in reset the panel is blank.
+ * With the display off, asleep or in reset the panel is blank.  After
+ * hs_board_shutdown the last state stays readable until the next boot.
  */
 #ifndef HOST_SIM_DEVICES_EV3_LCD_H
 #define HOST_SIM_DEVICES_EV3_LCD_H
@@ -39,8 +40,8 @@
 #include "host_sim/board.h"
 #include "host_sim/gpio.h"
 
-#define EV3_LCD_WIDTH       178U
-#define EV3_LCD_HEIGHT      128U
+#define EV3_LCD_PANEL_WIDTH       178U
+#define EV3_LCD_PANEL_HEIGHT      128U
 #define EV3_LCD_RAM_COLS    128U        /* column units of three pixels */
 #define EV3_LCD_RAM_ROWS    160U
 #define EV3_LCD_SPI_BUS     1U
@@ -66,7 +67,7 @@ bool ev3_lcd_display_on(void);
 /* What the panel shows at (x, y): true = dark; false outside the panel. */
 bool ev3_lcd_pixel(unsigned x, unsigned y);
 /* The whole panel, row by row: 1 = dark, 0 = light. */
-void ev3_lcd_pixels(uint8_t out[EV3_LCD_HEIGHT][EV3_LCD_WIDTH]);
+void ev3_lcd_pixels(uint8_t out[EV3_LCD_PANEL_HEIGHT][EV3_LCD_PANEL_WIDTH]);
 /* A byte of the display data RAM (0 outside it). */
 uint8_t ev3_lcd_ram(unsigned col, unsigned row);
 

@@ -1,0 +1,20 @@
+# `make ev3sim-lcd-check` (in make test): `ev3sim run examples/hello --lcd`
+# writes the display's last frame as a PNG; decoded here independently of
+# libpng (perl's core zlib), it is 178 x 128 8-bit grey with only black and
+# white pixels, and its dark pixels are as many as ev3sim counted on the
+# panel (lcd_dark_pixels in the summary) - hello's drawing, not a blank frame.
+LCD_CHECK_PNG := $(BUILD)/ev3sim/hello.png
+
+.PHONY: ev3sim-lcd-check
+ev3sim-lcd-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
+	@mkdir -p $(dir $(LCD_CHECK_PNG))
+	+$(Q)out=$$($(BUILD)/host/ev3sim run examples/hello --seconds 1 --quiet --lcd $(LCD_CHECK_PNG)) || \
+		{ echo "ev3sim-lcd-check: FAILED: ev3sim run examples/hello exited $$?"; exit 1; }; \
+	want=$$(printf '%s\n' "$$out" | tail -n 1 | sed -n 's/.* lcd_dark_pixels=\([0-9]*\) .*/\1/p'); \
+	got=$$(perl mk/png_dark_pixels.pl $(LCD_CHECK_PNG)) || \
+		{ echo "ev3sim-lcd-check: FAILED: $(LCD_CHECK_PNG): $$got"; exit 1; }; \
+	if [ -z "$$want" ] || [ "$$got" != "$$want" ] || [ "$$got" -lt 500 ]; then \
+		echo "ev3sim-lcd-check: FAILED: the PNG has $$got dark pixels, the panel $$want"; exit 1; fi; \
+	echo "ev3sim-lcd-check: $(LCD_CHECK_PNG) is 178 x 128 grey with the panel's $$got dark pixels"
+
+TEST_SUITE_EXTRA += ev3sim-lcd-check
