@@ -70,18 +70,21 @@ struct st7586fb_par {
 	u8 *vmem;
 	bool started;
 	bool initialised;
-	u8 txbuf[8] ____cacheline_aligned;	/* commands and parameters (DMA-safe, unlike the stack) */
+	u8 *txbuf;			/* commands and parameters: kmalloc'd, DMA-safe unlike the stack */
 };
+
+#define ST7586FB_TXBUF_SIZE	8
 
 /* Sends a command byte, then its parameters (at most 4) as data.  bus_lock held. */
 static int st7586fb_cmd(struct st7586fb_par *par, u8 cmd, const u8 *params, size_t n)
 {
 	int ret;
 
-	if (WARN_ON(n > sizeof(par->txbuf) - 1))
+	if (WARN_ON(n > ST7586FB_TXBUF_SIZE - 1))
 		return -EINVAL;
 	par->txbuf[0] = cmd;
-	memcpy(par->txbuf + 1, params, n);
+	if (n)
+		memcpy(par->txbuf + 1, params, n);
 	gpio_set_value(par->pdata->a0_gpio, 0);
 	ret = spi_write(par->spi, par->txbuf, 1);
 	if (ret || !n)
@@ -310,6 +313,9 @@ static int st7586fb_probe(struct spi_device *spi)
 	if (!info)
 		goto err_vmem;
 	par = info->par;
+	par->txbuf = kmalloc(ST7586FB_TXBUF_SIZE, GFP_KERNEL);
+	if (!par->txbuf)
+		goto err_info;
 	par->spi = spi;
 	par->info = info;
 	par->pdata = pdata;
@@ -332,6 +338,7 @@ static int st7586fb_probe(struct spi_device *spi)
 err_defio:
 	fb_deferred_io_cleanup(info);
 err_info:
+	kfree(par->txbuf);
 	framebuffer_release(info);
 err_vmem:
 	vfree(vmem);
@@ -351,6 +358,7 @@ static void st7586fb_remove(struct spi_device *spi)
 
 	unregister_framebuffer(info);
 	fb_deferred_io_cleanup(info);
+	kfree(par->txbuf);
 	framebuffer_release(info);
 	vfree(vmem);
 	gpio_free(pdata->reset_gpio);
