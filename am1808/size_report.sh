@@ -10,7 +10,7 @@ component_of() {
 	case "$1" in
 	*rtos_stub/*)              echo "rtos glue" ;;
 	*linux_compat/*)           echo "linux_compat" ;;
-	*ev3_drivers/d_*.c*)      f=${1##*ev3_drivers/}; echo "driver ${f%%.c*}" ;;
+	*ev3_drivers/*.c*)        f=${1##*ev3_drivers/}; echo "driver ${f%%.c*}" ;;
 	*hacks/*_hack.c*)         f=${1##*hacks/}; echo "hack ${f%%_hack.c*}" ;;
 	*hacks/*)                  echo "hacks (shared)" ;;
 	*api/*)                    echo "api" ;;
@@ -19,9 +19,10 @@ component_of() {
 	esac
 }
 declare -A text data bss itext
-# one driver and one hack component per ev3_drivers/d_<m>.c
+# one component per driver (ev3_drivers/*.c) and per hack (hacks/<m>_hack.c)
 drivers=(); hacks=()
-for f in ev3_drivers/d_*.c; do m=${f#ev3_drivers/d_}; m=${m%.c}; drivers+=("driver d_$m"); hacks+=("hack $m"); done
+for f in ev3_drivers/*.c; do m=${f#ev3_drivers/}; drivers+=("driver ${m%.c}"); done
+for f in hacks/*_hack.c; do m=${f#hacks/}; hacks+=("hack ${m%_hack.c}"); done
 order=("rtos glue" "linux_compat" "${drivers[@]}" "${hacks[@]}" "hacks (shared)" "api" "libc + libgcc" "other")
 for c in "${order[@]}"; do text[$c]=0; data[$c]=0; bss[$c]=0; itext[$c]=0; done
 

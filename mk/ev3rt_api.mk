@@ -18,6 +18,6 @@ ev3rt-link-check: $(LIB_host)
 		grep -q "undefined reference to \`ev3lx_not_yet_supported__$$c'" $(BUILD)/host/ev3rt_link/link.log || \
 		{ echo "ev3rt-link-check: FAILED: the link error does not name $$c"; \
 		  cat $(BUILD)/host/ev3rt_link/link.log; exit 1; }; done
-	@echo "ev3rt-link-check: $(words $(EV3RT_NOT_YET_CALLS)) unsupported calls fail to link, each named"
+	@echo "ev3rt-link-check: $(if $(EV3RT_NOT_YET_CALLS),$(words $(EV3RT_NOT_YET_CALLS)) unsupported calls fail to link and are named,the app using the LCD calls links)"
 
 TEST_SUITE_EXTRA += ev3rt-link-check
