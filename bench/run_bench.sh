@@ -38,17 +38,19 @@ grep -E '^(call|speed),' "$out/host_raw.txt" > "$out/host.txt"
 #                 checks on, the library the tests run)
 #   arm_prod.txt  the production build (arm926-bench-prod: the checks off, as
 #                 the AM1808 library is built)
-# count_arm BINARY OUTPUT: runs BINARY under QEMU and counts its log into OUTPUT.
-count_arm() {
-	local arm_bin=$1 result=$2 run_log=${2%.txt}_run.txt
-	local fifo=$out/qemu.fifo counter_pid arm_status
-	echo "bench ($mode): ARMv5 ($(basename "$(dirname "$(dirname "$arm_bin")")")): $arm_calls calls each, $tick_ms ms of ticks under qemu-arm -cpu arm926 ..." >&2
+# run_counted BINARY OUTPUT "FUNCTIONS" ARGS...: runs BINARY ARGS... under QEMU and
+# counts the calls of FUNCTIONS made in its windows into OUTPUT.
+run_counted() {
+	local arm_bin=$1 result=$2 funcs=$3 run_log=${2%.txt}_run.txt
+	local fifo=$out/qemu.fifo counter_pid arm_status measured=()
+	shift 3
+	for f in $funcs; do measured+=(-m "$f"); done
 	mkfifo "$fifo"
-	"$counter" -r "$(pwd)" "$arm_bin.syms" -m ev3lx_motor_set_speed -m ev3lx_uart_sensor_get_raw -m lx_tick_isr \
+	"$counter" -r "$(pwd)" "$arm_bin.syms" "${measured[@]}" \
 		-w bench_window_open bench_window_close < "$fifo" > "$result" &
 	counter_pid=$!
 	"${preload[@]}" qemu-arm -cpu arm926 "${qemu_flags[@]}" -d $qemu_log -D "$fifo" \
-		"$arm_bin.stripped" $arm_calls $tick_ms $brick > "$run_log"
+		"$arm_bin.stripped" "$@" > "$run_log"
 	arm_status=$?
 	if [ $arm_status != 0 ]; then
 		# the counter may still wait for a writer on the FIFO if QEMU never opened it
@@ -59,6 +61,14 @@ count_arm() {
 	fi
 	wait $counter_pid || fail "insn_count"
 	rm -f "$fifo"
+}
+
+# count_arm BINARY OUTPUT: the three measured calls of bench_arm.
+count_arm() {
+	local arm_bin=$1 run_log=${2%.txt}_run.txt
+	echo "bench ($mode): ARMv5 ($(basename "$(dirname "$(dirname "$arm_bin")")")): $arm_calls calls each, $tick_ms ms of ticks under qemu-arm -cpu arm926 ..." >&2
+	run_counted "$arm_bin" "$2" "ev3lx_motor_set_speed ev3lx_uart_sensor_get_raw lx_tick_isr" \
+		$arm_calls $tick_ms $brick
 	grep -q "^phase ev3lx_motor_set_speed $arm_calls 0$" "$run_log" &&
 		grep -q "^phase ev3lx_uart_sensor_get_raw $arm_calls 0$" "$run_log" ||
 		fail "$arm_bin: a measured call failed (see $run_log)"
@@ -70,6 +80,20 @@ preload=()
 [ -f "$shim" ] && preload=(env LD_PRELOAD="$shim")
 count_arm "$arm_bin" "$out/arm.txt"
 count_arm "$arm_prod_bin" "$out/arm_prod.txt"
+
+# ---- the timer queues' scaling: the tick with 1, 16 and 256 armed hrtimers and
+# timer_list timers, one of each due per period (bench/timers/bench_timers.c),
+# production build ----
+timers_bin=$build/arm926-bench-prod/bench/bench_timers
+echo "bench ($mode): ARMv5 timer scaling: $tick_ms ms of ticks with 1, 16, 256 armed timers ..." >&2
+: > "$out/timers.txt"
+for n in 1 16 256; do
+	run_counted "$timers_bin" "$out/timers_$n.txt" lx_tick_isr $n $tick_ms
+	grep -q "^timers $n [1-9][0-9]* [1-9][0-9]*$" "$out/timers_${n}_run.txt" ||
+		fail "bench_timers $n: the periodic timers did not run (see $out/timers_${n}_run.txt)"
+	awk -F, -v n=$n '$1 == "call" && $2 == "lx_tick_isr" { print "timers," n "," $3 "," $7 "," $9 }' \
+		"$out/timers_$n.txt" >> "$out/timers.txt"
+done
 
 # ---- the CSV: section,measure,value,unit,paper,target,status ----
 awk -F, -v calls=$calls -v arm_calls=$arm_calls -v mode=$mode '
@@ -83,6 +107,7 @@ FILENAME ~ /host.txt$/ && $1 == "speed" { spd[$2] = $6; cspd[$2] = $7; vs[$2] = 
 FILENAME ~ /\/arm(_prod)?\.txt$/ { b = FILENAME ~ /_prod\.txt$/ ? " production" : "" }
 FILENAME ~ /\/arm(_prod)?\.txt$/ && $1 == "call" { k = $2 b; an[k] = $3; araw[k] = $4; arawmax[k] = $6; aeq[k] = $7; aeqmax[k] = $9; p50[k] = $10; p90[k] = $11; p99[k] = $12 }
 FILENAME ~ /\/arm(_prod)?\.txt$/ && $1 == "log" { windows[b] = $5 }
+FILENAME ~ /timers\.txt$/ { tavg[$2] = $4; tmax[$2] = $5 }
 END {
 	print "section,measure,value,unit,paper,target,status"
 	s = "ev3lx_motor_set_speed"; r = "ev3lx_uart_sensor_get_raw"; w = "write_dev_null"
@@ -128,13 +153,21 @@ END {
 		}
 		row(sec, "windows" b, windows[b], "windows", "", "", "")
 	}
+	r1 = tavg[1]; r256 = tavg[256]
+	for (i = 1; i <= 3; i++) {
+		nn = split("1 16 256", ns, " "); k = ns[i]
+		row("timers", "tick with " k " armed timers avg", tavg[k], "instructions", "", "", "")
+		row("timers", "tick with " k " armed timers max", tmax[k], "instructions", "", "", "")
+	}
+	ratio = r1 > 0 ? r256 / r1 : 0
+	row("timers", "tick 256 / 1 armed timers", sprintf("%.2f", ratio), "x", "", "<=1.5", verdict(ratio <= 1.5))
 	row("sim", "host_sim devices (ev3_bench_full_brick)", spd["host_sim_devices"], "x real time", "", ">=500",
 	    verdict(spd["host_sim_devices"] >= 500))
 	row("sim", "host_sim devices per CPU second", cspd["host_sim_devices"], "x real time", "", "", "")
 	row("sim", "full stack (drivers + 4 motors + 4 sensors)", spd["full_stack"], "x real time", "", ">=500",
 	    verdict(spd["full_stack"] >= 500))
 	row("sim", "full stack per CPU second", cspd["full_stack"], "x real time", "", "", "")
-}' "$out/host.txt" "$out/arm.txt" "$out/arm_prod.txt" > "$out/bench.csv"
+}' "$out/host.txt" "$out/arm.txt" "$out/arm_prod.txt" "$out/timers.txt" > "$out/bench.csv"
 grep -E '^(class|fn|libc),' "$out/arm.txt" > "$out/breakdown.csv"
 grep -E '^(class|fn|libc),' "$out/arm_prod.txt" > "$out/breakdown_prod.csv"
 
@@ -195,7 +228,11 @@ END {
 	arm_rows(r " production", r, "~1665 cycles", "5.9", 100)
 	arm_rows("tick production", "200 us tick (lx_tick_isr)", "", "", 300)
 	printf fmt, "    ticks counted", v("tick production calls"), "", "", ""
-	printf "3. host_sim speed (virtual seconds per wall second)\n"
+	printf "3. the timer queues: the 200 us tick with N armed hrtimers and N timer_list timers, one of each due (production)\n"
+	printf fmt, "  N = 1 / 16 / 256: avg", sprintf("%.0f / %.0f / %.0f", v("tick with 1 armed timers avg"), v("tick with 16 armed timers avg"), v("tick with 256 armed timers avg")), "", "", ""
+	printf fmt, "  N = 1 / 16 / 256: max", sprintf("%.0f / %.0f / %.0f", v("tick with 1 armed timers max"), v("tick with 16 armed timers max"), v("tick with 256 armed timers max")), "", "", ""
+	printf fmt, "  256 / 1", v("tick 256 / 1 armed timers") "x", "", "<= 1.5x", st("tick 256 / 1 armed timers")
+	printf "4. host_sim speed (virtual seconds per wall second)\n"
 	printf fmt, "  devices only (ev3_bench_full_brick)", sprintf("%.0fx (%.0fx per CPU s)", v("host_sim devices (ev3_bench_full_brick)"), v("host_sim devices per CPU second")), "", ">= 500x", st("host_sim devices (ev3_bench_full_brick)")
 	printf fmt, "  full stack: drivers, 4 motors, 4 sensors", sprintf("%.0fx (%.0fx per CPU s)", v("full stack (drivers + 4 motors + 4 sensors)"), v("full stack per CPU second")), "", ">= 500x", st("full stack (drivers + 4 motors + 4 sensors)")
 	printf "\nWhere the ARMv5 instructions go (target-equivalent per call, by layer; top functions):\n"

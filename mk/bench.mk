@@ -45,6 +45,16 @@ $(BENCH_PROD_ARM): $(BENCH_ARM_OBJS) $(BENCH_PROD_LIB)
 	$(CC_arm926-test) $(CFLAGS_arm926-test) $(LDFLAGS_arm926-test) -o $@ $(BENCH_ARM_OBJS) \
 		-Wl,--start-group $(BENCH_PROD_LIB) -Wl,--end-group -lm
 
+# The timer queues' scaling program (bench/timers: Linux code, see LINUX_DIRS),
+# against the production library only.
+BENCH_TIMERS      := $(BENCH_PROD)/bench/bench_timers
+BENCH_TIMERS_OBJS := $(BENCH_PROD)/obj/bench/timers/bench_timers.o
+
+$(BENCH_TIMERS): $(BENCH_TIMERS_OBJS) $(BENCH_PROD_LIB)
+	@mkdir -p $(@D)
+	$(CC_arm926-test) $(CFLAGS_arm926-test) $(LDFLAGS_arm926-test) -o $@ $(BENCH_TIMERS_OBJS) \
+		-Wl,--start-group $(BENCH_PROD_LIB) -Wl,--end-group -lm
+
 # Functions with their source files, for the counter's attribution; QEMU runs a
 # stripped copy (it would look every executed block's symbol up for the log).
 %/bench/bench_arm.syms: %/bench/bench_arm
@@ -53,12 +63,19 @@ $(BENCH_PROD_ARM): $(BENCH_ARM_OBJS) $(BENCH_PROD_LIB)
 %/bench/bench_arm.stripped: %/bench/bench_arm
 	arm-linux-gnueabi-strip -o $@ $<
 
+$(BENCH_TIMERS).syms: $(BENCH_TIMERS)
+	arm-linux-gnueabi-nm -n -S -l --defined-only $< > $@
+
+$(BENCH_TIMERS).stripped: $(BENCH_TIMERS)
+	arm-linux-gnueabi-strip -o $@ $<
+
 $(BENCH_LOG_SHIM): bench/qemu_log_buffer.c
 	@mkdir -p $(@D)
 	$(CC_host) -std=gnu11 -O2 $(WARN) -shared -fPIC -o $@ $< -ldl
 
 BENCH_DEPS := $(BUILD)/host/bench_host $(BUILD)/host/insn_count $(BENCH_ARM).syms \
-	$(BENCH_ARM).stripped $(BENCH_PROD_ARM).syms $(BENCH_PROD_ARM).stripped $(BENCH_LOG_SHIM)
+	$(BENCH_ARM).stripped $(BENCH_PROD_ARM).syms $(BENCH_PROD_ARM).stripped $(BENCH_LOG_SHIM) \
+	$(BENCH_TIMERS).syms $(BENCH_TIMERS).stripped
 
 # The production build's inline locking fast path has a test of its own:
 # test_irqsave, which every configuration runs checked, runs again against
@@ -95,4 +112,4 @@ TEST_SUITE_EXTRA += bench-quick
 TEST_SUITE_EXTRA_DEPS += $(BENCH_DEPS)
 
 -include $(BENCH_ARM_OBJS:.o=.d) $(patsubst %.c,$(BENCH_PROD)/obj/%.d,$(BENCH_PROD_LX_SRCS)) \
-	$(PROD_SUPPORT_OBJS:.o=.d) $(patsubst %,$(BENCH_PROD)/obj/%.d,$(PROD_TESTS))
+	$(PROD_SUPPORT_OBJS:.o=.d) $(patsubst %,$(BENCH_PROD)/obj/%.d,$(PROD_TESTS)) $(BENCH_TIMERS_OBJS:.o=.d)

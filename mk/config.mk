@@ -11,7 +11,7 @@ WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes 
 
 # Directories whose code is written against the Linux kernel API: they see
 # linux_compat/include and use gnu11 (typeof, statement expressions).
-LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers tests/legacy
+LINUX_DIRS := linux_compat hacks ev3_drivers tests/linux_compat tests/hacks tests/ev3_drivers tests/legacy bench/timers
 
 # Layers and their include directories.
 include mk/layers.mk
@@ -103,8 +103,13 @@ endef
 
 # The one compile command of configuration $(1) for source (or header) $(2):
 # every object, firmware file and header check is compiled through it.
-compile = $(CC_$(1)) $(call nostdinc_flags,$(1),$(2)) $(call src_flags,$(2)) $(call warn_flags,$(2)) \
-	$(call module_flags,$(1),$(2)) $(CFLAGS_$(1)) $(KERNEL_DEFS)
+compile = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(call src_flags,$(2)) \
+	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2))) $(CFLAGS_$(1)) $(KERNEL_DEFS)
+
+# Flags of configuration $(1)'s compiler: clang (the fuzzing build) has no
+# -fno-allow-store-data-races (it never invents stores the source lacks).
+GCC_ONLY_FLAGS := -fno-allow-store-data-races
+cc_flags = $(if $(filter clang%,$(notdir $(CC_$(1)))),$(filter-out $(GCC_ONLY_FLAGS),$(2)),$(2))
 
 # The object rule of configuration $(1) for the objects under $(2)/obj.
 define obj_rule
