@@ -281,6 +281,7 @@ static void swaps_and_branches(void)
 /* Instructions the decoder refuses, each alone in a function so that its address is known. */
 __asm__(".text\n"
 	".arm\n"
+	".balign 4\n"
 	".global trap_arm_unaligned_load\n"
 	".type trap_arm_unaligned_load, %function\n"
 	"trap_arm_unaligned_load:\n"
@@ -288,10 +289,12 @@ __asm__(".text\n"
 	"	bx lr\n"
 	".size trap_arm_unaligned_load, . - trap_arm_unaligned_load\n"
 	".thumb\n"
+	".balign 4\n"
 	".global trap_arm_thumb_load\n"
 	".type trap_arm_thumb_load, %function\n"
 	".thumb_func\n"
 	"trap_arm_thumb_load:\n"
+	"	nop\n"                 /* the load at an odd halfword */
 	"	ldr r0, [r0]\n"
 	"	bx lr\n"
 	".size trap_arm_thumb_load, . - trap_arm_thumb_load\n"
@@ -346,7 +349,7 @@ static void refusals(void)
 
 	snprintf(pc_text, sizeof(pc_text), "the instruction at %p", (void *)(uintptr_t)trap_arm_unaligned_load);
 	snprintf(thumb_pc_text, sizeof(thumb_pc_text), "the instruction at %p",
-		 (void *)((uintptr_t)trap_arm_thumb_load & ~(uintptr_t)1));
+		 (void *)(((uintptr_t)trap_arm_thumb_load & ~(uintptr_t)1) + 2U));
 	{
 		const char *const parts[] = { "BUG: host_sim: plain pointer access", "(physical 0x01e00001)",
 					      pc_text, "unaligned word access", "instruction word 0xe5900001" };
@@ -355,10 +358,11 @@ static void refusals(void)
 		   "an unaligned ldr on a register stops with the word, its address and the physical address");
 	}
 	{
-		const char *const parts[] = { "(physical 0x01e00000)", thumb_pc_text, "Thumb instruction" };
+		const char *const parts[] = { "(physical 0x01e00000)", thumb_pc_text, "Thumb instruction",
+					      "instruction word 0x00006800" };
 
 		ok(stops_with_report("thumb", trap_arm_thumb_load, tdev, parts, HS_ARRAY_SIZE(parts)),
-		   "a Thumb load on a register stops with a report saying so");
+		   "a Thumb load on a register stops with a report saying so, naming its halfword");
 	}
 }
 #endif
