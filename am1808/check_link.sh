@@ -32,7 +32,7 @@ fi
 # 3. Everything in the library, linked: zero unresolved symbols.
 $cc -mcpu=arm926ej-s -marm -nostartfiles -T am1808/ev3lx.ld -specs=nano.specs \
 	-o "$out/linkcheck.elf" "$out/startup.o" "$out/fw_main.o" "$out/hrp2_link_provider.o" \
-	"$out/newlib_glue.o" \
+	"$out/newlib_glue.o" "$out/fw_api_roots.o" \
 	-Wl,--whole-archive "$out/libev3lx.a" -Wl,--no-whole-archive \
 	-Wl,--start-group -lc_nano -lgcc -Wl,--end-group -Wl,--warn-common \
 	2> "$out/linkcheck.log" || { cat "$out/linkcheck.log"; echo "link-check: FAILED"; exit 1; }

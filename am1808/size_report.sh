@@ -69,5 +69,5 @@ shim=$(( ${text["rtos glue"]} + ${text[linux_compat]} ))
 ishim=$(( ${itext["rtos glue"]} + ${itext[linux_compat]} ))
 echo
 echo "lib text = every function in libev3lx.a; image text = what the firmware keeps after --gc-sections"
-echo "(rooted at ev3api_cfg: the drivers, their service calls and the API); .rodata counts as text."
+echo "(rooted at ev3api_cfg — the drivers and their service calls — and at every API function, as an application using all of the API); .rodata counts as text."
 echo "linux_compat + rtos glue .text: $shim bytes in the library, $ishim bytes in the image (target <= 8192 at -Os)"

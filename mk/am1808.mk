@@ -15,7 +15,7 @@ AM1808        := $(BUILD)/am1808
 AM1808_OBJS   := $(patsubst %.c,$(AM1808)/obj/%.o,$(AM1808_SRCS))
 AM1808_LIB    := $(AM1808)/libev3lx.a
 FW_OBJS := $(AM1808)/startup.o $(AM1808)/fw_main.o $(AM1808)/hrp2_link_provider.o \
-	$(AM1808)/newlib_glue.o
+	$(AM1808)/newlib_glue.o $(AM1808)/fw_api_roots.o
 # Reproducible image: the time stamp is the last commit's (or 0 outside git).
 SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null || echo 0)
 
@@ -31,6 +31,19 @@ $(AM1808_LIB): $(call module_objs,$(AM1808_OBJS))
 $(AM1808)/startup.o: am1808/startup.S
 	@mkdir -p $(@D)
 	$(CC_am1808) -mcpu=arm926ej-s -marm -c $< -o $@
+
+# The whole EV3 API the library defines, rooted (am1808/api_roots.sh): the image
+# is what an application calling all of it keeps after --gc-sections.
+AM1808_API_OBJS = $(filter $(AM1808)/obj/api/%,$(AM1808_OBJS))
+$(AM1808)/fw_api_roots.c: am1808/api_roots.sh $(AM1808_API_OBJS) $(wildcard api/*.h)
+	@mkdir -p $(@D)
+	$(quiet) GEN am1808 $@
+	$(Q)API_OBJS="$(AM1808_API_OBJS)" bash am1808/api_roots.sh $(call compile,am1808,am1808/fw_main.c) > $@.tmp
+	$(Q)mv $@.tmp $@
+
+$(AM1808)/fw_api_roots.o: $(AM1808)/fw_api_roots.c
+	$(quiet) CC am1808 $<
+	$(Q)$(call compile,am1808,am1808/fw_main.c) -Wno-cast-function-type -c $< -o $@
 
 $(AM1808)/%.o: am1808/%.c
 	@mkdir -p $(@D)
