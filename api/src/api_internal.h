@@ -29,17 +29,23 @@ static inline ER api_may_read(void)
  * Whether the caller may write size bytes at p, an object aligned to align:
  * E_MACV for NULL or, from a task, memory outside its protection domain
  * (prb_mem; handlers run in the kernel domain); E_PAR if p is misaligned (the
- * ARM926 would store to the wrong address, not fault).
+ * ARM926 would store to the wrong address, not fault).  api_check_out_in
+ * takes the context the caller already asked for (in_task: !sns_ctx()).
  */
-static inline ER api_check_out(const void *p, SIZE size, SIZE align)
+static inline ER api_check_out_in(const void *p, SIZE size, SIZE align, bool_t in_task)
 {
 	if (p == NULL)
 		return E_MACV;
 	if ((uintptr_t)p & (align - 1U))
 		return E_PAR;
-	if (!sns_ctx() && prb_mem(p, size, TSK_SELF, TPM_WRITE) != E_OK)
+	if (in_task && prb_mem(p, size, TSK_SELF, TPM_WRITE) != E_OK)
 		return E_MACV;
 	return E_OK;
+}
+
+static inline ER api_check_out(const void *p, SIZE size, SIZE align)
+{
+	return api_check_out_in(p, size, align, !sns_ctx());
 }
 
 /* api_check_out for the object p points to. */

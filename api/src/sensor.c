@@ -401,17 +401,18 @@ ER ev3lx_uart_sensor_get_raw(sensor_port_t port, void *buf, uint_t size)
 {
 	const int8_t *sample;
 	int mode;
-	ER ercd = api_may_read();
+	bool_t in_task = !sns_ctx();       /* asked once for both checks */
+	ER ercd;
 
-	if (ercd != E_OK)
-		return ercd;
+	if (in_task && sns_loc())          /* api_may_read */
+		return E_CTX;
 	if ((unsigned)port >= TNUM_SENSOR_PORT)
 		return E_ID;
 	if (lms_type_of(sensor_type[port]) == 0)
 		return E_OBJ;
 	if (size == 0 || size > LMS_UART_DATA_SIZE)
 		return E_PAR;
-	ercd = api_check_out(buf, size, 1);
+	ercd = api_check_out_in(buf, size, 1, in_task);
 	if (ercd != E_OK)
 		return ercd;
 	mode = (int)*(const volatile int8_t *)&uart_shm->ext.port[port].mode;	/* signed: -1 is none */
