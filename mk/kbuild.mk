@@ -27,6 +27,7 @@ kbuild-check: deps-check
 		n=$$(basename $$d .c); src=$$(sed -n "s/^source_.*$$n.o := //p" $(KBUILD_OUT)/.$$n.o.cmd | head -n 1); \
 		[ -n "$$src" ] && [ -f "$$src" ] && echo "$$(sha256sum < $$src | cut -c1-64)  $$d"; \
 	done > $(KBUILD_OUT)/drivers.sha256
+	@$(MAKE) --no-print-directory kbuild-legacy-check
 
 # `make verbatim-check`: ev3_drivers/ holds genuine Linux only — no RTOS, simulator or
 # hack identifiers, and no #ifdef for them (the hack files adapt the drivers instead).
@@ -42,25 +43,44 @@ verbatim-check:
 		echo "verbatim-check: a driver mentions the RTOS, the simulator or the hacks"; exit 1; fi; \
 	echo "verbatim-check: $(words $(VERBATIM_FILES)) driver files ($(DRIVER_FILES) and their directories' headers) are RTOS- and simulator-free"
 
-# `make kbuild-legacy-check`: the users' modules of tests/legacy (2.6-era idiom,
-# the conformance drivers) built as out-of-tree modules against the same
-# headers, as their users would build them: kbuild's default warnings (W and C
-# unset), which for such code are not fatal; the build must succeed, and the
-# warnings are listed (the project's own drivers are held to W=1 + sparse above).
+# `make kbuild-legacy-check` (also run by `make kbuild-check`): the users'
+# modules of tests/legacy (2.6-era idiom, the conformance drivers) built as
+# out-of-tree modules against the same headers, as their users would build
+# them: with kbuild's default warnings (W and C unset), which for such code are
+# not fatal; the build must succeed and its warnings are listed.  Then once
+# more with W=1 and sparse (C=2), where LEGO's idiom legitimately warns — its
+# non-static globals and functions without prototypes (sparse's "should it be
+# static?", -Wmissing-prototypes) and plain pointers made from ioremap()'s
+# __iomem cookie (sparse's "cast removes address space") — and nothing else
+# may: any other warning there fails.  The project's own drivers are held to
+# W=1 + sparse with no warning at all (kbuild-check above).
 KBUILD_LEGACY_OUT := $(BUILD)/kbuild-legacy
 KBUILD_LEGACY_DRIVERS := $(wildcard tests/legacy/drivers/*.c)
+KBUILD_LEGACY_IDIOM := was not declared\. Should it be static\?|no previous prototype for|cast removes address space .__iomem.
 
 .PHONY: kbuild-legacy-check
 kbuild-legacy-check: deps-check
 	@test -n "$(KDIR)" || { echo "kbuild-legacy-check: no linux-headers-*-amd64 in /usr/src (make deps)"; exit 1; }
-	@rm -rf $(KBUILD_LEGACY_OUT) && mkdir -p $(KBUILD_LEGACY_OUT)
-	@cp -p $(KBUILD_LEGACY_DRIVERS) $(KBUILD_LEGACY_OUT)/
-	@echo "obj-m := $(notdir $(KBUILD_LEGACY_DRIVERS:.c=.o))" > $(KBUILD_LEGACY_OUT)/Kbuild
-	@$(MAKE) --no-print-directory -C $(KDIR) M=$(abspath $(KBUILD_LEGACY_OUT)) modules \
-		> $(KBUILD_LEGACY_OUT)/build.log 2>&1 || { cat $(KBUILD_LEGACY_OUT)/build.log; \
+	@rm -rf $(KBUILD_LEGACY_OUT) && mkdir -p $(KBUILD_LEGACY_OUT)/default $(KBUILD_LEGACY_OUT)/w1
+	@for d in default w1; do \
+		cp -p $(KBUILD_LEGACY_DRIVERS) $(KBUILD_LEGACY_OUT)/$$d/; \
+		echo "obj-m := $(notdir $(KBUILD_LEGACY_DRIVERS:.c=.o))" > $(KBUILD_LEGACY_OUT)/$$d/Kbuild; \
+	done
+	@$(MAKE) --no-print-directory -C $(KDIR) M=$(abspath $(KBUILD_LEGACY_OUT))/default modules \
+		> $(KBUILD_LEGACY_OUT)/default/build.log 2>&1 || { cat $(KBUILD_LEGACY_OUT)/default/build.log; \
 		echo "kbuild-legacy-check: FAILED: the users' modules do not build under kbuild"; exit 1; }
-	@n=$$(grep -c 'warning:' $(KBUILD_LEGACY_OUT)/build.log || true); \
-	grep 'warning:' $(KBUILD_LEGACY_OUT)/build.log | sed 's/^/kbuild-legacy-check: (not fatal) /'; \
-	echo "kbuild-legacy-check: built $$(cd $(KBUILD_LEGACY_OUT) && ls *.ko | tr '\n' ' ')with kbuild's default warnings ($$n warnings)"
+	@n=$$(grep -c 'warning:' $(KBUILD_LEGACY_OUT)/default/build.log || true); \
+	grep 'warning:' $(KBUILD_LEGACY_OUT)/default/build.log | sed 's/^/kbuild-legacy-check: (not fatal) /'; \
+	echo "kbuild-legacy-check: built $$(cd $(KBUILD_LEGACY_OUT)/default && ls *.ko | tr '\n' ' ')with kbuild's default warnings ($$n warnings)"
+	@log=$(KBUILD_LEGACY_OUT)/w1/build.log; \
+	$(MAKE) --no-print-directory -C $(KDIR) M=$(abspath $(KBUILD_LEGACY_OUT))/w1 W=1 C=2 modules > $$log 2>&1 \
+		|| { cat $$log; echo "kbuild-legacy-check: FAILED: the users' modules do not build with W=1 C=2"; exit 1; }; \
+	other=$$(grep -E 'warning:|error:' $$log | grep -vE "$(KBUILD_LEGACY_IDIOM)" | grep -v 'Skipping BTF' || true); \
+	if [ -n "$$other" ]; then echo "$$other"; \
+		echo "kbuild-legacy-check: FAILED: W=1 C=2 warnings beyond the 2.6-era idiom"; exit 1; fi; \
+	echo "kbuild-legacy-check: W=1 C=2: only the idiom's warnings —" \
+		"$$(grep -c 'Should it be static' $$log) non-static globals (sparse)," \
+		"$$(grep -c 'no previous prototype' $$log) functions without prototypes," \
+		"$$(grep -c 'removes address space' $$log) __iomem casts to plain pointers (sparse)"
 
-TEST_SUITE_EXTRA += verbatim-check kbuild-check kbuild-legacy-check
+TEST_SUITE_EXTRA += verbatim-check kbuild-check

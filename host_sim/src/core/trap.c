@@ -381,11 +381,16 @@ static bool emulate_arm(mcontext_t *mc, char *why, size_t whylen)
 {
 	static const struct hs_arm_bus bus = { .read = bus_read, .write = bus_write };
 	unsigned long *saved = &mc->arm_r0;          /* r0..r10, fp, ip, sp, lr, pc: consecutive */
-	uint32_t regs[16], cpsr = (uint32_t)mc->arm_cpsr;
+	uint32_t regs[16], cpsr = (uint32_t)mc->arm_cpsr, insn;
 
 	for (unsigned r = 0; r < 16U; r++)
 		regs[r] = (uint32_t)saved[r];
-	if (hs_arm_emulate(*(const uint32_t *)(uintptr_t)regs[HS_ARM_PC], regs, &cpsr, &bus, why, whylen) != 0)
+	/* ARM state: the word at the PC; Thumb (ARMv5: 16-bit instructions, at any halfword): its halfword. */
+	if (cpsr & HS_ARM_CPSR_T)
+		insn = *(const uint16_t *)(uintptr_t)regs[HS_ARM_PC];
+	else
+		insn = *(const uint32_t *)(uintptr_t)regs[HS_ARM_PC];
+	if (hs_arm_emulate(insn, regs, &cpsr, &bus, why, whylen) != 0)
 		return false;
 	for (unsigned r = 0; r < 16U; r++)
 		saved[r] = regs[r];

@@ -159,6 +159,34 @@ static const struct form forms[] = {
 	  { { 'r', BASE + 0x40, 4, WORD(16) }, { 'w', BASE + 0x40, 4, 8 } }, 2 },
 	{ 0xe1410092, "swpb r0, r2, [r1]", { { 0, WORD(16) & 0xFF }, { -1, 0 } }, 0,
 	  { { 'r', BASE + 0x40, 1, WORD(16) & 0xFF }, { 'w', BASE + 0x40, 1, 8 } }, 2 },
+	{ 0xe6310082, "ldrt r0, [r1], -r2, lsl #1", { { 0, WORD(16) }, { 1, R1_START - 16 }, { -1, 0 } }, 0,
+	  { { 'r', BASE + 0x40, 4, WORD(16) } }, 1 },
+	{ 0xe7910022, "ldr r0, [r1, r2, lsr #32]", { { 0, WORD(16) }, { -1, 0 } }, 0,
+	  { { 'r', BASE + 0x40, 4, WORD(16) } }, 1 },
+	{ 0xe7d10043, "ldrb r0, [r1, r3, asr #32]", { { 0, WORD(15) >> 24 }, { -1, 0 } }, 0,
+	  { { 'r', BASE + 0x3F, 1, WORD(15) >> 24 } }, 1 },
+	{ 0xe491f004, "ldr pc, [r1], #4", { { 1, R1_START + 4 }, { -1, 0 } }, WORD(16),
+	  { { 'r', BASE + 0x40, 4, WORD(16) } }, 1 },
+	{ 0xe13100d2, "ldrsb r0, [r1, -r2]!", { { 0, WORD(14) & 0xFF }, { 1, R1_START - 8 }, { -1, 0 } }, 0,
+	  { { 'r', BASE + 0x38, 1, WORD(14) & 0xFF } }, 1 },
+	{ 0xe09100f2, "ldrsh r0, [r1], r2", { { 0, WORD(16) & 0xFFFF }, { 1, R1_START + 8 }, { -1, 0 } }, 0,
+	  { { 'r', BASE + 0x40, 2, WORD(16) & 0xFFFF } }, 1 },
+	{ 0xe1a100b2, "strh r0, [r1, r2]!", { { 1, R1_START + 8 }, { -1, 0 } }, 0,
+	  { { 'w', BASE + 0x48, 2, 0x3344 } }, 1 },
+	{ 0xe15102b2, "ldrh r0, [r1, #-34] (split immediate)", { { 0, WORD(7) >> 16 }, { -1, 0 } }, 0,
+	  { { 'r', BASE + 0x1E, 2, WORD(7) >> 16 } }, 1 },
+	{ 0xe0c140d8, "ldrd r4, [r1], #8", { { 4, WORD(16) }, { 5, WORD(17) }, { 1, R1_START + 8 }, { -1, 0 } }, 0,
+	  { { 'r', BASE + 0x40, 4, WORD(16) }, { 'r', BASE + 0x44, 4, WORD(17) } }, 2 },
+	{ 0xe18140d2, "ldrd r4, [r1, r2]", { { 4, WORD(18) }, { 5, WORD(19) }, { -1, 0 } }, 0,
+	  { { 'r', BASE + 0x48, 4, WORD(18) }, { 'r', BASE + 0x4C, 4, WORD(19) } }, 2 },
+	{ 0xe10140f2, "strd r4, [r1, -r2]", { { -1, 0 } }, 0,
+	  { { 'w', BASE + 0x38, 4, 0x00001000 }, { 'w', BASE + 0x3C, 4, 0x00000020 } }, 2 },
+	{ 0xe9a10005, "stmib r1!, {r0, r2}", { { 1, R1_START + 8 }, { -1, 0 } }, 0,
+	  { { 'w', BASE + 0x44, 4, 0x11223344 }, { 'w', BASE + 0x48, 4, 8 } }, 2 },
+	{ 0xe8010005, "stmda r1, {r0, r2}", { { -1, 0 } }, 0,
+	  { { 'w', BASE + 0x3C, 4, 0x11223344 }, { 'w', BASE + 0x40, 4, 8 } }, 2 },
+	{ 0xe8818001, "stm r1, {r0, pc} (the PC stored as its address + 12)", { { -1, 0 } }, 0,
+	  { { 'w', BASE + 0x40, 4, 0x11223344 }, { 'w', BASE + 0x44, 4, PC_START + 12 } }, 2 },
 	{ 0x15910000, "ldrne r0, [r1] (it faulted: its condition passed)", { { 0, WORD(16) }, { -1, 0 } }, 0,
 	  { { 'r', BASE + 0x40, 4, WORD(16) } }, 1 },
 };
@@ -258,7 +286,7 @@ int main(void)
 	uint32_t regs[16], cpsr = 0x10U;
 	char why[160];
 
-	tap_plan((int)(sizeof(forms) / sizeof(forms[0])) + 8);
+	tap_plan((int)(sizeof(forms) / sizeof(forms[0])) + 14);
 	for (size_t i = 0; i < sizeof(forms) / sizeof(forms[0]); i++) {
 		bool good = check_form(&forms[i]);
 
@@ -292,6 +320,12 @@ int main(void)
 	check_refused(0xe5910000U, 0x30U, "an access in Thumb state", "Thumb");
 	check_refused(0xf5d1f000U, 0x10U, "pld [r1]", "unconditional");
 	check_refused(0xe5910001U, 0x10U, "ldr r0, [r1, #1] (unaligned word)", "unaligned");
+	check_refused(0xe1d100b1U, 0x10U, "ldrh r0, [r1, #1] (unaligned halfword)", "unaligned");
+	check_refused(0xe1c150d0U, 0x10U, "ldrd r5, [r1] (odd first register)", "odd");
+	check_refused(0xe101009fU, 0x10U, "swp r0, pc, [r1]", "SWP with the PC");
+	check_refused(0xe49f0004U, 0x10U, "ldr r0, [pc], #4 (the PC written back)", "writing back the PC");
+	check_refused(0xe8910000U, 0x10U, "ldm r1, {} (no register)", "no register");
+	check_refused(0xe7910012U, 0x10U, "a media instruction in the load/store space", "media");
 	tap_diag("%u of %zu forms as the ARM926 does them", passed, sizeof(forms) / sizeof(forms[0]));
 	return tap_done();
 }

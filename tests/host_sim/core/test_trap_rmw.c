@@ -5,10 +5,10 @@
  * and must leave the same memory value, the same destination register and
  * the same arithmetic flags (OF SF ZF AF PF CF); an RMW is one bus read and
  * one write of the instruction's width, a compare or bit test one read.
- * (Narrow accesses here use byte lane 0: the register model accepts an
- * 8/16-bit access to a 32-bit register only at its address.)  Compound
- * statements through a plain pointer at -O2 on every host whose trap
- * emulates (on ARM the forms are test_arm_decode's).
+ * (Narrow forms here use byte lane 0; the other lanes are test_trap_arm's
+ * and test_regs'.)  Compound statements through a plain pointer at -O2 on
+ * every host whose trap emulates (on ARM the forms are test_arm_decode's
+ * and test_trap_arm's).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
