@@ -172,7 +172,7 @@ int da8xx_register_spi_bus(int instance, unsigned int num_chipselect, const int 
 	dspi = spi_controller_get_devdata(ctlr);
 	dspi->base = ioremap(davinci_spi_hw[instance].base, SZ_4K);
 	if (!dspi->base) {
-		spi_unregister_controller(ctlr);
+		spi_controller_put(ctlr);
 		return -ENXIO;
 	}
 	dspi->clk_hz = davinci_spi_hw[instance].clk_hz;
@@ -199,8 +199,9 @@ int da8xx_register_spi_bus(int instance, unsigned int num_chipselect, const int 
 
 	ret = spi_register_controller(ctlr);
 	if (ret) {
+		writel(0, dspi->base + SPIGCR1);
 		iounmap(dspi->base);
-		kfree(ctlr);
+		spi_controller_put(ctlr);
 		return ret;
 	}
 	davinci_spi_buses[instance] = ctlr;
@@ -211,15 +212,18 @@ void da8xx_unregister_spi_bus(int instance)
 {
 	struct spi_controller *ctlr;
 	struct davinci_spi *dspi;
+	void __iomem *base;
 
 	if (instance < 0 || instance > 1 || !davinci_spi_buses[instance])
 		return;
 	ctlr = davinci_spi_buses[instance];
 	dspi = spi_controller_get_devdata(ctlr);
-	writel(0, dspi->base + SPIGCR1);
-	iounmap(dspi->base);
+	base = dspi->base;
 	davinci_spi_buses[instance] = NULL;
+	/* the devices' remove() may still transfer: unregister first, then disable and unmap */
 	spi_unregister_controller(ctlr);
+	writel(0, base + SPIGCR1);
+	iounmap(base);
 }
 
 /* Forgets the buses of a previous boot (their memory went with the heap). */

@@ -132,6 +132,18 @@ struct spi_controller *spi_alloc_master(struct device *host, unsigned int size)
 	return ctlr;
 }
 
+void spi_controller_put(struct spi_controller *ctlr)
+{
+	if (!ctlr)
+		return;
+	if (ctlr->lx_registered) {
+		WARN(1, "spi%d: spi_controller_put on a registered controller (use spi_unregister_controller)\n",
+		     ctlr->bus_num);
+		return;
+	}
+	kfree(ctlr);
+}
+
 /* Adds a new device on ctlr and binds it.  Lists locked. */
 static struct spi_device *spi_add_locked(struct spi_controller *ctlr, const struct spi_board_info *chip)
 {

@@ -191,6 +191,9 @@ static inline void spi_controller_set_devdata(struct spi_controller *ctlr, void 
 
 /* A controller with size bytes of driver data behind it (spi_controller_get_devdata); NULL without memory. */
 struct spi_controller *spi_alloc_master(struct device *host, unsigned int size);
+/* Drops the reference spi_alloc_master gave, for a controller never registered
+ * (a registered one is released by spi_unregister_controller). */
+void spi_controller_put(struct spi_controller *ctlr);
 /* Registers ctlr on its bus_num and creates the board's devices on it: 0, -EINVAL, -EBUSY. */
 int spi_register_controller(struct spi_controller *ctlr);
 #define spi_register_master	spi_register_controller
