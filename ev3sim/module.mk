@@ -5,8 +5,8 @@
 # Host only: nothing goes into AM1808_SRCS.
 HOST_SRCS     += $(sort $(wildcard ev3sim/src/*.c))
 HOST_PROGRAMS += ev3sim
-ev3sim_SRCS   := ev3sim/main.c ev3sim/lcd_png.c
-ev3sim_LDLIBS := -lpng
+ev3sim_SRCS   := ev3sim/main.c ev3sim/lcd_png.c ev3sim/lcd_gif.c
+ev3sim_LDLIBS := -lpng -lgif
 
 # `ev3sim balance` runs examples/gyroboy, an EV3RT app, built by the
 # configurator like any app (mk/ev3rt_examples.mk) under its own configuration

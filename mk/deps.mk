@@ -3,7 +3,7 @@
 
 DEPS_PACKAGES := gcc-arm-linux-gnueabi libc6-dev-armel-cross qemu-user \
 	u-boot-tools cloc gnuplot-nox linux-headers-amd64 sparse gcc-arm-none-eabi \
-	libnewlib-arm-none-eabi perl cppcheck clang-tidy libpng-dev
+	libnewlib-arm-none-eabi perl cppcheck clang-tidy libpng-dev libgif-dev
 
 # tool -> package, checked by `deps-check`
 DEPS_TOOLS := arm-linux-gnueabi-gcc:gcc-arm-linux-gnueabi qemu-arm:qemu-user \
@@ -13,7 +13,8 @@ DEPS_TOOLS := arm-linux-gnueabi-gcc:gcc-arm-linux-gnueabi qemu-arm:qemu-user \
 deps_missing = $(strip $(foreach t,$(DEPS_TOOLS),$(if $(shell command -v $(firstword $(subst :, ,$(t))) 2>/dev/null),,$(lastword $(subst :, ,$(t))))) \
 	$(if $(wildcard /usr/src/linux-headers-*-amd64/Makefile),,linux-headers-amd64) \
 	$(if $(wildcard /usr/arm-linux-gnueabi/lib/libc.so.6),,libc6-dev-armel-cross) \
-	$(if $(wildcard /usr/include/png.h /usr/include/libpng/png.h),,libpng-dev))
+	$(if $(wildcard /usr/include/png.h /usr/include/libpng/png.h),,libpng-dev) \
+	$(if $(wildcard /usr/include/gif_lib.h),,libgif-dev))
 
 .PHONY: deps deps-check
 deps:

@@ -46,9 +46,10 @@ $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 	$(Q)$(CC_host) $(call src_flags,$<) $(WARN) $(CFLAGS_host) $(KERNEL_DEFS) \
 		-DEV3SIM_APP_NAME='"$(notdir $(APP))"' -c $< -o $@
 
-# the runner is ev3sim's command line: it writes --lcd's PNG with libpng, as the ev3sim program does
-$(eval $(call ev3rt_app,$(EV3RT_RUN_NAME),host,$(APP)/app.cfg,$(EV3RT_RUN_SRCS),$(EV3RT_RUN_DIR)/runner.o $(BUILD)/host/obj/ev3sim/lcd_png.o))
-EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_host := -lpng
+# the runner is ev3sim's command line: it writes --lcd's PNG with libpng and --lcd-video's GIF
+# with giflib, as the ev3sim program does
+$(eval $(call ev3rt_app,$(EV3RT_RUN_NAME),host,$(APP)/app.cfg,$(EV3RT_RUN_SRCS),$(EV3RT_RUN_DIR)/runner.o $(BUILD)/host/obj/ev3sim/lcd_png.o $(BUILD)/host/obj/ev3sim/lcd_gif.o))
+EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_host := -lpng -lgif
 EV3RT_INC_$(EV3RT_RUN_NAME)_host += $(INCLUDES)
 # the objects ATT_MOD names come from Makefile.inc too
 $(EV3RT_RUN_DIR)/gen/kernel_cfg.c: $(wildcard $(APP)/Makefile.inc)

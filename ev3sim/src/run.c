@@ -18,6 +18,7 @@
 #include "ev3sim/tribot.h"
 
 ER (*ev3sim_lcd_png_writer)(const char *path);
+const struct ev3sim_lcd_video *ev3sim_lcd_video;
 
 #define CHUNK_NS        10000000ULL     /* run in 10 ms slices: the CSV's row period */
 #define DRAIN_NS        20000000ULL
@@ -427,12 +428,18 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	}
 	csv_header(o);
 	end = (uint64_t)llround(o->seconds * 1e9);
+	if (o->lcd_video_path && (!ev3sim_lcd_video || ev3sim_lcd_video->begin(o->lcd_video_path) != E_OK))
+		lcd_failed = true;
 	while (rtos_host_now() < end) {
 		uint64_t next = rtos_host_now() + CHUNK_NS;
 
 		hs_sim_run_until(next < end ? next : end);
 		observe(o, r);
+		if (o->lcd_video_path && !lcd_failed)
+			ev3sim_lcd_video->frame(rtos_host_now());
 	}
+	if (o->lcd_video_path && !lcd_failed && ev3sim_lcd_video->end(rtos_host_now()) != E_OK)
+		lcd_failed = true;
 	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
 		uint64_t fell_ns;
 
@@ -474,7 +481,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		return E_SYS;
 	}
 	if (lcd_failed) {
-		snprintf(err, errlen, "cannot write %s", o->lcd_path);
+		snprintf(err, errlen, "cannot write %s", o->lcd_path ? o->lcd_path : o->lcd_video_path);
 		return E_SYS;
 	}
 	return E_OK;

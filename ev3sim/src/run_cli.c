@@ -53,6 +53,7 @@ static const char run_usage[] =
 	"  --trace FILE.vcd     host_sim's signal trace\n"
 	"  --audio FILE.wav     what the speaker played (32 kHz, 16-bit mono)\n"
 	"  --lcd FILE.png       the display's last frame (178 x 128, grey)\n"
+	"  --lcd-video FILE.gif the display over time: a frame per change, sampled every 10 ms\n"
 	"  --csv FILE           the robot's state every 10 ms\n"
 	"  --quiet              the console shows warnings and worse only\n"
 	"\n"
@@ -180,6 +181,12 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		if (!ev3sim_can_create("run", v))
 			return EV3SIM_EXIT_FAIL;
 		o->lcd_path = v;
+	} else if (strcmp(name, "--lcd-video") == 0) {
+		if (!ev3sim_lcd_video)
+			return usage("%s: this program has no GIF writer", "--lcd-video");
+		if (!ev3sim_can_create("run", v))
+			return EV3SIM_EXIT_FAIL;
+		o->lcd_video_path = v;
 	} else if (strcmp(name, "--sd") == 0) {
 		struct stat st;
 

@@ -59,6 +59,7 @@ struct ev3sim_run_opts {
 	const char *trace_path;     /* VCD, NULL: none */
 	const char *audio_path;     /* WAV of what the speaker played, NULL: none */
 	const char *lcd_path;       /* PNG of the display's last frame, NULL: none */
+	const char *lcd_video_path; /* animated GIF of the display over time, NULL: none */
 	const char *sd_dir;         /* the SD card's directory, NULL: no card (brick_io.h) */
 	const char *serial_path;    /* the serial port's far end, NULL: not connected */
 	FILE *csv;                  /* the robot's state every 10 ms, NULL: none */
@@ -85,6 +86,15 @@ struct ev3sim_run_result {
  * light): E_OK or E_SYS.  The ev3sim program sets it (libpng is linked into
  * the program only); NULL: --lcd is not available. */
 extern ER (*ev3sim_lcd_png_writer)(const char *path);
+
+/* The --lcd-video recorder (lcd_gif.c, giflib: the program only); NULL: not available.
+ * begin(path), then frame(now) at every step of the run, then end(now) writes the file. */
+struct ev3sim_lcd_video {
+	ER (*begin)(const char *path);
+	void (*frame)(uint64_t now_ns);
+	ER (*end)(uint64_t end_ns);
+};
+extern const struct ev3sim_lcd_video *ev3sim_lcd_video;
 
 /* The robot's devices on the ports, no faults, actions or pushes; for the
  * tribot a touch press at 3 s; the gyro boy let go at 4 s with a 0.5 degree
