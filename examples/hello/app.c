@@ -2,12 +2,34 @@
  * app.c — hello: the brick says hello on its display (a title in the
  * medium font, a rule, the battery in the small font, a framed box), plays a
  * short tune (A4, C#5, E5, then A5 held until stopped) and logs the
- * battery's voltage and current before and during the tune.
+ * battery's voltage and current before and during the tune.  It reads a
+ * greeting from the SD card (/ev3rt/res/hello.txt) and prints it and the
+ * battery to the default serial port.
  */
 #include <stdio.h>
 #include "ev3api.h"
 #include "app.h"
 #include "kernel_cfg.h"
+
+#define GREETING "/ev3rt/res/hello.txt"
+
+/* The greeting and the battery line on the serial port (when one is connected). */
+static void greet_serial(const char *battery)
+{
+	FILE *serial = ev3_serial_open_file(EV3_SERIAL_DEFAULT);
+	memfile_t memfile;
+
+	if (serial == NULL)
+		return;
+	if (ev3_memfile_load(GREETING, &memfile) == E_OK) {
+		fprintf(serial, "%.*s", (int)memfile.filesz, (const char *)memfile.buffer);
+		ev3_memfile_free(&memfile);
+	} else {
+		fprintf(serial, "hello (no %s)\n", GREETING);
+	}
+	fprintf(serial, "%s\n", battery);
+	fflush(serial);
+}
 
 static const struct { uint16_t hz; int32_t ms; } tune[] = {
 	{ (uint16_t)NOTE_A4, 200 }, { (uint16_t)NOTE_CS5, 200 }, { (uint16_t)NOTE_E5, 200 },
@@ -22,6 +44,7 @@ void main_task(intptr_t exinf)
 	snprintf(battery, sizeof(battery), "battery %d mV, %d mA", ev3_battery_voltage_mV(),
 		 ev3_battery_current_mA());
 	syslog(LOG_NOTICE, "hello: %s", battery);
+	greet_serial(battery);
 
 	ev3_lcd_set_font(EV3_FONT_MEDIUM);
 	ev3_font_get_size(EV3_FONT_MEDIUM, &font_w, &font_h);

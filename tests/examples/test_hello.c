@@ -3,10 +3,16 @@
  * tune, and the tune as the speaker played it (--audio): A4, C#5 and E5
  * for 200 ms each with 50 ms rests, then A5 held for 400 ms until stopped,
  * at volume 50 (25 % duty); the display as hello drew it, pixel for pixel
- * against the API's drawing core run here with the same calls.
+ * against the API's drawing core run here with the same calls; the greeting
+ * it read from the SD card (--sd) and the battery line on the serial port
+ * (--serial FILE), and without a card its note instead.
  */
+#define _XOPEN_SOURCE 700         /* mkdtemp, nftw */
+#include <ftw.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "ev3api.h"
 #include "example_test.h"
 #include "host_sim/devices/ev3_speaker.h"
@@ -64,6 +70,79 @@ static unsigned find_notes(const int16_t *s, size_t n, struct note *out, unsigne
 	return count;
 }
 
+static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
+{
+	(void)st; (void)flag; (void)ftw;
+	return remove(path);
+}
+
+static size_t read_text(const char *path, char *buf, size_t len)
+{
+	FILE *f = fopen(path, "r");
+	size_t n = 0;
+
+	if (f != NULL) {
+		n = fread(buf, 1, len - 1, f);
+		fclose(f);
+	}
+	buf[n] = '\0';
+	return n;
+}
+
+static char dir[64], card[96];
+
+/* A card holding hello's greeting, in a fresh directory. */
+static void make_card(void)
+{
+	char path[160];
+	FILE *f;
+
+	snprintf(dir, sizeof(dir), "/tmp/ev3_hello_XXXXXX");
+	if (mkdtemp(dir) == NULL)
+		tap_bail_out("mkdtemp");
+	snprintf(card, sizeof(card), "%s/card", dir);
+	mkdir(card, 0755);
+	snprintf(path, sizeof(path), "%s/ev3rt", card);
+	mkdir(path, 0755);
+	snprintf(path, sizeof(path), "%s/ev3rt/res", card);
+	mkdir(path, 0755);
+	snprintf(path, sizeof(path), "%s/ev3rt/res/hello.txt", card);
+	f = fopen(path, "w");
+	if (f == NULL || fputs("Greetings from the SD card\n", f) < 0 || fclose(f) != 0)
+		tap_bail_out(path);
+}
+
+/* hello with the card, its serial port in a file; then without a card. */
+static void card_and_serial(void)
+{
+	char serial[96], text[256], battery[64];
+	struct ev3sim_run_opts o;
+	struct ev3sim_run_result r;
+	const char *line;
+
+	snprintf(serial, sizeof(serial), "%s/serial.txt", dir);
+	ev3sim_run_defaults(&o, EV3SIM_ROBOT_BARE);
+	o.app_name = "hello";
+	o.seconds = 1;
+	o.sd_dir = card;
+	o.serial_path = serial;
+	if (ok(ex_run(&o, &r), "hello runs with --sd and --serial")) {
+		line = ex_logged("hello: battery");
+		snprintf(battery, sizeof(battery), "%s\n", line ? line + strlen("hello: ") : "?");
+		read_text(serial, text, sizeof(text));
+		ok(strncmp(text, "Greetings from the SD card\n", 27) == 0, "the serial port got the card's greeting");
+		ok(strstr(text, battery) != NULL, "and the battery line (%s)", battery);
+	}
+	o.sd_dir = NULL;
+	remove(serial);
+	if (ok(ex_run(&o, &r), "hello runs without a card")) {
+		read_text(serial, text, sizeof(text));
+		ok(strncmp(text, "hello (no /ev3rt/res/hello.txt)\n", 32) == 0, "the serial port says the card had none");
+		is_int(r.errors, 1, "the failed load is the one error logged (as EV3RT logs it)");
+	}
+	nftw(dir, remove_entry, 8, FTW_DEPTH | FTW_PHYS);
+}
+
 int main(void)
 {
 	static const struct note want[] = { { 440.0, 200 }, { 554.37, 200 }, { 659.25, 200 }, { 880.0, 400 } };
@@ -72,14 +151,19 @@ int main(void)
 	struct note got[8];
 	const int16_t *s;
 	const char *line;
+	char serial[96];
 	unsigned n;
 	int mv = 0, ma = 0;
 	FILE *f;
 
+	make_card();
+	snprintf(serial, sizeof(serial), "%s/serial_audio.txt", dir);
 	ev3sim_run_defaults(&o, EV3SIM_ROBOT_BARE);
 	o.app_name = "hello";
 	o.seconds = 2;
 	o.audio_path = WAV;
+	o.sd_dir = card;
+	o.serial_path = serial;
 	if (!ok(ex_run(&o, &r), "hello runs with --audio"))
 		return tap_done();
 	line = ex_logged("hello: battery");
@@ -126,5 +210,6 @@ int main(void)
 		fclose(f);
 		remove(WAV);
 	}
+	card_and_serial();
 	return tap_done();
 }
