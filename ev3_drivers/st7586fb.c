@@ -75,7 +75,10 @@ struct st7586fb_par {
 
 #define ST7586FB_TXBUF_SIZE	8
 
-/* Sends a command byte, then its parameters (at most 4) as data.  bus_lock held. */
+/*
+ * Sends a command byte, then its parameters (at most ST7586FB_TXBUF_SIZE - 1)
+ * as data.  bus_lock held.
+ */
 static int st7586fb_cmd(struct st7586fb_par *par, u8 cmd, const u8 *params, size_t n)
 {
 	int ret;
