@@ -26,8 +26,6 @@ const unsigned int hrtimer_resolution = (unsigned int)LX_TICK_NS;
 
 static struct {
 	struct lx_heap heap;
-	bool in_pass;                  /* the tick runs the due timers (those due at pass_now) */
-	u64 pass_now;
 	/* The timer whose callback runs; the timer itself is not touched after a
 	 * callback returning HRTIMER_NORESTART (it may have freed it). */
 	struct hrtimer *running;
@@ -37,7 +35,6 @@ static struct {
 void lx_hrtimer_reset(void)
 {
 	lx_heap_init(&queue.heap);
-	queue.in_pass = false;
 	queue.running = NULL;
 }
 
@@ -56,10 +53,7 @@ static void enqueue_locked(struct hrtimer *timer)
 {
 	timer->lx_node.key = (u64)timer->lx_expires;
 	timer->lx_queued = 1;
-	if (unlikely(queue.in_pass && timer->lx_expires <= (ktime_t)queue.pass_now))
-		lx_heap_defer(&queue.heap, &timer->lx_node);
-	else
-		lx_heap_insert(&queue.heap, &timer->lx_node);
+	lx_heap_insert(&queue.heap, &timer->lx_node);
 }
 
 /* Unlinks a queued timer; interrupts locked by the caller. */
@@ -318,8 +312,7 @@ void lx_hrtimer_run_due(uint64_t now)
 	if (t == NULL || t->lx_expires > (ktime_t)now)
 		return;
 	SIL_LOC_INT();
-	queue.in_pass = true;
-	queue.pass_now = now;
+	lx_heap_pass_begin(&queue.heap, now);
 	while ((t = take_due_locked(now)) != NULL) {
 		SIL_UNL_INT();
 		lx_timer_callback_enter(true, t);
@@ -339,7 +332,6 @@ void lx_hrtimer_run_due(uint64_t now)
 		if (ret == HRTIMER_RESTART)
 			t->lx_cancelled = 0;
 	}
-	queue.in_pass = false;
-	lx_heap_flush_deferred(&queue.heap);
+	lx_heap_pass_end(&queue.heap);
 	SIL_UNL_INT();
 }

@@ -31,8 +31,6 @@ static u64 next_jiffy_ns = TICK_NSEC;
 /* Pending timers in expiry order, FIFO among equal expiries. */
 static struct {
 	struct lx_heap heap;
-	bool in_pass;                  /* the tick runs the timers due at pass_now */
-	u64 pass_now;                  /* jiffies_64 */
 	/* The timer whose callback runs (the timer is not touched after its
 	 * callback: the callback may free it). */
 	const struct timer_list *running;
@@ -50,7 +48,6 @@ static inline struct timer_list *queue_first(void)
 void lx_timers_reset(void)
 {
 	lx_heap_init(&tq.heap);
-	tq.in_pass = false;
 	tq.running = NULL;
 	jiffies_64 = INITIAL_JIFFIES;
 	jiffies = (unsigned long)jiffies_64;
@@ -96,10 +93,7 @@ static void enqueue_locked(struct timer_list *timer)
 {
 	timer->lx_node.key = jiffies_64 + (u64)(s64)(long)(timer->expires - (unsigned long)jiffies_64);
 	timer->lx_pending = 1;
-	if (unlikely(tq.in_pass && timer->lx_node.key <= tq.pass_now))
-		lx_heap_defer(&tq.heap, &timer->lx_node);
-	else
-		lx_heap_insert(&tq.heap, &timer->lx_node);
+	lx_heap_insert(&tq.heap, &timer->lx_node);
 }
 
 /* Unlinks a pending timer; locked by the caller. */
@@ -242,8 +236,7 @@ void lx_timers_run_due(void)
 	if (first == NULL || first->lx_node.key > now || lx_bh_disabled())
 		return;
 	SIL_LOC_INT();
-	tq.in_pass = true;
-	tq.pass_now = now;
+	lx_heap_pass_begin(&tq.heap, now);
 	while ((t = take_due_locked(now)) != NULL) {
 		SIL_UNL_INT();
 		lx_timer_callback_enter(false, t);
@@ -252,7 +245,6 @@ void lx_timers_run_due(void)
 		SIL_LOC_INT();
 		tq.running = NULL;
 	}
-	tq.in_pass = false;
-	lx_heap_flush_deferred(&tq.heap);
+	lx_heap_pass_end(&tq.heap);
 	SIL_UNL_INT();
 }

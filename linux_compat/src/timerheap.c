@@ -69,6 +69,8 @@ void lx_heap_init(struct lx_heap *heap)
 {
 	heap->root = heap->deferred_first = heap->deferred_last = NULL;
 	heap->next_seq = 0;
+	heap->in_pass = false;
+	heap->pass_key = 0;
 }
 
 /* Melds node as a one-node tree with the root: O(1). */
@@ -78,11 +80,27 @@ static void insert(struct lx_heap *heap, struct lx_heap_node *node)
 	heap->root = heap->root == NULL ? node : meld(heap->root, node);
 }
 
-/* Adds node with the next sequence. */
+/* Appends node to the deferred FIFO, marked by pointing its child at itself. */
+static void defer(struct lx_heap *heap, struct lx_heap_node *node)
+{
+	node->child = node;
+	node->next = NULL;
+	node->prev = heap->deferred_last;
+	if (heap->deferred_last != NULL)
+		heap->deferred_last->next = node;
+	else
+		heap->deferred_first = node;
+	heap->deferred_last = node;
+}
+
+/* Adds node with the next sequence: to the heap, or during a pass, if due, to the FIFO. */
 void lx_heap_insert(struct lx_heap *heap, struct lx_heap_node *node)
 {
 	node->seq = heap->next_seq++;
-	insert(heap, node);
+	if (unlikely(heap->in_pass && node->key <= heap->pass_key))
+		defer(heap, node);
+	else
+		insert(heap, node);
 }
 
 /* Cuts node out with its subtree, melds its children and the rest: O(log n)
@@ -116,25 +134,18 @@ void lx_heap_remove(struct lx_heap *heap, struct lx_heap_node *node)
 	node->child = node->next = node->prev = NULL;
 }
 
-/* Appends node to the deferred FIFO, marked by pointing its child at itself. */
-void lx_heap_defer(struct lx_heap *heap, struct lx_heap_node *node)
+void lx_heap_pass_begin(struct lx_heap *heap, u64 key)
 {
-	node->seq = heap->next_seq++;
-	node->child = node;
-	node->next = NULL;
-	node->prev = heap->deferred_last;
-	if (heap->deferred_last != NULL)
-		heap->deferred_last->next = node;
-	else
-		heap->deferred_first = node;
-	heap->deferred_last = node;
+	heap->in_pass = true;
+	heap->pass_key = key;
 }
 
-/* Inserts the deferred nodes into the heap in FIFO order. */
-void lx_heap_flush_deferred(struct lx_heap *heap)
+/* Ends the pass and inserts the deferred nodes into the heap in FIFO order. */
+void lx_heap_pass_end(struct lx_heap *heap)
 {
 	struct lx_heap_node *node = heap->deferred_first, *next;
 
+	heap->in_pass = false;
 	heap->deferred_first = heap->deferred_last = NULL;
 	for (; node != NULL; node = next) {
 		next = node->next;

@@ -9,10 +9,11 @@
  * 64-bit count, then the sequence the heap gives each node it is given, so
  * equal expiries come out first in, first out.
  *
- * Beside the heap, a FIFO of deferred nodes: a timer queued at a time already
- * due while the tick runs the due ones waits there, and joins the heap when
- * the pass ends (lx_heap_flush_deferred), so a callback re-arming itself in
- * the past cannot hold the tick.  Not locked: the caller holds the queue's lock.
+ * Beside the heap, a FIFO of deferred nodes: while the tick runs the due
+ * nodes (between lx_heap_pass_begin and lx_heap_pass_end), a node added with
+ * a key already due waits there and joins the heap when the pass ends, so a
+ * callback re-arming itself in the past cannot hold the tick.  Not locked:
+ * the caller holds the queue's lock.
  */
 #ifndef _LINUX_COMPAT_TIMERHEAP_H
 #define _LINUX_COMPAT_TIMERHEAP_H
@@ -32,6 +33,8 @@ struct lx_heap {
 	struct lx_heap_node *root;
 	struct lx_heap_node *deferred_first, *deferred_last;
 	u64 next_seq;
+	bool in_pass;                 /* the due nodes (key <= pass_key) are being taken */
+	u64 pass_key;
 };
 
 /* The first node (the earliest), or NULL if the heap is empty. */
@@ -42,13 +45,14 @@ static inline struct lx_heap_node *lx_heap_first(const struct lx_heap *heap)
 
 /* Empties heap. */
 void lx_heap_init(struct lx_heap *heap);
-/* Adds node (not in any heap; its key set), after every node of the same key. */
+/* Adds node (not in any heap; its key set), after every node of the same key;
+ * during a pass, a node already due goes to the deferred FIFO instead. */
 void lx_heap_insert(struct lx_heap *heap, struct lx_heap_node *node);
 /* Removes node, which must be in heap or on its deferred FIFO. */
 void lx_heap_remove(struct lx_heap *heap, struct lx_heap_node *node);
-/* Puts node (not in any heap; its key set) at the end of the deferred FIFO. */
-void lx_heap_defer(struct lx_heap *heap, struct lx_heap_node *node);
-/* Moves the deferred nodes into the heap, first in first. */
-void lx_heap_flush_deferred(struct lx_heap *heap);
+/* A pass over the nodes due at key begins: nodes added due from now on wait. */
+void lx_heap_pass_begin(struct lx_heap *heap, u64 key);
+/* The pass ends: the deferred nodes join the heap, first in first. */
+void lx_heap_pass_end(struct lx_heap *heap);
 
 #endif /* _LINUX_COMPAT_TIMERHEAP_H */

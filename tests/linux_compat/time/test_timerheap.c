@@ -2,7 +2,7 @@
  * test_timerheap.c — the timer queues' pairing heap against a reference:
  * random insertions, removals of the first and of arbitrary nodes, and equal
  * keys; after every operation the first node is the reference's minimum, and
- * draining yields the keys in order; the deferred FIFO.  Then hrtimers: 256 armed at random
+ * draining yields the keys in order; the deferred FIFO of a pass.  Then hrtimers: 256 armed at random
  * expiries (many equal) fire in expiry order, FIFO among equal expiries,
  * with cancellations of arbitrary ones in between.
  */
@@ -96,17 +96,19 @@ static void heap_against_reference(void)
 	}
 	ok(ordered && reference_min() == NULL, "draining yields every key, in order (FIFO among equal keys)");
 
-	/* the deferred FIFO: out of the heap until flushed; removable meanwhile */
+	/* the deferred FIFO: during a pass over key 8, nodes added due (7) stay out of
+	 * the heap until the pass ends, and can be removed meanwhile; a later one (9) does not wait */
+	lx_heap_pass_begin(&heap, 8);
 	for (int i = 0; i < 4; i++) {
 		items[i].node.key = 7;
-		lx_heap_defer(&heap, &items[i].node);
+		lx_heap_insert(&heap, &items[i].node);
 	}
 	items[4].node.key = 9;
 	lx_heap_insert(&heap, &items[4].node);
 	first = lx_heap_first(&heap);
 	lx_heap_remove(&heap, &items[1].node);
 	lx_heap_remove(&heap, &items[3].node);
-	lx_heap_flush_deferred(&heap);
+	lx_heap_pass_end(&heap);
 	{
 		bool fifo = first == &items[4].node;
 		const int expect[] = { 0, 2, 4 };
