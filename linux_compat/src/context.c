@@ -212,13 +212,10 @@ void lx_irqs_off_exit(void)
 		lx_ctx.irqs_off--;
 }
 
-/* Interrupts just masked: one local_irq_save level and an atomic section (which
- * needs no dispatcher call, interrupts being masked). */
+/* Interrupts just masked: one local_irq_save level and an atomic section. */
 void lx_irqs_off_atomic_enter(void)
 {
-	lx_ctx.irqs_off++;
-	if (lx_ctx.preempt++ == 0)
-		lx_ctx.dispatch_disabled_by_us = false;
+	lx_irqs_off_atomic_enter_up();
 }
 
 /* The atomic section ends, then the local_irq_save level (interrupts still masked). */

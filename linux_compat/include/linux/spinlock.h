@@ -65,9 +65,7 @@ static __always_inline unsigned long lx_spin_lock_irqsave_up(spinlock_t *lock)
 {
 	unsigned long flags = lx_irq_mask_save();
 
-	lx_ctx.irqs_off++;
-	if (lx_ctx.preempt++ == 0)
-		lx_ctx.dispatch_disabled_by_us = false;
+	lx_irqs_off_atomic_enter_up();
 	lock->locked = 1;
 	return flags;
 }

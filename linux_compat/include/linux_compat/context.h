@@ -17,6 +17,7 @@
 #define _LINUX_COMPAT_CONTEXT_H
 
 #include <stdbool.h>
+#include <linux/compiler_types.h>
 #include <linux_compat/debug.h>
 
 /* A Linux interrupt handler for irq is about to run (interrupt context). */
@@ -104,6 +105,18 @@ struct lx_context_state {
 	const void *running_hrtimer;
 };
 extern struct lx_context_state lx_ctx;
+
+#if !LX_DEBUG_ATOMIC_SLEEP
+/* Interrupts just masked: one local_irq_save level and an atomic section (which
+ * needs no dispatcher call, interrupts being masked).  Inline for the
+ * production spin_lock_irqsave; lx_irqs_off_atomic_enter is the same call. */
+static __always_inline void lx_irqs_off_atomic_enter_up(void)
+{
+	lx_ctx.irqs_off++;
+	if (lx_ctx.preempt++ == 0)
+		lx_ctx.dispatch_disabled_by_us = false;
+}
+#endif
 
 /*
  * The annotation of a call that may sleep (Linux's might_sleep): the check
