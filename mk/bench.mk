@@ -57,16 +57,12 @@ $(BENCH_TIMERS): $(BENCH_TIMERS_OBJS) $(BENCH_PROD_LIB)
 
 # Functions with their source files, for the counter's attribution; QEMU runs a
 # stripped copy (it would look every executed block's symbol up for the log).
-%/bench/bench_arm.syms: %/bench/bench_arm
+BENCH_ARM_BINS := $(BENCH_ARM) $(BENCH_PROD_ARM) $(BENCH_TIMERS)
+
+$(addsuffix .syms,$(BENCH_ARM_BINS)): %.syms: %
 	arm-linux-gnueabi-nm -n -S -l --defined-only $< > $@
 
-%/bench/bench_arm.stripped: %/bench/bench_arm
-	arm-linux-gnueabi-strip -o $@ $<
-
-$(BENCH_TIMERS).syms: $(BENCH_TIMERS)
-	arm-linux-gnueabi-nm -n -S -l --defined-only $< > $@
-
-$(BENCH_TIMERS).stripped: $(BENCH_TIMERS)
+$(addsuffix .stripped,$(BENCH_ARM_BINS)): %.stripped: %
 	arm-linux-gnueabi-strip -o $@ $<
 
 $(BENCH_LOG_SHIM): bench/qemu_log_buffer.c

@@ -91,14 +91,17 @@ OBJCOPY_host-san := objcopy
 OBJCOPY_arm926-test := arm-linux-gnueabi-objcopy
 OBJCOPY_am1808 := arm-none-eabi-objcopy
 
+# Links object $(3) of configuration $(1) into module $(2) (X.mod.o, beside it
+# X.r.o): one relocatable object, its hidden symbols made local.
+module_link = $(LD_$(1)) -r -o $(2:.mod.o=.r.o) $(3) && $(OBJCOPY_$(1)) --localize-hidden $(2:.mod.o=.r.o) $(2)
+
 # The module link rule of configuration $(1) for the library objects $(2)
 # (a static pattern rule: the linked modules are targets in their own right,
 # remade when missing).
 define module_link_rule
 $(filter %.mod.o,$(call module_objs,$(2))): %.mod.o: %.o
 	$$(quiet) MOD $(1) $$@
-	$(Q)$$(LD_$(1)) -r -o $$(@:.mod.o=.r.o) $$<
-	$(Q)$$(OBJCOPY_$(1)) --localize-hidden $$(@:.mod.o=.r.o) $$@
+	$(Q)$$(call module_link,$(1),$$@,$$<)
 endef
 
 # The one compile command of configuration $(1) for source (or header) $(2):

@@ -25,8 +25,7 @@ $(BUILD)/$(1)/legacy/%.mod.o: tests/legacy/%_hack.c
 	$$(quiet) MOD $(1) $$@
 	$(Q)$$(CC_$(1)) $$(call nostdinc_flags,$(1),$$<) -std=gnu11 $(LINUX_INC) $(LINUX_CODEGEN) -Itests/legacy $(KBUILD_WARN) \
 		$$(CFLAGS_$(1)) $(KERNEL_DEFS) -fvisibility=hidden -MMD -MP -MT $$@ -MF $$(@:.mod.o=.d) -c $$< -o $$(@:.mod.o=.o)
-	$(Q)$$(LD_$(1)) -r -o $$(@:.mod.o=.r.o) $$(@:.mod.o=.o)
-	$(Q)$$(OBJCOPY_$(1)) --localize-hidden $$(@:.mod.o=.r.o) $$@
+	$(Q)$$(call module_link,$(1),$$@,$$(@:.mod.o=.o))
 
 LEGACY_OBJS_$(1) := $$(patsubst %,$(BUILD)/$(1)/legacy/%.mod.o,$(LEGACY_MODULES))
 
