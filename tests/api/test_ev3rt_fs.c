@@ -8,12 +8,12 @@
  */
 #define _XOPEN_SOURCE 700
 #include <fcntl.h>
-#include <ftw.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include "api_test.h"
+#include "text_files_test.h"
 #include "ev3api_brick_io.h"
 #include "ev3sim/brick_io.h"
 
@@ -61,12 +61,6 @@ static void make_card(void)
 	snprintf(path, sizeof(path), "%s/escape", card);        /* a link out of the card */
 	if (symlink("..", path) != 0)
 		tap_bail_out("symlink");
-}
-
-static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
-{
-	(void)st; (void)flag; (void)ftw;
-	return remove(path);
 }
 
 /* ---- files and directories ---- */
@@ -246,6 +240,6 @@ int main(void)
 	ok(strstr(err, "not a directory") != NULL, "is reported (%s)", err);
 	brick_io_teardown();
 	at_include(NULL);
-	nftw(dir, remove_entry, 8, FTW_DEPTH | FTW_PHYS);
+	tf_remove_tree(dir);
 	return tap_done();
 }

@@ -5,39 +5,13 @@
  * options from the command line.
  */
 #define _XOPEN_SOURCE 700
-#include <ftw.h>
 #include <stdlib.h>
 #include <sys/stat.h>
 #include "ev3api.h"
 #include "example_test.h"
+#include "text_files_test.h"
 
 static char dir[64], card[96], serial[96];
-
-static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
-{
-	(void)st; (void)flag; (void)ftw;
-	return remove(path);
-}
-
-static bool write_text(const char *path, const char *text)
-{
-	FILE *f = fopen(path, "w");
-
-	return f != NULL && fputs(text, f) >= 0 && fclose(f) == 0;
-}
-
-static size_t read_text(const char *path, char *buf, size_t len)
-{
-	FILE *f = fopen(path, "r");
-	size_t n = 0;
-
-	if (f != NULL) {
-		n = fread(buf, 1, len - 1, f);
-		fclose(f);
-	}
-	buf[n] = '\0';
-	return n;
-}
 
 int main(void)
 {
@@ -59,7 +33,7 @@ int main(void)
 	mkdir(csv, 0755);
 	mkdir(path, 0755);
 	snprintf(path, sizeof(path), "%s/ev3rt/res/datalog.txt", card);
-	if (!write_text(path, "samples 4\nperiod_ms 250\n"))
+	if (!tf_write_text(path, "samples 4\nperiod_ms 250\n"))
 		tap_bail_out(path);
 
 	ev3sim_run_defaults(&o, EV3SIM_ROBOT_BARE);
@@ -72,7 +46,7 @@ int main(void)
 	ok(ex_logged("datalog: 4 samples every 250 ms") != NULL, "the settings came from the card");
 	ok(ex_logged("datalog: file datalog.txt 24 bytes") != NULL, "the directory listing shows the file");
 	ok(ex_logged("datalog: done, 4 lines") != NULL, "it finished");
-	read_text(serial, csv, sizeof(csv));
+	tf_read_text(serial, csv, sizeof(csv));
 	ok(strncmp(csv, "sample,t_ms,enter\n", 18) == 0, "the serial file starts with the CSV header");
 	for (p = strchr(csv, '\n'); p != NULL && p[1] != '\0'; p = strchr(p + 1, '\n')) {
 		int i, t, e;
@@ -102,13 +76,13 @@ int main(void)
 
 		remove(serial);
 		is_int(ev3sim_run_main(8, good, "datalog", &ev3rt_app_cfg), 0, "--sd DIR --serial FILE: status 0");
-		ok(read_text(serial, csv, sizeof(csv)) > 18 && strstr(csv, "\n3,") != NULL,
+		ok(tf_read_text(serial, csv, sizeof(csv)) > 18 && strstr(csv, "\n3,") != NULL,
 		   "the command-line run wrote its CSV");
 		is_int(ev3sim_run_main(3, bad_sd, "datalog", &ev3rt_app_cfg), 2, "--sd of no directory: status 2");
 		snprintf(bad_path, sizeof(bad_path), "%s/no/such/dir/serial", dir);
 		is_int(ev3sim_run_main(5, bad_serial, "datalog", &ev3rt_app_cfg), 1,
 		       "--serial that cannot be opened: status 1");
 	}
-	nftw(dir, remove_entry, 8, FTW_DEPTH | FTW_PHYS);
+	tf_remove_tree(dir);
 	return tap_done();
 }

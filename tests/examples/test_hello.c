@@ -15,6 +15,7 @@
 #include <sys/stat.h>
 #include "ev3api.h"
 #include "example_test.h"
+#include "text_files_test.h"
 #include "host_sim/devices/ev3_speaker.h"
 #include "host_sim/devices/ev3_lcd.h"
 #include "../../api/src/lcd_draw.h"
@@ -70,32 +71,12 @@ static unsigned find_notes(const int16_t *s, size_t n, struct note *out, unsigne
 	return count;
 }
 
-static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
-{
-	(void)st; (void)flag; (void)ftw;
-	return remove(path);
-}
-
-static size_t read_text(const char *path, char *buf, size_t len)
-{
-	FILE *f = fopen(path, "r");
-	size_t n = 0;
-
-	if (f != NULL) {
-		n = fread(buf, 1, len - 1, f);
-		fclose(f);
-	}
-	buf[n] = '\0';
-	return n;
-}
-
 static char dir[64], card[96];
 
 /* A card holding hello's greeting, in a fresh directory. */
 static void make_card(void)
 {
 	char path[160];
-	FILE *f;
 
 	snprintf(dir, sizeof(dir), "/tmp/ev3_hello_XXXXXX");
 	if (mkdtemp(dir) == NULL)
@@ -107,8 +88,7 @@ static void make_card(void)
 	snprintf(path, sizeof(path), "%s/ev3rt/res", card);
 	mkdir(path, 0755);
 	snprintf(path, sizeof(path), "%s/ev3rt/res/hello.txt", card);
-	f = fopen(path, "w");
-	if (f == NULL || fputs("Greetings from the SD card\n", f) < 0 || fclose(f) != 0)
+	if (!tf_write_text(path, "Greetings from the SD card\n"))
 		tap_bail_out(path);
 }
 
@@ -129,18 +109,18 @@ static void card_and_serial(void)
 	if (ok(ex_run(&o, &r), "hello runs with --sd and --serial")) {
 		line = ex_logged("hello: battery");
 		snprintf(battery, sizeof(battery), "%s\n", line ? line + strlen("hello: ") : "?");
-		read_text(serial, text, sizeof(text));
+		tf_read_text(serial, text, sizeof(text));
 		ok(strncmp(text, "Greetings from the SD card\n", 27) == 0, "the serial port got the card's greeting");
 		ok(strstr(text, battery) != NULL, "and the battery line (%s)", battery);
 	}
 	o.sd_dir = NULL;
 	remove(serial);
 	if (ok(ex_run(&o, &r), "hello runs without a card")) {
-		read_text(serial, text, sizeof(text));
+		tf_read_text(serial, text, sizeof(text));
 		ok(strncmp(text, "hello (no /ev3rt/res/hello.txt)\n", 32) == 0, "the serial port says the card had none");
 		is_int(r.errors, 1, "the failed load is the one error logged (as EV3RT logs it)");
 	}
-	nftw(dir, remove_entry, 8, FTW_DEPTH | FTW_PHYS);
+	tf_remove_tree(dir);
 }
 
 int main(void)
