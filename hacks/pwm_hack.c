@@ -1,9 +1,12 @@
 /*
  * pwm_hack.c — d_pwm on the RTOS (the paper's Fig. 5 pattern): the Linux
  * driver source included byte-for-byte, then its interface as extended
- * service calls (pwm_hack.h).  The service calls reach the driver only
- * through its file operations, so the driver's own checks (lengths, masks,
- * copy_*_user against the caller's domain) guard every call.
+ * service calls (pwm_hack.h).  A call that passes the caller's memory reaches
+ * the driver only through its file operations, so the driver's own checks
+ * (lengths, masks, copy_*_user against the caller's domain) guard it.  The hot
+ * path, PWM_FN_RUN, takes its values in registers: no user memory is touched,
+ * and the two commands the hack builds go to the handlers d_pwm's write()
+ * dispatches to, which check the mask and the value as for a write().
  */
 #define KBUILD_MODNAME "d_pwm"
 /* The driver's module_init/exit become plain pointers, called by ours below. */
@@ -85,6 +88,36 @@ static ER_UINT svc_pwm_command2(intptr_t cmd_a, intptr_t len_a, intptr_t cmd_b,
 	return ercd == E_OK ? pwm_write_command(cmd_b, len_b) : ercd;
 }
 
+/*
+ * PWM_FN_RUN: OUTPUT_SPEED or OUTPUT_POWER of value on port, then OUTPUT_START.
+ * The commands are built here and handed to the handlers d_pwm's write()
+ * dispatches them to (cmd_speed or cmd_power, then cmd_start), which check the
+ * port mask and the value and take the driver's lock as for a write().
+ */
+static ER_UINT svc_pwm_run(intptr_t opcode, intptr_t port, intptr_t value, intptr_t p4,
+			   intptr_t p5, ID cdmid)
+{
+	u8 set[3], start[2];
+	int ret;
+
+	if (opcode != LMS_PWM_OUTPUT_SPEED && opcode != LMS_PWM_OUTPUT_POWER)
+		return E_PAR;
+	if (port < 0 || port >= LMS_PWM_PORTS)
+		return E_ID;
+	if (value < S8_MIN || value > S8_MAX)	/* the command carries an s8 */
+		return E_PAR;
+	if (!pwm_file)
+		return E_OBJ;
+	set[0] = (u8)opcode;
+	set[1] = start[1] = (u8)(1U << port);
+	set[2] = (u8)(s8)value;
+	start[0] = LMS_PWM_OUTPUT_START;
+	ret = opcode == LMS_PWM_OUTPUT_SPEED ? cmd_speed(set) : cmd_power(set);
+	if (!ret)
+		ret = cmd_start(start);
+	return ret ? lx_errno_to_er(ret) : E_OK;
+}
+
 /* PWM_FN_READ: the "R T " status text into the caller's buffer; the byte count. */
 static ER_UINT svc_pwm_read(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4,
 			    intptr_t p5, ID cdmid)
@@ -147,6 +180,7 @@ static const struct rtos_svc_cfg pwm_svcs[] = {
 	{ PWM_FN_SET_BUSY,   svc_pwm_set_busy,   256 },
 	{ PWM_FN_MOTOR_DATA, svc_pwm_motor_data, 256 },
 	{ PWM_FN_MOTOR_MAP,  svc_pwm_motor_map,  256 },
+	{ PWM_FN_RUN,        svc_pwm_run,        256 },
 };
 
 const struct rtos_cfg pwm_hack_cfg = {

@@ -33,6 +33,7 @@
 #define PWM_FN_SET_BUSY    (PWM_FN_FIRST + 4)   /* (uint_t mask): write() of one byte to /dev/lms_motor */
 #define PWM_FN_MOTOR_DATA  (PWM_FN_FIRST + 5)   /* (uint_t port, struct lms_motor_data *out): one port's MOTORDATA */
 #define PWM_FN_MOTOR_MAP   (PWM_FN_FIRST + 6)   /* (const struct lms_motor_data **out): address of MOTORDATA[4] */
+#define PWM_FN_RUN         (PWM_FN_FIRST + 7)   /* (opcode, port, value): OUTPUT_SPEED or OUTPUT_POWER, then OUTPUT_START */
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
 extern HACK_INTERFACE const struct rtos_cfg pwm_hack_cfg;
@@ -48,6 +49,16 @@ static inline ER pwm_command2(const void *cmd_a, uint_t len_a, const void *cmd_b
 {
 	return (ER)cal_svc(PWM_FN_COMMAND2, (intptr_t)cmd_a, (intptr_t)len_a,
 			   (intptr_t)cmd_b, (intptr_t)len_b, 0);
+}
+
+/*
+ * Runs port (0..3) at value (-100..100) with opcode LMS_PWM_OUTPUT_SPEED
+ * (regulated) or LMS_PWM_OUTPUT_POWER, then starts it: the two commands of
+ * pwm_command2, with the values passed in registers (no buffer to probe).
+ */
+static inline ER pwm_run(uint8_t opcode, uint_t port, int value)
+{
+	return (ER)cal_svc(PWM_FN_RUN, (intptr_t)opcode, (intptr_t)port, (intptr_t)value, 0, 0);
 }
 
 /* Reads the "R T " status text; returns the byte count or an error. */

@@ -5,9 +5,10 @@
 # The host programs (bench_host, insn_count) are HOST_PROGRAMS of bench/module.mk;
 # the ARMv5 program is linked here against the arm926-test library, like a test
 # (the host-checked build), and again against a production variant of it
-# (build/arm926-bench-prod): the code of LINUX_DIRS compiled with linux_compat's
-# debugging checks off ($(LX_DEBUG_OFF), as the AM1808 library), the rest
-# (rtos_stub, host_sim, api: no Linux headers) shared with arm926-test.
+# (build/arm926-bench-prod): the code that runs on the brick (LINUX_DIRS and
+# the api) and the kernel whose service calls are counted (rtos_stub) compiled
+# as the AM1808 library is — -Os, no PIE, linux_compat's debugging checks off
+# ($(LX_DEBUG_OFF)) — the simulator (host_sim) shared with arm926-test.
 BENCH_OUT       := $(BUILD)/bench
 BENCH_ARM       := $(BUILD)/arm926-test/bench/bench_arm
 BENCH_ARM_OBJS  := $(patsubst %.c,$(BUILD)/arm926-test/obj/%.o,$(BENCH_ARM_SRCS))
@@ -16,17 +17,20 @@ BENCH_LOG_SHIM  := $(BUILD)/host/bench/qemu_log_buffer.so
 BENCH_PROD          := $(BUILD)/arm926-bench-prod
 BENCH_PROD_ARM      := $(BENCH_PROD)/bench/bench_arm
 BENCH_PROD_LIB      := $(BENCH_PROD)/libev3lx.a
-BENCH_PROD_LX_SRCS  := $(foreach s,$(HOST_SRCS),$(if $(call is_linux_src,$(s)),$(s)))
-BENCH_PROD_LIB_OBJS := $(patsubst %.c,$(BENCH_PROD)/obj/%.o,$(BENCH_PROD_LX_SRCS)) \
-	$(patsubst %.c,$(BUILD)/arm926-test/obj/%.o,$(filter-out $(BENCH_PROD_LX_SRCS),$(HOST_SRCS)))
+BENCH_PROD_OWN_SRCS := $(foreach s,$(HOST_SRCS),$(if $(call is_linux_src,$(s)),$(s))) \
+	$(filter api/% rtos_stub/%,$(HOST_SRCS))
+BENCH_PROD_LIB_OBJS := $(patsubst %.c,$(BENCH_PROD)/obj/%.o,$(BENCH_PROD_OWN_SRCS)) \
+	$(patsubst %.c,$(BUILD)/arm926-test/obj/%.o,$(filter-out $(BENCH_PROD_OWN_SRCS),$(HOST_SRCS)))
 
 # The production variant is a configuration of its own, compiled by the one
-# recipe: the Linux code as the AM1808 library compiles it (-Os, the checks
-# off; mk/am1808.mk), for the ARM926 under Linux.  It differs from the brick's
-# library only where it must: the kernel under it is rtos_stub's host kernel
-# instead of HRP2, and memcpy/memset are glibc's instead of newlib's.
+# recipe: the brick's code as the AM1808 library compiles it (-Os, the checks
+# off, position-dependent; mk/am1808.mk), for the ARM926 under Linux (whose
+# compiler makes PIE code by default; the bench programs link -static, not
+# PIE).  It differs from the brick's library only where it must: the kernel
+# under it is rtos_stub's host kernel instead of HRP2, and memcpy/memset are
+# glibc's instead of newlib's.
 CC_arm926-bench-prod     := $(CC_arm926-test)
-CFLAGS_arm926-bench-prod := $(filter-out -O2,$(CFLAGS_arm926-test)) -Os $(LX_DEBUG_OFF)
+CFLAGS_arm926-bench-prod := $(filter-out -O2,$(CFLAGS_arm926-test)) -Os -fno-pie $(LX_DEBUG_OFF)
 $(eval $(call obj_rule,arm926-bench-prod,$(BENCH_PROD)))
 
 $(BENCH_PROD_LIB): $(BENCH_PROD_LIB_OBJS)
@@ -107,5 +111,5 @@ bench-quick: deps-check $(BENCH_DEPS)
 TEST_SUITE_EXTRA += bench-quick
 TEST_SUITE_EXTRA_DEPS += $(BENCH_DEPS)
 
--include $(BENCH_ARM_OBJS:.o=.d) $(patsubst %.c,$(BENCH_PROD)/obj/%.d,$(BENCH_PROD_LX_SRCS)) \
+-include $(BENCH_ARM_OBJS:.o=.d) $(patsubst %.c,$(BENCH_PROD)/obj/%.d,$(BENCH_PROD_OWN_SRCS)) \
 	$(PROD_SUPPORT_OBJS:.o=.d) $(patsubst %,$(BENCH_PROD)/obj/%.d,$(PROD_TESTS)) $(BENCH_TIMERS_OBJS:.o=.d)

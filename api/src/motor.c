@@ -2,8 +2,9 @@
  * motor.c — the EV3 motor API over d_pwm's extended service calls.
  *
  * Commands go to d_pwm through pwm_hack's service calls (one call per API
- * call: the hot path of ev3lx_motor_set_speed is one cal_svc carrying the
- * OUTPUT_SPEED and OUTPUT_START commands).  Counts and speed are read from
+ * call: the hot path of ev3lx_motor_set_speed is one cal_svc, PWM_FN_RUN,
+ * whose values travel in registers; the hack runs OUTPUT_SPEED and
+ * OUTPUT_START through the driver's handlers).  Counts and speed are read from
  * the MOTORDATA array d_pwm publishes (its /dev/lms_motor mapping), which the
  * driver refreshes every 2 ms.
  */
@@ -129,7 +130,6 @@ ER ev3lx_motor_get_type(motor_port_t port, motor_type_t *p_type)
 /* Sends OUTPUT_POWER or OUTPUT_SPEED with the value, then OUTPUT_START, in one call. */
 static ER run_motor(motor_port_t port, uint8_t opcode, int value, unsigned type_mask)
 {
-	uint8_t set[3], start[2];
 	ER ercd;
 
 	ercd = check_command(port, type_mask);
@@ -137,12 +137,7 @@ static ER run_motor(motor_port_t port, uint8_t opcode, int value, unsigned type_
 		return ercd;
 	if (value < -100 || value > 100)
 		return E_PAR;
-	set[0] = opcode;
-	set[1] = port_bit(port);
-	set[2] = (uint8_t)(int8_t)value;
-	start[0] = LMS_PWM_OUTPUT_START;
-	start[1] = port_bit(port);
-	return pwm_command2(set, sizeof(set), start, sizeof(start));
+	return pwm_run(opcode, (uint_t)port, value);
 }
 
 ER ev3lx_motor_set_speed(motor_port_t port, int speed)

@@ -24,7 +24,7 @@ static bool all_obj(void)
 	return pwm_command(b, 3) == E_OBJ && pwm_command2(b, 3, b, 3) == E_OBJ &&
 	       pwm_read_status(st, 4) == E_OBJ && pwm_busy() == E_OBJ &&
 	       pwm_set_busy(1) == E_OBJ && pwm_motor_data(0, &md) == E_OBJ &&
-	       pwm_motor_map(&map) == E_OBJ;
+	       pwm_motor_map(&map) == E_OBJ && pwm_run(LMS_PWM_OUTPUT_SPEED, 0, 10) == E_OBJ;
 }
 
 static irqreturn_t probe_isr(int irq, void *dev_id)
@@ -72,10 +72,10 @@ static void life_cycle_body(void)
 	struct hbridge_drive d;
 	int undefined = 0;
 
-	for (FN fn = 8; fn <= PWM_FN_LAST; fn++)
+	for (FN fn = 9; fn <= PWM_FN_LAST; fn++)
 		if (cal_svc(fn, 0, 0, 0, 0, 0) == E_RSFN)
 			undefined++;
-	is_int(undefined, PWM_FN_LAST - 7, "function codes 8..15 are reserved: E_RSFN");
+	is_int(undefined, PWM_FN_LAST - 8, "function codes 9..15 are reserved: E_RSFN");
 	ok(lx_dev_exists("/dev/lms_pwm") && lx_dev_exists("/dev/lms_motor"), "both devices registered");
 
 	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 0x0F, 50);

@@ -290,6 +290,37 @@ static void test_semantics(void)
 	stop_all();
 }
 
+/* PWM_FN_RUN: the values in registers, the two commands run by the driver's handlers. */
+static void test_run(void)
+{
+	double a0;
+	struct hbridge_drive d;
+
+	ok(pwm_run(LMS_PWM_OUTPUT_STOP, 0, 10) == E_PAR, "run with STOP: E_PAR (SPEED or POWER only)");
+	ok(pwm_run(LMS_PWM_OUTPUT_START, 0, 10) == E_PAR, "run with START: E_PAR");
+	ok(pwm_run(LMS_PWM_OUTPUT_SPEED, 4, 10) == E_ID, "run port 4: E_ID");
+	ok(pwm_run(LMS_PWM_OUTPUT_SPEED, (uint_t)-1, 10) == E_ID, "run port -1: E_ID");
+	ok(pwm_run(LMS_PWM_OUTPUT_SPEED, 0, 101) == E_PAR, "run SPEED 101: E_PAR (the driver's check)");
+	ok(pwm_run(LMS_PWM_OUTPUT_POWER, 0, -101) == E_PAR, "run POWER -101: E_PAR");
+	ok(pwm_run(LMS_PWM_OUTPUT_SPEED, 0, 256 + 10) == E_PAR, "run SPEED 266 (10 as a byte): E_PAR");
+	ok(pwm_run(LMS_PWM_OUTPUT_SPEED, 0, -128) == E_PAR, "run SPEED -128: E_PAR");
+	dly_tsk(100);
+	ok(fabs(motor_dps(0)) < 1, "no rejected run moved motor A");
+
+	pwm_cmd_value(LMS_PWM_OUTPUT_STOP, 0x02, 1);
+	dly_tsk(100);
+	a0 = motor_angle(1);
+	ok(pwm_run(LMS_PWM_OUTPUT_SPEED, 1, -40) == E_OK, "run SPEED -40 on the braked port B");
+	dly_tsk(400);
+	ok(motor_angle(1) < a0 - 50 && fabs(motor_dps(1) - PWM_MEDIUM_DPS(-40)) < 0.2 * PWM_MEDIUM_DPS(40),
+	   "B runs regulated backwards (%.0f deg/s)", motor_dps(1));
+	ok(pwm_run(LMS_PWM_OUTPUT_POWER, 1, 30) == E_OK, "run POWER 30 on the running port B");
+	dly_tsk(400);
+	d = hs_motor_drive(ev3_output_motor(1));
+	ok(d.fwd > 0.3 && d.fwd < 0.6 && motor_dps(1) > 0, "B driven unregulated at POWER 30 (duty %.2f)", d.fwd);
+	stop_all();
+}
+
 static bool user_done;
 
 static void body(void)
@@ -303,6 +334,7 @@ static void body(void)
 	test_status_and_map();
 	test_file_operations();
 	test_semantics();
+	test_run();
 	/* Then the same calls from a task of a user domain. */
 	act_tsk(USER_TASK_ID);
 	while (!user_done)
@@ -339,6 +371,7 @@ static void user_body(void)
 	   "user task: map address into kernel memory: E_MACV");
 	ok(pwm_motor_map(&map) == E_OK, "user task: map address onto its stack");
 	ok(kernel_area[2] == 0 && kernel_area[8] == 0, "kernel memory untouched");
+	ok(pwm_run(LMS_PWM_OUTPUT_SPEED, 0, 10) == E_OK, "user task: run (no memory to probe)");
 	pwm_cmd_value(LMS_PWM_OUTPUT_STOP, 0x0F, 0);
 }
 
@@ -362,7 +395,7 @@ int main(void)
 		.name = "pwm_user", .tasks = RTOS_TABLE(tasks), .mems = RTOS_TABLE(mems),
 	};
 
-	tap_plan(105);
+	tap_plan(119);
 	ok(pwm_test_run_in(body, motors, TDOM_KERNEL, &user_cfg), "test bodies ran to their end");
 	return tap_done();
 }

@@ -24,7 +24,7 @@ static ER_UINT svc_sum(intptr_t a, intptr_t b, intptr_t c, intptr_t d, intptr_t 
 }
 
 static ER r_rsfn[4], r_sum_user, r_sum_kernel, r_isr_sum;
-static ER r_prb[20];
+static ER r_prb[20], r_stack[5];
 static ID user_dom_seen;
 
 static void isr_dev(intptr_t x)
@@ -58,6 +58,12 @@ static void user_task(intptr_t x)
 	r_prb[16] = prb_mem((const void *)(UINTPTR_MAX - 2), 16, 2, TPM_READ);   /* wraps */
 	r_prb[17] = prb_mem(&local, 4, 2, TPM_READ);                       /* our stack, kernel task: ok */
 	r_prb[18] = prb_mem(region_a + 200, 100, 1, TPM_READ);             /* adjacent A|B read: ok if adjacent */
+	/* The own-stack fast path keeps the general rules. */
+	r_stack[0] = prb_mem(&local, sizeof(local), TSK_SELF, TPM_EXEC);   /* a stack is data */
+	r_stack[1] = prb_mem(&local, 0, TSK_SELF, TPM_READ);
+	r_stack[2] = prb_mem(&local, sizeof(local), TSK_SELF, 0);
+	r_stack[3] = prb_mem(&local, 4096, TSK_SELF, TPM_READ);            /* runs past the 1 KiB stack */
+	r_stack[4] = prb_mem(&local, sizeof(local), 1, TPM_WRITE);          /* by ID: the same answer */
 }
 
 static void kernel_task(intptr_t x)
@@ -90,7 +96,7 @@ int main(void)
 {
 	bool adjacent = region_a + sizeof(region_a) == region_b;
 
-	tap_plan(18);
+	tap_plan(21);
 	is_int(rtos_host_boot(&cfg), E_OK, "boot");
 	rtos_host_run_for(1000000);
 	is_int(user_dom_seen, 1, "rtos_host_current_domain: the task's domain");
@@ -107,6 +113,10 @@ int main(void)
 	   "prb_mem: the region's access modes are respected");
 	is_int(r_prb[7], E_OK, "prb_mem: a task may always access its own stack");
 	is_int(r_prb[8], E_MACV, "prb_mem: NULL is E_MACV");
+	ok(r_stack[0] == E_MACV && r_stack[3] == E_MACV,
+	   "prb_mem: own stack for execution, or past the stack's end: E_MACV");
+	ok(r_stack[1] == E_PAR && r_stack[2] == E_PAR, "prb_mem: own stack with size 0 or no mode: E_PAR");
+	is_int(r_stack[4], E_OK, "prb_mem: the task's stack probed by its ID");
 	ok(r_prb[9] == E_PAR && r_prb[10] == E_PAR && r_prb[11] == E_PAR, "prb_mem: size 0 and bad modes are E_PAR");
 	ok(r_prb[12] == E_ID && r_prb[13] == E_NOEXS, "prb_mem: bad task IDs E_ID / E_NOEXS");
 	ok(r_prb[14] == E_OK && r_prb[15] == E_OK && r_prb[17] == E_OK,
