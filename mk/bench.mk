@@ -75,7 +75,7 @@ $(BENCH_LOG_SHIM): bench/qemu_log_buffer.c
 
 BENCH_DEPS := $(BUILD)/host/bench_host $(BUILD)/host/insn_count $(BENCH_ARM).syms \
 	$(BENCH_ARM).stripped $(BENCH_PROD_ARM).syms $(BENCH_PROD_ARM).stripped $(BENCH_LOG_SHIM) \
-	$(BENCH_TIMERS).syms $(BENCH_TIMERS).stripped
+	$(BENCH_TIMERS).syms $(BENCH_TIMERS).stripped $(BUILD)/host/ev3sim $(AM1808_LIB) $(AM1808)/ev3lx.elf
 
 # The production build's inline locking fast path has a test of its own:
 # test_irqsave, which every configuration runs checked, runs again against

@@ -10,12 +10,18 @@
  * program measures nothing itself: insn_count counts lx_tick_isr's calls
  * between bench_window_open and bench_window_close in QEMU's log.
  *
- *   bench_timers N tick_ms
+ *   bench_timers N tick_ms [both|hrtimer|timer_list|none]
  *
- * Prints "timers <N> <hrtimer runs> <timer_list runs>".
+ * The third argument keeps only one of the two periodic timers (or neither):
+ * the difference between such a run's ticks and the idle run's is what one
+ * due timer of that kind costs (make bench's per-timer rows).
+ *
+ * Prints "timers <N> <hrtimer runs> <timer_list runs>", the runs inside the
+ * counted window.
  */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <linux/hrtimer.h>
 #include <linux/timer.h>
@@ -32,8 +38,10 @@
 static struct hrtimer hrtimers[MAX_TIMERS];
 static struct timer_list timers[MAX_TIMERS];
 static unsigned n_timers = 1, tick_ms = 20;
+static bool periodic_hrtimer = true, periodic_timer_list = true;
 static unsigned long hr_runs, tl_runs;
 static volatile bool finished;
+static unsigned long window_hr_runs, window_tl_runs;
 
 noinline void bench_window_open(void);
 noinline void bench_window_open(void)
@@ -88,14 +96,19 @@ static void bench_task(intptr_t exinf)
 	}
 	hrtimer_init(&hrtimers[0], CLOCK_MONOTONIC, HRTIMER_MODE_REL);
 	hrtimers[0].function = every_tick;
-	hrtimer_start(&hrtimers[0], ns_to_ktime(TICK_NS), HRTIMER_MODE_REL);
+	if (periodic_hrtimer)
+		hrtimer_start(&hrtimers[0], ns_to_ktime(TICK_NS), HRTIMER_MODE_REL);
 	timer_setup(&timers[0], every_jiffy, 0);
-	mod_timer(&timers[0], jiffies + 1);
-	dly_tsk(2);                             /* settle: both periodic timers running */
+	if (periodic_timer_list)
+		mod_timer(&timers[0], jiffies + 1);
+	dly_tsk(2);                             /* settle: the periodic timers running */
 
+	hr_runs = tl_runs = 0;
 	bench_window_open();
 	dly_tsk(tick_ms);
 	bench_window_close();
+	window_hr_runs = hr_runs;
+	window_tl_runs = tl_runs;
 
 	hrtimer_cancel(&hrtimers[0]);
 	del_timer_sync(&timers[0]);
@@ -118,8 +131,14 @@ int main(int argc, char **argv)
 		n_timers = (unsigned)strtoul(argv[1], NULL, 10);
 	if (argc > 2)
 		tick_ms = (unsigned)strtoul(argv[2], NULL, 10);
-	if (n_timers == 0 || n_timers > MAX_TIMERS || tick_ms == 0) {
-		fprintf(stderr, "usage: bench_timers N(1..%u) tick_ms\n", MAX_TIMERS);
+	if (argc > 3) {
+		periodic_hrtimer = !strcmp(argv[3], "both") || !strcmp(argv[3], "hrtimer");
+		periodic_timer_list = !strcmp(argv[3], "both") || !strcmp(argv[3], "timer_list");
+	}
+	if (n_timers == 0 || n_timers > MAX_TIMERS || tick_ms == 0 ||
+	    (argc > 3 && !periodic_hrtimer && !periodic_timer_list && strcmp(argv[3], "none"))) {
+		fprintf(stderr, "usage: bench_timers N(1..%u) tick_ms [both|hrtimer|timer_list|none]\n",
+			MAX_TIMERS);
 		return 2;
 	}
 	if (rtos_host_boot(&cfg) != E_OK) {
@@ -132,6 +151,6 @@ int main(int argc, char **argv)
 		fprintf(stderr, "bench_timers: the task did not finish\n");
 		return 1;
 	}
-	printf("timers %u %lu %lu\n", n_timers, hr_runs, tl_runs);
+	printf("timers %u %lu %lu\n", n_timers, window_hr_runs, window_tl_runs);
 	return 0;
 }
