@@ -65,12 +65,16 @@ void rtos_host_consume(uint64_t ns);
  * A service call made by a task costs virtual CPU time, so that a task that
  * busy-polls (`while (!ev3_touch_sensor_is_pressed(p));` makes a service call
  * or two per round) lets time pass as on the brick.  The defaults are make
- * bench's ARMv5 instruction counts (production build) at the AM1808's 300 MHz:
- * a kernel service call costs what prb_mem, the call ev3_uart_sensor_get_raw
- * makes, measured (60 instructions: 200 ns), and cal_svc what
- * ev3_motor_set_speed, one extended service call, measured in total (562
- * instructions: 1 873 ns; the service calls made inside it are not charged
- * again).  Only user-domain tasks are charged unless kernel_domain is set:
+ * bench's ARMv5 instruction counts (production build) at the AM1808's 300 MHz
+ * when the model was made: a kernel service call costs what prb_mem, the call
+ * ev3_uart_sensor_get_raw makes, measured (60 instructions: 200 ns), and
+ * cal_svc what ev3_motor_set_speed, one extended service call, measured in
+ * total (562 instructions: 1 873 ns; the service calls made inside it are not
+ * charged again).  The counts have since fallen (prb_mem 29, set_speed 277),
+ * but on the brick HRP2's trap, which make bench cannot count, comes on top of
+ * each service call (estimated at 30 to 70 instructions, docs/bench.md): 29 +
+ * 30..70 brackets 60, and 277 + 4 traps is 397..557, below 562.  The defaults
+ * stay, keeping every recorded run's timing.  Only user-domain tasks are charged unless kernel_domain is set:
  * the platform's own timing stays what its tests measure.
  */
 #define RTOS_HOST_CPU_HZ        300000000U
