@@ -141,6 +141,7 @@ static bool run_loop(uint64_t t, bool until_idle)
 		if (next > t) {
 			if (now_ns < t)
 				now_ns = t;
+			event_time_settled();
 			break;
 		}
 		now_ns = next;
@@ -214,6 +215,7 @@ static __attribute__((noinline)) void consume_slow(uint64_t ns)
 		}
 		remaining -= limit - now_ns;
 		now_ns = limit;
+		event_time_settled();
 		if (remaining > 0)
 			pause_to_harness();
 	}
