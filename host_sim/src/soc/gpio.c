@@ -396,12 +396,12 @@ void hs_gpio_state(unsigned pin, struct hs_pin_state *st)
 
 bool hs_gpio_soc_output(unsigned pin, bool *level)
 {
-	struct hs_pin_state st;
+	/* the two fields of hs_gpio_state, without the rest (the ADC asks on every frame) */
+	bool known = pin_ok(pin, "hs_gpio_soc_output");
 
-	hs_gpio_state(pin, &st);
 	if (level)
-		*level = st.soc_level;
-	return st.soc_drives;
+		*level = known && ((pair_reg(pin / 32U, R_OUT_DATA) >> (pin % 32U)) & 1U);
+	return known && g.pins[pin].soc_drives;
 }
 
 int hs_gpio_watch(unsigned pin, hs_pin_watch_fn fn, void *ctx)
