@@ -11,7 +11,9 @@
  * completed when the CPU next looks at SPIBUF/SPIFLG/SPIEMU, writes a
  * register whose effect depends on it, the statistics are read or the
  * kernel checks for idle — with the same values, at the same virtual times,
- * as if its end had been an event.
+ * as if its end had been an event.  (Only the model-side backdoor,
+ * hs_reg_get on SPIFLG/SPIBUF, does not settle it; nothing reads SPI0's
+ * registers that way.)
  */
 #include <stdlib.h>
 #include "rtos_host.h"
