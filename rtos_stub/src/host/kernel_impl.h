@@ -358,9 +358,8 @@ void svc_charge(void);
  * it makes; returns the calling task (NULL in non-task context) for svc_ext_exit. */
 struct tcb *svc_ext_enter(FN fncd);
 void svc_ext_exit(struct tcb *caller);
-/* The stall watch runs while the harness runs the system. */
+/* Starts the stall watch for a run of the harness (it ends with run_active). */
 void stall_watch_start(void);
-void stall_watch_stop(void);
 extern bool kernel_stalled;
 
 /* ---- Context checks, TOPPERS shape ---- */

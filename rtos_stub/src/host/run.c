@@ -147,8 +147,7 @@ static bool run_loop(uint64_t t, bool until_idle)
 		now_ns = next;
 		event_run_next();
 	}
-	stall_watch_stop();
-	run_active = false;
+	run_active = false;        /* the stall watch's next tick sees it and disarms its timer */
 	return idle;
 }
 
