@@ -109,12 +109,15 @@ uint32_t hs_spi_format(unsigned bus)
 }
 
 /* Drives the module's interrupt line from SPIFLG and SPIINT0. */
-static void spi_irq_update(struct spi_module *s)
+static inline void spi_irq_update(struct spi_module *s)
 {
-	uint32_t flg = *s->flg, ena = *s->int0;
-	bool level = ((flg & FLG_RXINT) && (ena & INT0_RXINTENA)) ||
-		     ((flg & FLG_OVRN) && (ena & INT0_OVRNINTENA));
+	uint32_t flg, ena = *s->int0;
+	bool level;
 
+	if (!s->irq && !(ena & (INT0_RXINTENA | INT0_OVRNINTENA)))
+		return;                 /* low and nothing enabled that could raise it: polled use */
+	flg = *s->flg;
+	level = ((flg & FLG_RXINT) && (ena & INT0_RXINTENA)) || ((flg & FLG_OVRN) && (ena & INT0_OVRNINTENA));
 	if (level != s->irq) {
 		s->irq = level;
 		hs_intc_set_level(s->inst->intno, level);
