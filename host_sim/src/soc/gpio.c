@@ -120,7 +120,7 @@ void hs_gpio_mux_as_gpio(unsigned pin)
 
 /* true if pin is muxed to GPIO (or its mux is not known here); every
  * resolve asks, so the field's place is found once (pin_mux_locate). */
-static bool pin_muxed(unsigned pin)
+static inline bool pin_muxed(unsigned pin)
 {
 	const struct pin *p = &g.pins[pin];
 
