@@ -267,7 +267,7 @@ static __attribute__((noinline)) bool ev_schedule_check(uint64_t *t_ns, rtos_hos
 	return true;
 }
 
-/* Marks event ev (taken from the free list, its slot queued) as scheduled for fn(arg) due at t_ns. */
+/* Takes event idx off the free list (its slot is queued) as fn(arg) due at t_ns. */
 static inline __attribute__((always_inline)) void ev_claim(uint32_t idx, uint64_t t_ns, rtos_host_event_fn fn,
 							   void *arg, bool kernel)
 {
