@@ -119,6 +119,38 @@ rtos_host_event_t rtos_host_event_at(uint64_t t_ns, rtos_host_event_fn fn, void 
 /* Cancels a scheduled event; cancelling a fired or unknown one is harmless. */
 void rtos_host_event_cancel(rtos_host_event_t ev);
 
+/*
+ * A deferred event: an event whose effects only its owner can observe (a
+ * polled transfer's end with no interrupt enabled) is not queued; it keeps
+ * the place in the queue order it would have had (time and sequence), and
+ * the owner completes it when something looks (rtos_host_deferred_due), or
+ * queues it in that place when its effects become visible to others
+ * (rtos_host_deferred_queue).  It counts as pending device work; when the
+ * kernel needs it in the queue (rtos_host_run_until_idle's idle check) it
+ * calls settle(arg), which must complete or queue it.  Owners keep the
+ * struct; the kernel links it while armed.
+ */
+struct rtos_host_deferred {
+	uint64_t time;
+	uint64_t seq;
+	rtos_host_event_fn fn;      /* the event's work, if queued */
+	rtos_host_event_fn settle;  /* completes it if due, queues it otherwise */
+	void *arg;
+	struct rtos_host_deferred *next;
+	bool armed;
+};
+
+/* Arms d as the event fn(arg) at t_ns (>= now), ordered as rtos_host_event_at
+ * would order it now; settle(arg) is the owner's catch-up (see above). */
+void rtos_host_defer_at(struct rtos_host_deferred *d, uint64_t t_ns, rtos_host_event_fn fn,
+			rtos_host_event_fn settle, void *arg);
+/* True if d, had it been queued, would have run by now (d must be armed). */
+bool rtos_host_deferred_due(const struct rtos_host_deferred *d);
+/* Disarms d (completed by its owner, or abandoned); harmless if not armed. */
+void rtos_host_deferred_disarm(struct rtos_host_deferred *d);
+/* Disarms d and queues its event in d's place in the order; its handle. */
+rtos_host_event_t rtos_host_deferred_queue(struct rtos_host_deferred *d);
+
 /* ---- Interrupt lines ---- */
 
 /* Latches an edge on the line: it is delivered once, when enabled and unmasked. */

@@ -24,6 +24,9 @@
 
 /* Current PINMUXn (0..19). */
 uint32_t hs_syscfg_pinmux(unsigned n);
+/* PINMUXn's stored value, for a model that consults it on every pin change
+ * (valid while the board exists); NULL without SYSCFG0 or for n >= 20. */
+const uint32_t *hs_syscfg_pinmux_ptr(unsigned n);
 /* The 4-bit function field of PINMUXn at bit shift (0, 4, ... 28). */
 unsigned hs_syscfg_pinmux_field(unsigned n, unsigned shift);
 /* Current CFGCHIPn (0..4). */

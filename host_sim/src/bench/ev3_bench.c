@@ -23,6 +23,7 @@ static struct {
 	uintptr_t page;
 	uint8_t *window;
 } windows[WINDOWS];             /* pages looked up in this boot */
+static unsigned last_window;    /* the one used last: a poll loop stays on one page */
 
 /* The CPU-visible address of a register (windows are per 4 KiB page). */
 static void *reg_addr(uintptr_t phys)
@@ -30,13 +31,18 @@ static void *reg_addr(uintptr_t phys)
 	uintptr_t page = phys & ~(uintptr_t)0xFFF;
 	unsigned i;
 
+	if (windows[last_window].window && windows[last_window].page == page)
+		return windows[last_window].window + (phys & 0xFFF);
 	for (i = 0; i < WINDOWS && windows[i].window; i++)
 		if (windows[i].page == page)
-			return windows[i].window + (phys & 0xFFF);
+			break;
 	if (i == WINDOWS)
 		i = 0;
-	windows[i].page = page;
-	windows[i].window = rtos_host_map_io(page, 0x1000);
+	if (!windows[i].window || windows[i].page != page) {
+		windows[i].page = page;
+		windows[i].window = rtos_host_map_io(page, 0x1000);
+	}
+	last_window = i;
 	return windows[i].window + (phys & 0xFFF);
 }
 

@@ -87,6 +87,50 @@ static struct {
 
 static const struct hs_power_controller *power_ctl;
 
+/*
+ * What the checks of a recent window access found, by window address:
+ * drivers access a handful of registers over and over (a poll loop, an
+ * ISR's status and data), and an access that finds its address, direction
+ * and width here goes straight to the element, skipping the page, map and
+ * width lookups (a chain of dependent loads) but not the power check.
+ * Emptied whenever a region is added or freed or the register log changes.
+ */
+#define HS_WCACHE_SLOTS 64U     /* a power of two */
+struct wcache_slot {
+	uintptr_t addr;             /* window address; 0: empty */
+	struct hs_region *r;
+	struct hs_elem *e;
+	const bool *power_live;     /* r's */
+	void *ctx;                  /* r's hook context */
+	uint32_t off;               /* in r */
+	uint8_t width;
+	uint8_t lane;
+	bool logged;                /* r's */
+};
+static struct wcache_slot rd_wcache[HS_WCACHE_SLOTS], wr_wcache[HS_WCACHE_SLOTS];
+
+/* The slot of window address addr in cache c (the page number is mixed in:
+ * registers at the same offset in different modules should not collide). */
+static inline struct wcache_slot *wcache_slot(struct wcache_slot *c, uintptr_t addr)
+{
+	return &c[((addr >> 2) ^ (addr >> 8) ^ (addr >> 12)) & (HS_WCACHE_SLOTS - 1U)];
+}
+
+/* Empties both window caches (regions or their log flags changed). */
+static void wcache_clear(void)
+{
+	memset(rd_wcache, 0, sizeof(rd_wcache));
+	memset(wr_wcache, 0, sizeof(wr_wcache));
+}
+
+/* Remembers that a width-byte access at addr reaches element e (lane lane) of r at off. */
+static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, struct hs_region *r, uint32_t off,
+			       struct hs_elem *e, unsigned lane, unsigned width)
+{
+	*slot = (struct wcache_slot){ addr, r, e, r->power_live, r->cfg.ctx, off, (uint8_t)width, (uint8_t)lane,
+				      r->logged };
+}
+
 void hs_set_power_controller(const struct hs_power_controller *pc)
 {
 	power_ctl = pc;
@@ -178,6 +222,7 @@ void hs_space_fini(void)
 		region_free(space.regions[i]);
 	space.nregions = 0;
 	space.last = NULL;
+	wcache_clear();
 	if (space.base)
 		munmap(space.base, (size_t)HS_SPACE_PAGES * HS_PAGE);
 	space.base = NULL;
@@ -637,33 +682,89 @@ static inline void access_cost(void)
 		rtos_host_consume(space.access_ns);
 }
 
+/* The element a CPU access of width bytes at offset off of r reaches, and
+ * its byte lane; NULL after a bug report (unpowered, no such register, a
+ * width it does not allow). */
+static inline __attribute__((always_inline)) struct hs_elem *access_checked(struct hs_region *r, uint32_t off,
+									     unsigned width, bool write, uint32_t value,
+									     unsigned *lane)
+{
+	struct hs_elem *e;
+
+	if (!*r->power_live) {
+		region_bug(r, r->cfg.phys + off, width, write, value);
+		return NULL;
+	}
+	if ((e = elem_lane_at(r, off, write, lane)) == NULL || !(e->ok_widths & width) || *lane + width > e->width) {
+		elem_bug(r, e, off, width, write, value);
+		return NULL;
+	}
+	return e;
+}
+
+/* A checked read of element e (of r, at offset off, byte lane lane): hooked and logged. */
+static inline __attribute__((always_inline)) uint32_t elem_read(struct hs_region *r, struct hs_elem *e, uint32_t off,
+								 unsigned lane, unsigned width, void *ctx, bool logged)
+{
+	uint32_t v;
+
+	if (e->before_read) {
+		struct hs_access a = { e->reg, e->index, e->offset, width, false };
+
+		e->before_read(ctx, &a, e->value);
+	}
+	v = (*e->value >> (8U * lane)) & width_mask(width);
+	if (e->kind == HS_COR)
+		*e->value &= ~(e->mask & (width_mask(width) << (8U * lane)));
+	if (logged)
+		reglog(r, e, r->cfg.phys + off, false, width, v);
+	return v;
+}
+
 /* One CPU read of width bytes (1, 2 or 4) at offset off of r: checked, hooked,
  * logged, and it costs the access time; 0 after a bug report. */
 static inline __attribute__((always_inline)) uint32_t region_read(struct hs_region *r, uint32_t off, unsigned width)
 {
-	struct hs_elem *e;
 	unsigned lane;
-	uint32_t v = 0;
+	struct hs_elem *e = access_checked(r, off, width, false, 0, &lane);
+	uint32_t v = e ? elem_read(r, e, off, lane, width, r->cfg.ctx, r->logged) : 0U;
 
-	if (!*r->power_live) {
-		region_bug(r, r->cfg.phys + off, width, false, 0);
-	} else if ((e = elem_lane_at(r, off, false, &lane)) == NULL || !(e->ok_widths & width) ||
-		   lane + width > e->width) {
-		elem_bug(r, e, off, width, false, 0);
-	} else {
-		if (e->before_read) {
-			struct hs_access a = { e->reg, e->index, e->offset, width, false };
-
-			e->before_read(r->cfg.ctx, &a, e->value);
-		}
-		v = (*e->value >> (8U * lane)) & width_mask(width);
-		if (e->kind == HS_COR)
-			*e->value &= ~(e->mask & (width_mask(width) << (8U * lane)));
-		if (r->logged)
-			reglog(r, e, r->cfg.phys + off, false, width, v);
-	}
 	access_cost();
 	return v;
+}
+
+/* A checked write of value (masked to width) to element e (of r, at offset
+ * off, byte lane lane): applied with the register's kind, logged, hooked. */
+static inline __attribute__((always_inline)) void elem_write(struct hs_region *r, struct hs_elem *e, uint32_t off,
+							      unsigned lane, unsigned width, uint32_t value, void *ctx,
+							      bool logged)
+{
+	uint32_t old = *e->value;
+	uint32_t bits = e->mask & (width_mask(width) << (8U * lane));
+	uint32_t cpu_value = value;
+	uint32_t nv;
+
+	value <<= 8U * lane;    /* the byte lanes the access drives */
+
+	switch (e->kind) {
+	case HS_W1S:
+		nv = old | (value & bits);
+		break;
+	case HS_W1C:
+		nv = old & ~(value & bits);
+		break;
+	default:        /* HS_RW, HS_WO */
+		nv = (old & ~bits) | (value & bits);
+		break;
+	}
+	*e->value = nv;
+	if (logged)
+		reglog(r, e, r->cfg.phys + off, true, width, cpu_value);
+	if (e->after_write) {
+		struct hs_access a = { e->reg, e->index, e->offset, width, true };
+
+		e->after_write(ctx, &a, old, nv, value);
+	}
 }
 
 /* One CPU write of width bytes (1, 2 or 4; value already masked to it) at
@@ -672,42 +773,11 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 static inline __attribute__((always_inline)) void region_write(struct hs_region *r, uint32_t off, unsigned width,
 								uint32_t value)
 {
-	struct hs_elem *e;
 	unsigned lane;
+	struct hs_elem *e = access_checked(r, off, width, true, value, &lane);
 
-	if (!*r->power_live) {
-		region_bug(r, r->cfg.phys + off, width, true, value);
-	} else if ((e = elem_lane_at(r, off, true, &lane)) == NULL || !(e->ok_widths & width) ||
-		   lane + width > e->width) {
-		elem_bug(r, e, off, width, true, value);
-	} else {
-		uint32_t old = *e->value;
-		uint32_t bits = e->mask & (width_mask(width) << (8U * lane));
-		uint32_t cpu_value = value;
-		uint32_t nv;
-
-		value <<= 8U * lane;    /* the byte lanes the access drives */
-
-		switch (e->kind) {
-		case HS_W1S:
-			nv = old | (value & bits);
-			break;
-		case HS_W1C:
-			nv = old & ~(value & bits);
-			break;
-		default:        /* HS_RW, HS_WO */
-			nv = (old & ~bits) | (value & bits);
-			break;
-		}
-		*e->value = nv;
-		if (r->logged)
-			reglog(r, e, r->cfg.phys + off, true, width, cpu_value);
-		if (e->after_write) {
-			struct hs_access a = { e->reg, e->index, e->offset, width, true };
-
-			e->after_write(r->cfg.ctx, &a, old, nv, value);
-		}
-	}
+	if (e)
+		elem_write(r, e, off, lane, width, value, r->cfg.ctx, r->logged);
 	access_cost();
 }
 
@@ -775,10 +845,19 @@ static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
 
 static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
 {
-	uint32_t off;
-	struct hs_region *r = window_region((uintptr_t)addr, &off);
+	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
+	uint32_t off, v = 0;
+	unsigned lane;
+	struct hs_region *r;
+	struct hs_elem *e;
 
 	(void)ctx;
+	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
+		v = elem_read(slot->r, slot->e, slot->off, slot->lane, width, slot->ctx, slot->logged);
+		access_cost();
+		return v;
+	}
+	r = window_region((uintptr_t)addr, &off);
 	if (!r) {
 		rtos_host_bug("host_sim", "read of %u bytes at window address %p (physical 0x%08" PRIxPTR
 			      "): no modelled device there", width, (const void *)addr, hs_space_to_phys((uintptr_t)addr));
@@ -789,15 +868,31 @@ static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
 			      r->cfg.phys + off);
 		return 0;
 	}
-	return region_read(r, off, width);
+	e = access_checked(r, off, width, false, 0, &lane);
+	if (e) {
+		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, width);
+		v = elem_read(r, e, off, lane, width, r->cfg.ctx, r->logged);
+	}
+	access_cost();
+	return v;
 }
 
 static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *ctx)
 {
+	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
 	uint32_t off;
-	struct hs_region *r = window_region((uintptr_t)addr, &off);
+	unsigned lane;
+	struct hs_region *r;
+	struct hs_elem *e;
 
 	(void)ctx;
+	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
+		elem_write(slot->r, slot->e, slot->off, slot->lane, width, data & width_mask(width), slot->ctx,
+			   slot->logged);
+		access_cost();
+		return;
+	}
+	r = window_region((uintptr_t)addr, &off);
 	if (!r) {
 		rtos_host_bug("host_sim", "write of %u bytes (0x%" PRIx32 ") at window address %p (physical 0x%08"
 			      PRIxPTR "): no modelled device there", width, data, (void *)addr,
@@ -809,7 +904,13 @@ static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *c
 			      r->cfg.phys + off);
 		return;
 	}
-	region_write(r, off, width, data & width_mask(width));
+	data &= width_mask(width);
+	e = access_checked(r, off, width, true, data, &lane);
+	if (e) {
+		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, width);
+		elem_write(r, e, off, lane, width, data, r->cfg.ctx, r->logged);
+	}
+	access_cost();
 }
 
 static void *mmio_map(uintptr_t phys, SIZE size, void *ctx)
@@ -880,6 +981,7 @@ void hs_space_set_reglog(const char *filter, FILE *out)
 	}
 	space.log_out = out;
 	space.logging = space.log_filter != NULL;
+	wcache_clear();
 	for (unsigned i = 0; i < space.nregions; i++)
 		space.regions[i]->logged = space.logging && filter_has(space.log_filter, space.regions[i]->cfg.name);
 }

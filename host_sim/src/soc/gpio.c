@@ -49,6 +49,9 @@ struct pin {
 	bool muxed;
 	bool contention;
 	bool mux_reported;
+	bool mux_known;             /* pin_mux_field knows its PINMUX field */
+	uint8_t mux_shift;
+	const uint32_t *mux_reg;    /* that PINMUX register's stored value (NULL: no SYSCFG0) */
 	int16_t first_watch;        /* index into watches, -1 for none */
 	struct hs_signal *sig;      /* declared on first activity */
 };
@@ -115,14 +118,28 @@ void hs_gpio_mux_as_gpio(unsigned pin)
 		hs_reg_update(syscfg0, 0x120U + 4U * reg, 0xFU << shift, GPIO_MUX_FUNC << shift);
 }
 
-/* true if pin is muxed to GPIO (or its mux is not known here). */
-static bool pin_muxed(unsigned pin)
+/* true if pin is muxed to GPIO (or its mux is not known here); every
+ * resolve asks, so the field's place is found once (pin_mux_locate). */
+static inline bool pin_muxed(unsigned pin)
 {
+	const struct pin *p = &g.pins[pin];
+
+	if (!g.pinmux_check || !p->mux_known)
+		return true;
+	return p->mux_reg != NULL && ((*p->mux_reg >> p->mux_shift) & 0xFU) == GPIO_MUX_FUNC;
+}
+
+/* Finds where pin's PINMUX field is stored, for pin_muxed. */
+static void pin_mux_locate(unsigned pin)
+{
+	struct pin *p = &g.pins[pin];
 	unsigned reg, shift;
 
-	if (!g.pinmux_check || !pin_mux_field(pin, &reg, &shift))
-		return true;
-	return hs_syscfg_pinmux_field(reg, shift) == GPIO_MUX_FUNC;
+	p->mux_known = pin_mux_field(pin, &reg, &shift);
+	if (p->mux_known) {
+		p->mux_shift = (uint8_t)shift;
+		p->mux_reg = hs_syscfg_pinmux_ptr(reg);
+	}
 }
 
 /* Stored value of a bank-pair register (DIR, OUT_DATA, the triggers or INTSTAT). */
@@ -310,8 +327,10 @@ ER hs_gpio_create(bool cold, bool pinmux_check)
 	struct hs_region *sys0;
 
 	memset(&g, 0, sizeof(g));
-	for (unsigned i = 0; i < HS_GPIO_NPINS; i++)
+	for (unsigned i = 0; i < HS_GPIO_NPINS; i++) {
 		g.pins[i].first_watch = -1;
+		pin_mux_locate(i);
+	}
 	g.pinmux_check = pinmux_check;
 	g.region = hs_region_add(&(struct hs_region_cfg){
 		.name = "GPIO", .phys = HS_GPIO_BASE, .size = 0x1000,
@@ -396,12 +415,12 @@ void hs_gpio_state(unsigned pin, struct hs_pin_state *st)
 
 bool hs_gpio_soc_output(unsigned pin, bool *level)
 {
-	struct hs_pin_state st;
+	/* the two fields of hs_gpio_state, without the rest (the ADC asks on every frame) */
+	bool known = pin_ok(pin, "hs_gpio_soc_output");
 
-	hs_gpio_state(pin, &st);
 	if (level)
-		*level = st.soc_level;
-	return st.soc_drives;
+		*level = known && ((pair_reg(pin / 32U, R_OUT_DATA) >> (pin % 32U)) & 1U);
+	return known && g.pins[pin].soc_drives;
 }
 
 int hs_gpio_watch(unsigned pin, hs_pin_watch_fn fn, void *ctx)

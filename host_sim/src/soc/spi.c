@@ -4,6 +4,16 @@
  * by whatever the board connects as each bus's slave (hs_spi_connect; on the
  * EV3 the converter on SPI0, ev3/adc.c, and the display controller on SPI1,
  * ev3/st7586.c).
+ *
+ * A frame nothing but its own registers can observe the end of (no interrupt
+ * enabled, no word waiting behind it, no slave hook at its end: the ADC's
+ * polled frames) is not an event: it is a deferred event (rtos_host.h),
+ * completed when the CPU next looks at SPIBUF/SPIFLG/SPIEMU, writes a
+ * register whose effect depends on it, the statistics are read or the
+ * kernel checks for idle — with the same values, at the same virtual times,
+ * as if its end had been an event.  (Only the model-side backdoor,
+ * hs_reg_get on SPIFLG/SPIBUF, does not settle it; nothing reads SPI0's
+ * registers that way.)
  */
 #include <stdlib.h>
 #include "rtos_host.h"
@@ -28,6 +38,7 @@ enum {
 #define FLG_TXINT      (1U << 9)
 #define INT0_RXINTENA  (1U << 8)
 #define INT0_OVRNINTENA (1U << 6)
+#define FLG_WRITABLE   0x0000015FU  /* SPIFLG's write-1-to-clear bits */
 
 /* What differs between SPI0 and SPI1 (AM1808 TRM, memory map, PSC and AINTC chapters). */
 struct spi_instance {
@@ -62,6 +73,7 @@ struct spi_module {
 	unsigned shift_len;
 	uint64_t frame_end;
 	hs_event_t frame_ev;
+	struct rtos_host_deferred frame_deferred;   /* armed: the frame's end is deferred */
 	uint32_t rx;                /* SPIBUF data and flags */
 	bool irq;
 	struct ev3_spi_stats stats;
@@ -71,13 +83,22 @@ static struct spi_module *spis[HS_SPI_BUSES];
 /* Slaves connected before their master exists (board models may be created in any order). */
 static struct hs_spi_peer pending[HS_SPI_BUSES];
 
+/* Whether private frame ends are deferred (hs_spi_defer_private_ends). */
+static bool defer_private_ends = true;
+
+static void frame_settle(struct spi_module *s);
+static void frame_settle_or_queue(struct spi_module *s);
+
 void hs_spi_connect(unsigned bus, const struct hs_spi_peer *peer)
 {
 	if (bus >= HS_SPI_BUSES)
 		return;
 	pending[bus] = peer != NULL ? *peer : (struct hs_spi_peer){ 0 };
-	if (spis[bus])
+	if (spis[bus]) {
+		frame_settle(spis[bus]);            /* a frame that ended did so with the old slave */
 		spis[bus]->slave = pending[bus];
+		frame_settle_or_queue(spis[bus]);   /* the new slave may act at the frame's end */
+	}
 }
 
 uint32_t hs_spi_format(unsigned bus)
@@ -88,12 +109,15 @@ uint32_t hs_spi_format(unsigned bus)
 }
 
 /* Drives the module's interrupt line from SPIFLG and SPIINT0. */
-static void spi_irq_update(struct spi_module *s)
+static inline void spi_irq_update(struct spi_module *s)
 {
-	uint32_t flg = *s->flg, ena = *s->int0;
-	bool level = ((flg & FLG_RXINT) && (ena & INT0_RXINTENA)) ||
-		     ((flg & FLG_OVRN) && (ena & INT0_OVRNINTENA));
+	uint32_t flg, ena = *s->int0;
+	bool level;
 
+	if (!s->irq && !(ena & (INT0_RXINTENA | INT0_OVRNINTENA)))
+		return;                 /* low and nothing enabled that could raise it: polled use */
+	flg = *s->flg;
+	level = ((flg & FLG_RXINT) && (ena & INT0_RXINTENA)) || ((flg & FLG_OVRN) && (ena & INT0_OVRNINTENA));
 	if (level != s->irq) {
 		s->irq = level;
 		hs_intc_set_level(s->inst->intno, level);
@@ -139,6 +163,7 @@ static void frame_done(void *arg)
 	uint32_t mask = s->shift_len >= 16 ? 0xFFFFU : (1U << s->shift_len) - 1U;
 
 	s->frame_ev = 0;
+	rtos_host_deferred_disarm(&s->frame_deferred);
 	s->busy = false;
 	s->stats.transfers++;
 	if (s->slave.frame_done != NULL)
@@ -157,7 +182,42 @@ static void frame_done(void *arg)
 	spi_irq_update(s);
 }
 
-/* Starts a frame now with the slave answering. */
+/* True if the end of the frame in flight can change nothing but the module's
+ * own registers and statistics: no interrupt it could raise is enabled, no
+ * word waits to start after it, the slave has nothing to do at its end. */
+static bool frame_end_private(const struct spi_module *s)
+{
+	return !(*s->int0 & (INT0_RXINTENA | INT0_OVRNINTENA)) && !s->tx_full && s->slave.frame_done == NULL;
+}
+
+/* Completes a deferred frame whose end has passed (its event would have run). */
+static void frame_settle(struct spi_module *s)
+{
+	if (s->frame_deferred.armed && rtos_host_deferred_due(&s->frame_deferred))
+		frame_done(s);
+}
+
+/* Settles a deferred frame, then queues it as an event if it is still in
+ * flight and its end is no longer private (it must happen at its time). */
+static void frame_settle_or_queue(struct spi_module *s)
+{
+	frame_settle(s);
+	if (s->frame_deferred.armed && !frame_end_private(s))
+		s->frame_ev = rtos_host_deferred_queue(&s->frame_deferred);
+}
+
+/* The kernel's settle callback (its idle check): complete or queue. */
+static void frame_settle_for_kernel(void *arg)
+{
+	struct spi_module *s = arg;
+
+	frame_settle(s);
+	if (s->frame_deferred.armed)
+		s->frame_ev = rtos_host_deferred_queue(&s->frame_deferred);
+}
+
+/* Starts a frame now with the slave answering; its end is an event, or
+ * deferred when private. */
 static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt)
 {
 	uint64_t ns = frame_ns(s, fmt, &s->shift_len);
@@ -166,7 +226,12 @@ static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt)
 	s->word = word;
 	s->shift_out = s->slave.frame != NULL ? s->slave.frame(s->slave.ctx, word) : 0;
 	s->frame_end = hs_now() + ns;
-	s->frame_ev = hs_event_at(s->frame_end, frame_done, s);
+	if (defer_private_ends && frame_end_private(s)) {
+		s->stats.deferred_ends++;
+		rtos_host_defer_at(&s->frame_deferred, s->frame_end, frame_done, frame_settle_for_kernel, s);
+	} else {
+		s->frame_ev = hs_event_at(s->frame_end, frame_done, s);
+	}
 }
 
 /* A word written to SPIDAT0/1: transfer now, or park it in the TX buffer. */
@@ -182,6 +247,7 @@ static void spi_send(struct spi_module *s, uint16_t word)
 			      "not master (SPIGCR1.MASTER/CLKMOD)");
 		return;
 	}
+	frame_settle(s);
 	flg_update(s, FLG_TXINT, 0);
 	if (!s->busy) {
 		frame_start(s, word, fmt);
@@ -189,6 +255,7 @@ static void spi_send(struct spi_module *s, uint16_t word)
 		s->tx_full = true;
 		s->tx_buf = word;
 		s->tx_buf_fmt = fmt;
+		frame_settle_or_queue(s);   /* the waiting word starts at the frame's end */
 	} else {
 		rtos_host_trace(s->inst->name, "word 0x%04x overwrites the full TX buffer", word);
 		s->tx_buf = word;
@@ -220,10 +287,12 @@ static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct spi_module *s = ctx;
 
+	frame_settle(s);
 	/* a poll that would see "not yet": the CPU spins until the frame ends */
 	if (s->busy && ((s->rx & BUF_RXEMPTY) || s->tx_full)) {
 		s->stats.stalls++;
 		hs_access_stall_until(s->frame_end);
+		frame_settle(s);
 	}
 	*value = buf_value(s);
 	s->rx = (s->rx | BUF_RXEMPTY) & ~BUF_RXOVR;
@@ -234,7 +303,10 @@ static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 /* SPIEMU read: SPIBUF without side effects. */
 static void read_emu(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	*value = buf_value(ctx) & 0xFFFFU;
+	struct spi_module *s = ctx;
+
+	frame_settle(s);
+	*value = buf_value(s) & 0xFFFFU;
 }
 
 /* SPIFLG read: TXINTFLG from the TX buffer. */
@@ -242,13 +314,22 @@ static void read_flg(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct spi_module *s = ctx;
 
+	frame_settle(s);
 	*value = (*value & ~FLG_TXINT) | (s->tx_full ? 0U : FLG_TXINT);
 }
 
-/* SPIFLG write-1-to-clear: re-evaluates the interrupt. */
+/* SPIFLG write-1-to-clear: re-evaluates the interrupt.  A deferred frame
+ * that ended before the write sets its flags now, so they are cleared again
+ * as the write would have cleared them. */
 static void write_flg(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	spi_irq_update(ctx);
+	struct spi_module *s = ctx;
+
+	if (s->frame_deferred.armed && rtos_host_deferred_due(&s->frame_deferred)) {
+		frame_done(s);
+		flg_update(s, written & FLG_WRITABLE, 0);
+	}
+	spi_irq_update(s);
 }
 
 /* SPIGCR0: RESET = 0 resets the module. */
@@ -257,6 +338,8 @@ static void write_gcr0(void *ctx, const struct hs_access *a, uint32_t old, uint3
 	struct spi_module *s = ctx;
 
 	if (!(nv & 1U)) {           /* reset: abort, registers to reset values */
+		frame_settle(s);
+		rtos_host_deferred_disarm(&s->frame_deferred);
 		hs_event_cancel(&s->frame_ev);
 		s->busy = s->tx_full = false;
 		s->rx = BUF_RXEMPTY;
@@ -265,10 +348,14 @@ static void write_gcr0(void *ctx, const struct hs_access *a, uint32_t old, uint3
 	}
 }
 
-/* SPIINT0 write: re-evaluates the interrupt. */
+/* SPIINT0 write: re-evaluates the interrupt; a frame in flight whose end
+ * may now raise it becomes an event. */
 static void write_int0(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
-	spi_irq_update(ctx);
+	struct spi_module *s = ctx;
+
+	frame_settle_or_queue(s);
+	spi_irq_update(s);
 }
 
 static const struct hs_reg spi_regs[] = {
@@ -276,7 +363,7 @@ static const struct hs_reg spi_regs[] = {
 	{ .name = "SPIGCR1", .offset = SPIGCR1, .kind = HS_RW, .mask = 0x01010303 },
 	{ .name = "SPIINT0", .offset = SPIINT0, .kind = HS_RW, .mask = 0x0101035F, .after_write = write_int0 },
 	{ .name = "SPILVL", .offset = SPILVL, .kind = HS_RW, .mask = 0x0000035F },
-	{ .name = "SPIFLG", .offset = SPIFLG, .kind = HS_W1C, .mask = 0x0000015F,
+	{ .name = "SPIFLG", .offset = SPIFLG, .kind = HS_W1C, .mask = FLG_WRITABLE,
 	  .before_read = read_flg, .after_write = write_flg },
 	{ .name = "SPIPC", .offset = SPIPC0, .kind = HS_RW, .count = 6, .stride = 4, .mask = 0x01010F3F },
 	{ .name = "SPIDAT0", .offset = SPIDAT0, .widths = HS_W16 | HS_W32, .kind = HS_RW, .mask = 0xFFFF,
@@ -341,6 +428,7 @@ static void spi_destroy(void *ctx)
 {
 	struct spi_module *s = ctx;
 
+	rtos_host_deferred_disarm(&s->frame_deferred);
 	hs_event_cancel(&s->frame_ev);
 	for (unsigned bus = 0; bus < HS_SPI_BUSES; bus++)
 		if (spis[bus] == s)
@@ -356,7 +444,14 @@ const struct ev3_spi_stats *hs_spi_stats(unsigned bus)
 	static const struct ev3_spi_stats none;
 	struct spi_module *s = bus < HS_SPI_BUSES ? spis[bus] : NULL;
 
+	if (s)
+		frame_settle(s);
 	return s ? &s->stats : &none;
+}
+
+void hs_spi_defer_private_ends(bool on)
+{
+	defer_private_ends = on;
 }
 
 const struct ev3_spi_stats *ev3_spi_get_stats(void)

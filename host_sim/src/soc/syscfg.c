@@ -136,6 +136,11 @@ uint32_t hs_syscfg_pinmux(unsigned n)
 	return *sc.pinmux[n];
 }
 
+const uint32_t *hs_syscfg_pinmux_ptr(unsigned n)
+{
+	return sc.r0 && n < 20U ? sc.pinmux[n] : NULL;
+}
+
 unsigned hs_syscfg_pinmux_field(unsigned n, unsigned shift)
 {
 	return shift > 28U ? 0U : (hs_syscfg_pinmux(n) >> shift) & 0xFU;

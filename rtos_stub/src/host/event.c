@@ -13,6 +13,12 @@
  * it is and is skipped when it reaches the head (its generation no longer
  * matches); when such slots outnumber the live ones they are swept out.
  * The earliest live time is kept in event_head_time for the run loop.
+ *
+ * A deferred event (rtos_host.h) holds a sequence number like a queued one
+ * but no slot; it is due once the run has moved past its place in the order:
+ * a later time, or its time with an event of a higher sequence run, or its
+ * time settled (run.c calls event_time_settled once every event due by now
+ * has run).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -53,6 +59,10 @@ static uint32_t ev_live;                         /* queued events */
 static uint64_t ev_seq;
 static uint_t ev_user;
 uint64_t event_head_time = UINT64_MAX;
+/* Where the run is in the queue order: the last event taken, or its time settled (sequence UINT64_MAX). */
+static uint64_t ev_pos_time;
+static uint64_t ev_pos_seq = UINT64_MAX;
+static struct rtos_host_deferred *ev_deferred;   /* the armed deferred events */
 
 /* Queue order: earlier time first, then scheduling order. */
 static inline bool ev_before(const struct ev_slot *a, const struct ev_slot *b)
@@ -118,13 +128,13 @@ static void ev_heap_pop(void)
 	ev_sift_up(pos, last);
 }
 
-/* Inserts slot s, scheduled after every queued slot, into the front (which
- * has room), keeping it latest-first: the slots due no later than s move up. */
+/* Inserts slot s into the front (which has room), keeping it latest-first:
+ * the slots ordered before s move up. */
 static void ev_front_insert(struct ev_slot s)
 {
 	uint32_t pos = ev_front_len;
 
-	while (pos > 0 && ev_front[pos - 1].time <= s.time) {
+	while (pos > 0 && ev_before(&ev_front[pos - 1], &s)) {
 		ev_front[pos] = ev_front[pos - 1];
 		pos--;
 	}
@@ -144,8 +154,7 @@ static void ev_front_sweep(void)
 	ev_front_len = n;
 }
 
-/* Queues slot s, scheduled after every queued slot (its sequence number is
- * the highest, so only times need comparing); false on ENOMEM. */
+/* Queues slot s (a new one, or a deferred event's with its earlier sequence); false on ENOMEM. */
 static __attribute__((noinline)) bool ev_queue(struct ev_slot s)
 {
 	if (ev_front_len == EV_FRONT_CAP)
@@ -157,7 +166,7 @@ static __attribute__((noinline)) bool ev_queue(struct ev_slot s)
 		memmove(&ev_front[0], &ev_front[1], (EV_FRONT_CAP - 1U) * sizeof(ev_front[0]));
 		ev_front_len--;
 	}
-	if (ev_heap_len > 0 && s.time >= ev_heap[0].time)
+	if (ev_heap_len > 0 && !ev_before(&s, &ev_heap[0]))
 		return ev_heap_push(s);
 	ev_front_insert(s);
 	return true;
@@ -258,6 +267,24 @@ static __attribute__((noinline)) bool ev_schedule_check(uint64_t *t_ns, rtos_hos
 	return true;
 }
 
+/* Takes event idx off the free list (its slot is queued) as fn(arg) due at t_ns. */
+static inline __attribute__((always_inline)) void ev_claim(uint32_t idx, uint64_t t_ns, rtos_host_event_fn fn,
+							   void *arg, bool kernel)
+{
+	struct event *ev = &ev_pool[idx];
+
+	ev_free = ev->next_free;
+	ev->fn = fn;
+	ev->arg = arg;
+	ev->kernel = kernel;
+	ev->queued = true;
+	ev_live++;
+	if (!kernel)
+		ev_user++;
+	if (t_ns < event_head_time)
+		event_head_time = t_ns;
+}
+
 /* Schedules fn(arg) at t_ns; a time in the past is a bug and runs now. */
 static inline __attribute__((always_inline)) rtos_host_event_t ev_schedule(uint64_t t_ns, rtos_host_event_fn fn,
 									    void *arg, bool kernel)
@@ -286,16 +313,7 @@ static inline __attribute__((always_inline)) rtos_host_event_t ev_schedule(uint6
 		return 0;
 	}
 	ev_seq++;
-	ev_free = ev->next_free;
-	ev->fn = fn;
-	ev->arg = arg;
-	ev->kernel = kernel;
-	ev->queued = true;
-	ev_live++;
-	if (!kernel)
-		ev_user++;
-	if (t_ns < event_head_time)
-		event_head_time = t_ns;
+	ev_claim(idx, t_ns, fn, arg, kernel);
 	return ((rtos_host_event_t)ev->gen << 32) | (idx + 1U);
 }
 
@@ -329,10 +347,87 @@ void rtos_host_event_cancel(rtos_host_event_t handle)
 	ev_settle();
 }
 
-/* Number of scheduled device (non-kernel) events. */
+/* Arms d as fn(arg) at t_ns with the next sequence number, as if scheduled now. */
+void rtos_host_defer_at(struct rtos_host_deferred *d, uint64_t t_ns, rtos_host_event_fn fn,
+			rtos_host_event_fn settle, void *arg)
+{
+	if (d->armed)
+		rtos_host_deferred_disarm(d);
+	if (t_ns < now_ns) {
+		rtos_host_bug("event", "deferred event in the past (t=%llu ns < now); due now",
+			      (unsigned long long)t_ns);
+		t_ns = now_ns;
+	}
+	d->time = t_ns;
+	d->seq = ev_seq++;
+	d->fn = fn;
+	d->settle = settle;
+	d->arg = arg;
+	d->armed = true;
+	d->next = ev_deferred;
+	ev_deferred = d;
+}
+
+/* True once the run is past d's place in the queue order (see the top of the file). */
+bool rtos_host_deferred_due(const struct rtos_host_deferred *d)
+{
+	if (now_ns != d->time)
+		return now_ns > d->time;
+	return ev_pos_time != d->time || ev_pos_seq > d->seq;
+}
+
+/* Unlinks d from the armed list (a handful at most: one per transfer in flight). */
+void rtos_host_deferred_disarm(struct rtos_host_deferred *d)
+{
+	struct rtos_host_deferred **link = &ev_deferred;
+
+	if (!d->armed)
+		return;
+	while (*link != d)
+		link = &(*link)->next;
+	*link = d->next;
+	d->next = NULL;
+	d->armed = false;
+}
+
+/* Queues d's event with d's own time and sequence, as rtos_host_event_at would have. */
+rtos_host_event_t rtos_host_deferred_queue(struct rtos_host_deferred *d)
+{
+	uint64_t t_ns = d->time;
+	uint32_t idx;
+
+	rtos_host_deferred_disarm(d);
+	if (!ev_schedule_check(&t_ns, d->fn))
+		return 0;
+	idx = ev_free;
+	if (!ev_queue((struct ev_slot){ t_ns, d->seq, idx, ev_pool[idx].gen })) {
+		rtos_host_bug("event", "out of memory for events");
+		return 0;
+	}
+	ev_claim(idx, t_ns, d->fn, d->arg, false);
+	return ((rtos_host_event_t)ev_pool[idx].gen << 32) | (idx + 1U);
+}
+
+/* Number of scheduled device (non-kernel) events, after every deferred one
+ * is settled: completed if due, queued otherwise (its owner decides). */
 uint_t event_user_count(void)
 {
+	while (ev_deferred != NULL) {
+		struct rtos_host_deferred *d = ev_deferred;
+
+		d->settle(d->arg);
+		if (d->armed) {
+			rtos_host_bug("event", "a deferred event's settle left it deferred");
+			rtos_host_deferred_disarm(d);
+		}
+	}
 	return ev_user;
+}
+
+/* Every event due by now has run: deferred events at now are due. */
+void event_time_settled(void)
+{
+	ev_pos_seq = UINT64_MAX;
 }
 
 /* Pops and runs the earliest event as the hardware; interrupts it raises are delivered after it. */
@@ -346,9 +441,15 @@ void event_run_next(void)
 
 	/* ev_settle left a live slot at the head */
 	if (ev_front_len > 0) {
-		idx = ev_front[--ev_front_len].idx;
+		const struct ev_slot *s = &ev_front[--ev_front_len];
+
+		idx = s->idx;
+		ev_pos_time = s->time;
+		ev_pos_seq = s->seq;
 	} else {
 		idx = ev_heap[0].idx;
+		ev_pos_time = ev_heap[0].time;
+		ev_pos_seq = ev_heap[0].seq;
 		ev_heap_pop();
 	}
 	fn = ev_pool[idx].fn;
@@ -384,4 +485,8 @@ void event_reset(void)
 	event_head_time = UINT64_MAX;
 	ev_seq = 0;
 	ev_user = 0;
+	ev_pos_time = 0;
+	ev_pos_seq = UINT64_MAX;
+	while (ev_deferred != NULL)
+		rtos_host_deferred_disarm(ev_deferred);
 }

@@ -281,8 +281,10 @@ static inline uint64_t event_next_time(void)
 }
 /* Pops and runs the earliest event; now_ns must already be its time. */
 void event_run_next(void);
-/* Number of scheduled non-kernel events. */
+/* Number of scheduled non-kernel events (deferred ones settled first). */
 uint_t event_user_count(void);
+/* Tells the queue that every event due by now has run (deferred ones at now are due). */
+void event_time_settled(void);
 /* Schedules a kernel-internal event (does not count as device work). */
 rtos_host_event_t event_at_kernel(uint64_t t_ns, rtos_host_event_fn fn, void *arg);
 
@@ -356,9 +358,8 @@ void svc_charge(void);
  * it makes; returns the calling task (NULL in non-task context) for svc_ext_exit. */
 struct tcb *svc_ext_enter(FN fncd);
 void svc_ext_exit(struct tcb *caller);
-/* The stall watch runs while the harness runs the system. */
+/* Starts the stall watch for a run of the harness (it ends with run_active). */
 void stall_watch_start(void);
-void stall_watch_stop(void);
 extern bool kernel_stalled;
 
 /* ---- Context checks, TOPPERS shape ---- */

@@ -141,13 +141,13 @@ static bool run_loop(uint64_t t, bool until_idle)
 		if (next > t) {
 			if (now_ns < t)
 				now_ns = t;
+			event_time_settled();
 			break;
 		}
 		now_ns = next;
 		event_run_next();
 	}
-	stall_watch_stop();
-	run_active = false;
+	run_active = false;        /* the stall watch's next tick sees it and disarms its timer */
 	return idle;
 }
 
@@ -214,6 +214,7 @@ static __attribute__((noinline)) void consume_slow(uint64_t ns)
 		}
 		remaining -= limit - now_ns;
 		now_ns = limit;
+		event_time_settled();
 		if (remaining > 0)
 			pause_to_harness();
 	}

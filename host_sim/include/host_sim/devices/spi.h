@@ -18,6 +18,7 @@
 #ifndef HOST_SIM_DEVICES_SPI_H
 #define HOST_SIM_DEVICES_SPI_H
 
+#include <stdbool.h>
 #include <stdint.h>
 #include "host_sim/board.h"
 
@@ -48,10 +49,16 @@ struct ev3_spi_stats {
 	uint32_t transfers;
 	uint32_t rx_overruns;
 	uint32_t stalls;            /* SPIBUF reads that waited for a transfer */
+	uint32_t deferred_ends;     /* frames whose end was completed when observed, not as an event */
 };
 /* Counters of bus (zeros without the module). */
 const struct ev3_spi_stats *hs_spi_stats(unsigned bus);
 /* SPI0's counters. */
 const struct ev3_spi_stats *ev3_spi_get_stats(void);
+/* Frames whose end only the module's own registers show (no interrupt
+ * enabled, no word waiting, no slave hook) are completed when next observed
+ * instead of by an event, with the same observable results (on by default);
+ * off makes every frame end an event, for comparing the two. */
+void hs_spi_defer_private_ends(bool on);
 
 #endif /* HOST_SIM_DEVICES_SPI_H */

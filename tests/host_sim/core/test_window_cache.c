@@ -1,0 +1,118 @@
+/*
+ * test_window_cache.c — accesses through the CPU windows that repeat an
+ * address (served from the window cache in space.c) behave as the first
+ * one: hooks run every time, another width is still checked, a module
+ * powered off in between is still reported, and the register log started
+ * or stopped in between sees exactly the accesses made while it is on.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <string.h>
+
+#include "tap.h"
+#include "sil.h"
+#include "rtos_host.h"
+#include "host_sim/board.h"
+#include "host_sim/psc.h"
+#include "host_sim/regs.h"
+#include "host_sim/scenario.h"
+#include "host_sim/trace.h"
+
+#define CDEV_PHYS  0x01E00000U
+#define PSC1       0x01E27000U
+#define MODULE     17U          /* eHRPWM's LPSC, powered off at reset */
+
+static unsigned reads, writes;
+
+static void count_read(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	(void)ctx; (void)a;
+	*value = ++reads;
+}
+
+static void count_write(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written)
+{
+	(void)ctx; (void)a; (void)old; (void)now; (void)written;
+	writes++;
+}
+
+static const struct hs_reg cdev_regs[] = {
+	{ .name = "COUNT", .offset = 0x00, .kind = HS_RO, .before_read = count_read },
+	{ .name = "CTL",   .offset = 0x04, .kind = HS_RW, .after_write = count_write },
+	{ .name = "FLAGS", .offset = 0x08, .kind = HS_W1C, .reset = 0xFF, .after_write = count_write },
+};
+
+static const struct rtos_cfg cfg = { .name = "window_cache" };
+
+/* Powers the module on or off through the PSC's registers, as a driver does. */
+static void power(bool on)
+{
+	sil_wrw_mem(rtos_host_map_io(PSC1 + 0xA00 + 4 * MODULE, 4), on ? 3 : 0);
+	sil_wrw_mem(rtos_host_map_io(PSC1 + 0x120, 4), 1);
+}
+
+/* Lines in f. */
+static unsigned lines_in(FILE *f)
+{
+	unsigned n = 0;
+	int c;
+
+	rewind(f);
+	while ((c = fgetc(f)) != EOF)
+		n += c == '\n';
+	return n;
+}
+
+int main(void)
+{
+	struct hs_scenario scn = { .rtos = &cfg };
+	volatile uint8_t *w;
+	FILE *log = tmpfile();
+
+	tap_plan(13);
+	if (hs_sim_boot(&scn) != E_OK || !log)
+		tap_bail_out("boot failed");
+	ok(hs_region_add(&(struct hs_region_cfg){ .name = "CDEV", .phys = CDEV_PHYS, .size = 0x1000,
+		.regs = cdev_regs, .nregs = HS_ARRAY_SIZE(cdev_regs), .power = HS_PSC1_MODULE(MODULE) }) != NULL,
+	   "region registers");
+	w = rtos_host_map_io(CDEV_PHYS, 0x1000);
+	power(true);
+
+	is_int(sil_rew_mem((uint32_t *)(w + 0x00)) + sil_rew_mem((uint32_t *)(w + 0x00)) +
+	       sil_rew_mem((uint32_t *)(w + 0x00)), 1 + 2 + 3, "a repeated read runs the hook every time");
+	sil_wrw_mem((uint32_t *)(w + 0x04), 5);
+	sil_wrw_mem((uint32_t *)(w + 0x04), 6);
+	is_int(writes, 2, "a repeated write runs the hook every time");
+	is_int(sil_rew_mem((uint32_t *)(w + 0x04)), 6, "and stores its value");
+	sil_wrw_mem((uint32_t *)(w + 0x08), 0x0F);
+	sil_wrw_mem((uint32_t *)(w + 0x08), 0x30);
+	is_int(sil_rew_mem((uint32_t *)(w + 0x08)), 0xC0, "a repeated write-1-to-clear clears each time");
+
+	rtos_host_expect_bugs(true);
+	(void)sil_reh_mem((uint16_t *)(w + 0x04));
+	ok(strstr(rtos_host_last_bug(), "is a 4-byte register") != NULL,
+	   "another width at a cached address is still checked (%s)", rtos_host_last_bug());
+	power(false);
+	ok(!hs_psc_enabled(HS_PSC1_MODULE(MODULE)), "module powered off");
+	is_int(sil_rew_mem((uint32_t *)(w + 0x04)), 0, "a cached register of a dead module reads 0");
+	ok(strstr(rtos_host_last_bug(), "CDEV is not powered") != NULL, "and is reported (%s)", rtos_host_last_bug());
+	sil_wrw_mem((uint32_t *)(w + 0x04), 7);
+	ok(strstr(rtos_host_last_bug(), "of 0x00000007") != NULL && writes == 4,
+	   "a cached write to it too, and it does not reach the register");
+	rtos_host_expect_bugs(false);
+	power(true);
+	is_int(sil_rew_mem((uint32_t *)(w + 0x04)), 6, "powered again, the register answers");
+
+	hs_trace_reglog("CDEV", log);
+	(void)sil_rew_mem((uint32_t *)(w + 0x04));
+	sil_wrw_mem((uint32_t *)(w + 0x04), 8);
+	hs_trace_reglog(NULL, NULL);
+	(void)sil_rew_mem((uint32_t *)(w + 0x04));
+	sil_wrw_mem((uint32_t *)(w + 0x04), 9);
+	is_int(lines_in(log), 2, "the register log sees the cached accesses made while it is on, and only those");
+	is_int(sil_rew_mem((uint32_t *)(w + 0x00)), 4, "after the log changed, reads still reach their hook");
+
+	fclose(log);
+	hs_sim_shutdown();
+	return tap_done();
+}

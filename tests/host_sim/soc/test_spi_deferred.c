@@ -1,0 +1,250 @@
+/*
+ * test_spi_deferred.c — SPI0's deferred frame ends are unobservable: the
+ * same sequence of polled frames (d_analog's pattern, reads in the middle of
+ * a frame, flags cleared before SPIBUF is read, an interrupt enabled before
+ * and during a frame, a word waiting in the TX buffer, an overrun, a reset,
+ * the idle check, reads by events at the frame's end time) gives the same
+ * register values at the same virtual times, the same interrupt line (VCD)
+ * and the same statistics with deferral on as with every frame end an event.
+ */
+#define _XOPEN_SOURCE 700
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "devtest.h"
+#include "host_sim/intc.h"
+#include "host_sim/devices/spi.h"
+#include "text_files_test.h"
+
+#define SPI       HS_SPI0_BASE
+#define SPIGCR0   (SPI + 0x00)
+#define SPIGCR1   (SPI + 0x04)
+#define SPIINT0   (SPI + 0x08)
+#define SPIFLG    (SPI + 0x10)
+#define SPIDAT0   (SPI + 0x38)
+#define SPIBUF    (SPI + 0x40)
+#define SPIEMU    (SPI + 0x44)
+#define RXINTENA  (1U << 8)
+#define RXINTFLG  (1U << 8)
+#define TXFULL    (1U << 29)
+#define RXEMPTY   (1U << 31)
+#define US        1000ULL
+#define MAX_NOTES 256
+
+/* One observation: what was seen, when, and the SPI0 interrupt line then. */
+struct note {
+	const char *what;
+	uint32_t value;
+	uint64_t at;
+	bool irq;
+};
+
+struct run {
+	struct note notes[MAX_NOTES];
+	unsigned count;
+	struct ev3_spi_stats stats;
+	char vcd[65536];
+	uint32_t deferred;
+};
+
+static struct run *cur;
+
+/* Records an observation in the current run. */
+static void note(const char *what, uint32_t value)
+{
+	if (cur->count < MAX_NOTES)
+		cur->notes[cur->count++] = (struct note){ what, value, hs_now(), hs_intc_pending(EV3_SPI0_INTNO) };
+}
+
+/* Configures SPI0 as d_analog does: 16-bit 2 MHz master, interrupts off. */
+static void spi_setup(void)
+{
+	wr32(SPIGCR0, 1);
+	wr32(SPIGCR1, 3);
+	wr32(SPI + 0x14, 0x0E08);
+	wr32(SPI + 0x50, 0x00010010U | (74U << 8));
+	wr32(SPI + 0x48, 0x0A0A0A0A);
+	wr32(SPIINT0, 0);
+	wr32(SPI + 0x4C, 8);
+	wr32(SPIGCR1, 0x01000003);
+}
+
+/* d_analog's transfer: wait for TXFULL to clear, write, poll until RXEMPTY clears. */
+static uint32_t polled_frame(uint16_t word)
+{
+	uint32_t buf;
+
+	while ((buf = rd32(SPIBUF)) & TXFULL)
+		;
+	note("poll tx", buf);
+	wr32(SPIDAT0, word);
+	while ((buf = rd32(SPIBUF)) & RXEMPTY)
+		;
+	note("poll rx", buf);
+	return buf;
+}
+
+static void event_reads_flags(void *arg)
+{
+	note(arg, rd32(SPIFLG));
+}
+
+/* The frame time of the format spi_setup sets: one frame written and polled. */
+static uint64_t frame_length(void)
+{
+	uint64_t t0 = hs_now();
+
+	wr32(SPIDAT0, 0x1840);
+	while (rd32(SPIBUF) & RXEMPTY)
+		;
+	return hs_now() - t0;
+}
+
+/* The sequence, observed; deferral on or off. */
+static void run_sequence(bool defer, struct run *r, const char *vcd_path)
+{
+	uint64_t frame_ns, end;
+
+	cur = r;
+	r->count = 0;
+	hs_spi_defer_private_ends(defer);
+	devtest_boot(11, vcd_path);
+	spi_setup();
+	for (unsigned i = 0; i < 6; i++)
+		polled_frame((uint16_t)(0x1840U | (i << 7)));
+
+	/* reads in the middle of a frame, then the stalling SPIBUF read */
+	wr32(SPIDAT0, 0x1840);
+	hs_sim_run_for(2 * US);
+	note("mid flg", rd32(SPIFLG));
+	note("mid emu", rd32(SPIEMU));
+	note("mid buf", rd32(SPIBUF));
+	note("after buf", rd32(SPIBUF));
+
+	/* the frame ends unobserved; its flag is cleared before SPIBUF is read */
+	wr32(SPIDAT0, 0x18C0);
+	hs_sim_run_for(20 * US);
+	wr32(SPIFLG, RXINTFLG);
+	note("flg after w1c", rd32(SPIFLG));
+	note("buf after w1c", rd32(SPIBUF));
+
+	/* an interrupt-enabled frame, enabled before it starts */
+	wr32(SPIINT0, RXINTENA);
+	wr32(SPIDAT0, 0x1940);
+	hs_sim_run_for(2 * US);
+	note("irq frame mid", rd32(SPIFLG));
+	hs_sim_run_for(20 * US);
+	note("irq frame end", rd32(SPIFLG));
+	note("irq frame buf", rd32(SPIBUF));
+	wr32(SPIINT0, 0);
+
+	/* the interrupt enabled in the middle of a frame: the line rises at its end */
+	wr32(SPIDAT0, 0x19C0);
+	hs_sim_run_for(3 * US);
+	wr32(SPIINT0, RXINTENA);
+	note("enabled mid frame", rd32(SPIINT0));
+	hs_sim_run_for(20 * US);
+	note("line after end", rd32(SPIFLG));
+	note("its buf", rd32(SPIBUF));
+	wr32(SPIINT0, 0);
+
+	/* enabled after an unobserved end: the line rises at the write */
+	wr32(SPIDAT0, 0x1A40);
+	hs_sim_run_for(20 * US);
+	wr32(SPIINT0, RXINTENA);
+	note("enabled after end", rd32(SPIINT0));
+	note("late buf", rd32(SPIBUF));
+	wr32(SPIINT0, 0);
+
+	/* a word waiting in the TX buffer starts at the first one's end */
+	wr32(SPIDAT0, 0x1AC0);
+	wr32(SPIDAT0, 0x1B40);
+	note("txfull buf", rd32(SPIBUF));
+	note("second buf", rd32(SPIBUF));
+	note("drained", rd32(SPIBUF));
+
+	/* an overrun: two frames end with SPIBUF unread */
+	wr32(SPIDAT0, 0x1BC0);
+	hs_sim_run_for(20 * US);
+	wr32(SPIDAT0, 0x1C40);
+	hs_sim_run_for(20 * US);
+	note("ovr flg", rd32(SPIFLG));
+	note("ovr buf", rd32(SPIBUF));
+	wr32(SPIFLG, 0x15F);
+
+	/* the idle check stops at the frame's end */
+	wr32(SPIDAT0, 0x1CC0);
+	note("idle", rtos_host_run_until_idle(1000 * US));
+	note("idle buf", rd32(SPIBUF));
+
+	/* events at the frame's end time, one scheduled before the frame and one after */
+	frame_ns = frame_length();
+	end = hs_now() + frame_ns;
+	hs_sim_at(end, event_reads_flags, "event before frame");
+	wr32(SPIDAT0, 0x1D40);
+	hs_sim_at(end, event_reads_flags, "event after frame");
+	hs_sim_run_for(20 * US);
+	note("buf after events", rd32(SPIBUF));
+
+	/* the run ends exactly at the frame's end */
+	wr32(SPIDAT0, 0x1DC0);
+	hs_sim_run_until(end + frame_ns + 2 * US);
+	note("flg at end", rd32(SPIFLG));
+	rd32(SPIBUF);
+
+	/* a reset after an unobserved end, and the statistics */
+	wr32(SPIDAT0, 0x1E40);
+	hs_sim_run_for(20 * US);
+	wr32(SPIGCR0, 0);
+	note("after reset", rd32(SPIBUF));
+	spi_setup();
+	wr32(SPIDAT0, 0x1EC0);
+	hs_sim_run_for(20 * US);
+	r->stats = *ev3_spi_get_stats();
+	r->deferred = r->stats.deferred_ends;
+	r->stats.deferred_ends = 0;
+	note("stats transfers", r->stats.transfers);
+	if (hs_sim_shutdown() != E_OK)
+		tap_bail_out("shutdown failed");
+	tf_read_text(vcd_path, r->vcd, sizeof(r->vcd));
+}
+
+int main(void)
+{
+	static struct run eager, deferred;
+	char dir[] = "/tmp/test_spi_deferred.XXXXXX", eager_vcd[64], deferred_vcd[64];
+	unsigned same = 0;
+
+	tap_plan(9);
+	if (!mkdtemp(dir))
+		tap_bail_out("mkdtemp failed");
+	snprintf(eager_vcd, sizeof(eager_vcd), "%s/eager.vcd", dir);
+	snprintf(deferred_vcd, sizeof(deferred_vcd), "%s/deferred.vcd", dir);
+	run_sequence(false, &eager, eager_vcd);
+	run_sequence(true, &deferred, deferred_vcd);
+	tf_remove_tree(dir);
+
+	is_int(eager.deferred, 0, "with deferral off every frame end is an event");
+	ok(deferred.deferred >= 10, "with deferral on the polled frames' ends are deferred (%u)", deferred.deferred);
+	is_int(deferred.count, eager.count, "the same number of observations (%u)", eager.count);
+	for (unsigned i = 0; i < eager.count && i < deferred.count; i++) {
+		const struct note *e = &eager.notes[i], *d = &deferred.notes[i];
+
+		if (strcmp(e->what, d->what) == 0 && e->value == d->value && e->at == d->at && e->irq == d->irq) {
+			same++;
+			continue;
+		}
+		tap_diag("%s: eager 0x%08x at %llu irq %d, deferred %s 0x%08x at %llu irq %d", e->what, e->value,
+			 (unsigned long long)e->at, e->irq, d->what, d->value, (unsigned long long)d->at, d->irq);
+	}
+	is_int(same, eager.count, "every observation has the same value, time and interrupt line");
+	ok(memcmp(&eager.stats, &deferred.stats, sizeof(eager.stats)) == 0,
+	   "the same statistics (%u transfers, %u stalls, %u overruns)", eager.stats.transfers,
+	   eager.stats.stalls, eager.stats.rx_overruns);
+	ok(eager.stats.rx_overruns >= 1, "the sequence has an overrun");
+	ok(strstr(eager.vcd, "spi0") != NULL || strstr(eager.vcd, "SPI0") != NULL || eager.vcd[0] != '\0',
+	   "the VCD was written");
+	is_str(deferred.vcd, eager.vcd, "the VCD (interrupt lines and every other signal) is identical");
+	ok(eager.count > 30, "the sequence was observed (%u notes)", eager.count);
+	return tap_done();
+}
