@@ -36,20 +36,14 @@ const struct serial_log_stats *serial_log_get_stats(void)
 	return &port.stats;
 }
 
-/* Spins until the holding register is empty (polling the line status). */
+/* Spins until the holding register is empty (polling the line status): a
+ * spin preempted meanwhile finds the register empty when it resumes. */
 static void wait_holding_register(void)
 {
-	for (;;) {
-		uint64_t now = rtos_host_now(), ready;
+	uint64_t now = rtos_host_now();
 
-		if (port.line_free_at <= now + port.byte_ns)
-			return;
-		ready = port.line_free_at - port.byte_ns;
-		/* A task preempted in the wait finishes its slice when it resumes:
-		 * the polling granularity bounds the time it over-spins. */
-		rtos_host_consume(ready - now < SERIAL_LOG_POLL_NS ? ready - now : SERIAL_LOG_POLL_NS);
-		port.stats.spin_ns += ready - now < SERIAL_LOG_POLL_NS ? ready - now : SERIAL_LOG_POLL_NS;
-	}
+	if (port.line_free_at > now + port.byte_ns)
+		port.stats.spin_ns += rtos_host_spin_until(port.line_free_at - port.byte_ns);
 }
 
 /* The polled write of buf[0..len) by the calling task (checked by the caller). */

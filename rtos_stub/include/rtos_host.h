@@ -59,6 +59,14 @@ uint64_t rtos_host_now(void);
  * masked.  A task preempted meanwhile finishes its time when it runs again. */
 void rtos_host_consume(uint64_t ns);
 
+/* The calling context spins until absolute virtual time t_ns, as a loop that
+ * polls a clock or a status register: events fire meanwhile and, in a task,
+ * higher-priority tasks and interrupts preempt it — and unlike
+ * rtos_host_consume the time it spends preempted counts toward t_ns, so it
+ * never spins past t_ns for having been preempted.  Returns the CPU time the
+ * caller itself spun (0 if t_ns has passed). */
+uint64_t rtos_host_spin_until(uint64_t t_ns);
+
 /* ---- CPU time of service calls and stalled tasks ---- */
 
 /*

@@ -24,9 +24,8 @@
 #define SERIAL_LOG_DEFAULT_BAUD 115200U
 
 /* CPU time of one register access of the polled driver (host_sim's default
- * access cost), and the polling granularity of the busy wait. */
+ * access cost); the busy wait between bytes is rtos_host_spin_until's. */
 #define SERIAL_LOG_ACCESS_NS  50U
-#define SERIAL_LOG_POLL_NS    20000U
 
 /* The DEF_SVC row (INCLUDE it in the application's configuration). */
 extern const struct rtos_cfg serial_log_cfg;

@@ -220,6 +220,48 @@ static __attribute__((noinline)) void consume_slow(uint64_t ns)
 	}
 }
 
+/* The calling context spins until t_ns like a loop polling a clock: time spent
+ * preempted counts toward t_ns.  Returns the CPU time it spun. */
+uint64_t rtos_host_spin_until(uint64_t t_ns)
+{
+	uint64_t spun = 0;
+	bool task_level;
+
+	if (!kernel_booted) {
+		rtos_host_bug("spin", "rtos_host_spin_until before rtos_host_boot");
+		return 0;
+	}
+	task_level = consume_at_task_level();
+	while (now_ns < t_ns) {
+		uint64_t limit = t_ns, next;
+
+		if (task_level) {
+			irq_dispatch_pending();
+			if (kernel_exited)
+				task_leave_for_exit();
+			dispatch_if_needed();
+			if (now_ns >= t_ns)         /* preempted past it: the poll finds it passed */
+				break;
+		}
+		/* Only a task can be suspended: ISRs and the harness share the thread's stack. */
+		if (task_level && run_active && run_deadline < limit)
+			limit = run_deadline > now_ns ? run_deadline : now_ns;
+		next = event_next_time();
+		if (next <= limit) {
+			spun += next - now_ns;
+			now_ns = next;
+			event_run_next();
+			continue;
+		}
+		spun += limit - now_ns;
+		now_ns = limit;
+		event_time_settled();
+		if (now_ns < t_ns)
+			pause_to_harness();
+	}
+	return spun;
+}
+
 /* The calling context is busy for ns of virtual CPU time; events fire meanwhile. */
 void rtos_host_consume(uint64_t ns)
 {
