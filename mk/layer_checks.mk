@@ -2,9 +2,13 @@
 #
 # `make layer-check`: every #include line and every link edge between the
 # layers' objects follows an edge of LAYER_EDGES (mk/layer_check.sh), after
-# a self-test on fake layers proves each kind of violation is caught.
+# a self-test on fake layers proves each kind of violation is caught.  It
+# reads every object below build/host/obj and build/am1808/obj, so it waits
+# for all of them (the library's, the tests', the programs'): in `make test`
+# the builds run in parallel with it, and a half-written object must not be
+# read.
 .PHONY: layer-check
-layer-check: $(LIB_host) $(BUILD)/am1808/libev3lx.a
+layer-check: $(LIB_host) $(addprefix $(BUILD)/host/,$(HOST_PROGRAMS)) tests-host $(BUILD)/am1808/libev3lx.a
 	@bash mk/layer_check_selftest.sh $(abspath $(BUILD))/layer-check-selftest
 	@LAYERS='$(LAYERS)' SUBLAYERS_host_sim='$(SUBLAYERS_host_sim)' \
 		$(foreach l,$(LAYERS),LAYER_EDGES_$(l)='$(LAYER_EDGES_$(l))' HDR_$(l)='$(HDR_$(l))') \

@@ -62,15 +62,34 @@ $(foreach p,$(HOST_PROGRAMS),$(eval $(call host_program_rules,$(p))))
 .PHONY: host-all test-suite
 host-all: $(LIB_host) $(addprefix $(BUILD)/host/,$(HOST_PROGRAMS)) tests-host
 
-# The suite: three prove runs; any failure fails the whole target, but every run is shown.
-test-suite: $(foreach c,$(HOST_CONFIGS),tests-$(c)) $(TEST_SUITE_EXTRA_DEPS)
-	@status=0; \
-	for c in $(HOST_CONFIGS); do \
-		$(MAKE) --no-print-directory prove-$$c || status=1; \
-	done; \
-	for t in $(TEST_SUITE_EXTRA); do \
-		$(MAKE) --no-print-directory $$t || status=1; \
-	done; \
-	if [ $$status = 0 ]; then echo "=== make test: all runs passed ==="; \
-	else echo "=== make test: FAILED ==="; fi; \
-	exit $$status
+# The suite: three prove runs and the checks (TEST_SUITE_EXTRA, appended by
+# the other mk/*.mk, hence read in the recipe: the prerequisite lists of this
+# file are expanded before those files are read).  All of them are the goals
+# of one make, so the builds, the prove runs and the checks share the job
+# slots instead of queueing behind each other: prove-host starts once the
+# host tests are linked while the other configurations still compile, and the
+# kbuild, lint and report checks fill the slots the qemu-arm run leaves.  -k:
+# any failure fails the whole target, but every run is still made and shown;
+# -Otarget: each run's output comes out in one piece, in order of completion.
+# The ARMv5 prove run comes first: it is the longest chain (its build, then
+# the slowest tests).
+TEST_SUITE_RUNS = prove-arm926-test prove-host-san prove-host $(TEST_SUITE_EXTRA)
+
+test-suite:
+	@if $(MAKE) --no-print-directory -k -Otarget $(TEST_SUITE_RUNS) $(TEST_SUITE_EXTRA_DEPS); \
+	then echo "=== make test: all runs passed ==="; \
+	else echo "=== make test: FAILED ==="; exit 1; fi
+
+# Checks kept as stamps (kbuild, bench-quick, report, ...) are remade only when
+# an input changed.  Inputs that are files are prerequisites; what is not a
+# file's time stamp — the set of files (one removed, one added with an old
+# time), a tool's version, a setting — goes into a key file: $(1) holding the
+# text $(2), rewritten only when that text changes, and a prerequisite of the
+# stamp.  The text is computed when make considers the key (it may run tools).
+define key_file_rule
+$(1): FORCE_KEY
+	$$(if $$(shell mkdir -p $$(@D) && echo ok),,$$(error cannot create $$(@D)))
+	$$(file >$$@.tmp,$(2))
+	@cmp -s $$@.tmp $$@ && rm $$@.tmp || mv $$@.tmp $$@
+endef
+.PHONY: FORCE_KEY
