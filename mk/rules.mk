@@ -14,6 +14,15 @@ TEST_SRCS := $(sort $(shell find tests -name 'test_*.c' 2>/dev/null))
 # simulated brick in its own process and virtual time (the qemu-arm runs wait
 # on the emulator's translation as much as on the CPU).
 PROVE_JOBS ?= $(shell echo $$(( $(NPROC) * 2 )))
+# The slowest tests start first, so that a run does not end waiting on one
+# long test: prove keeps each test's time in build/<config>/.prove and orders
+# the next run by it (--state=slow,save; tests added since run too, removed ones
+# are dropped); a first run takes the directories of whole-robot simulations,
+# the longest tests, before the others (each directory's tests as -r finds them).
+PROVE_FIRST := examples ev3sim
+TEST_TOP_DIRS := $(sort $(foreach t,$(TEST_SRCS),$(word 2,$(subst /, ,$(t)))))
+PROVE_DIRS := $(addprefix tests/,$(filter $(PROVE_FIRST),$(TEST_TOP_DIRS)) \
+	$(filter-out $(PROVE_FIRST),$(TEST_TOP_DIRS)))
 
 # $(1) = config
 define host_config_rules
@@ -42,7 +51,7 @@ tests-$(1): $$(TESTS_$(1))
 
 prove-$(1): tests-$(1)
 	@echo "=== prove: $(1) ==="
-	@cd $(BUILD)/$(1) && prove -j$(PROVE_JOBS) --exec '$$(RUN_$(1))' -r tests
+	@cd $(BUILD)/$(1) && prove -j$(PROVE_JOBS) --state=slow,save --exec '$$(RUN_$(1))' -r $(PROVE_DIRS)
 
 -include $$(OBJS_$(1):.o=.d) $$(SUPPORT_OBJS_$(1):.o=.d) $$(patsubst %.c,$(BUILD)/$(1)/obj/%.d,$$(TEST_SRCS))
 endef
