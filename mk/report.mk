@@ -18,17 +18,20 @@ driver_test_objs = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(filter $(addsuffix /%,
 # every driver its compiler read (from the dependency file just written).
 record_driver_hashes = $(if $(filter $(addsuffix /%,$(EV3LX_HACK_DIRS) $(DRIVER_DIRS)),$(2)),$(Q)bash cloc_report/record_driver_hashes.sh $(1))
 
-# The report of the tree's drivers is a file made from its inputs: the files
-# it counts (every C source and header below REPORT_SRC_DIRS; their set is in
-# the key, as are the settings and cloc's version), the scripts, and the
-# builds whose compile-time driver hashes it checks (each compiled hack file
-# records them beside its object, so the libraries and objects below are
-# remade whenever a record is; kbuild's are in its kept summary's directory).
-# It is remade only when one of them changed.  `make report` still writes the
-# report when a build fails (then with the missing hashes); report-check, in
-# `make test`, takes the file as a prerequisite, so the suite's one make
-# builds each input once, in parallel with the other runs.
-REPORT_MD := $(REPORT_DIR)/reuse.md
+# The report of the tree's drivers is kept (REPORT_STAMP beside it) and
+# redone only when one of its inputs changed: the files it counts (every C
+# source and header below REPORT_SRC_DIRS and the driver and hack
+# directories; their set is in the key, as are the settings and cloc's
+# version), the scripts, and the builds whose compile-time driver hashes it
+# checks (each compiled hack file records them beside its object, so the
+# libraries and objects below are remade whenever a record is; kbuild's are
+# in its kept summary's directory).  `make report` still writes the report
+# when a build fails (then with the missing hashes); report-check, in `make
+# test`, takes the stamp as a prerequisite, so the suite's one make builds
+# each input once (kbuild-check's included), in parallel with the other runs.
+# `make report REUSED=...` writes another report in the same place, and
+# removes the stamp.
+REPORT_STAMP := $(REPORT_DIR)/reuse.stamp
 REPORT_BUILDS = $(foreach c,$(HOST_CONFIGS),$(LIB_$(c)) $(call driver_test_objs,$(c))) \
 	$(AM1808_LIB) $(KBUILD_OUT)/summary.txt
 REPORT_SRC_DIRS := linux_compat rtos_stub tests
@@ -41,26 +44,31 @@ $(eval $(call key_file_rule,$(REPORT_KEY),$$(shell cloc --version) $$(EV3LX_HACK
 .PHONY: report report-check
 report: deps-check
 	@if [ -n "$(REUSED)" ]; then \
+		rm -f $(REPORT_STAMP); \
 		bash cloc_report/reuse_report.sh $(REPORT_DIR) "$(REUSED)" "$(GLUE)" "$(SHIM)"; \
 	elif $(MAKE) --no-print-directory $(REPORT_BUILDS) > $(REPORT_DIR).log 2>&1; then \
-		$(MAKE) --no-print-directory $(REPORT_MD); \
+		$(MAKE) --no-print-directory $(REPORT_STAMP) && cat $(REPORT_DIR)/reuse.md; \
 	else \
 		echo "report: note: a build step failed (see $(REPORT_DIR).log); hashes may be missing"; \
+		rm -f $(REPORT_STAMP); \
 		bash cloc_report/reuse_report.sh $(REPORT_DIR); \
 	fi
 	@echo "report: $(REPORT_DIR)/reuse.md, $(REPORT_DIR)/reuse.csv"
 
-$(REPORT_MD): $(REPORT_KEY) $(REPORT_BUILDS) $(REPORT_SRCS) $(wildcard cloc_report/*.sh) mk/report.mk | deps-check
-	@bash cloc_report/reuse_report.sh $(REPORT_DIR)
+$(REPORT_STAMP): $(REPORT_KEY) $(REPORT_BUILDS) $(REPORT_SRCS) $(wildcard cloc_report/*.sh) mk/report.mk | deps-check
+	@rm -f $@
+	@bash cloc_report/reuse_report.sh $(REPORT_DIR) > /dev/null
+	@touch $@
 
 # The checks of the report's counts and of its proof, kept with their output
 # as the report is (their inputs: the report, hence the files it counts, and
 # the scripts).
 report-check: $(REPORT_DIR)/check.txt
+	@cat $(REPORT_DIR)/reuse.md
 	@echo "report: $(REPORT_DIR)/reuse.md, $(REPORT_DIR)/reuse.csv"
 	@cat $<
 
-$(REPORT_DIR)/check.txt: $(REPORT_MD) $(wildcard cloc_report/*.sh)
+$(REPORT_DIR)/check.txt: $(REPORT_STAMP) $(wildcard cloc_report/*.sh)
 	@{ bash cloc_report/check_totals.sh $(REPORT_DIR) && bash cloc_report/check_proof.sh; } > $@.tmp || \
 		{ cat $@.tmp; rm -f $@.tmp; exit 1; }
 	@mv $@.tmp $@
