@@ -131,3 +131,18 @@ else
 Q := @
 quiet = @printf '  %-6s %-12s %s\n'
 endif
+
+# Where the drivers are: the hack files in EV3LX_HACK_DIRS include them by name
+# (#include "any_name.c"), resolved in the hack's directory, then in DRIVER_DIRS.
+# An out-of-tree driver directory (its driver, headers and hack file) is added
+# with EXTRA_DRIVER_DIRS=path (documented in docs/porting.md); kbuild-check,
+# verbatim-check (mk/kbuild.mk) and report (mk/report.mk) then cover it like
+# ev3_drivers/.  Defined here, before the mk/*.mk whose rules list the drivers.
+EV3LX_HACK_DIRS ?= hacks
+EXTRA_DRIVER_DIRS ?=
+# A driver from outside ev3_drivers/, its test as its hack file (docs/porting.md).
+EXAMPLE_DRIVER_DIRS := tests/linux_compat/porting/edge_watch
+DRIVER_DIRS := ev3_drivers $(EXAMPLE_DRIVER_DIRS) $(EXTRA_DRIVER_DIRS)
+# (found once per make, when first needed)
+DRIVER_FILES = $(or $(DRIVER_FILES_FOUND),$(eval DRIVER_FILES_FOUND := $(sort $(shell \
+	bash cloc_report/find_drivers.sh "$(EV3LX_HACK_DIRS)" "$(DRIVER_DIRS)" | cut -d' ' -f2)))$(DRIVER_FILES_FOUND))

@@ -58,6 +58,16 @@ $(EV3RT_RUN_DIR)/gen/kernel_cfg.c: $(wildcard $(APP)/Makefile.inc)
 ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)
 endif
 
+# `ev3sim run DIR` builds DIR's runner with a make of its own (ev3rt-app).
+# Checks that run the same app (ev3sim-audio-check and ev3sim-lcd-check both
+# run examples/hello, in parallel in `make test`) have that runner built
+# first, once, by this target, so that two such makes never write the same
+# files: theirs then find it up to date.  The directory is named as ev3sim
+# names it (its real path).
+.PHONY: ev3sim-runner-hello
+ev3sim-runner-hello: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
+	+$(Q)$(MAKE) -s --no-print-directory APP=$(realpath examples/hello) ev3rt-app
+
 # `make ev3sim-run-check` (in make test): `ev3sim run` builds an app directory
 # and runs it, ending with its summary line: examples/blink, and an app whose
 # Makefile.inc adds a source from another directory (APPL_COBJS, APPL_DIRS,

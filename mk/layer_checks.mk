@@ -3,12 +3,33 @@
 # `make layer-check`: every #include line and every link edge between the
 # layers' objects follows an edge of LAYER_EDGES (mk/layer_check.sh), after
 # a self-test on fake layers proves each kind of violation is caught.
+#
+# It reads every source and header of the layers' directories and every
+# object below build/host/obj and build/am1808/obj, so it waits for all of
+# those objects (the library's, the tests', the programs'): in `make test` the
+# builds run in parallel with it, and a half-written object must not be read.
+# Its result is kept (build/layer-check.txt) and redone only when one of these
+# inputs changed: a source (their set and the layers' settings in the key),
+# an object (through the library, test or program it is built into), the
+# scripts or the layers' definition.
+LAYER_CHECK_OUT := $(BUILD)/layer-check.txt
+LAYER_CHECK_SRCS = $(sort $(shell find $(LAYERS) \( -name '*.c' -o -name '*.h' \) 2>/dev/null))
+LAYER_CHECK_ENV = LAYERS='$(LAYERS)' SUBLAYERS_host_sim='$(SUBLAYERS_host_sim)' \
+	$(foreach l,$(LAYERS),LAYER_EDGES_$(l)='$(LAYER_EDGES_$(l))' HDR_$(l)='$(HDR_$(l))')
+LAYER_CHECK_KEY := $(BUILD)/layer-check.key
+$(eval $(call key_file_rule,$(LAYER_CHECK_KEY),$$(LAYER_CHECK_ENV) $$(LAYER_CHECK_SRCS)))
+
 .PHONY: layer-check
-layer-check: $(LIB_host) $(BUILD)/am1808/libev3lx.a
-	@bash mk/layer_check_selftest.sh $(abspath $(BUILD))/layer-check-selftest
-	@LAYERS='$(LAYERS)' SUBLAYERS_host_sim='$(SUBLAYERS_host_sim)' \
-		$(foreach l,$(LAYERS),LAYER_EDGES_$(l)='$(LAYER_EDGES_$(l))' HDR_$(l)='$(HDR_$(l))') \
-		bash mk/layer_check.sh $(BUILD)/host/obj $(BUILD)/am1808/obj
+layer-check: $(LAYER_CHECK_OUT)
+	@cat $<
+
+$(LAYER_CHECK_OUT): $(LAYER_CHECK_KEY) $(LAYER_CHECK_SRCS) $(LIB_host) $(addprefix $(BUILD)/host/,$(HOST_PROGRAMS)) \
+		$(TESTS_host) $(BUILD)/am1808/libev3lx.a mk/layer_check.sh mk/layer_check_selftest.sh \
+		mk/layers.mk mk/layer_checks.mk
+	@{ bash mk/layer_check_selftest.sh $(abspath $(BUILD))/layer-check-selftest && \
+		$(LAYER_CHECK_ENV) bash mk/layer_check.sh $(BUILD)/host/obj $(BUILD)/am1808/obj; } > $@.tmp || \
+		{ cat $@.tmp; rm -f $@.tmp; exit 1; }
+	@mv $@.tmp $@
 TEST_SUITE_EXTRA += layer-check
 
 # `make header-check`: every public header of every layer

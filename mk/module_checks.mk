@@ -15,6 +15,7 @@ nostdinc_probes = $(if $(filter am1808,$(1)),$(filter-out stdint.h,$(NOSTDINC_PR
 
 .PHONY: nostdinc-check module-check
 nostdinc-check:
+	@mkdir -p $(BUILD)
 	@fail=0; $(foreach c,$(NOSTDINC_CONFIGS),for h in $(call nostdinc_probes,$(c)); do \
 		if printf '#include <%s>\n' "$$h" | $(call compile,$(c),$(NOSTDINC_PROBE_SRC)) -x c -c - -o /dev/null \
 			> $(BUILD)/nostdinc-probe.err 2>&1; then \

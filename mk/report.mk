@@ -3,36 +3,8 @@
 #   make report REUSED="dirs/files" GLUE="dirs/files" [SHIM="dirs/files"]   any port
 REPORT_DIR := $(BUILD)/report
 
-.PHONY: report report-check
-report: deps-check
-	@if [ -n "$(REUSED)" ]; then \
-		bash cloc_report/reuse_report.sh $(REPORT_DIR) "$(REUSED)" "$(GLUE)" "$(SHIM)"; \
-	else \
-		$(MAKE) --no-print-directory $(foreach c,$(HOST_CONFIGS),$(LIB_$(c)) $(call driver_test_objs,$(c))) \
-			$(AM1808_LIB) kbuild-check \
-			> $(REPORT_DIR).log 2>&1 || \
-			echo "report: note: a build step failed (see $(REPORT_DIR).log); hashes may be missing"; \
-		bash cloc_report/reuse_report.sh $(REPORT_DIR); \
-	fi
-	@echo "report: $(REPORT_DIR)/reuse.md, $(REPORT_DIR)/reuse.csv"
+# Where the drivers are (DRIVER_DIRS, DRIVER_FILES): mk/config.mk.
 
-report-check: report
-	@bash cloc_report/check_totals.sh $(REPORT_DIR)
-	@bash cloc_report/check_proof.sh
-
-TEST_SUITE_EXTRA += report-check
-
-# Where the drivers are: the hack files in EV3LX_HACK_DIRS include them by name
-# (#include "any_name.c"), resolved in the hack's directory, then in DRIVER_DIRS.
-# An out-of-tree driver directory (its driver, headers and hack file) is added
-# with EXTRA_DRIVER_DIRS=path (documented in docs/porting.md); kbuild-check,
-# verbatim-check and report then cover it like ev3_drivers/.
-EV3LX_HACK_DIRS ?= hacks
-EXTRA_DRIVER_DIRS ?=
-# A driver from outside ev3_drivers/, its test as its hack file (docs/porting.md).
-EXAMPLE_DRIVER_DIRS := tests/linux_compat/porting/edge_watch
-DRIVER_DIRS := ev3_drivers $(EXAMPLE_DRIVER_DIRS) $(EXTRA_DRIVER_DIRS)
-DRIVER_FILES = $(sort $(shell bash cloc_report/find_drivers.sh "$(EV3LX_HACK_DIRS)" "$(DRIVER_DIRS)" | cut -d' ' -f2))
 # The builds whose compile-time driver hashes the report requires.
 REPORT_CONFIGS := $(HOST_CONFIGS) am1808 kbuild
 export HACK_DIRS = $(EV3LX_HACK_DIRS)
@@ -45,3 +17,60 @@ driver_test_objs = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(filter $(addsuffix /%,
 # The compile rule's hook: after compiling a hack file, record the sha256 of
 # every driver its compiler read (from the dependency file just written).
 record_driver_hashes = $(if $(filter $(addsuffix /%,$(EV3LX_HACK_DIRS) $(DRIVER_DIRS)),$(2)),$(Q)bash cloc_report/record_driver_hashes.sh $(1))
+
+# The report of the tree's drivers is kept (REPORT_STAMP beside it) and
+# redone only when one of its inputs changed: the files it counts (every C
+# source and header below REPORT_SRC_DIRS and the driver and hack
+# directories; their set is in the key, as are the settings and cloc's
+# version), the scripts, and the builds whose compile-time driver hashes it
+# checks (each compiled hack file records them beside its object, so the
+# libraries and objects below are remade whenever a record is; kbuild's are
+# in its kept summary's directory).  `make report` still writes the report
+# when a build fails (then with the missing hashes); report-check, in `make
+# test`, takes the stamp as a prerequisite, so the suite's one make builds
+# each input once (kbuild-check's included), in parallel with the other runs.
+# `make report REUSED=...` writes another report in the same place, and
+# removes the stamp.
+REPORT_STAMP := $(REPORT_DIR)/reuse.stamp
+REPORT_BUILDS = $(foreach c,$(HOST_CONFIGS),$(LIB_$(c)) $(call driver_test_objs,$(c))) \
+	$(AM1808_LIB) $(KBUILD_OUT)/summary.txt
+REPORT_SRC_DIRS := linux_compat rtos_stub tests
+REPORT_SRCS = $(sort $(shell find $(REPORT_SRC_DIRS) $(EV3LX_HACK_DIRS) $(DRIVER_DIRS) -type f \
+	\( -name '*.c' -o -name '*.h' -o -name '*.S' \) 2>/dev/null))
+REPORT_KEY := $(BUILD)/report.key
+$(eval $(call key_file_rule,$(REPORT_KEY),$$(shell cloc --version) $$(EV3LX_HACK_DIRS) $$(DRIVER_DIRS) \
+	$$(REPORT_CONFIGS) $$(REPORT_SRCS)))
+
+.PHONY: report report-check
+report: deps-check
+	@if [ -n "$(REUSED)" ]; then \
+		rm -f $(REPORT_STAMP); \
+		bash cloc_report/reuse_report.sh $(REPORT_DIR) "$(REUSED)" "$(GLUE)" "$(SHIM)"; \
+	elif $(MAKE) --no-print-directory $(REPORT_BUILDS) > $(REPORT_DIR).log 2>&1; then \
+		$(MAKE) --no-print-directory $(REPORT_STAMP) && cat $(REPORT_DIR)/reuse.md; \
+	else \
+		echo "report: note: a build step failed (see $(REPORT_DIR).log); hashes may be missing"; \
+		rm -f $(REPORT_STAMP); \
+		bash cloc_report/reuse_report.sh $(REPORT_DIR); \
+	fi
+	@echo "report: $(REPORT_DIR)/reuse.md, $(REPORT_DIR)/reuse.csv"
+
+$(REPORT_STAMP): $(REPORT_KEY) $(REPORT_BUILDS) $(REPORT_SRCS) $(wildcard cloc_report/*.sh) mk/report.mk | deps-check
+	@rm -f $@
+	@bash cloc_report/reuse_report.sh $(REPORT_DIR) > /dev/null
+	@touch $@
+
+# The checks of the report's counts and of its proof, kept with their output
+# as the report is (their inputs: the report, hence the files it counts, and
+# the scripts).
+report-check: $(REPORT_DIR)/check.txt
+	@cat $(REPORT_DIR)/reuse.md
+	@echo "report: $(REPORT_DIR)/reuse.md, $(REPORT_DIR)/reuse.csv"
+	@cat $<
+
+$(REPORT_DIR)/check.txt: $(REPORT_STAMP) $(wildcard cloc_report/*.sh)
+	@{ bash cloc_report/check_totals.sh $(REPORT_DIR) && bash cloc_report/check_proof.sh; } > $@.tmp || \
+		{ cat $@.tmp; rm -f $@.tmp; exit 1; }
+	@mv $@.tmp $@
+
+TEST_SUITE_EXTRA += report-check

@@ -14,6 +14,15 @@ TEST_SRCS := $(sort $(shell find tests -name 'test_*.c' 2>/dev/null))
 # simulated brick in its own process and virtual time (the qemu-arm runs wait
 # on the emulator's translation as much as on the CPU).
 PROVE_JOBS ?= $(shell echo $$(( $(NPROC) * 2 )))
+# The slowest tests start first, so that a run does not end waiting on one
+# long test: prove keeps each test's time in build/<config>/.prove and orders
+# the next run by it (--state=slow,save; tests added since run too, removed ones
+# are dropped); a first run takes the directories of whole-robot simulations,
+# the longest tests, before the others (each directory's tests as -r finds them).
+PROVE_FIRST := examples ev3sim
+TEST_TOP_DIRS := $(sort $(foreach t,$(TEST_SRCS),$(word 2,$(subst /, ,$(t)))))
+PROVE_DIRS := $(addprefix tests/,$(filter $(PROVE_FIRST),$(TEST_TOP_DIRS)) \
+	$(filter-out $(PROVE_FIRST),$(TEST_TOP_DIRS)))
 
 # $(1) = config
 define host_config_rules
@@ -42,7 +51,7 @@ tests-$(1): $$(TESTS_$(1))
 
 prove-$(1): tests-$(1)
 	@echo "=== prove: $(1) ==="
-	@cd $(BUILD)/$(1) && prove -j$(PROVE_JOBS) --exec '$$(RUN_$(1))' -r tests
+	@cd $(BUILD)/$(1) && prove -j$(PROVE_JOBS) --state=slow,save --exec '$$(RUN_$(1))' -r $(PROVE_DIRS)
 
 -include $$(OBJS_$(1):.o=.d) $$(SUPPORT_OBJS_$(1):.o=.d) $$(patsubst %.c,$(BUILD)/$(1)/obj/%.d,$$(TEST_SRCS))
 endef
@@ -62,15 +71,39 @@ $(foreach p,$(HOST_PROGRAMS),$(eval $(call host_program_rules,$(p))))
 .PHONY: host-all test-suite
 host-all: $(LIB_host) $(addprefix $(BUILD)/host/,$(HOST_PROGRAMS)) tests-host
 
-# The suite: three prove runs; any failure fails the whole target, but every run is shown.
-test-suite: $(foreach c,$(HOST_CONFIGS),tests-$(c)) $(TEST_SUITE_EXTRA_DEPS)
-	@status=0; \
-	for c in $(HOST_CONFIGS); do \
-		$(MAKE) --no-print-directory prove-$$c || status=1; \
-	done; \
-	for t in $(TEST_SUITE_EXTRA); do \
-		$(MAKE) --no-print-directory $$t || status=1; \
-	done; \
-	if [ $$status = 0 ]; then echo "=== make test: all runs passed ==="; \
-	else echo "=== make test: FAILED ==="; fi; \
-	exit $$status
+# The suite: three prove runs and the checks (TEST_SUITE_EXTRA, appended by
+# the other mk/*.mk, hence read in the recipe: the prerequisite lists of this
+# file are expanded before those files are read).  All of them are the goals
+# of one make, so the builds, the prove runs and the checks share the job
+# slots instead of queueing behind each other, and the kbuild, lint and report
+# checks fill the slots the prove runs leave.  -k: any failure fails the whole
+# target, but every run is still made and shown; -Otarget: each run's output
+# comes out in one piece, in order of completion.
+#
+# The ARMv5 tests are built first, by a make of their own: make queues every
+# job it can start in the order it finds them, so in the one make a test whose
+# last prerequisite is done late (the examples' apps, linked into their tests)
+# waits behind every compile of the other configurations, and the qemu-arm
+# prove run, the longest, would start last and end the suite alone.  A failure
+# there is made and reported again by the second make.
+TEST_SUITE_RUNS = prove-arm926-test prove-host-san prove-host $(TEST_SUITE_EXTRA)
+
+test-suite:
+	@$(MAKE) --no-print-directory -k tests-arm926-test || true
+	@if $(MAKE) --no-print-directory -k -Otarget $(TEST_SUITE_RUNS) $(TEST_SUITE_EXTRA_DEPS); \
+	then echo "=== make test: all runs passed ==="; \
+	else echo "=== make test: FAILED ==="; exit 1; fi
+
+# Checks kept as stamps (kbuild, bench-quick, report, ...) are remade only when
+# an input changed.  Inputs that are files are prerequisites; what is not a
+# file's time stamp — the set of files (one removed, one added with an old
+# time), a tool's version, a setting — goes into a key file: $(1) holding the
+# text $(2), rewritten only when that text changes, and a prerequisite of the
+# stamp.  The text is computed when make considers the key (it may run tools).
+define key_file_rule
+$(1): FORCE_KEY
+	$$(if $$(shell mkdir -p $$(@D) && echo ok),,$$(error cannot create $$(@D)))
+	$$(file >$$@.tmp,$(2))
+	@cmp -s $$@.tmp $$@ && rm $$@.tmp || mv $$@.tmp $$@
+endef
+.PHONY: FORCE_KEY

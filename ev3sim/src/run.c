@@ -405,7 +405,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		brick_io_teardown();
 		return E_SYS;
 	}
-	rtos_host_trace_set_sink(trace_sink, NULL);
+	rtos_host_trace_set_source_sink("syslog", trace_sink, NULL);
 	if (o->audio_path)
 		(void)ev3_speaker_record();
 	if (o->quiet)

@@ -214,6 +214,9 @@ const char *rtos_host_boot_args(void);
  * line "<ns> <source> <text>".  Same inputs give byte-identical traces. */
 typedef void (*rtos_host_trace_sink)(const char *line, void *ctx);
 void rtos_host_trace_set_sink(rtos_host_trace_sink sink, void *ctx);
+/* The same for a sink that takes the lines of one source only ("syslog"):
+ * the other lines are not even formatted. */
+void rtos_host_trace_set_source_sink(const char *source, rtos_host_trace_sink sink, void *ctx);
 void rtos_host_trace(const char *source, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
 
