@@ -843,19 +843,21 @@ static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
 	return r;
 }
 
-static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
+/* One accessor read of width bytes at window address addr into *value
+ * (0 after a bug report); returns the access time it costs, unspent. */
+static uint32_t mmio_read_timed(const volatile void *addr, uint_t width, uint32_t *value, void *ctx)
 {
 	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
-	uint32_t off, v = 0;
+	uint32_t off;
 	unsigned lane;
 	struct hs_region *r;
 	struct hs_elem *e;
 
 	(void)ctx;
+	*value = 0;
 	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
-		v = elem_read(slot->r, slot->e, slot->off, slot->lane, width, slot->ctx, slot->logged);
-		access_cost();
-		return v;
+		*value = elem_read(slot->r, slot->e, slot->off, slot->lane, width, slot->ctx, slot->logged);
+		return space.access_ns;
 	}
 	r = window_region((uintptr_t)addr, &off);
 	if (!r) {
@@ -871,13 +873,14 @@ static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
 	e = access_checked(r, off, width, false, 0, &lane);
 	if (e) {
 		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, width);
-		v = elem_read(r, e, off, lane, width, r->cfg.ctx, r->logged);
+		*value = elem_read(r, e, off, lane, width, r->cfg.ctx, r->logged);
 	}
-	access_cost();
-	return v;
+	return space.access_ns;
 }
 
-static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+/* One accessor write of width bytes at window address addr; returns the
+ * access time it costs, unspent. */
+static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
 {
 	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
 	uint32_t off;
@@ -889,20 +892,19 @@ static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *c
 	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
 		elem_write(slot->r, slot->e, slot->off, slot->lane, width, data & width_mask(width), slot->ctx,
 			   slot->logged);
-		access_cost();
-		return;
+		return space.access_ns;
 	}
 	r = window_region((uintptr_t)addr, &off);
 	if (!r) {
 		rtos_host_bug("host_sim", "write of %u bytes (0x%" PRIx32 ") at window address %p (physical 0x%08"
 			      PRIxPTR "): no modelled device there", width, data, (void *)addr,
 			      hs_space_to_phys((uintptr_t)addr));
-		return;
+		return 0;
 	}
 	if (!width_bit(width)) {
 		rtos_host_bug("host_sim", "write of %u bytes at 0x%08" PRIxPTR ": unsupported width", width,
 			      r->cfg.phys + off);
-		return;
+		return 0;
 	}
 	data &= width_mask(width);
 	e = access_checked(r, off, width, true, data, &lane);
@@ -910,7 +912,26 @@ static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *c
 		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, width);
 		elem_write(r, e, off, lane, width, data, r->cfg.ctx, r->logged);
 	}
-	access_cost();
+	return space.access_ns;
+}
+
+/* The untimed read the handler must have: the timed one, then its cost spent. */
+static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
+{
+	uint32_t v, ns = mmio_read_timed(addr, width, &v, ctx);
+
+	if (ns)
+		rtos_host_consume(ns);
+	return v;
+}
+
+/* The untimed write the handler must have: the timed one, then its cost spent. */
+static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+{
+	uint32_t ns = mmio_write_timed(addr, width, data, ctx);
+
+	if (ns)
+		rtos_host_consume(ns);
 }
 
 static void *mmio_map(uintptr_t phys, SIZE size, void *ctx)
@@ -944,6 +965,7 @@ void hs_space_install_handler(void)
 {
 	rtos_host_set_mmio_handler(&space_mmio_ops);
 	rtos_host_set_mmio_window((uintptr_t)space.base, space.base ? (uintptr_t)HS_SPACE_PAGES * HS_PAGE : 0);
+	rtos_host_set_mmio_timed(mmio_read_timed, mmio_write_timed);
 }
 
 void hs_space_remove_handler(void)

@@ -9,6 +9,8 @@
 static const struct rtos_host_mmio_ops *mmio_ops;
 static uintptr_t mmio_window_start;
 static uintptr_t mmio_window_len;     /* 0: ask claims */
+static rtos_host_mmio_read_timed_fn mmio_read_timed;      /* NULL: the handler's read */
+static rtos_host_mmio_write_timed_fn mmio_write_timed;
 
 /* True if the installed handler serves mem. */
 static inline bool mmio_claimed(const struct rtos_host_mmio_ops *ops, const volatile void *mem)
@@ -51,8 +53,28 @@ static inline void access_done(void)
 		pause_to_harness();
 }
 
+/* Spends the time a timed handler returned for an access (inside it, so
+ * never at task level): the common case, no event due before its end, is one
+ * addition, as in rtos_host_consume. */
+static inline void access_spend(uint32_t ns)
+{
+	if (ns == 0)
+		return;
+	if (ns < event_next_time() - now_ns && kernel_booted)
+		now_ns += ns;
+	else
+		rtos_host_consume(ns);
+}
+
+/* True for a width of 1, 2 or 4 that mem is aligned to: one test on the common path. */
+static inline bool width_fast_ok(const volatile void *mem, uint_t width)
+{
+	/* bits 1, 2 and 4 of 0x16 are the allowed widths */
+	return width <= 4U && ((0x16U >> width) & 1U) != 0 && ((uintptr_t)mem & (width - 1U)) == 0;
+}
+
 /* Reports register accesses of a bad width or alignment. */
-static bool width_ok(const char *fn, const volatile void *mem, uint_t width)
+static __attribute__((noinline, cold)) bool width_ok(const char *fn, const volatile void *mem, uint_t width)
 {
 	if (width != 1U && width != 2U && width != 4U) {
 		rtos_host_bug("sil", "%s: access width %u (only 1, 2, 4)", fn, width);
@@ -72,11 +94,14 @@ uint32_t sil_host_read(const volatile void *mem, uint_t width)
 	const struct rtos_host_mmio_ops *ops = mmio_ops;
 	uint32_t v;
 
-	if (!width_ok("sil_host_read", mem, width))
+	if (!width_fast_ok(mem, width) && !width_ok("sil_host_read", mem, width))
 		return 0;
 	if (mmio_claimed(ops, mem)) {
 		cpu.irq_defer++;
-		v = ops->read(mem, width, ops->ctx);
+		if (mmio_read_timed != NULL)
+			access_spend(mmio_read_timed(mem, width, &v, ops->ctx));
+		else
+			v = ops->read(mem, width, ops->ctx);
 		access_done();
 		return v;
 	}
@@ -95,11 +120,14 @@ void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
 {
 	const struct rtos_host_mmio_ops *ops = mmio_ops;
 
-	if (!width_ok("sil_host_write", mem, width))
+	if (!width_fast_ok(mem, width) && !width_ok("sil_host_write", mem, width))
 		return;
 	if (mmio_claimed(ops, mem)) {
 		cpu.irq_defer++;
-		ops->write(mem, width, data, ops->ctx);
+		if (mmio_write_timed != NULL)
+			access_spend(mmio_write_timed(mem, width, data, ops->ctx));
+		else
+			ops->write(mem, width, data, ops->ctx);
 		access_done();
 		return;
 	}
@@ -126,6 +154,8 @@ void rtos_host_set_mmio_handler(const struct rtos_host_mmio_ops *ops)
 	mmio_ops = ops;
 	mmio_window_start = 0;
 	mmio_window_len = 0;
+	mmio_read_timed = NULL;
+	mmio_write_timed = NULL;
 }
 
 /* Routes [start, start + len) to the installed handler without asking claims. */
@@ -141,6 +171,21 @@ void rtos_host_set_mmio_window(uintptr_t start, uintptr_t len)
 	}
 	mmio_window_start = start;
 	mmio_window_len = len;
+}
+
+/* Routes the handler's accesses to read and write, which return their cost. */
+void rtos_host_set_mmio_timed(rtos_host_mmio_read_timed_fn read, rtos_host_mmio_write_timed_fn write)
+{
+	if (mmio_ops == NULL) {
+		rtos_host_bug("sil", "rtos_host_set_mmio_timed without a handler");
+		return;
+	}
+	if ((read == NULL) != (write == NULL)) {
+		rtos_host_bug("sil", "rtos_host_set_mmio_timed: read and write, or neither");
+		return;
+	}
+	mmio_read_timed = read;
+	mmio_write_timed = write;
 }
 
 /* The handler's window for [phys, phys+size), or NULL if none is modelled. */
