@@ -158,10 +158,10 @@ static unsigned width_bit(unsigned width)
 	return width == 1U ? HS_W8 : width == 2U ? HS_W16 : width == 4U ? HS_W32 : 0U;
 }
 
-/* All-ones mask of width bytes. */
-static uint32_t width_mask(unsigned width)
+/* All-ones mask of width bytes (1, 2 or 4): one shift, as it is on every access. */
+static inline uint32_t width_mask(unsigned width)
 {
-	return width >= 4U ? 0xFFFFFFFFU : (1U << (8U * width)) - 1U;
+	return 0xFFFFFFFFU >> ((32U - 8U * width) & 31U);
 }
 
 static bool kind_readable(enum hs_reg_kind k)
@@ -843,58 +843,62 @@ static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
 	return r;
 }
 
-/* One accessor read of width bytes at window address addr into *value
- * (0 after a bug report); returns the access time it costs, unspent. */
-static uint32_t mmio_read_timed(const volatile void *addr, uint_t width, uint32_t *value, void *ctx)
+/* An accessor read's result: the access time it costs, unspent, and the value. */
+static inline uint64_t cost_value(uint32_t ns, uint32_t v)
 {
-	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
+	return (uint64_t)ns << 32 | v;
+}
+
+/* mmio_read_timed when the window cache does not know addr (or its power is off). */
+static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *addr, uint_t width,
+							  struct wcache_slot *slot)
+{
 	uint32_t off;
 	unsigned lane;
-	struct hs_region *r;
+	struct hs_region *r = window_region((uintptr_t)addr, &off);
 	struct hs_elem *e;
+	uint32_t v = 0;
 
-	(void)ctx;
-	*value = 0;
-	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
-		*value = elem_read(slot->r, slot->e, slot->off, slot->lane, width, slot->ctx, slot->logged);
-		return space.access_ns;
-	}
-	r = window_region((uintptr_t)addr, &off);
 	if (!r) {
 		rtos_host_bug("host_sim", "read of %u bytes at window address %p (physical 0x%08" PRIxPTR
 			      "): no modelled device there", width, (const void *)addr, hs_space_to_phys((uintptr_t)addr));
-		return 0;
+		return cost_value(0, 0);
 	}
 	if (!width_bit(width)) {
 		rtos_host_bug("host_sim", "read of %u bytes at 0x%08" PRIxPTR ": unsupported width", width,
 			      r->cfg.phys + off);
-		return 0;
+		return cost_value(0, 0);
 	}
 	e = access_checked(r, off, width, false, 0, &lane);
 	if (e) {
 		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, width);
-		*value = elem_read(r, e, off, lane, width, r->cfg.ctx, r->logged);
+		v = elem_read(r, e, off, lane, width, r->cfg.ctx, r->logged);
 	}
-	return space.access_ns;
+	return cost_value(space.access_ns, v);
 }
 
-/* One accessor write of width bytes at window address addr; returns the
- * access time it costs, unspent. */
-static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+/* One accessor read of width bytes at window address addr: the access time it
+ * costs, unspent, and the value (0 after a bug report); see cost_value. */
+static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *ctx)
 {
-	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
-	uint32_t off;
-	unsigned lane;
-	struct hs_region *r;
-	struct hs_elem *e;
+	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
-		elem_write(slot->r, slot->e, slot->off, slot->lane, width, data & width_mask(width), slot->ctx,
-			   slot->logged);
-		return space.access_ns;
-	}
-	r = window_region((uintptr_t)addr, &off);
+	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live)
+		return cost_value(space.access_ns, elem_read(slot->r, slot->e, slot->off, slot->lane, width,
+							      slot->ctx, slot->logged));
+	return mmio_read_miss(addr, width, slot);
+}
+
+/* mmio_write_timed when the window cache does not know addr (or its power is off). */
+static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, uint_t width, uint32_t data,
+							   struct wcache_slot *slot)
+{
+	uint32_t off;
+	unsigned lane;
+	struct hs_region *r = window_region((uintptr_t)addr, &off);
+	struct hs_elem *e;
+
 	if (!r) {
 		rtos_host_bug("host_sim", "write of %u bytes (0x%" PRIx32 ") at window address %p (physical 0x%08"
 			      PRIxPTR "): no modelled device there", width, data, (void *)addr,
@@ -915,14 +919,29 @@ static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t dat
 	return space.access_ns;
 }
 
+/* One accessor write of width bytes at window address addr; returns the
+ * access time it costs, unspent. */
+static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+{
+	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
+
+	(void)ctx;
+	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
+		elem_write(slot->r, slot->e, slot->off, slot->lane, width, data & width_mask(width), slot->ctx,
+			   slot->logged);
+		return space.access_ns;
+	}
+	return mmio_write_miss(addr, width, data, slot);
+}
+
 /* The untimed read the handler must have: the timed one, then its cost spent. */
 static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
 {
-	uint32_t v, ns = mmio_read_timed(addr, width, &v, ctx);
+	uint64_t cv = mmio_read_timed(addr, width, ctx);
 
-	if (ns)
-		rtos_host_consume(ns);
-	return v;
+	if (cv >> 32)
+		rtos_host_consume(cv >> 32);
+	return (uint32_t)cv;
 }
 
 /* The untimed write the handler must have: the timed one, then its cost spent. */
