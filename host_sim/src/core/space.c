@@ -106,6 +106,7 @@ struct wcache_slot {
 	uint8_t width;
 	uint8_t lane;
 	bool logged;                /* r's */
+	struct hs_access acc;       /* what e's hook is told, built once */
 };
 static struct wcache_slot rd_wcache[HS_WCACHE_SLOTS], wr_wcache[HS_WCACHE_SLOTS];
 
@@ -123,12 +124,18 @@ static void wcache_clear(void)
 	memset(wr_wcache, 0, sizeof(wr_wcache));
 }
 
-/* Remembers that a width-byte access at addr reaches element e (lane lane) of r at off. */
+/* Remembers that access acc at addr reaches element e (lane lane) of r at off. */
 static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, struct hs_region *r, uint32_t off,
-			       struct hs_elem *e, unsigned lane, unsigned width)
+			       struct hs_elem *e, unsigned lane, const struct hs_access *acc)
 {
-	*slot = (struct wcache_slot){ addr, r, e, r->power_live, r->cfg.ctx, off, (uint8_t)width, (uint8_t)lane,
-				      r->logged };
+	*slot = (struct wcache_slot){ addr, r, e, r->power_live, r->cfg.ctx, off, (uint8_t)acc->width, (uint8_t)lane,
+				      r->logged, *acc };
+}
+
+/* What the hooks of element e are told of a width-byte access. */
+static inline struct hs_access elem_access(const struct hs_elem *e, unsigned width, bool write)
+{
+	return (struct hs_access){ e->reg, e->index, e->offset, width, write };
 }
 
 void hs_set_power_controller(const struct hs_power_controller *pc)
@@ -702,14 +709,15 @@ static inline __attribute__((always_inline)) struct hs_elem *access_checked(stru
 	return e;
 }
 
-/* A checked read of element e (of r, at offset off, byte lane lane): hooked and logged. */
+/* A checked read acc of element e (of r, at offset off, byte lane lane): hooked and logged. */
 static inline __attribute__((always_inline)) uint32_t elem_read(struct hs_region *r, struct hs_elem *e, uint32_t off,
-								 unsigned lane, unsigned width, void *ctx, bool logged)
+								 unsigned lane, unsigned width,
+								 const struct hs_access *acc, void *ctx, bool logged)
 {
 	uint32_t v;
 
 	if (e->before_read) {
-		struct hs_access a = { e->reg, e->index, e->offset, width, false };
+		struct hs_access a = *acc;      /* a copy: acc may be a window-cache slot */
 
 		e->before_read(ctx, &a, e->value);
 	}
@@ -727,17 +735,23 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 {
 	unsigned lane;
 	struct hs_elem *e = access_checked(r, off, width, false, 0, &lane);
-	uint32_t v = e ? elem_read(r, e, off, lane, width, r->cfg.ctx, r->logged) : 0U;
+	struct hs_access acc;
+	uint32_t v = 0;
+
+	if (e) {
+		acc = elem_access(e, width, false);
+		v = elem_read(r, e, off, lane, width, &acc, r->cfg.ctx, r->logged);
+	}
 
 	access_cost();
 	return v;
 }
 
-/* A checked write of value (masked to width) to element e (of r, at offset
+/* A checked write acc of value (masked to width) to element e (of r, at offset
  * off, byte lane lane): applied with the register's kind, logged, hooked. */
 static inline __attribute__((always_inline)) void elem_write(struct hs_region *r, struct hs_elem *e, uint32_t off,
-							      unsigned lane, unsigned width, uint32_t value, void *ctx,
-							      bool logged)
+							      unsigned lane, unsigned width, uint32_t value,
+							      const struct hs_access *acc, void *ctx, bool logged)
 {
 	uint32_t old = *e->value;
 	uint32_t bits = e->mask & (width_mask(width) << (8U * lane));
@@ -761,7 +775,7 @@ static inline __attribute__((always_inline)) void elem_write(struct hs_region *r
 	if (logged)
 		reglog(r, e, r->cfg.phys + off, true, width, cpu_value);
 	if (e->after_write) {
-		struct hs_access a = { e->reg, e->index, e->offset, width, true };
+		struct hs_access a = *acc;      /* a copy: acc may be a window-cache slot */
 
 		e->after_write(ctx, &a, old, nv, value);
 	}
@@ -776,8 +790,11 @@ static inline __attribute__((always_inline)) void region_write(struct hs_region 
 	unsigned lane;
 	struct hs_elem *e = access_checked(r, off, width, true, value, &lane);
 
-	if (e)
-		elem_write(r, e, off, lane, width, value, r->cfg.ctx, r->logged);
+	if (e) {
+		struct hs_access acc = elem_access(e, width, true);
+
+		elem_write(r, e, off, lane, width, value, &acc, r->cfg.ctx, r->logged);
+	}
 	access_cost();
 }
 
@@ -871,8 +888,10 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
 	}
 	e = access_checked(r, off, width, false, 0, &lane);
 	if (e) {
-		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, width);
-		v = elem_read(r, e, off, lane, width, r->cfg.ctx, r->logged);
+		struct hs_access acc = elem_access(e, width, false);
+
+		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, &acc);
+		v = elem_read(r, e, off, lane, width, &acc, r->cfg.ctx, r->logged);
 	}
 	return cost_value(space.access_ns, v);
 }
@@ -886,7 +905,7 @@ static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *c
 	(void)ctx;
 	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live)
 		return cost_value(space.access_ns, elem_read(slot->r, slot->e, slot->off, slot->lane, width,
-							      slot->ctx, slot->logged));
+							      &slot->acc, slot->ctx, slot->logged));
 	return mmio_read_miss(addr, width, slot);
 }
 
@@ -913,8 +932,10 @@ static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, u
 	data &= width_mask(width);
 	e = access_checked(r, off, width, true, data, &lane);
 	if (e) {
-		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, width);
-		elem_write(r, e, off, lane, width, data, r->cfg.ctx, r->logged);
+		struct hs_access acc = elem_access(e, width, true);
+
+		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, &acc);
+		elem_write(r, e, off, lane, width, data, &acc, r->cfg.ctx, r->logged);
 	}
 	return space.access_ns;
 }
@@ -927,8 +948,8 @@ static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t dat
 
 	(void)ctx;
 	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
-		elem_write(slot->r, slot->e, slot->off, slot->lane, width, data & width_mask(width), slot->ctx,
-			   slot->logged);
+		elem_write(slot->r, slot->e, slot->off, slot->lane, width, data & width_mask(width), &slot->acc,
+			   slot->ctx, slot->logged);
 		return space.access_ns;
 	}
 	return mmio_write_miss(addr, width, data, slot);
