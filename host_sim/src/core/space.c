@@ -103,12 +103,19 @@ struct wcache_slot {
 	const bool *power_live;     /* r's */
 	void *ctx;                  /* r's hook context */
 	uint32_t off;               /* in r */
+	uint32_t wmask;             /* width_mask(width) */
 	uint8_t width;
 	uint8_t lane;
 	bool logged;                /* r's */
 	struct hs_access acc;       /* what e's hook is told, built once */
 };
 static struct wcache_slot rd_wcache[HS_WCACHE_SLOTS], wr_wcache[HS_WCACHE_SLOTS];
+
+/* All-ones mask of width bytes (1, 2 or 4): one shift, as it is on every access. */
+static inline uint32_t width_mask(unsigned width)
+{
+	return 0xFFFFFFFFU >> ((32U - 8U * width) & 31U);
+}
 
 /* The slot of window address addr in cache c (the page number is mixed in:
  * registers at the same offset in different modules should not collide). */
@@ -128,8 +135,8 @@ static void wcache_clear(void)
 static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, struct hs_region *r, uint32_t off,
 			       struct hs_elem *e, unsigned lane, const struct hs_access *acc)
 {
-	*slot = (struct wcache_slot){ addr, r, e, r->power_live, r->cfg.ctx, off, (uint8_t)acc->width, (uint8_t)lane,
-				      r->logged, *acc };
+	*slot = (struct wcache_slot){ addr, r, e, r->power_live, r->cfg.ctx, off, width_mask(acc->width),
+				      (uint8_t)acc->width, (uint8_t)lane, r->logged, *acc };
 }
 
 /* What the hooks of element e are told of a width-byte access. */
@@ -163,12 +170,6 @@ static const char *const kind_names[] = {
 static unsigned width_bit(unsigned width)
 {
 	return width == 1U ? HS_W8 : width == 2U ? HS_W16 : width == 4U ? HS_W32 : 0U;
-}
-
-/* All-ones mask of width bytes (1, 2 or 4): one shift, as it is on every access. */
-static inline uint32_t width_mask(unsigned width)
-{
-	return 0xFFFFFFFFU >> ((32U - 8U * width) & 31U);
 }
 
 static bool kind_readable(enum hs_reg_kind k)
@@ -711,7 +712,7 @@ static inline __attribute__((always_inline)) struct hs_elem *access_checked(stru
 
 /* A checked read acc of element e (of r, at offset off, byte lane lane): hooked and logged. */
 static inline __attribute__((always_inline)) uint32_t elem_read(struct hs_region *r, struct hs_elem *e, uint32_t off,
-								 unsigned lane, unsigned width,
+								 unsigned lane, unsigned width, uint32_t wmask,
 								 const struct hs_access *acc, void *ctx, bool logged)
 {
 	uint32_t v;
@@ -721,9 +722,9 @@ static inline __attribute__((always_inline)) uint32_t elem_read(struct hs_region
 
 		e->before_read(ctx, &a, e->value);
 	}
-	v = (*e->value >> (8U * lane)) & width_mask(width);
+	v = (*e->value >> (8U * lane)) & wmask;
 	if (e->kind == HS_COR)
-		*e->value &= ~(e->mask & (width_mask(width) << (8U * lane)));
+		*e->value &= ~(e->mask & (wmask << (8U * lane)));
 	if (logged)
 		reglog(r, e, r->cfg.phys + off, false, width, v);
 	return v;
@@ -740,7 +741,7 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 
 	if (e) {
 		acc = elem_access(e, width, false);
-		v = elem_read(r, e, off, lane, width, &acc, r->cfg.ctx, r->logged);
+		v = elem_read(r, e, off, lane, width, width_mask(width), &acc, r->cfg.ctx, r->logged);
 	}
 
 	access_cost();
@@ -750,11 +751,11 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 /* A checked write acc of value (masked to width) to element e (of r, at offset
  * off, byte lane lane): applied with the register's kind, logged, hooked. */
 static inline __attribute__((always_inline)) void elem_write(struct hs_region *r, struct hs_elem *e, uint32_t off,
-							      unsigned lane, unsigned width, uint32_t value,
+							      unsigned lane, unsigned width, uint32_t wmask, uint32_t value,
 							      const struct hs_access *acc, void *ctx, bool logged)
 {
 	uint32_t old = *e->value;
-	uint32_t bits = e->mask & (width_mask(width) << (8U * lane));
+	uint32_t bits = e->mask & (wmask << (8U * lane));
 	uint32_t cpu_value = value;
 	uint32_t nv;
 
@@ -793,7 +794,7 @@ static inline __attribute__((always_inline)) void region_write(struct hs_region 
 	if (e) {
 		struct hs_access acc = elem_access(e, width, true);
 
-		elem_write(r, e, off, lane, width, value, &acc, r->cfg.ctx, r->logged);
+		elem_write(r, e, off, lane, width, width_mask(width), value, &acc, r->cfg.ctx, r->logged);
 	}
 	access_cost();
 }
@@ -891,7 +892,7 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
 		struct hs_access acc = elem_access(e, width, false);
 
 		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, &acc);
-		v = elem_read(r, e, off, lane, width, &acc, r->cfg.ctx, r->logged);
+		v = elem_read(r, e, off, lane, width, width_mask(width), &acc, r->cfg.ctx, r->logged);
 	}
 	return cost_value(space.access_ns, v);
 }
@@ -905,7 +906,7 @@ static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *c
 	(void)ctx;
 	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live)
 		return cost_value(space.access_ns, elem_read(slot->r, slot->e, slot->off, slot->lane, width,
-							      &slot->acc, slot->ctx, slot->logged));
+							      slot->wmask, &slot->acc, slot->ctx, slot->logged));
 	return mmio_read_miss(addr, width, slot);
 }
 
@@ -935,7 +936,7 @@ static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, u
 		struct hs_access acc = elem_access(e, width, true);
 
 		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, &acc);
-		elem_write(r, e, off, lane, width, data, &acc, r->cfg.ctx, r->logged);
+		elem_write(r, e, off, lane, width, width_mask(width), data, &acc, r->cfg.ctx, r->logged);
 	}
 	return space.access_ns;
 }
@@ -948,8 +949,8 @@ static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t dat
 
 	(void)ctx;
 	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
-		elem_write(slot->r, slot->e, slot->off, slot->lane, width, data & width_mask(width), &slot->acc,
-			   slot->ctx, slot->logged);
+		elem_write(slot->r, slot->e, slot->off, slot->lane, width, slot->wmask, data & slot->wmask,
+			   &slot->acc, slot->ctx, slot->logged);
 		return space.access_ns;
 	}
 	return mmio_write_miss(addr, width, data, slot);
