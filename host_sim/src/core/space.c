@@ -95,7 +95,7 @@ static const struct hs_power_controller *power_ctl;
  * width lookups (a chain of dependent loads) but not the power check.
  * Emptied whenever a region is added or freed or the register log changes.
  */
-#define HS_WCACHE_SLOTS 64U     /* a power of two */
+#define HS_WCACHE_SLOTS 128U    /* a power of two */
 struct wcache_slot {
 	uintptr_t addr;             /* window address; 0: empty */
 	struct hs_region *r;
@@ -117,11 +117,15 @@ static inline uint32_t width_mask(unsigned width)
 	return 0xFFFFFFFFU >> ((32U - 8U * width) & 31U);
 }
 
-/* The slot of window address addr in cache c (the page number is mixed in:
- * registers at the same offset in different modules should not collide). */
+#define HS_WCACHE_BITS 7U      /* log2(HS_WCACHE_SLOTS) */
+_Static_assert(HS_WCACHE_SLOTS == 1U << HS_WCACHE_BITS, "HS_WCACHE_BITS is log2(HS_WCACHE_SLOTS)");
+
+/* The slot of window address addr in cache c: a multiplicative hash of its low
+ * 32 bits, whose top bits depend on every address bit (registers at the same
+ * offset in different modules should not collide), in one multiply and shift. */
 static inline struct wcache_slot *wcache_slot(struct wcache_slot *c, uintptr_t addr)
 {
-	return &c[((addr >> 2) ^ (addr >> 8) ^ (addr >> 12)) & (HS_WCACHE_SLOTS - 1U)];
+	return &c[((uint32_t)addr * 0x9E3779B1U) >> (32U - HS_WCACHE_BITS)];
 }
 
 /* Empties both window caches (regions or their log flags changed). */
