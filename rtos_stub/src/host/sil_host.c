@@ -75,7 +75,7 @@ static inline void access_spend(uint32_t ns)
 		rtos_host_consume(ns);
 }
 
-/* True for a width of 1, 2 or 4 that mem is aligned to: one test on the common path. */
+/* True for a width of 1, 2 or 4 that mem is aligned to (width_ok reports the others). */
 static inline bool width_fast_ok(const volatile void *mem, uint_t width)
 {
 	/* bits 1, 2 and 4 of 0x16 are the allowed widths */
