@@ -194,6 +194,16 @@ void rtos_host_set_mmio_handler(const struct rtos_host_mmio_ops *ops);
  * addresses in [start, start + len), so accesses are routed by that range
  * without calling claims (a handler change forgets it). */
 void rtos_host_set_mmio_window(uintptr_t start, uintptr_t len);
+/* The handler's read and write, except that they return the virtual CPU time
+ * the access costs instead of spending it (a read: in the upper 32 bits, the
+ * value read in the lower). */
+typedef uint64_t (*rtos_host_mmio_read_timed_fn)(const volatile void *addr, uint_t width, void *ctx);
+typedef uint32_t (*rtos_host_mmio_write_timed_fn)(volatile void *addr, uint_t width, uint32_t data, void *ctx);
+/* Optional, after rtos_host_set_mmio_handler: accesses the handler serves go
+ * to these instead of its read and write, and the accessor spends the time
+ * they return right after them — without a call when no event falls due
+ * before its end (a handler change forgets them; both or neither). */
+void rtos_host_set_mmio_timed(rtos_host_mmio_read_timed_fn read, rtos_host_mmio_write_timed_fn write);
 /* The window for a physical register range, or NULL if none is modelled. */
 void *rtos_host_map_io(uintptr_t phys, SIZE size);
 

@@ -95,7 +95,7 @@ static const struct hs_power_controller *power_ctl;
  * width lookups (a chain of dependent loads) but not the power check.
  * Emptied whenever a region is added or freed or the register log changes.
  */
-#define HS_WCACHE_SLOTS 64U     /* a power of two */
+#define HS_WCACHE_SLOTS 128U    /* a power of two */
 struct wcache_slot {
 	uintptr_t addr;             /* window address; 0: empty */
 	struct hs_region *r;
@@ -103,17 +103,29 @@ struct wcache_slot {
 	const bool *power_live;     /* r's */
 	void *ctx;                  /* r's hook context */
 	uint32_t off;               /* in r */
+	uint32_t wmask;             /* width_mask(width) */
 	uint8_t width;
 	uint8_t lane;
 	bool logged;                /* r's */
+	struct hs_access acc;       /* what e's hook is told, built once */
 };
 static struct wcache_slot rd_wcache[HS_WCACHE_SLOTS], wr_wcache[HS_WCACHE_SLOTS];
 
-/* The slot of window address addr in cache c (the page number is mixed in:
- * registers at the same offset in different modules should not collide). */
+/* All-ones mask of width bytes (1, 2 or 4): one shift, as it is on every access. */
+static inline uint32_t width_mask(unsigned width)
+{
+	return 0xFFFFFFFFU >> ((32U - 8U * width) & 31U);
+}
+
+#define HS_WCACHE_BITS 7U      /* log2(HS_WCACHE_SLOTS) */
+_Static_assert(HS_WCACHE_SLOTS == 1U << HS_WCACHE_BITS, "HS_WCACHE_BITS is log2(HS_WCACHE_SLOTS)");
+
+/* The slot of window address addr in cache c: a multiplicative hash of its low
+ * 32 bits, whose top bits depend on every address bit (registers at the same
+ * offset in different modules should not collide), in one multiply and shift. */
 static inline struct wcache_slot *wcache_slot(struct wcache_slot *c, uintptr_t addr)
 {
-	return &c[((addr >> 2) ^ (addr >> 8) ^ (addr >> 12)) & (HS_WCACHE_SLOTS - 1U)];
+	return &c[((uint32_t)addr * 0x9E3779B1U) >> (32U - HS_WCACHE_BITS)];
 }
 
 /* Empties both window caches (regions or their log flags changed). */
@@ -123,12 +135,18 @@ static void wcache_clear(void)
 	memset(wr_wcache, 0, sizeof(wr_wcache));
 }
 
-/* Remembers that a width-byte access at addr reaches element e (lane lane) of r at off. */
+/* Remembers that access acc at addr reaches element e (lane lane) of r at off. */
 static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, struct hs_region *r, uint32_t off,
-			       struct hs_elem *e, unsigned lane, unsigned width)
+			       struct hs_elem *e, unsigned lane, const struct hs_access *acc)
 {
-	*slot = (struct wcache_slot){ addr, r, e, r->power_live, r->cfg.ctx, off, (uint8_t)width, (uint8_t)lane,
-				      r->logged };
+	*slot = (struct wcache_slot){ addr, r, e, r->power_live, r->cfg.ctx, off, width_mask(acc->width),
+				      (uint8_t)acc->width, (uint8_t)lane, r->logged, *acc };
+}
+
+/* What the hooks of element e are told of a width-byte access. */
+static inline struct hs_access elem_access(const struct hs_elem *e, unsigned width, bool write)
+{
+	return (struct hs_access){ e->reg, e->index, e->offset, width, write };
 }
 
 void hs_set_power_controller(const struct hs_power_controller *pc)
@@ -156,12 +174,6 @@ static const char *const kind_names[] = {
 static unsigned width_bit(unsigned width)
 {
 	return width == 1U ? HS_W8 : width == 2U ? HS_W16 : width == 4U ? HS_W32 : 0U;
-}
-
-/* All-ones mask of width bytes. */
-static uint32_t width_mask(unsigned width)
-{
-	return width >= 4U ? 0xFFFFFFFFU : (1U << (8U * width)) - 1U;
 }
 
 static bool kind_readable(enum hs_reg_kind k)
@@ -702,20 +714,21 @@ static inline __attribute__((always_inline)) struct hs_elem *access_checked(stru
 	return e;
 }
 
-/* A checked read of element e (of r, at offset off, byte lane lane): hooked and logged. */
+/* A checked read acc of element e (of r, at offset off, byte lane lane): hooked and logged. */
 static inline __attribute__((always_inline)) uint32_t elem_read(struct hs_region *r, struct hs_elem *e, uint32_t off,
-								 unsigned lane, unsigned width, void *ctx, bool logged)
+								 unsigned lane, unsigned width, uint32_t wmask,
+								 const struct hs_access *acc, void *ctx, bool logged)
 {
 	uint32_t v;
 
 	if (e->before_read) {
-		struct hs_access a = { e->reg, e->index, e->offset, width, false };
+		struct hs_access a = *acc;      /* a copy: acc may be a window-cache slot */
 
 		e->before_read(ctx, &a, e->value);
 	}
-	v = (*e->value >> (8U * lane)) & width_mask(width);
+	v = (*e->value >> (8U * lane)) & wmask;
 	if (e->kind == HS_COR)
-		*e->value &= ~(e->mask & (width_mask(width) << (8U * lane)));
+		*e->value &= ~(e->mask & (wmask << (8U * lane)));
 	if (logged)
 		reglog(r, e, r->cfg.phys + off, false, width, v);
 	return v;
@@ -727,20 +740,26 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 {
 	unsigned lane;
 	struct hs_elem *e = access_checked(r, off, width, false, 0, &lane);
-	uint32_t v = e ? elem_read(r, e, off, lane, width, r->cfg.ctx, r->logged) : 0U;
+	struct hs_access acc;
+	uint32_t v = 0;
+
+	if (e) {
+		acc = elem_access(e, width, false);
+		v = elem_read(r, e, off, lane, width, width_mask(width), &acc, r->cfg.ctx, r->logged);
+	}
 
 	access_cost();
 	return v;
 }
 
-/* A checked write of value (masked to width) to element e (of r, at offset
+/* A checked write acc of value (masked to width) to element e (of r, at offset
  * off, byte lane lane): applied with the register's kind, logged, hooked. */
 static inline __attribute__((always_inline)) void elem_write(struct hs_region *r, struct hs_elem *e, uint32_t off,
-							      unsigned lane, unsigned width, uint32_t value, void *ctx,
-							      bool logged)
+							      unsigned lane, unsigned width, uint32_t wmask, uint32_t value,
+							      const struct hs_access *acc, void *ctx, bool logged)
 {
 	uint32_t old = *e->value;
-	uint32_t bits = e->mask & (width_mask(width) << (8U * lane));
+	uint32_t bits = e->mask & (wmask << (8U * lane));
 	uint32_t cpu_value = value;
 	uint32_t nv;
 
@@ -761,7 +780,7 @@ static inline __attribute__((always_inline)) void elem_write(struct hs_region *r
 	if (logged)
 		reglog(r, e, r->cfg.phys + off, true, width, cpu_value);
 	if (e->after_write) {
-		struct hs_access a = { e->reg, e->index, e->offset, width, true };
+		struct hs_access a = *acc;      /* a copy: acc may be a window-cache slot */
 
 		e->after_write(ctx, &a, old, nv, value);
 	}
@@ -776,8 +795,11 @@ static inline __attribute__((always_inline)) void region_write(struct hs_region 
 	unsigned lane;
 	struct hs_elem *e = access_checked(r, off, width, true, value, &lane);
 
-	if (e)
-		elem_write(r, e, off, lane, width, value, r->cfg.ctx, r->logged);
+	if (e) {
+		struct hs_access acc = elem_access(e, width, true);
+
+		elem_write(r, e, off, lane, width, width_mask(width), value, &acc, r->cfg.ctx, r->logged);
+	}
 	access_cost();
 }
 
@@ -843,74 +865,118 @@ static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
 	return r;
 }
 
-static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
+/* An accessor read's result: the access time it costs, unspent, and the value. */
+static inline uint64_t cost_value(uint32_t ns, uint32_t v)
 {
-	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
-	uint32_t off, v = 0;
-	unsigned lane;
-	struct hs_region *r;
-	struct hs_elem *e;
+	return (uint64_t)ns << 32 | v;
+}
 
-	(void)ctx;
-	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
-		v = elem_read(slot->r, slot->e, slot->off, slot->lane, width, slot->ctx, slot->logged);
-		access_cost();
-		return v;
-	}
-	r = window_region((uintptr_t)addr, &off);
+/* mmio_read_timed when the window cache does not know addr (or its power is off). */
+static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *addr, uint_t width,
+							  struct wcache_slot *slot)
+{
+	uint32_t off;
+	unsigned lane;
+	struct hs_region *r = window_region((uintptr_t)addr, &off);
+	struct hs_elem *e;
+	uint32_t v = 0;
+
 	if (!r) {
 		rtos_host_bug("host_sim", "read of %u bytes at window address %p (physical 0x%08" PRIxPTR
 			      "): no modelled device there", width, (const void *)addr, hs_space_to_phys((uintptr_t)addr));
-		return 0;
+		return cost_value(0, 0);
 	}
 	if (!width_bit(width)) {
 		rtos_host_bug("host_sim", "read of %u bytes at 0x%08" PRIxPTR ": unsupported width", width,
 			      r->cfg.phys + off);
-		return 0;
+		return cost_value(0, 0);
 	}
 	e = access_checked(r, off, width, false, 0, &lane);
 	if (e) {
-		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, width);
-		v = elem_read(r, e, off, lane, width, r->cfg.ctx, r->logged);
+		struct hs_access acc = elem_access(e, width, false);
+
+		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, &acc);
+		v = elem_read(r, e, off, lane, width, width_mask(width), &acc, r->cfg.ctx, r->logged);
 	}
-	access_cost();
-	return v;
+	return cost_value(space.access_ns, v);
 }
 
-static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+/* One accessor read of width bytes at window address addr: the access time it
+ * costs, unspent, and the value (0 after a bug report); see cost_value. */
+static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *ctx)
 {
-	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
-	uint32_t off;
-	unsigned lane;
-	struct hs_region *r;
-	struct hs_elem *e;
+	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
-		elem_write(slot->r, slot->e, slot->off, slot->lane, width, data & width_mask(width), slot->ctx,
-			   slot->logged);
-		access_cost();
-		return;
-	}
-	r = window_region((uintptr_t)addr, &off);
+	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live)
+		return cost_value(space.access_ns, elem_read(slot->r, slot->e, slot->off, slot->lane, width,
+							      slot->wmask, &slot->acc, slot->ctx, slot->logged));
+	return mmio_read_miss(addr, width, slot);
+}
+
+/* mmio_write_timed when the window cache does not know addr (or its power is off). */
+static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, uint_t width, uint32_t data,
+							   struct wcache_slot *slot)
+{
+	uint32_t off;
+	unsigned lane;
+	struct hs_region *r = window_region((uintptr_t)addr, &off);
+	struct hs_elem *e;
+
 	if (!r) {
 		rtos_host_bug("host_sim", "write of %u bytes (0x%" PRIx32 ") at window address %p (physical 0x%08"
 			      PRIxPTR "): no modelled device there", width, data, (void *)addr,
 			      hs_space_to_phys((uintptr_t)addr));
-		return;
+		return 0;
 	}
 	if (!width_bit(width)) {
 		rtos_host_bug("host_sim", "write of %u bytes at 0x%08" PRIxPTR ": unsupported width", width,
 			      r->cfg.phys + off);
-		return;
+		return 0;
 	}
 	data &= width_mask(width);
 	e = access_checked(r, off, width, true, data, &lane);
 	if (e) {
-		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, width);
-		elem_write(r, e, off, lane, width, data, r->cfg.ctx, r->logged);
+		struct hs_access acc = elem_access(e, width, true);
+
+		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, &acc);
+		elem_write(r, e, off, lane, width, width_mask(width), data, &acc, r->cfg.ctx, r->logged);
 	}
-	access_cost();
+	return space.access_ns;
+}
+
+/* One accessor write of width bytes at window address addr; returns the
+ * access time it costs, unspent. */
+static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+{
+	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
+
+	(void)ctx;
+	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
+		elem_write(slot->r, slot->e, slot->off, slot->lane, width, slot->wmask, data & slot->wmask,
+			   &slot->acc, slot->ctx, slot->logged);
+		return space.access_ns;
+	}
+	return mmio_write_miss(addr, width, data, slot);
+}
+
+/* The untimed read the handler must have: the timed one, then its cost spent. */
+static uint32_t mmio_read(const volatile void *addr, uint_t width, void *ctx)
+{
+	uint64_t cv = mmio_read_timed(addr, width, ctx);
+
+	if (cv >> 32)
+		rtos_host_consume(cv >> 32);
+	return (uint32_t)cv;
+}
+
+/* The untimed write the handler must have: the timed one, then its cost spent. */
+static void mmio_write(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+{
+	uint32_t ns = mmio_write_timed(addr, width, data, ctx);
+
+	if (ns)
+		rtos_host_consume(ns);
 }
 
 static void *mmio_map(uintptr_t phys, SIZE size, void *ctx)
@@ -944,6 +1010,7 @@ void hs_space_install_handler(void)
 {
 	rtos_host_set_mmio_handler(&space_mmio_ops);
 	rtos_host_set_mmio_window((uintptr_t)space.base, space.base ? (uintptr_t)HS_SPACE_PAGES * HS_PAGE : 0);
+	rtos_host_set_mmio_timed(mmio_read_timed, mmio_write_timed);
 }
 
 void hs_space_remove_handler(void)

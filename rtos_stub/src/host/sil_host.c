@@ -9,6 +9,17 @@
 static const struct rtos_host_mmio_ops *mmio_ops;
 static uintptr_t mmio_window_start;
 static uintptr_t mmio_window_len;     /* 0: ask claims */
+static rtos_host_mmio_read_timed_fn mmio_read_timed;      /* NULL: the handler's read */
+static rtos_host_mmio_write_timed_fn mmio_write_timed;
+/* The common case in one place: the window, when the handler has a timed pair
+ * (len 0 otherwise), so that an access tests one range and makes one call. */
+static struct {
+	uintptr_t start;
+	uintptr_t len;
+	rtos_host_mmio_read_timed_fn read;
+	rtos_host_mmio_write_timed_fn write;
+	void *ctx;
+} timed_win;
 
 /* True if the installed handler serves mem. */
 static inline bool mmio_claimed(const struct rtos_host_mmio_ops *ops, const volatile void *mem)
@@ -51,8 +62,28 @@ static inline void access_done(void)
 		pause_to_harness();
 }
 
+/* Spends the time a timed handler returned for an access (inside it, so
+ * never at task level): the common case, no event due before its end, is one
+ * addition, as in rtos_host_consume. */
+static inline void access_spend(uint32_t ns)
+{
+	/* ns == 0 takes the first branch unless an event is due now: adding
+	 * nothing is harmless, and only a call for nothing must be avoided. */
+	if (ns < event_next_time() - now_ns && kernel_booted)
+		now_ns += ns;
+	else if (ns != 0)
+		rtos_host_consume(ns);
+}
+
+/* True for a width of 1, 2 or 4 that mem is aligned to (width_ok reports the others). */
+static inline bool width_fast_ok(const volatile void *mem, uint_t width)
+{
+	/* bits 1, 2 and 4 of 0x16 are the allowed widths */
+	return width <= 4U && ((0x16U >> width) & 1U) != 0 && ((uintptr_t)mem & (width - 1U)) == 0;
+}
+
 /* Reports register accesses of a bad width or alignment. */
-static bool width_ok(const char *fn, const volatile void *mem, uint_t width)
+static __attribute__((noinline, cold)) bool width_ok(const char *fn, const volatile void *mem, uint_t width)
 {
 	if (width != 1U && width != 2U && width != 4U) {
 		rtos_host_bug("sil", "%s: access width %u (only 1, 2, 4)", fn, width);
@@ -66,17 +97,21 @@ static bool width_ok(const char *fn, const volatile void *mem, uint_t width)
 	return true;
 }
 
-/* Reads a register of exact width: from the MMIO handler if it claims the address, else memory. */
-uint32_t sil_host_read(const volatile void *mem, uint_t width)
+/* sil_host_read outside the timed window: the handler if it claims mem, else memory. */
+static __attribute__((noinline)) uint32_t read_other(const volatile void *mem, uint_t width)
 {
 	const struct rtos_host_mmio_ops *ops = mmio_ops;
 	uint32_t v;
 
-	if (!width_ok("sil_host_read", mem, width))
-		return 0;
 	if (mmio_claimed(ops, mem)) {
 		cpu.irq_defer++;
-		v = ops->read(mem, width, ops->ctx);
+		if (mmio_read_timed != NULL) {
+			uint64_t cost_value = mmio_read_timed(mem, width, ops->ctx);
+
+			v = (uint32_t)cost_value;
+			access_spend((uint32_t)(cost_value >> 32));
+		} else
+			v = ops->read(mem, width, ops->ctx);
 		access_done();
 		return v;
 	}
@@ -90,16 +125,33 @@ uint32_t sil_host_read(const volatile void *mem, uint_t width)
 	}
 }
 
-/* Writes a register of exact width: to the MMIO handler if it claims the address, else memory. */
-void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
+/* Reads a register of exact width: from the MMIO handler if it claims the address, else memory. */
+uint32_t sil_host_read(const volatile void *mem, uint_t width)
+{
+	uint64_t cost_value;
+
+	if (!width_fast_ok(mem, width) && !width_ok("sil_host_read", mem, width))
+		return 0;
+	if ((uintptr_t)mem - timed_win.start >= timed_win.len)
+		return read_other(mem, width);
+	cpu.irq_defer++;
+	cost_value = timed_win.read(mem, width, timed_win.ctx);
+	access_spend((uint32_t)(cost_value >> 32));
+	access_done();
+	return (uint32_t)cost_value;
+}
+
+/* sil_host_write outside the timed window: to the handler if it claims mem, else memory. */
+static __attribute__((noinline)) void write_other(volatile void *mem, uint_t width, uint32_t data)
 {
 	const struct rtos_host_mmio_ops *ops = mmio_ops;
 
-	if (!width_ok("sil_host_write", mem, width))
-		return;
 	if (mmio_claimed(ops, mem)) {
 		cpu.irq_defer++;
-		ops->write(mem, width, data, ops->ctx);
+		if (mmio_write_timed != NULL)
+			access_spend(mmio_write_timed(mem, width, data, ops->ctx));
+		else
+			ops->write(mem, width, data, ops->ctx);
 		access_done();
 		return;
 	}
@@ -116,6 +168,32 @@ void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
 	}
 }
 
+/* Writes a register of exact width: to the MMIO handler if it claims the address, else memory. */
+void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
+{
+	if (!width_fast_ok(mem, width) && !width_ok("sil_host_write", mem, width))
+		return;
+	if ((uintptr_t)mem - timed_win.start >= timed_win.len) {
+		write_other(mem, width, data);
+		return;
+	}
+	cpu.irq_defer++;
+	access_spend(timed_win.write(mem, width, data, timed_win.ctx));
+	access_done();
+}
+
+/* Recomputes timed_win from the handler, its window and its timed pair. */
+static void timed_win_update(void)
+{
+	bool on = mmio_ops != NULL && mmio_window_len != 0 && mmio_read_timed != NULL;
+
+	timed_win.start = on ? mmio_window_start : 0;
+	timed_win.len = on ? mmio_window_len : 0;
+	timed_win.read = mmio_read_timed;
+	timed_win.write = mmio_write_timed;
+	timed_win.ctx = on ? mmio_ops->ctx : NULL;
+}
+
 /* Installs the MMIO handler (NULL: plain memory, no device windows). */
 void rtos_host_set_mmio_handler(const struct rtos_host_mmio_ops *ops)
 {
@@ -126,6 +204,9 @@ void rtos_host_set_mmio_handler(const struct rtos_host_mmio_ops *ops)
 	mmio_ops = ops;
 	mmio_window_start = 0;
 	mmio_window_len = 0;
+	mmio_read_timed = NULL;
+	mmio_write_timed = NULL;
+	timed_win_update();
 }
 
 /* Routes [start, start + len) to the installed handler without asking claims. */
@@ -141,6 +222,23 @@ void rtos_host_set_mmio_window(uintptr_t start, uintptr_t len)
 	}
 	mmio_window_start = start;
 	mmio_window_len = len;
+	timed_win_update();
+}
+
+/* Routes the handler's accesses to read and write, which return their cost. */
+void rtos_host_set_mmio_timed(rtos_host_mmio_read_timed_fn read, rtos_host_mmio_write_timed_fn write)
+{
+	if (mmio_ops == NULL) {
+		rtos_host_bug("sil", "rtos_host_set_mmio_timed without a handler");
+		return;
+	}
+	if ((read == NULL) != (write == NULL)) {
+		rtos_host_bug("sil", "rtos_host_set_mmio_timed: read and write, or neither");
+		return;
+	}
+	mmio_read_timed = read;
+	mmio_write_timed = write;
+	timed_win_update();
 }
 
 /* The handler's window for [phys, phys+size), or NULL if none is modelled. */
