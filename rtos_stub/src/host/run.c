@@ -181,18 +181,29 @@ static inline bool consume_at_task_level(void)
 	return cpu.kind == EXEC_TASK && cpu.isr_depth == 0 && cpu.irq_defer == 0;
 }
 
-/* rtos_host_consume when an event falls due, a task consumes, or before boot. */
-static __attribute__((noinline)) void consume_slow(uint64_t ns)
+/* True while the clock is before until; UINT64_MAX is "no bound" and, a
+ * constant after inlining, costs consume's loop no compare. */
+static inline __attribute__((always_inline)) bool before_until(uint64_t until)
 {
-	uint64_t remaining = ns;
-	bool task_level;
+	return until == UINT64_MAX || now_ns < until;
+}
 
-	if (!kernel_booted) {
-		rtos_host_bug("consume", "rtos_host_consume before rtos_host_boot");
-		return;
-	}
-	task_level = consume_at_task_level();
-	while (remaining > 0) {
+/*
+ * The busy loop under rtos_host_consume and rtos_host_spin_until: the caller
+ * runs until it has spun cpu_ns of its own time or the clock reaches until,
+ * whichever comes first.  Events fire meanwhile; at task level interrupts
+ * and higher-priority tasks preempt it — their time counts toward until,
+ * not toward cpu_ns — and it is suspended to the harness at the run's
+ * deadline.  Returns the CPU time spun.  Inlined into each caller, so that
+ * the bound a caller does not use folds away (consume is on every service
+ * call's path).
+ */
+static inline __attribute__((always_inline)) uint64_t busy_loop(uint64_t cpu_ns, uint64_t until)
+{
+	uint64_t remaining = cpu_ns;
+	bool task_level = consume_at_task_level();
+
+	while (remaining > 0 && before_until(until)) {
 		uint64_t limit, next;
 
 		if (task_level) {
@@ -200,8 +211,12 @@ static __attribute__((noinline)) void consume_slow(uint64_t ns)
 			if (kernel_exited)
 				task_leave_for_exit();
 			dispatch_if_needed();
+			if (!before_until(until))   /* preempted past it: the poll finds it passed */
+				break;
 		}
 		limit = remaining > UINT64_MAX - now_ns ? UINT64_MAX : now_ns + remaining;
+		if (until < limit)
+			limit = until;
 		/* Only a task can be suspended: ISRs and the harness share the thread's stack. */
 		if (task_level && run_active && run_deadline < limit)
 			limit = run_deadline > now_ns ? run_deadline : now_ns;
@@ -215,51 +230,31 @@ static __attribute__((noinline)) void consume_slow(uint64_t ns)
 		remaining -= limit - now_ns;
 		now_ns = limit;
 		event_time_settled();
-		if (remaining > 0)
+		if (remaining > 0 && before_until(until))
 			pause_to_harness();
 	}
+	return cpu_ns - remaining;
+}
+
+/* rtos_host_consume when an event falls due, a task consumes, or before boot. */
+static __attribute__((noinline)) void consume_slow(uint64_t ns)
+{
+	if (!kernel_booted) {
+		rtos_host_bug("consume", "rtos_host_consume before rtos_host_boot");
+		return;
+	}
+	busy_loop(ns, UINT64_MAX);
 }
 
 /* The calling context spins until t_ns like a loop polling a clock: time spent
  * preempted counts toward t_ns.  Returns the CPU time it spun. */
 uint64_t rtos_host_spin_until(uint64_t t_ns)
 {
-	uint64_t spun = 0;
-	bool task_level;
-
 	if (!kernel_booted) {
 		rtos_host_bug("spin", "rtos_host_spin_until before rtos_host_boot");
 		return 0;
 	}
-	task_level = consume_at_task_level();
-	while (now_ns < t_ns) {
-		uint64_t limit = t_ns, next;
-
-		if (task_level) {
-			irq_dispatch_pending();
-			if (kernel_exited)
-				task_leave_for_exit();
-			dispatch_if_needed();
-			if (now_ns >= t_ns)         /* preempted past it: the poll finds it passed */
-				break;
-		}
-		/* Only a task can be suspended: ISRs and the harness share the thread's stack. */
-		if (task_level && run_active && run_deadline < limit)
-			limit = run_deadline > now_ns ? run_deadline : now_ns;
-		next = event_next_time();
-		if (next <= limit) {
-			spun += next - now_ns;
-			now_ns = next;
-			event_run_next();
-			continue;
-		}
-		spun += limit - now_ns;
-		now_ns = limit;
-		event_time_settled();
-		if (now_ns < t_ns)
-			pause_to_harness();
-	}
-	return spun;
+	return busy_loop(UINT64_MAX, t_ns);
 }
 
 /* The calling context is busy for ns of virtual CPU time; events fire meanwhile. */
