@@ -285,6 +285,12 @@ static inline __attribute__((always_inline)) void ev_claim(uint32_t idx, uint64_
 		event_head_time = t_ns;
 }
 
+/* The handle of queued event idx: its generation and index, never 0. */
+static inline rtos_host_event_t ev_handle(uint32_t idx)
+{
+	return ((rtos_host_event_t)ev_pool[idx].gen << 32) | (idx + 1U);
+}
+
 /* Schedules fn(arg) at t_ns; a time in the past is a bug and runs now. */
 static inline __attribute__((always_inline)) rtos_host_event_t ev_schedule(uint64_t t_ns, rtos_host_event_fn fn,
 									    void *arg, bool kernel)
@@ -314,7 +320,7 @@ static inline __attribute__((always_inline)) rtos_host_event_t ev_schedule(uint6
 	}
 	ev_seq++;
 	ev_claim(idx, t_ns, fn, arg, kernel);
-	return ((rtos_host_event_t)ev->gen << 32) | (idx + 1U);
+	return ev_handle(idx);
 }
 
 /* Schedules fn(arg) at absolute virtual time t_ns; same-time events run in order. */
@@ -405,7 +411,7 @@ rtos_host_event_t rtos_host_deferred_queue(struct rtos_host_deferred *d)
 		return 0;
 	}
 	ev_claim(idx, t_ns, d->fn, d->arg, false);
-	return ((rtos_host_event_t)ev_pool[idx].gen << 32) | (idx + 1U);
+	return ev_handle(idx);
 }
 
 /* Number of scheduled device (non-kernel) events, after every deferred one
