@@ -101,17 +101,24 @@ static void test_temperature(void)
 		is_int((int16_t)((uint8_t)v[0] | (uint8_t)v[1] << 8), (int)(21.75 * 256), "raw int16 / 256 = 21.75 C");
 }
 
+/* An IIC_SETUP request on port 1: write register reg to address 0x01, then
+ * read 8 bytes (rd_lng < 0: in bus order). */
+static void read8_request(struct lms_iic_dat *d, uint8_t reg)
+{
+	memset(d, 0, sizeof(*d));
+	d->port = 0;
+	d->repeat = 1;
+	d->wr_lng = 2;
+	d->wr_data[0] = 0x01;
+	d->wr_data[1] = reg;
+	d->rd_lng = -8;
+}
+
 static void test_setup(void)
 {
 	struct lms_iic_dat d;
 
-	memset(&d, 0, sizeof(d));
-	d.port = 0;
-	d.repeat = 1;
-	d.wr_lng = 2;
-	d.wr_data[0] = 0x01;
-	d.wr_data[1] = 0x10;
-	d.rd_lng = -8;
+	read8_request(&d, 0x10);
 	is_int(it_setup(&d, 500), LMS_IIC_OK, "IIC_SETUP: 8 bytes from 0x10");
 	ok(!memcmp(d.rd_data, "Accel.  ", 8), "in bus order");
 	d.rd_lng = 2;
@@ -169,13 +176,7 @@ static void test_unplug(void)
 	{
 		struct lms_iic_dat d;
 
-		memset(&d, 0, sizeof(d));
-		d.port = 0;
-		d.repeat = 1;
-		d.wr_lng = 2;
-		d.wr_data[0] = 0x01;
-		d.wr_data[1] = 0x08;
-		d.rd_lng = -8;
+		read8_request(&d, 0x08);
 		ok(iic_svc_start(0, 0) == E_OK && iic_svc_setup(&d) == E_OK && d.result == LMS_IIC_BUSY,
 		   "started, a request latched at once");
 		ok(iic_svc_stop(0) == E_OK && iic_svc_start(0, 0) == E_OK, "stopped and started again");
