@@ -123,19 +123,25 @@ tick_figures() {
 		END { printf "%s %s", t, lc + 0 }' "$base.txt"
 	awk '$1 == "timers" { printf " %s %s\n", $3, $4 }' "${base}_run.txt"
 }
+# due_cost N KIND IDLE: the row "due,N,KIND,<linux_compat instructions per run of the KIND timer>"
+due_cost() {
+	local ticks lc hr tl runs
+	read -r ticks lc hr tl < <(tick_figures $1 $2)
+	[ $2 = hrtimer ] && runs=$hr || runs=$tl
+	[ "${runs:-0}" -gt 0 ] || fail "bench_timers $1 $2: the $2 timer did not run"
+	awk -v n=$1 -v k=$2 -v t=$ticks -v lc=$lc -v idle=$3 -v r=$runs \
+		'BEGIN { printf "due,%d,%s,%.1f\n", n, k, (lc - idle) * t / r }'
+}
 for n in 1 256; do
 	for kind in none hrtimer timer_list; do
 		run_counted "$timers_bin" "$out/timers_${n}_$kind.txt" lx_tick_isr $n $tick_ms $kind
 	done
 	read -r _ idle _ _ < <(tick_figures $n none)
-	read -r ticks lc runs _ < <(tick_figures $n hrtimer)
-	[ "${runs:-0}" -gt 0 ] || fail "bench_timers $n hrtimer: the hrtimer did not run"
-	awk -v n=$n -v t=$ticks -v lc=$lc -v idle=$idle -v r=$runs \
-		'BEGIN { printf "due,%d,hrtimer,%.1f\ndue,%d,idle,%.1f\n", n, (lc - idle) * t / r, n, idle }' >> "$out/timer_costs.txt"
-	read -r ticks lc _ runs < <(tick_figures $n timer_list)
-	[ "${runs:-0}" -gt 0 ] || fail "bench_timers $n timer_list: the timer_list timer did not run"
-	awk -v n=$n -v t=$ticks -v lc=$lc -v idle=$idle -v r=$runs \
-		'BEGIN { printf "due,%d,timer_list,%.1f\n", n, (lc - idle) * t / r }' >> "$out/timer_costs.txt"
+	{
+		due_cost $n hrtimer $idle
+		printf 'due,%d,idle,%.1f\n' $n $idle
+		due_cost $n timer_list $idle
+	} >> "$out/timer_costs.txt"
 done
 
 # ---- what the brick adds that the host kernel cannot count: on HRP2 each service
