@@ -39,8 +39,7 @@ static void make_card(void)
 	char path[256], big[BIG_SIZE];
 
 	snprintf(dir, sizeof(dir), "/tmp/ev3rt_fs_XXXXXX");
-	if (mkdtemp(dir) == NULL)
-		tap_bail_out("mkdtemp");
+	tf_make_scratch_dir(dir);
 	snprintf(card, sizeof(card), "%s/card", dir);
 	snprintf(serial_out, sizeof(serial_out), "%s/serial.txt", dir);
 	mkdir(card, 0755);

@@ -23,8 +23,7 @@ int main(void)
 	const char *p;
 
 	snprintf(dir, sizeof(dir), "/tmp/ev3_datalog_XXXXXX");
-	if (mkdtemp(dir) == NULL)
-		tap_bail_out("mkdtemp");
+	tf_make_scratch_dir(dir);
 	snprintf(card, sizeof(card), "%s/card", dir);
 	snprintf(serial, sizeof(serial), "%s/serial.csv", dir);
 	snprintf(path, sizeof(path), "%s/ev3rt/res", card);

@@ -20,8 +20,6 @@
 #include "host_sim/devices/ev3_lcd.h"
 #include "../../api/src/lcd_draw.h"
 
-#define WAV "hello_test.wav"
-
 /* The frame hello draws (its calls, in the drawing core), for the battery text it logged. */
 static void hello_frame(uint8_t *frame, const char *battery)
 {
@@ -79,8 +77,7 @@ static void make_card(void)
 	char path[160];
 
 	snprintf(dir, sizeof(dir), "/tmp/ev3_hello_XXXXXX");
-	if (mkdtemp(dir) == NULL)
-		tap_bail_out("mkdtemp");
+	tf_make_scratch_dir(dir);
 	snprintf(card, sizeof(card), "%s/card", dir);
 	mkdir(card, 0755);
 	snprintf(path, sizeof(path), "%s/ev3rt", card);
@@ -131,17 +128,18 @@ int main(void)
 	struct note got[8];
 	const int16_t *s;
 	const char *line;
-	char serial[96];
+	char serial[96], wav[96];
 	unsigned n;
 	int mv = 0, ma = 0;
 	FILE *f;
 
 	make_card();
 	snprintf(serial, sizeof(serial), "%s/serial_audio.txt", dir);
+	snprintf(wav, sizeof(wav), "%s/hello.wav", dir);
 	ev3sim_run_defaults(&o, EV3SIM_ROBOT_BARE);
 	o.app_name = "hello";
 	o.seconds = 2;
-	o.audio_path = WAV;
+	o.audio_path = wav;
 	o.sd_dir = card;
 	o.serial_path = serial;
 	if (!ok(ex_run(&o, &r), "hello runs with --audio"))
@@ -180,7 +178,7 @@ int main(void)
 		in_range(got[i].ms, want[i].ms - 1000.0 / want[i].hz, want[i].ms + 1.0, "note %u: %.2f ms", i + 1,
 			 got[i].ms);
 	}
-	f = fopen(WAV, "rb");
+	f = fopen(wav, "rb");
 	ok(f != NULL, "the WAV file was written");
 	if (f) {
 		unsigned char h[44];
@@ -188,7 +186,6 @@ int main(void)
 		ok(fread(h, 1, sizeof(h), f) == sizeof(h) && h[0] == 'R' && h[8] == 'W' && h[22] == 1 &&
 		   (h[24] | h[25] << 8) == EV3_SPEAKER_RATE && h[34] == 16, "RIFF WAVE, mono, 32 kHz, 16 bits");
 		fclose(f);
-		remove(WAV);
 	}
 	card_and_serial();
 	return tap_done();

@@ -10,7 +10,19 @@
 #include <ftw.h>
 #include <stdbool.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <sys/stat.h>
+
+#include "tap.h"
+
+/* Makes a fresh directory from template (ending in XXXXXX, replaced in
+ * place): every test that writes files gets its own, so that the same test
+ * in several configurations can run at once.  Bails out if it cannot. */
+static inline void tf_make_scratch_dir(char *template)
+{
+	if (mkdtemp(template) == NULL)
+		tap_bail_out("mkdtemp");
+}
 
 /* Writes text to path (created or truncated); false on any error. */
 static inline bool tf_write_text(const char *path, const char *text)

@@ -3,9 +3,11 @@
  * errors, dropped and duplicated bytes, unplug/replug, noisy encoder) and
  * determinism: the same seed gives a byte-identical VCD, another seed not.
  */
+#define _XOPEN_SOURCE 700
 #include <stdio.h>
 #include <string.h>
 #include "uarttest.h"
+#include "text_files_test.h"
 #include "host_sim/devices/uart16550.h"
 
 static struct host h;
@@ -95,9 +97,13 @@ int main(void)
 {
 	struct outcome a, b, c;
 	long size = 0;
-	const char *va = "devices_faults_a.vcd", *vb = "devices_faults_b.vcd", *vc = "devices_faults_c.vcd";
+	char dir[] = "/tmp/test_faults.XXXXXX", va[64], vb[64], vc[64];
 
 	tap_plan(14);
+	tf_make_scratch_dir(dir);
+	snprintf(va, sizeof(va), "%s/a.vcd", dir);
+	snprintf(vb, sizeof(vb), "%s/b.vcd", dir);
+	snprintf(vc, sizeof(vc), "%s/c.vcd", dir);
 	run(5, va, &a);
 	is_int(a.nlog, 10, "five faults started and ended");
 	ok(a.log_ok, "each at its scheduled virtual time");
@@ -131,8 +137,6 @@ int main(void)
 		ok(ev3_fault_at(hs_now() + MS, &bad) == E_ID, "fault on port 4 of the outputs refused");
 		hs_sim_shutdown();
 	}
-	remove(va);
-	remove(vb);
-	remove(vc);
+	tf_remove_tree(dir);
 	return tap_done();
 }

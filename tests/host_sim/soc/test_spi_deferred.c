@@ -216,8 +216,7 @@ int main(void)
 	unsigned same = 0;
 
 	tap_plan(9);
-	if (!mkdtemp(dir))
-		tap_bail_out("mkdtemp failed");
+	tf_make_scratch_dir(dir);
 	snprintf(eager_vcd, sizeof(eager_vcd), "%s/eager.vcd", dir);
 	snprintf(deferred_vcd, sizeof(deferred_vcd), "%s/deferred.vcd", dir);
 	run_sequence(false, &eager, eager_vcd);
