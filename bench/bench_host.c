@@ -17,7 +17,9 @@
  * 2. host_sim's speed: ev3_bench_full_brick (the simulated devices with a
  *    register-level polling host), and the full stack (linux_compat and the
  *    three drivers over the same four motors and four sensors, application
- *    idle), as virtual seconds per wall second.
+ *    idle), as virtual seconds per CPU second of the process (and per wall
+ *    second).  Each runs ROUNDS times from the same seed (the same work) and
+ *    the round with the least CPU time is reported, for the same reason.
  * Output: CSV records for bench/run_bench.sh,
  *   call,NAME,calls,avg_ns,min_ns,max_ns,slow_calls,errors,median_ns,p99_ns
  *   speed,NAME,virtual_s,wall_s,cpu_s,speedup,cpu_speedup
@@ -218,7 +220,8 @@ static void print_speed(const char *name, double vs, double ws, double cs)
 
 int main(int argc, char **argv)
 {
-	struct ev3_bench_result r;
+	struct ev3_bench_result r, best = { 0 };
+	unsigned round;
 	ER ercd;
 
 	if (argc > 1)
@@ -240,18 +243,29 @@ int main(int argc, char **argv)
 	print_call(&st_write);
 	print_call(&st_clock);
 
-	ercd = ev3_bench_full_brick(virtual_s, BENCH_SEED, &r);
-	if (ercd != E_OK) {
-		fprintf(stderr, "bench_host: ev3_bench_full_brick: %d\n", (int)ercd);
-		return 1;
+	for (round = 0; round < ROUNDS; round++) {
+		ercd = ev3_bench_full_brick(virtual_s, BENCH_SEED, &r);
+		if (ercd != E_OK) {
+			fprintf(stderr, "bench_host: ev3_bench_full_brick: %d\n", (int)ercd);
+			return 1;
+		}
+		if (round == 0 || r.cpu_s < best.cpu_s)
+			best = r;
 	}
-	print_speed("host_sim_devices", r.virtual_s, r.wall_s, r.cpu_s);
+	print_speed("host_sim_devices", best.virtual_s, best.wall_s, best.cpu_s);
 
-	if (!bench_brick_run(BENCH_BRICK_FULL, stack_body, BENCH_SEED, 30U + (unsigned)virtual_s) || stack_wall_s <= 0.0) {
-		fprintf(stderr, "bench_host: the full stack did not run (prepare: %d)\n",
-			(int)prepare_result);
-		return 1;
+	for (round = 0; round < ROUNDS; round++) {
+		stack_wall_s = 0.0;
+		if (!bench_brick_run(BENCH_BRICK_FULL, stack_body, BENCH_SEED, 30U + (unsigned)virtual_s) ||
+		    stack_wall_s <= 0.0) {
+			fprintf(stderr, "bench_host: the full stack did not run (prepare: %d)\n",
+				(int)prepare_result);
+			return 1;
+		}
+		if (round == 0 || stack_cpu_s < best.cpu_s)
+			best = (struct ev3_bench_result){ .virtual_s = stack_virtual_s, .wall_s = stack_wall_s,
+							  .cpu_s = stack_cpu_s };
 	}
-	print_speed("full_stack", stack_virtual_s, stack_wall_s, stack_cpu_s);
+	print_speed("full_stack", best.virtual_s, best.wall_s, best.cpu_s);
 	return st_speed.errors || st_raw.errors || st_write.errors ? 1 : 0;
 }

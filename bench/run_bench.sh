@@ -34,12 +34,17 @@ echo "bench ($mode): host: $calls calls each, host_sim for $virtual_s virtual s 
 grep -E '^(call|speed),' "$out/host_raw.txt" > "$out/host.txt"
 
 # ev3sim balance (the paper's experiment: gyro boy with the 1 kHz gyro logger):
-# 3 virtual s held for the calibration, then balance_s; CPU seconds of ev3sim.
-echo "bench ($mode): ev3sim balance for $((3 + balance_s)) virtual s ..." >&2
-( TIMEFORMAT='%R %U %S'; time "$build/host/ev3sim" balance --seconds $balance_s --no-progress \
-	> "$out/balance_run.txt" 2>&1 ) 2> "$out/balance_time.txt" || fail "ev3sim balance (see $out/balance_run.txt)"
-grep -q '^result=upright ' "$out/balance_run.txt" || fail "ev3sim balance: the robot fell (see $out/balance_run.txt)"
-awk -v v=$((3 + balance_s)) '{ cpu = $2 + $3; printf "speed,ev3sim_balance,%s,%.3f,%.3f,%.1f,%.1f\n", v, $1, cpu, v / $1, v / cpu }' \
+# 3 virtual s held for the calibration, then balance_s; CPU seconds of ev3sim,
+# the least of 3 identical runs (as bench_host's rounds: preemption only adds).
+echo "bench ($mode): ev3sim balance for $((3 + balance_s)) virtual s, 3 runs ..." >&2
+: > "$out/balance_time.txt"
+for _ in 1 2 3; do
+	( TIMEFORMAT='%R %U %S'; time "$build/host/ev3sim" balance --seconds $balance_s --no-progress \
+		> "$out/balance_run.txt" 2>&1 ) 2>> "$out/balance_time.txt" || fail "ev3sim balance (see $out/balance_run.txt)"
+	grep -q '^result=upright ' "$out/balance_run.txt" || fail "ev3sim balance: the robot fell (see $out/balance_run.txt)"
+done
+awk -v v=$((3 + balance_s)) '{ cpu = $2 + $3; if (NR == 1 || cpu < best) { best = cpu; wall = $1 } }
+	END { printf "speed,ev3sim_balance,%s,%.3f,%.3f,%.1f,%.1f\n", v, wall, best, v / wall, v / best }' \
 	"$out/balance_time.txt" >> "$out/host.txt"
 
 # ---- the AM1808 image: linux_compat and the RTOS glue in the gc'd firmware ----

@@ -3,13 +3,13 @@
 # U-Boot uImage, and a size report.  Components append target sources to
 # AM1808_SRCS (host-only code stays out).
 
-CC_am1808     := arm-none-eabi-gcc
+CC_am1808     := $(CCACHE) arm-none-eabi-gcc
 AR_am1808     := arm-none-eabi-ar
 # The production library: linux_compat's debugging checks off, as a Linux
 # kernel without CONFIG_DEBUG_ATOMIC_SLEEP / CONFIG_DEBUG_SPINLOCK
 # (linux_compat/include/linux_compat/debug.h; the host configurations keep them).
 LX_DEBUG_OFF  := -DLX_DEBUG_ATOMIC_SLEEP=0 -DLX_DEBUG_SPINLOCK=0
-CFLAGS_am1808 := -mcpu=arm926ej-s -marm -Os -g -ffreestanding -ffunction-sections \
+CFLAGS_am1808 := -mcpu=arm926ej-s -marm -Os -g $(DEBUG_PREFIX_MAP) -ffreestanding -ffunction-sections \
 	-fdata-sections -DEV3LX_AM1808=1 $(LX_DEBUG_OFF)
 AM1808        := $(BUILD)/am1808
 AM1808_OBJS   := $(patsubst %.c,$(AM1808)/obj/%.o,$(AM1808_SRCS))

@@ -36,19 +36,28 @@ TIC_DENO ?= 5
 TNUM_FNCD ?= 128
 KERNEL_DEFS := -DTIC_NUME=$(TIC_NUME)U -DTIC_DENO=$(TIC_DENO)U -DTNUM_FNCD=$(TNUM_FNCD)
 
-CC_host        := gcc
-CFLAGS_host    := -O2 -g -DEV3LX_HOST=1
+# A compiler cache where the machine has one (`make deps` installs ccache): a
+# clean clone recompiles nothing the cache has already compiled.  Objects do not
+# depend on the clone's directory (sources are named relative to it, debug info
+# maps it to "."), so the cache may ignore the directory.
+CCACHE := $(if $(shell command -v ccache 2>/dev/null),ccache)
+export CCACHE_BASEDIR := $(CURDIR)
+export CCACHE_NOHASHDIR := 1
+DEBUG_PREFIX_MAP := -fdebug-prefix-map=$(CURDIR)=.
+
+CC_host        := $(CCACHE) gcc
+CFLAGS_host    := -O2 -g $(DEBUG_PREFIX_MAP) -DEV3LX_HOST=1
 LDFLAGS_host   :=
 RUN_host       :=
 
-CC_host-san     := gcc
-CFLAGS_host-san := -O1 -g -DEV3LX_HOST=1 -fsanitize=address,undefined \
+CC_host-san     := $(CCACHE) gcc
+CFLAGS_host-san := -O1 -g $(DEBUG_PREFIX_MAP) -DEV3LX_HOST=1 -fsanitize=address,undefined \
 	-fno-omit-frame-pointer -fno-sanitize-recover=all
 LDFLAGS_host-san := -fsanitize=address,undefined
 RUN_host-san    :=
 
-CC_arm926-test     := arm-linux-gnueabi-gcc
-CFLAGS_arm926-test := -O2 -g -DEV3LX_HOST=1 -mcpu=arm926ej-s -marm
+CC_arm926-test     := $(CCACHE) arm-linux-gnueabi-gcc
+CFLAGS_arm926-test := -O2 -g $(DEBUG_PREFIX_MAP) -DEV3LX_HOST=1 -mcpu=arm926ej-s -marm
 LDFLAGS_arm926-test := -static
 RUN_arm926-test    := qemu-arm -cpu arm926 -L /usr/arm-linux-gnueabi
 

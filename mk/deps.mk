@@ -3,12 +3,12 @@
 
 DEPS_PACKAGES := gcc-arm-linux-gnueabi libc6-dev-armel-cross qemu-user \
 	u-boot-tools cloc gnuplot-nox linux-headers-amd64 sparse gcc-arm-none-eabi \
-	libnewlib-arm-none-eabi perl cppcheck clang-tidy libpng-dev libgif-dev
+	libnewlib-arm-none-eabi perl cppcheck clang-tidy libpng-dev libgif-dev ccache
 
 # tool -> package, checked by `deps-check`
 DEPS_TOOLS := arm-linux-gnueabi-gcc:gcc-arm-linux-gnueabi qemu-arm:qemu-user \
 	mkimage:u-boot-tools cloc:cloc gnuplot:gnuplot-nox sparse:sparse \
-	arm-none-eabi-gcc:gcc-arm-none-eabi prove:perl cppcheck:cppcheck clang-tidy:clang-tidy
+	arm-none-eabi-gcc:gcc-arm-none-eabi prove:perl cppcheck:cppcheck clang-tidy:clang-tidy ccache:ccache
 
 deps_missing = $(strip $(foreach t,$(DEPS_TOOLS),$(if $(shell command -v $(firstword $(subst :, ,$(t))) 2>/dev/null),,$(lastword $(subst :, ,$(t))))) \
 	$(if $(wildcard /usr/src/linux-headers-*-amd64/Makefile),,linux-headers-amd64) \
