@@ -206,8 +206,11 @@ static void load_syms(const char *path)
 			*tab = '\0';
 			file = tab + 1;
 			*strrchr(file, ':') = '\0';
+			/* absolute, or "./"-relative when the build mapped its directory to "." */
 			if (repo_root && has_prefix(file, repo_root) && file[strlen(repo_root)] == '/')
 				file += strlen(repo_root) + 1;
+			else if (has_prefix(file, "./"))
+				file += 2;
 		}
 		while (n < 4 && (tok[n] = strtok(n ? NULL : p, " ")) != NULL)
 			n++;
