@@ -61,7 +61,7 @@ static uint_t ev_user;
 uint64_t event_head_time = UINT64_MAX;
 /* Where the run is in the queue order: the last event taken, or its time settled (sequence UINT64_MAX). */
 static uint64_t ev_pos_time;
-static uint64_t ev_pos_seq = UINT64_MAX;
+uint64_t ev_pos_seq = UINT64_MAX;
 static struct rtos_host_deferred *ev_deferred;   /* the armed deferred events */
 
 /* Queue order: earlier time first, then scheduling order. */
@@ -428,12 +428,6 @@ uint_t event_user_count(void)
 		}
 	}
 	return ev_user;
-}
-
-/* Every event due by now has run: deferred events at now are due. */
-void event_time_settled(void)
-{
-	ev_pos_seq = UINT64_MAX;
 }
 
 /* Pops and runs the earliest event as the hardware; interrupts it raises are delivered after it. */

@@ -210,7 +210,8 @@ static inline __attribute__((always_inline)) uint64_t busy_loop(uint64_t cpu_ns,
 			irq_dispatch_pending();
 			if (kernel_exited)
 				task_leave_for_exit();
-			dispatch_if_needed();
+			if (schedtsk != runtsk)   /* dispatch_if_needed's first test, without the call */
+				dispatch_if_needed();
 			if (!before_until(until))   /* preempted past it: the poll finds it passed */
 				break;
 		}
@@ -257,14 +258,31 @@ uint64_t rtos_host_spin_until(uint64_t t_ns)
 	return busy_loop(UINT64_MAX, t_ns);
 }
 
+/* True if busy_loop's pass at task level would find nothing to do before now
+ * + ns (no event falls due by then, checked by the caller): no interrupt to
+ * deliver, no task to switch to, the run's deadline not reached. */
+static inline bool task_consume_quiet(uint64_t ns)
+{
+	return (irq_pending_lines == 0 || cpu.sil_lock != 0 || cpu.locked) && schedtsk == runtsk &&
+	       !kernel_exited && (!run_active || run_deadline >= now_ns + ns);
+}
+
 /* The calling context is busy for ns of virtual CPU time; events fire meanwhile. */
 void rtos_host_consume(uint64_t ns)
 {
-	/* Outside task level nothing can stop the time short of the next event: the
-	 * common case (a register access, a short delay in an ISR) is one addition. */
-	if (ns < event_next_time() - now_ns && kernel_booted && !consume_at_task_level()) {
-		now_ns += ns;
-		return;
+	/* When nothing can stop the time short of the next event, the common case
+	 * (a register access, a service call's charge, a short delay in an ISR) is
+	 * one addition; a task's consume also settles the time as busy_loop does. */
+	if (ns < event_next_time() - now_ns && kernel_booted) {
+		if (!consume_at_task_level()) {
+			now_ns += ns;
+			return;
+		}
+		if (task_consume_quiet(ns)) {
+			now_ns += ns;
+			event_time_settled();
+			return;
+		}
 	}
 	consume_slow(ns);
 }
