@@ -159,7 +159,8 @@ void irq_deliver_pending(void)
 
 	if (!any_pending() || cpu.locked || cpu.sil_lock != 0 || cpu.irq_defer != 0 || paused_task != NULL)
 		return;
-	while ((n = pick_line()) >= 0) {
+	/* the common ISR clears the only request: no scan of the bitmap after it */
+	while (any_pending() && (n = pick_line()) >= 0) {
 		irq_run((INTNO)n);
 		if (cpu.locked || cpu.sil_lock != 0)
 			break;
