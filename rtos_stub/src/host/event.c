@@ -61,7 +61,7 @@ static uint_t ev_user;
 uint64_t event_head_time = UINT64_MAX;
 /* Where the run is in the queue order: the last event taken, or its time settled (sequence UINT64_MAX). */
 static uint64_t ev_pos_time;
-static uint64_t ev_pos_seq = UINT64_MAX;
+uint64_t ev_pos_seq = UINT64_MAX;
 static struct rtos_host_deferred *ev_deferred;   /* the armed deferred events */
 
 /* Queue order: earlier time first, then scheduling order. */
@@ -173,7 +173,7 @@ static __attribute__((noinline)) bool ev_queue(struct ev_slot s)
 }
 
 /* Drops cancelled slots at the head and sets event_head_time to the earliest live event's. */
-static void ev_settle(void)
+static inline void ev_settle(void)
 {
 	for (;;) {
 		if (ev_front_len > 0) {
@@ -215,7 +215,7 @@ static void ev_sweep(void)
 }
 
 /* Returns an event to the free list; its handle and slot become stale. */
-static void ev_release(uint32_t idx)
+static inline void ev_release(uint32_t idx)
 {
 	struct event *ev = &ev_pool[idx];
 
@@ -291,33 +291,44 @@ static inline rtos_host_event_t ev_handle(uint32_t idx)
 	return ((rtos_host_event_t)ev_pool[idx].gen << 32) | (idx + 1U);
 }
 
+/* ev_schedule's other cases: a bad request, no free event, a full front or
+ * a time at or after the heap's earliest. */
+static __attribute__((noinline)) rtos_host_event_t ev_schedule_slow(uint64_t t_ns, rtos_host_event_fn fn,
+								     void *arg, bool kernel)
+{
+	uint32_t idx;
+
+	if ((fn == NULL || t_ns < now_ns || ev_free == EV_NONE) && !ev_schedule_check(&t_ns, fn))
+		return 0;
+	idx = ev_free;
+	if (!ev_queue((struct ev_slot){ t_ns, ev_seq, idx, ev_pool[idx].gen })) {
+		rtos_host_bug("event", "out of memory for events");
+		return 0;
+	}
+	ev_seq++;
+	ev_claim(idx, t_ns, fn, arg, kernel);
+	return ev_handle(idx);
+}
+
 /* Schedules fn(arg) at t_ns; a time in the past is a bug and runs now. */
 static inline __attribute__((always_inline)) rtos_host_event_t ev_schedule(uint64_t t_ns, rtos_host_event_fn fn,
 									    void *arg, bool kernel)
 {
 	uint32_t idx;
-	struct event *ev;
+	struct ev_slot *pos;
 
-	if ((fn == NULL || t_ns < now_ns || ev_free == EV_NONE) && !ev_schedule_check(&t_ns, fn))
-		return 0;
+	if (fn == NULL || t_ns < now_ns || ev_free == EV_NONE || ev_front_len == EV_FRONT_CAP ||
+	    (ev_heap_len != 0 && t_ns >= ev_heap[0].time))
+		return ev_schedule_slow(t_ns, fn, arg, kernel);
+	/* the common case, inline and without calls: into the front, moving up the
+	 * slots due no later */
 	idx = ev_free;
-	ev = &ev_pool[idx];
-	if (ev_front_len < EV_FRONT_CAP && (ev_heap_len == 0 || t_ns < ev_heap[0].time)) {
-		/* the common case, inline: into the front, moving up the slots due no later */
-		uint32_t pos = ev_front_len++;
-
-		while (pos > 0 && ev_front[pos - 1].time <= t_ns) {
-			ev_front[pos] = ev_front[pos - 1];
-			pos--;
-		}
-		ev_front[pos].time = t_ns;
-		ev_front[pos].seq = ev_seq;
-		ev_front[pos].idx = idx;
-		ev_front[pos].gen = ev->gen;
-	} else if (!ev_queue((struct ev_slot){ t_ns, ev_seq, idx, ev->gen })) {
-		rtos_host_bug("event", "out of memory for events");
-		return 0;
+	pos = &ev_front[ev_front_len++];
+	while (pos > ev_front && pos[-1].time <= t_ns) {
+		pos[0] = pos[-1];
+		pos--;
 	}
+	*pos = (struct ev_slot){ t_ns, ev_seq, idx, ev_pool[idx].gen };
 	ev_seq++;
 	ev_claim(idx, t_ns, fn, arg, kernel);
 	return ev_handle(idx);
@@ -428,12 +439,6 @@ uint_t event_user_count(void)
 		}
 	}
 	return ev_user;
-}
-
-/* Every event due by now has run: deferred events at now are due. */
-void event_time_settled(void)
-{
-	ev_pos_seq = UINT64_MAX;
 }
 
 /* Pops and runs the earliest event as the hardware; interrupts it raises are delivered after it. */

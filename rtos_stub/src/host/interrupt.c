@@ -42,19 +42,16 @@ static uint64_t pending_bits[IRQ_WORDS];
 uint_t irq_pending_lines;
 
 /* Keeps the pending bitmap and count in step with the line's edge and level. */
-static void pend_update(INTNO n)
+static inline void pend_update(INTNO n)
 {
 	uint64_t bit = 1ULL << (n % 64U);
 	uint64_t *word = &pending_bits[n / 64U];
 	bool was = (*word & bit) != 0;
 	bool is = lines[n].edge || lines[n].level;
 
-	if (is && !was) {
-		*word |= bit;
-		irq_pending_lines++;
-	} else if (!is && was) {
-		*word &= ~bit;
-		irq_pending_lines--;
+	if (is != was) {
+		*word ^= bit;
+		irq_pending_lines += is ? 1U : (uint_t)-1;
 	}
 }
 
@@ -162,12 +159,13 @@ void irq_deliver_pending(void)
 
 	if (!any_pending() || cpu.locked || cpu.sil_lock != 0 || cpu.irq_defer != 0 || paused_task != NULL)
 		return;
-	while ((n = pick_line()) >= 0) {
+	/* the common ISR clears the only request: no scan of the bitmap after it */
+	while (any_pending() && (n = pick_line()) >= 0) {
 		irq_run((INTNO)n);
 		if (cpu.locked || cpu.sil_lock != 0)
 			break;
 	}
-	if (cpu.isr_depth == 0)
+	if (cpu.isr_depth == 0 && (schedtsk != runtsk || kernel_exited))   /* dispatch_if_needed's first test */
 		dispatch_if_needed();
 }
 

@@ -283,8 +283,14 @@ static inline uint64_t event_next_time(void)
 void event_run_next(void);
 /* Number of scheduled non-kernel events (deferred ones settled first). */
 uint_t event_user_count(void);
-/* Tells the queue that every event due by now has run (deferred ones at now are due). */
-void event_time_settled(void);
+/* The sequence of the last event taken, UINT64_MAX once its time is settled (event.c). */
+extern uint64_t ev_pos_seq;
+/* Tells the queue that every event due by now has run (deferred ones at now are
+ * due); inline, as the run loops settle after every stretch of busy time. */
+static inline void event_time_settled(void)
+{
+	ev_pos_seq = UINT64_MAX;
+}
 /* Schedules a kernel-internal event (does not count as device work). */
 rtos_host_event_t event_at_kernel(uint64_t t_ns, rtos_host_event_fn fn, void *arg);
 

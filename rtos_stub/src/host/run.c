@@ -190,50 +190,52 @@ static inline __attribute__((always_inline)) bool before_until(uint64_t until)
 
 /*
  * The busy loop under rtos_host_consume and rtos_host_spin_until: the caller
- * runs until it has spun cpu_ns of its own time or the clock reaches until,
- * whichever comes first.  Events fire meanwhile; at task level interrupts
- * and higher-priority tasks preempt it — their time counts toward until,
- * not toward cpu_ns — and it is suspended to the harness at the run's
- * deadline.  Returns the CPU time spun.  Inlined into each caller, so that
- * the bound a caller does not use folds away (consume is on every service
- * call's path).
+ * runs until it has spun cpu_ns of its own time (if budgeted) or the clock
+ * reaches until, whichever comes first.  Events fire meanwhile; at task level
+ * interrupts and higher-priority tasks preempt it — their time counts toward
+ * until, not toward cpu_ns — and it is suspended to the harness at the run's
+ * deadline.  Returns the CPU time spun.  Inlined into each caller with
+ * constant budgeted and (for consume) until, so that the bound a caller does
+ * not use folds away (consume is on every service call's path, the spin on
+ * every byte of a polled serial write).
  */
-static inline __attribute__((always_inline)) uint64_t busy_loop(uint64_t cpu_ns, uint64_t until)
+static inline __attribute__((always_inline)) uint64_t busy_loop(bool budgeted, uint64_t cpu_ns, uint64_t until)
 {
-	uint64_t remaining = cpu_ns;
+	uint64_t spun = 0;
 	bool task_level = consume_at_task_level();
 
-	while (remaining > 0 && before_until(until)) {
+	while ((!budgeted || spun < cpu_ns) && before_until(until)) {
 		uint64_t limit, next;
 
 		if (task_level) {
 			irq_dispatch_pending();
 			if (kernel_exited)
 				task_leave_for_exit();
-			dispatch_if_needed();
+			if (schedtsk != runtsk)   /* dispatch_if_needed's first test, without the call */
+				dispatch_if_needed();
 			if (!before_until(until))   /* preempted past it: the poll finds it passed */
 				break;
 		}
-		limit = remaining > UINT64_MAX - now_ns ? UINT64_MAX : now_ns + remaining;
-		if (until < limit)
-			limit = until;
+		limit = until;
+		if (budgeted && cpu_ns - spun < limit - now_ns)
+			limit = now_ns + (cpu_ns - spun);
 		/* Only a task can be suspended: ISRs and the harness share the thread's stack. */
 		if (task_level && run_active && run_deadline < limit)
 			limit = run_deadline > now_ns ? run_deadline : now_ns;
 		next = event_next_time();
 		if (next <= limit) {
-			remaining -= next - now_ns;
+			spun += next - now_ns;
 			now_ns = next;
 			event_run_next();
 			continue;
 		}
-		remaining -= limit - now_ns;
+		spun += limit - now_ns;
 		now_ns = limit;
 		event_time_settled();
-		if (remaining > 0 && before_until(until))
+		if ((!budgeted || spun < cpu_ns) && before_until(until))
 			pause_to_harness();
 	}
-	return cpu_ns - remaining;
+	return spun;
 }
 
 /* rtos_host_consume when an event falls due, a task consumes, or before boot. */
@@ -243,7 +245,7 @@ static __attribute__((noinline)) void consume_slow(uint64_t ns)
 		rtos_host_bug("consume", "rtos_host_consume before rtos_host_boot");
 		return;
 	}
-	busy_loop(ns, UINT64_MAX);
+	busy_loop(true, ns, UINT64_MAX);
 }
 
 /* The calling context spins until t_ns like a loop polling a clock: time spent
@@ -254,17 +256,34 @@ uint64_t rtos_host_spin_until(uint64_t t_ns)
 		rtos_host_bug("spin", "rtos_host_spin_until before rtos_host_boot");
 		return 0;
 	}
-	return busy_loop(UINT64_MAX, t_ns);
+	return busy_loop(false, 0, t_ns);
+}
+
+/* True if busy_loop's pass at task level would find nothing to do before now
+ * + ns (no event falls due by then, checked by the caller): no interrupt to
+ * deliver, no task to switch to, the run's deadline not reached. */
+static inline bool task_consume_quiet(uint64_t ns)
+{
+	return (irq_pending_lines == 0 || cpu.sil_lock != 0 || cpu.locked) && schedtsk == runtsk &&
+	       !kernel_exited && (!run_active || run_deadline >= now_ns + ns);
 }
 
 /* The calling context is busy for ns of virtual CPU time; events fire meanwhile. */
 void rtos_host_consume(uint64_t ns)
 {
-	/* Outside task level nothing can stop the time short of the next event: the
-	 * common case (a register access, a short delay in an ISR) is one addition. */
-	if (ns < event_next_time() - now_ns && kernel_booted && !consume_at_task_level()) {
-		now_ns += ns;
-		return;
+	/* When nothing can stop the time short of the next event, the common case
+	 * (a register access, a service call's charge, a short delay in an ISR) is
+	 * one addition; a task's consume also settles the time as busy_loop does. */
+	if (ns < event_next_time() - now_ns && kernel_booted) {
+		if (!consume_at_task_level()) {
+			now_ns += ns;
+			return;
+		}
+		if (task_consume_quiet(ns)) {
+			now_ns += ns;
+			event_time_settled();
+			return;
+		}
 	}
 	consume_slow(ns);
 }
