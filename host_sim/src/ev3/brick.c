@@ -498,6 +498,7 @@ uint32_t ev3_output_pin5_mv(unsigned port)
 enum { ADC_BRICK = 0x00, ADC_IN_PIN1 = 0x10, ADC_IN_PIN6 = 0x20, ADC_OUT_PIN5 = 0x30 };
 #define ADC_CHANNELS 16U
 
+/* The source of each ADC channel (ADC_IN_PIN1 | port, ...), built on first use. */
 static uint8_t adc_source[ADC_CHANNELS];
 static bool adc_source_built;
 
