@@ -23,21 +23,44 @@ uint16_t ads7957_word(unsigned ch, uint32_t mv)
 	return (uint16_t)(((ch & 0xFU) << 12) | (code << 2));
 }
 
+/* adc_sample_mv with noise of standard deviation sigma mV: a draw from the
+ * board's noise stream, rounded to the nearest mV after scaling and clamping.
+ * Out of line: the noise-free path, taken on nearly every frame, then needs
+ * no floating-point registers saved. */
+static __attribute__((noinline)) uint32_t adc_noisy_sample_mv(uint32_t mv, double sigma)
+{
+	double noisy = mv + sigma * ev3_adc_noise_sample();
+
+	if (!adc.range_5v)
+		noisy *= 2.0;
+	noisy = noisy < 0 ? 0 : noisy > 5000 ? 5000 : noisy;
+	return (uint32_t)lround(noisy);
+}
+
+/* The sampled channel's voltage mv as the converter's input sees it, in mV
+ * of its 0-5 V scale: with the board's noise, doubled in the 0-2.5 V range,
+ * clamped.  Without noise everything is a whole number of mV, so integer
+ * arithmetic gives what the rounded floating-point sum gives, cheaper (the
+ * ADC samples ten thousand times per second). */
+static inline uint32_t adc_sample_mv(uint32_t mv)
+{
+	double sigma = ev3_adc_noise_mv();
+	uint64_t scaled;
+
+	if (sigma > 0)
+		return adc_noisy_sample_mv(mv, sigma);
+	scaled = adc.range_5v ? mv : 2ULL * mv;   /* 0-2.5 V range: full scale at half the voltage */
+	return scaled > 5000U ? 5000U : (uint32_t)scaled;
+}
+
 /* The converter's side of one frame starting now: returns what it shifts
  * out, samples the channel selected last frame, then decodes cmd. */
 static uint16_t adc_frame(void *ctx, uint16_t cmd)
 {
 	uint16_t out = adc.result;
-	double mv = ev3_adc_channel_mv(adc.next);
-	double sigma = ev3_adc_noise_mv();
 	unsigned mode = cmd >> 12;
 
-	if (sigma > 0)
-		mv += sigma * ev3_adc_noise_sample();
-	if (!adc.range_5v)
-		mv *= 2.0;              /* 0-2.5 V range: full scale at half the voltage */
-	mv = mv < 0 ? 0 : mv > 5000 ? 5000 : mv;
-	adc.result = ads7957_word(adc.next, (uint32_t)lround(mv));
+	adc.result = ads7957_word(adc.next, adc_sample_mv(ev3_adc_channel_mv(adc.next)));
 	if (mode == 0x1U && (cmd & 0x0800U)) {
 		adc.next = (cmd >> 7) & 0xFU;
 		adc.range_5v = cmd & 0x0040U;

@@ -124,37 +124,47 @@ static void input_apply_pins(struct in_port *p)
 	hs_gpio_drive(pins->pin6, pin6);
 }
 
+/* Voltage of an input port's pin 1 now: the device's ID resistor or signal. */
+static inline uint32_t input_pin1_mv(const struct in_port *p)
+{
+	switch (effective_kind(p)) {
+	case EV3_INPUT_EV3_TOUCH: return divider_mv(EV3_TOUCH_ID_OHMS);
+	case EV3_INPUT_NXT_TOUCH: return p->contact ? divider_mv(NXT_TOUCH_OHMS) : 5000U;
+	case EV3_INPUT_NXT_LIGHT: return 4500U - 35U * (p->light_pct > 100 ? 100 : p->light_pct);
+	case EV3_INPUT_DUMB: return divider_mv(p->aopt.id_ohms);
+	case EV3_INPUT_UART: return 0;
+	default: return 5000U;
+	}
+}
+
+/* Voltage of input port port's pin 6 now: the SoC's output if it drives the
+ * pin, the EV3 touch sensor's switch, or the pin's logic level. */
+static inline uint32_t input_pin6_mv(unsigned port)
+{
+	bool lvl;
+	unsigned pin6 = ev3_input_pins[port].pin6;
+
+	if (hs_gpio_soc_output(pin6, &lvl))
+		return lvl ? LOGIC_HIGH_MV : 0U;
+	if (effective_kind(&brick.in[port]) == EV3_INPUT_EV3_TOUCH)
+		return brick.in[port].contact ? 5000U : 0U;
+	return hs_gpio_level(pin6) ? LOGIC_HIGH_MV : 0U;
+}
+
 /* Voltage of an input pin now. */
 uint32_t ev3_input_pin_mv(unsigned port, unsigned pin)
 {
-	const struct in_port *p;
-	const struct ev3_input_pins *pins;
-	bool lvl;
-
 	if (port >= EV3_INPUT_PORTS)
 		return 0;
-	p = &brick.in[port];
-	pins = &ev3_input_pins[port];
 	switch (pin) {
 	case 1:
-		switch (effective_kind(p)) {
-		case EV3_INPUT_EV3_TOUCH: return divider_mv(EV3_TOUCH_ID_OHMS);
-		case EV3_INPUT_NXT_TOUCH: return p->contact ? divider_mv(NXT_TOUCH_OHMS) : 5000U;
-		case EV3_INPUT_NXT_LIGHT: return 4500U - 35U * (p->light_pct > 100 ? 100 : p->light_pct);
-		case EV3_INPUT_DUMB: return divider_mv(p->aopt.id_ohms);
-		case EV3_INPUT_UART: return 0;
-		default: return 5000U;
-		}
+		return input_pin1_mv(&brick.in[port]);
 	case 2:
-		return hs_gpio_level(pins->pin2) ? LOGIC_HIGH_MV : 0U;
+		return hs_gpio_level(ev3_input_pins[port].pin2) ? LOGIC_HIGH_MV : 0U;
 	case 5:
-		return hs_gpio_level(pins->pin5) ? LOGIC_HIGH_MV : 0U;
+		return hs_gpio_level(ev3_input_pins[port].pin5) ? LOGIC_HIGH_MV : 0U;
 	case 6:
-		if (hs_gpio_soc_output(pins->pin6, &lvl))
-			return lvl ? LOGIC_HIGH_MV : 0U;
-		if (effective_kind(p) == EV3_INPUT_EV3_TOUCH)
-			return p->contact ? 5000U : 0U;
-		return hs_gpio_level(pins->pin6) ? LOGIC_HIGH_MV : 0U;
+		return input_pin6_mv(port);
 	default:
 		return 0;
 	}
@@ -488,41 +498,43 @@ uint32_t ev3_output_pin5_mv(unsigned port)
 enum { ADC_BRICK = 0x00, ADC_IN_PIN1 = 0x10, ADC_IN_PIN6 = 0x20, ADC_OUT_PIN5 = 0x30 };
 #define ADC_CHANNELS 16U
 
-/* The ADC source of each channel, from the wiring tables (the first port
- * naming a channel wins, input pins before output pins), built on first use. */
-static const uint8_t *adc_sources(void)
-{
-	static uint8_t source[ADC_CHANNELS];
-	static bool built;
+/* The source of each ADC channel (ADC_IN_PIN1 | port, ...), built on first use. */
+static uint8_t adc_source[ADC_CHANNELS];
+static bool adc_source_built;
 
-	if (built)
-		return source;
+/* Builds adc_source from the wiring tables (the first port naming a channel
+ * wins, input pins before output pins); out of line, so the per-frame
+ * caller does not carry its loop. */
+static __attribute__((noinline)) void adc_sources_build(void)
+{
 	for (unsigned ch = 0; ch < ADC_CHANNELS; ch++) {
-		source[ch] = ADC_BRICK;
+		adc_source[ch] = ADC_BRICK;
 		for (unsigned p = EV3_OUTPUT_PORTS; p-- > 0;)
 			if (ch == ev3_output_pins[p].adc_pin5)
-				source[ch] = (uint8_t)(ADC_OUT_PIN5 | p);
+				adc_source[ch] = (uint8_t)(ADC_OUT_PIN5 | p);
 		for (unsigned p = EV3_INPUT_PORTS; p-- > 0;) {
 			if (ch == ev3_input_pins[p].adc_pin6)
-				source[ch] = (uint8_t)(ADC_IN_PIN6 | p);
+				adc_source[ch] = (uint8_t)(ADC_IN_PIN6 | p);
 			if (ch == ev3_input_pins[p].adc_pin1)
-				source[ch] = (uint8_t)(ADC_IN_PIN1 | p);
+				adc_source[ch] = (uint8_t)(ADC_IN_PIN1 | p);
 		}
 	}
-	built = true;
-	return source;
+	adc_source_built = true;
 }
 
 /* Voltage of an ADC channel (LEGO's d_analog.c channel map). */
 uint32_t ev3_adc_channel_mv(unsigned ch)
 {
-	unsigned src = ch < ADC_CHANNELS ? adc_sources()[ch] : ADC_BRICK;
+	unsigned src;
 
+	if (!adc_source_built)
+		adc_sources_build();
+	src = ch < ADC_CHANNELS ? adc_source[ch] : ADC_BRICK;
 	switch (src & 0xF0U) {
 	case ADC_IN_PIN1:
-		return ev3_input_pin_mv(src & 0xFU, 1);
+		return input_pin1_mv(&brick.in[src & 0xFU]);
 	case ADC_IN_PIN6:
-		return ev3_input_pin_mv(src & 0xFU, 6);
+		return input_pin6_mv(src & 0xFU);
 	case ADC_OUT_PIN5:
 		return ev3_output_pin5_mv(src & 0xFU);
 	default:

@@ -130,13 +130,14 @@ static uint64_t frame_ns(struct spi_module *s, unsigned fmt, unsigned *bits)
 	uint32_t f = *s->fmt[fmt];
 	uint32_t delay = *s->delay;
 	unsigned charlen = f & 0x1FU, prescale = (f >> 8) & 0xFFU;
-	/* chip-select setup (C2TDELAY) and hold (T2CDELAY) in module clocks */
-	uint64_t cs_cycles = ((delay >> 24) & 0xFFU) + ((delay >> 16) & 0xFFU) + 2U;
+	uint64_t cs_cycles;
 
 	if (s->timing_known && f == s->timing_fmt && delay == s->timing_delay) {
 		*bits = s->timing_bits;
 		return s->timing_ns;
 	}
+	/* chip-select setup (C2TDELAY) and hold (T2CDELAY) in module clocks */
+	cs_cycles = ((delay >> 24) & 0xFFU) + ((delay >> 16) & 0xFFU) + 2U;
 	if (charlen < 2)
 		charlen = 16;
 	s->timing_known = true;

@@ -22,17 +22,25 @@ static uint16_t xfer(uint16_t cmd)
 	}
 }
 
-/* Reads channel ch in mV as LEGO scales it (12 bits, 4095 = 5000 mV); *chan_out gets bits 15-12. */
-static unsigned read_mv(unsigned ch, unsigned *chan_out)
+/* Reads channel ch in the converter's 0-5 V range (range_5v) or its 0-2.5 V
+ * range (command bit 6 clear), in mV as LEGO scales it (12 bits, 4095 =
+ * 5000 mV); *chan_out gets bits 15-12. */
+static unsigned read_mv_in_range(unsigned ch, bool range_5v, unsigned *chan_out)
 {
 	uint16_t w;
 
-	xfer((uint16_t)(0x1840U | (ch << 7)));
+	xfer((uint16_t)(0x1800U | (range_5v ? 0x40U : 0U) | (ch << 7)));
 	xfer(0x1840U);
 	w = xfer(0x1840U);
 	if (chan_out)
 		*chan_out = w >> 12;
 	return (unsigned)((w & 0xFFFU) * 5000U / 4095U);
+}
+
+/* Reads channel ch in the 0-5 V range, as d_analog does. */
+static unsigned read_mv(unsigned ch, unsigned *chan_out)
+{
+	return read_mv_in_range(ch, true, chan_out);
 }
 
 static void spi_setup(void)
@@ -54,7 +62,7 @@ int main(void)
 	uint64_t t0, dt;
 	const struct ev3_output_pins *a = &ev3_output_pins[0];
 
-	tap_plan(31);
+	tap_plan(33);
 	devtest_boot(3, NULL);
 	spi_setup();
 
@@ -84,6 +92,8 @@ int main(void)
 	NEAR(read_mv(1, NULL), 2470, 10, "output A pin 5 open: 2.47 V (in 2400-2600)");
 	NEAR(read_mv(15, NULL), 0, 10, "no motor current");
 	NEAR(read_mv(4, NULL), 4444, 10, "battery channel: 9 V less the 0.1 A drops (0.5 ohm, shunt, diode), halved");
+	NEAR(read_mv_in_range(1, false, NULL), 4940, 10, "0-2.5 V range: output A pin 5's 2.47 V reads twice as high");
+	NEAR(read_mv_in_range(6, false, NULL), 4996, 1, "0-2.5 V range: input 1 pin 1's 5 V clamps at full scale");
 
 	/* motors: ID voltage follows the encoder level */
 	ev3_attach_motor(0, HS_MOTOR_LARGE, NULL);
