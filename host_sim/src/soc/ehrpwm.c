@@ -49,19 +49,15 @@ static void aq_sort(struct aq_event *ev, unsigned n)
 		}
 }
 
-/* Low fraction of an output over steady periods, starting from level, and
- * the level at position pos of a period (for a stopped time base). */
-static double aq_low_fraction(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uint32_t cmpb,
-			      uint32_t aqctl, bool level, uint32_t pos, bool *level_at_pos)
+/* The action events of one period, sorted; returns their count, *len the period in TBCLK cycles. */
+static unsigned aq_events(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uint32_t cmpb,
+			  uint32_t aqctl, struct aq_event ev[6], uint32_t *len)
 {
-	struct aq_event ev[6];
 	unsigned n = 0;
-	uint32_t len;
-	uint64_t low = 0;
 
 	/* AQCTL fields: ZRO 1:0, PRD 3:2, CAU 5:4, CAD 7:6, CBU 9:8, CBD 11:10 */
 	if (ctrmode == 0) {                 /* up: 0..PRD */
-		len = prd + 1U;
+		*len = prd + 1U;
 		ev[n++] = (struct aq_event){ 0, 0, (uint8_t)(aqctl & 3U) };
 		ev[n++] = (struct aq_event){ prd, 1, (uint8_t)((aqctl >> 2) & 3U) };
 		if (cmpa <= prd)
@@ -69,7 +65,7 @@ static double aq_low_fraction(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uin
 		if (cmpb <= prd)
 			ev[n++] = (struct aq_event){ cmpb, 3, (uint8_t)((aqctl >> 8) & 3U) };
 	} else if (ctrmode == 1) {          /* down: PRD..0 */
-		len = prd + 1U;
+		*len = prd + 1U;
 		ev[n++] = (struct aq_event){ 0, 1, (uint8_t)((aqctl >> 2) & 3U) };
 		ev[n++] = (struct aq_event){ prd, 0, (uint8_t)(aqctl & 3U) };
 		if (cmpa <= prd)
@@ -77,34 +73,108 @@ static double aq_low_fraction(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uin
 		if (cmpb <= prd)
 			ev[n++] = (struct aq_event){ prd - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U) };
 	} else {                            /* up-down: 0..PRD..0 */
-		len = prd ? 2U * prd : 1U;
+		uint32_t l = prd ? 2U * prd : 1U;
+
+		*len = l;
 		ev[n++] = (struct aq_event){ 0, 0, (uint8_t)(aqctl & 3U) };
 		ev[n++] = (struct aq_event){ prd, 1, (uint8_t)((aqctl >> 2) & 3U) };
 		if (cmpa < prd) {
 			ev[n++] = (struct aq_event){ cmpa, 2, (uint8_t)((aqctl >> 4) & 3U) };
 			if (cmpa)
-				ev[n++] = (struct aq_event){ len - cmpa, 2, (uint8_t)((aqctl >> 6) & 3U) };
+				ev[n++] = (struct aq_event){ l - cmpa, 2, (uint8_t)((aqctl >> 6) & 3U) };
 		}
 		if (cmpb < prd && n < 6) {
 			ev[n++] = (struct aq_event){ cmpb, 3, (uint8_t)((aqctl >> 8) & 3U) };
 			if (cmpb && n < 6)
-				ev[n++] = (struct aq_event){ len - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U) };
+				ev[n++] = (struct aq_event){ l - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U) };
 		}
 	}
 	aq_sort(ev, n);
-	/* three periods: the first settles toggles, the last two are measured */
-	for (unsigned period = 0; period < 3; period++) {
-		for (unsigned i = 0; i < n; i++) {
-			uint32_t end = (i + 1 < n) ? ev[i + 1].pos : len;
+	return n;
+}
 
-			level = aq_apply(level, ev[i].action);
-			if (period == 2 && level_at_pos && pos >= ev[i].pos && pos < end)
-				*level_at_pos = level;
+/* AQCTL's compare-A (CAU, CAD) and compare-B (CBU, CBD) action fields. */
+#define AQ_CMPA_ACTIONS 0x0F0U
+#define AQ_CMPB_ACTIONS 0xF00U
+
+/* An output's steady periods for one setting of the counter mode, PRD, CMPA, CMPB and
+ * AQCTL: worked out when the setting changes, not on every update (a motor's duty is
+ * re-evaluated at every shadow load, its setting changes far less often).  A compare
+ * value whose actions are all "nothing" only splits a range of equal level, so it is
+ * left out of the setting: eHRPWM1's output A does not depend on CMPB, nor B on CMPA. */
+struct aq_steady {
+	bool valid;
+	unsigned ctrmode;
+	uint32_t prd, cmpa, cmpb, aqctl;
+	unsigned n;
+	uint32_t len;
+	uint8_t action[6];
+	uint32_t from[6], to[6];    /* positions where each event's level holds in a period */
+	bool known[2];              /* level[s] and low[s] worked out, by the level s before the first period */
+	bool level[2][6];           /* each event's level in a steady period */
+	double low[2];              /* low fraction */
+};
+
+/* The compare value as the setting keeps it (0 when its actions do nothing). */
+static uint32_t aq_cmp_key(uint32_t cmp, uint32_t aqctl, uint32_t actions)
+{
+	return aqctl & actions ? cmp : 0;
+}
+
+/* Works out level[start] and low[start]: three periods, the first settles toggles,
+ * the last two are measured. */
+static void aq_steady_walk(struct aq_steady *c, bool start)
+{
+	bool level = start;
+	uint64_t low = 0;
+
+	for (unsigned period = 0; period < 3; period++) {
+		for (unsigned i = 0; i < c->n; i++) {
+			level = aq_apply(level, c->action[i]);
+			if (period == 2)
+				c->level[start][i] = level;
 			if (period && !level)
-				low += end - ev[i].pos;
+				low += c->to[i] - c->from[i];
 		}
 	}
-	return (double)low / (2.0 * len);
+	c->low[start] = (double)low / (2.0 * c->len);
+	c->known[start] = true;
+}
+
+/* The steady periods of a setting entered at level start, from c if it holds that setting. */
+static const struct aq_steady *aq_steady_of(struct aq_steady *c, unsigned ctrmode, uint32_t prd,
+					     uint32_t cmpa, uint32_t cmpb, uint32_t aqctl, bool start)
+{
+	uint32_t cmpa_key = aq_cmp_key(cmpa, aqctl, AQ_CMPA_ACTIONS);
+	uint32_t cmpb_key = aq_cmp_key(cmpb, aqctl, AQ_CMPB_ACTIONS);
+
+	if (!c->valid || c->ctrmode != ctrmode || c->prd != prd || c->cmpa != cmpa_key ||
+	    c->cmpb != cmpb_key || c->aqctl != aqctl) {
+		struct aq_event ev[6];
+		uint32_t len;
+		unsigned n = aq_events(ctrmode, prd, cmpa, cmpb, aqctl, ev, &len);
+
+		*c = (struct aq_steady){ .valid = true, .ctrmode = ctrmode, .prd = prd, .cmpa = cmpa_key,
+					 .cmpb = cmpb_key, .aqctl = aqctl, .n = n, .len = len };
+		for (unsigned i = 0; i < n; i++) {
+			c->action[i] = ev[i].action;
+			c->from[i] = ev[i].pos;
+			c->to[i] = (i + 1 < n) ? ev[i + 1].pos : len;
+		}
+	}
+	if (!c->known[start])
+		aq_steady_walk(c, start);
+	return c;
+}
+
+/* Level at position pos of a steady period entered at level start (start
+ * itself if pos lies in no event's range; the ranges do not overlap). */
+static bool aq_level_at(const struct aq_steady *c, bool start, uint32_t pos)
+{
+	for (unsigned i = 0; i < c->n; i++)
+		if (pos >= c->from[i] && pos < c->to[i])
+			return c->level[start][i];
+	return start;
 }
 
 /* ---- eHRPWM1 ---- */
@@ -128,6 +198,7 @@ struct ehrpwm {
 	hs_event_t load_ev;
 	double low[2];              /* outputs A, B */
 	bool level[2];
+	struct aq_steady steady[2]; /* outputs A, B */
 	int syscfg_watch;
 	enum hs_pwm_output out[2];  /* outputs A, B */
 	const char *name;
@@ -195,12 +266,15 @@ static void ehrpwm_update(struct ehrpwm *e)
 			low = lvl ? 0.0 : 1.0;
 		} else if (!e->running) {
 			if ((tbctl & 3U) != 3U)
-				(void)aq_low_fraction(tbctl & 3U, e->prd, e->cmpa, e->cmpb,
-						      hs_reg_get(e->r, aq[o]), lvl, pos, &lvl);
+				lvl = aq_level_at(aq_steady_of(&e->steady[o], tbctl & 3U, e->prd, e->cmpa,
+							       e->cmpb, hs_reg_get(e->r, aq[o]), lvl), lvl, pos);
 			low = lvl ? 0.0 : 1.0;
 		} else {
-			low = aq_low_fraction(tbctl & 3U, e->prd, e->cmpa, e->cmpb,
-					      hs_reg_get(e->r, aq[o]), lvl, pos, &lvl);
+			const struct aq_steady *c = aq_steady_of(&e->steady[o], tbctl & 3U, e->prd, e->cmpa,
+								 e->cmpb, hs_reg_get(e->r, aq[o]), lvl);
+
+			low = c->low[lvl];
+			lvl = aq_level_at(c, lvl, pos);
 		}
 		e->level[o] = lvl;
 		if (low != e->low[o] || freq != e->freq) {
