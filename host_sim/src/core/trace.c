@@ -116,13 +116,11 @@ static void flush_falls(uint64_t now)
 	tr.nfalls = 0;
 }
 
-/* Records the current value of s at now in the outputs. */
-static void record(struct hs_signal *s, uint64_t now)
+/* Writes the current value of s at now to the open files. */
+static void record_files(struct hs_signal *s, uint64_t now)
 {
 	char buf[96];
 
-	s->changes++;
-	s->last_change = now;
 	if (tr.body) {
 		vcd_time(now);
 		vcd_value(s, buf, sizeof(buf));
@@ -136,6 +134,16 @@ static void record(struct hs_signal *s, uint64_t now)
 		else
 			fprintf(tr.csv, "%" PRIu64 ",%s.%s,%" PRIu64 "\n", now, s->scope, s->name, s->value);
 	}
+}
+
+/* Records the current value of s at now: counted, and written if a file is open
+ * (without one, a change costs the count: GPIO pins change on every tacho edge). */
+static inline void record(struct hs_signal *s, uint64_t now)
+{
+	s->changes++;
+	s->last_change = now;
+	if (tr.body || tr.csv)
+		record_files(s, now);
 }
 
 static struct hs_signal *declare(const char *scope, const char *name, unsigned width)
@@ -202,12 +210,12 @@ void hs_trace_set(struct hs_signal *s, uint64_t value)
 
 	if (!s)
 		return;
-	now = rtos_host_now();
-	flush_falls(now);
 	if (s->width == 0U) {
 		hs_trace_set_real(s, (double)value);
 		return;
 	}
+	now = rtos_host_now();
+	flush_falls(now);
 	if (s->width < 64U)
 		value &= (1ULL << s->width) - 1U;
 	if (s->known && !s->z && s->value == value)
