@@ -107,12 +107,9 @@ struct aq_steady {
 	unsigned ctrmode;
 	uint32_t prd, cmpa, cmpb, aqctl;
 	unsigned n;
-	uint32_t len;
-	uint8_t action[6];
 	uint32_t from[6], to[6];    /* positions where each event's level holds in a period */
-	bool known[2];              /* level[s] and low[s] worked out, by the level s before the first period */
-	bool level[2][6];           /* each event's level in a steady period */
-	double low[2];              /* low fraction */
+	bool level[2][6];           /* that level in a steady period, by the level before the first */
+	double low[2];              /* low fraction of the steady periods, likewise */
 };
 
 /* The compare value as the setting keeps it (0 when its actions do nothing). */
@@ -121,49 +118,59 @@ static uint32_t aq_cmp_key(uint32_t cmp, uint32_t aqctl, uint32_t actions)
 	return aqctl & actions ? cmp : 0;
 }
 
-/* Works out level[start] and low[start]: three periods, the first settles toggles,
- * the last two are measured. */
-static void aq_steady_walk(struct aq_steady *c, bool start)
+/* Works c out for its setting as three periods from each start level (the first settles
+ * toggles, the last two are measured).  A period depends only on the level it starts at,
+ * so one period from each level gives all six. */
+static void aq_steady_fill(struct aq_steady *c, const struct aq_event *ev, uint32_t len)
 {
-	bool level = start;
-	uint64_t low = 0;
+	bool end[2], level[2][6];
+	uint64_t low[2];
 
-	for (unsigned period = 0; period < 3; period++) {
+	for (unsigned from = 0; from < 2; from++) {
+		bool lvl = from != 0;
+
+		low[from] = 0;
 		for (unsigned i = 0; i < c->n; i++) {
-			level = aq_apply(level, c->action[i]);
-			if (period == 2)
-				c->level[start][i] = level;
-			if (period && !level)
-				low += c->to[i] - c->from[i];
+			lvl = aq_apply(lvl, ev[i].action);
+			level[from][i] = lvl;
+			if (!lvl)
+				low[from] += c->to[i] - c->from[i];
 		}
+		end[from] = lvl;
 	}
-	c->low[start] = (double)low / (2.0 * c->len);
-	c->known[start] = true;
+	for (unsigned start = 0; start < 2; start++) {
+		bool second = end[start], third = end[second];
+
+		for (unsigned i = 0; i < c->n; i++)
+			c->level[start][i] = level[third][i];
+		c->low[start] = (double)(low[second] + low[third]) / (2.0 * len);
+	}
 }
 
-/* The steady periods of a setting entered at level start, from c if it holds that setting. */
+/* The steady periods of a setting, from c if it holds that setting. */
 static const struct aq_steady *aq_steady_of(struct aq_steady *c, unsigned ctrmode, uint32_t prd,
-					     uint32_t cmpa, uint32_t cmpb, uint32_t aqctl, bool start)
+					     uint32_t cmpa, uint32_t cmpb, uint32_t aqctl)
 {
 	uint32_t cmpa_key = aq_cmp_key(cmpa, aqctl, AQ_CMPA_ACTIONS);
 	uint32_t cmpb_key = aq_cmp_key(cmpb, aqctl, AQ_CMPB_ACTIONS);
+	struct aq_event ev[6];
+	uint32_t len;
 
-	if (!c->valid || c->ctrmode != ctrmode || c->prd != prd || c->cmpa != cmpa_key ||
-	    c->cmpb != cmpb_key || c->aqctl != aqctl) {
-		struct aq_event ev[6];
-		uint32_t len;
-		unsigned n = aq_events(ctrmode, prd, cmpa, cmpb, aqctl, ev, &len);
-
-		*c = (struct aq_steady){ .valid = true, .ctrmode = ctrmode, .prd = prd, .cmpa = cmpa_key,
-					 .cmpb = cmpb_key, .aqctl = aqctl, .n = n, .len = len };
-		for (unsigned i = 0; i < n; i++) {
-			c->action[i] = ev[i].action;
-			c->from[i] = ev[i].pos;
-			c->to[i] = (i + 1 < n) ? ev[i + 1].pos : len;
-		}
+	if (c->valid && c->ctrmode == ctrmode && c->prd == prd && c->cmpa == cmpa_key &&
+	    c->cmpb == cmpb_key && c->aqctl == aqctl)
+		return c;
+	c->valid = true;
+	c->ctrmode = ctrmode;
+	c->prd = prd;
+	c->cmpa = cmpa_key;
+	c->cmpb = cmpb_key;
+	c->aqctl = aqctl;
+	c->n = aq_events(ctrmode, prd, cmpa, cmpb, aqctl, ev, &len);
+	for (unsigned i = 0; i < c->n; i++) {
+		c->from[i] = ev[i].pos;
+		c->to[i] = (i + 1 < c->n) ? ev[i + 1].pos : len;
 	}
-	if (!c->known[start])
-		aq_steady_walk(c, start);
+	aq_steady_fill(c, ev, len);
 	return c;
 }
 
@@ -187,8 +194,11 @@ enum {
 	ETPS = 0x34, ETFLG = 0x36, ETCLR = 0x38, ETFRC = 0x3A, PCCTL = 0x3C,
 };
 
+#define EHRPWM_REG_SLOTS (PCCTL / 2 + 1)
+
 struct ehrpwm {
 	struct hs_region *r;
+	const uint32_t *value[EHRPWM_REG_SLOTS];   /* stored register values reg() reads, by offset / 2 */
 	uint16_t prd, cmpa, cmpb;   /* active registers (the CPU sees the shadows) */
 	bool prd_pending, cmpa_pending, cmpb_pending;
 	bool running;
@@ -204,6 +214,12 @@ struct ehrpwm {
 	const char *name;
 	double freq;                /* time-base frequency last notified (Hz, 0 stopped) */
 };
+
+/* Stored value of a register (hs_reg_get without the lookup: several are read at every update). */
+static uint32_t reg(const struct ehrpwm *e, unsigned offset)
+{
+	return *e->value[offset / 2U];
+}
 
 /* Time-base clock for TBCTL dividers. */
 static uint64_t tbclk_hz(uint32_t tbctl)
@@ -226,7 +242,7 @@ static uint32_t tb_period_cycles(const struct ehrpwm *e, uint32_t tbctl)
 /* Position in the period (TBCLK cycles from the period start) now. */
 static uint32_t tb_position(const struct ehrpwm *e)
 {
-	uint32_t tbctl = hs_reg_get(e->r, TBCTL);
+	uint32_t tbctl = reg(e, TBCTL);
 	uint32_t len = tb_period_cycles(e, tbctl);
 	uint64_t pos;
 
@@ -241,7 +257,7 @@ static uint32_t tb_position(const struct ehrpwm *e)
 /* Counter value at a period position. */
 static uint32_t tb_counter(const struct ehrpwm *e, uint32_t pos)
 {
-	switch (hs_reg_get(e->r, TBCTL) & 3U) {
+	switch (reg(e, TBCTL) & 3U) {
 	case 1: return e->prd - pos;
 	case 2: return pos <= e->prd ? pos : 2U * e->prd - pos;
 	default: return pos;
@@ -251,7 +267,7 @@ static uint32_t tb_counter(const struct ehrpwm *e, uint32_t pos)
 /* Recomputes both outputs; tells the motors if anything changed. */
 static void ehrpwm_update(struct ehrpwm *e)
 {
-	uint32_t tbctl = hs_reg_get(e->r, TBCTL), csfrc = hs_reg_get(e->r, AQCSFRC);
+	uint32_t tbctl = reg(e, TBCTL), csfrc = reg(e, AQCSFRC);
 	uint32_t pos = tb_position(e), len = tb_period_cycles(e, tbctl);
 	static const uint32_t aq[2] = { AQCTLA, AQCTLB };
 	double freq = e->running && len ? (double)tbclk_hz(tbctl) / len : 0;
@@ -267,11 +283,11 @@ static void ehrpwm_update(struct ehrpwm *e)
 		} else if (!e->running) {
 			if ((tbctl & 3U) != 3U)
 				lvl = aq_level_at(aq_steady_of(&e->steady[o], tbctl & 3U, e->prd, e->cmpa,
-							       e->cmpb, hs_reg_get(e->r, aq[o]), lvl), lvl, pos);
+							       e->cmpb, reg(e, aq[o])), lvl, pos);
 			low = lvl ? 0.0 : 1.0;
 		} else {
 			const struct aq_steady *c = aq_steady_of(&e->steady[o], tbctl & 3U, e->prd, e->cmpa,
-								 e->cmpb, hs_reg_get(e->r, aq[o]), lvl);
+								 e->cmpb, reg(e, aq[o]));
 
 			low = c->low[lvl];
 			lvl = aq_level_at(c, lvl, pos);
@@ -291,22 +307,22 @@ static void ehrpwm_schedule_load(struct ehrpwm *e);
 static void ehrpwm_load(void *arg)
 {
 	struct ehrpwm *e = arg;
-	uint32_t cmpctl = hs_reg_get(e->r, CMPCTL);
+	uint32_t cmpctl = reg(e, CMPCTL);
 	uint32_t pos = tb_position(e), cnt = tb_counter(e, pos);
 	bool at_zero = cnt == 0, at_prd = cnt == e->prd;
 	unsigned la = cmpctl & 3U, lb = (cmpctl >> 2) & 3U;
 
 	e->load_ev = 0;
 	if (e->prd_pending && at_zero) {
-		e->prd = (uint16_t)hs_reg_get(e->r, TBPRD);
+		e->prd = (uint16_t)reg(e, TBPRD);
 		e->prd_pending = false;
 	}
 	if (e->cmpa_pending && ((la == 0 && at_zero) || (la == 1 && at_prd) || (la == 2 && (at_zero || at_prd)))) {
-		e->cmpa = (uint16_t)hs_reg_get(e->r, CMPA);
+		e->cmpa = (uint16_t)reg(e, CMPA);
 		e->cmpa_pending = false;
 	}
 	if (e->cmpb_pending && ((lb == 0 && at_zero) || (lb == 1 && at_prd) || (lb == 2 && (at_zero || at_prd)))) {
-		e->cmpb = (uint16_t)hs_reg_get(e->r, CMPB);
+		e->cmpb = (uint16_t)reg(e, CMPB);
 		e->cmpb_pending = false;
 	}
 	hs_reg_update(e->r, CMPCTL, (e->cmpa_pending ? 0U : 1U << 8) | (e->cmpb_pending ? 0U : 1U << 9), 0);
@@ -317,7 +333,7 @@ static void ehrpwm_load(void *arg)
 /* Schedules the next counter-zero or period instant if a shadow is pending. */
 static void ehrpwm_schedule_load(struct ehrpwm *e)
 {
-	uint32_t tbctl = hs_reg_get(e->r, TBCTL);
+	uint32_t tbctl = reg(e, TBCTL);
 	uint32_t len = tb_period_cycles(e, tbctl), pos, next;
 
 	hs_event_cancel(&e->load_ev);
@@ -338,7 +354,7 @@ static void ehrpwm_schedule_load(struct ehrpwm *e)
 /* Re-bases the counter at now and re-evaluates whether the time base runs. */
 static void ehrpwm_rebase(struct ehrpwm *e)
 {
-	uint32_t tbctl = hs_reg_get(e->r, TBCTL);
+	uint32_t tbctl = reg(e, TBCTL);
 	bool run = (tbctl & 3U) != 3U && hs_syscfg_tbclksync();
 
 	e->cnt_ref = tb_position(e);
@@ -367,7 +383,7 @@ static void ehrpwm_read_tbcnt(void *ctx, const struct hs_access *a, uint32_t *va
 static void ehrpwm_read_tbsts(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct ehrpwm *e = ctx;
-	uint32_t tbctl = hs_reg_get(e->r, TBCTL), pos = tb_position(e);
+	uint32_t tbctl = reg(e, TBCTL), pos = tb_position(e);
 	bool up = (tbctl & 3U) == 0U || ((tbctl & 3U) == 2U && pos < e->prd);
 
 	*value = (*value & ~1U) | (up ? 1U : 0U);
@@ -384,7 +400,7 @@ static void ehrpwm_write_tb(void *ctx, const struct hs_access *a, uint32_t old, 
 		if (nv & (1U << 6))     /* SWFSYNC: one-shot, reads back 0; loads TBPHS if PHSEN */
 			hs_reg_update(e->r, TBCTL, 1U << 6, 0);
 		if ((nv & (1U << 2)) && (nv & (1U << 6))) {
-			e->cnt_ref = hs_reg_get(e->r, TBPHS);
+			e->cnt_ref = reg(e, TBPHS);
 			e->t_ref = hs_now();
 		}
 		break;
@@ -393,7 +409,7 @@ static void ehrpwm_write_tb(void *ctx, const struct hs_access *a, uint32_t old, 
 		e->t_ref = hs_now();
 		break;
 	case TBPRD:
-		if (hs_reg_get(e->r, TBCTL) & (1U << 3))
+		if (reg(e, TBCTL) & (1U << 3))
 			e->prd = (uint16_t)nv;
 		else
 			e->prd_pending = true;
@@ -409,7 +425,7 @@ static void ehrpwm_write_cmp(void *ctx, const struct hs_access *a, uint32_t old,
 			    uint32_t written)
 {
 	struct ehrpwm *e = ctx;
-	uint32_t cmpctl = hs_reg_get(e->r, CMPCTL);
+	uint32_t cmpctl = reg(e, CMPCTL);
 
 	if (a->offset == CMPA) {
 		if (cmpctl & (1U << 4)) {
@@ -514,7 +530,7 @@ static double ehrpwm_frequency(const void *ctx, unsigned channel)
 	(void)channel;
 	if (!e->running)
 		return 0;
-	tbctl = hs_reg_get(e->r, TBCTL);
+	tbctl = reg(e, TBCTL);
 	return (double)tbclk_hz(tbctl) / tb_period_cycles(e, tbctl);
 }
 
@@ -546,6 +562,8 @@ static ER ehrpwm_create(const struct ehrpwm_instance *in, void **ctx)
 		free(e);
 		return E_PAR;
 	}
+	for (unsigned i = 0; i < HS_ARRAY_SIZE(ehrpwm_regs); i++)
+		e->value[ehrpwm_regs[i].offset / 2U] = hs_reg_value_ptr(e->r, ehrpwm_regs[i].offset);
 	e->name = in->name;
 	e->out[0] = in->out[0];
 	e->out[1] = in->out[1];
