@@ -204,6 +204,19 @@ struct hs_signal *hs_trace_find(const char *scope, const char *name)
 	return NULL;
 }
 
+/* Sets a signal of width 1..64 to value at now (the falls due are flushed). */
+static inline void set_bits(struct hs_signal *s, uint64_t value, uint64_t now)
+{
+	if (s->width < 64U)
+		value &= (1ULL << s->width) - 1U;
+	if (s->known && !s->z && s->value == value)
+		return;
+	s->known = true;
+	s->z = false;
+	s->value = value;
+	record(s, now);
+}
+
 void hs_trace_set(struct hs_signal *s, uint64_t value)
 {
 	uint64_t now;
@@ -216,14 +229,7 @@ void hs_trace_set(struct hs_signal *s, uint64_t value)
 	}
 	now = rtos_host_now();
 	flush_falls(now);
-	if (s->width < 64U)
-		value &= (1ULL << s->width) - 1U;
-	if (s->known && !s->z && s->value == value)
-		return;
-	s->known = true;
-	s->z = false;
-	s->value = value;
-	record(s, now);
+	set_bits(s, value, now);
 }
 
 void hs_trace_set_z(struct hs_signal *s)
@@ -275,7 +281,7 @@ void hs_trace_pulse(struct hs_signal *s)
 	flush_falls(now);
 	if (s->pulse_pending)
 		return;         /* already high in this nanosecond */
-	hs_trace_set(s, 1);
+	set_bits(s, 1, now);
 	if (tr.nfalls == tr.falls_cap) {
 		unsigned cap = tr.falls_cap ? 2U * tr.falls_cap : 16U;
 		/* NOLINTNEXTLINE(bugprone-sizeof-expression): an array of pointers */
