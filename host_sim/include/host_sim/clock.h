@@ -8,16 +8,38 @@
 #include <stdint.h>
 #include "rtos_host.h"
 
+/* The time and event helpers are inline: models call them on every tacho edge
+ * and register access, and each is a line over rtos_host's own call. */
+
 /* Virtual time now, in ns since boot. */
-uint64_t hs_now(void);
+static inline uint64_t hs_now(void)
+{
+	return rtos_host_now();
+}
 
 typedef rtos_host_event_t hs_event_t;
 /* Schedules fn(arg) at absolute virtual time t_ns (clamped to now). */
-hs_event_t hs_event_at(uint64_t t_ns, rtos_host_event_fn fn, void *arg);
+static inline hs_event_t hs_event_at(uint64_t t_ns, rtos_host_event_fn fn, void *arg)
+{
+	uint64_t now = rtos_host_now();
+
+	return rtos_host_event_at(t_ns < now ? now : t_ns, fn, arg);
+}
+
 /* Schedules fn(arg) dt_ns from now. */
-hs_event_t hs_event_after(uint64_t dt_ns, rtos_host_event_fn fn, void *arg);
+static inline hs_event_t hs_event_after(uint64_t dt_ns, rtos_host_event_fn fn, void *arg)
+{
+	return rtos_host_event_at(rtos_host_now() + dt_ns, fn, arg);
+}
+
 /* Cancels *ev if set and zeroes it. */
-void hs_event_cancel(hs_event_t *ev);
+static inline void hs_event_cancel(hs_event_t *ev)
+{
+	if (ev && *ev) {
+		rtos_host_event_cancel(*ev);
+		*ev = 0;
+	}
+}
 
 /* Whole cycles of a clock of hz elapsed in ns (floor), and the ns at which
  * cycle number cycles begins (ceil): counters never run early. */

@@ -116,13 +116,11 @@ static void flush_falls(uint64_t now)
 	tr.nfalls = 0;
 }
 
-/* Records the current value of s at now in the outputs. */
-static void record(struct hs_signal *s, uint64_t now)
+/* Writes the current value of s at now to the open files. */
+static void record_files(struct hs_signal *s, uint64_t now)
 {
 	char buf[96];
 
-	s->changes++;
-	s->last_change = now;
 	if (tr.body) {
 		vcd_time(now);
 		vcd_value(s, buf, sizeof(buf));
@@ -136,6 +134,16 @@ static void record(struct hs_signal *s, uint64_t now)
 		else
 			fprintf(tr.csv, "%" PRIu64 ",%s.%s,%" PRIu64 "\n", now, s->scope, s->name, s->value);
 	}
+}
+
+/* Records the current value of s at now: counted, and written if a file is open
+ * (without one, a change costs the count: GPIO pins change on every tacho edge). */
+static inline void record(struct hs_signal *s, uint64_t now)
+{
+	s->changes++;
+	s->last_change = now;
+	if (tr.body || tr.csv)
+		record_files(s, now);
 }
 
 static struct hs_signal *declare(const char *scope, const char *name, unsigned width)
@@ -196,18 +204,9 @@ struct hs_signal *hs_trace_find(const char *scope, const char *name)
 	return NULL;
 }
 
-void hs_trace_set(struct hs_signal *s, uint64_t value)
+/* Sets a signal of width 1..64 to value at now (the falls due are flushed). */
+static inline void set_bits(struct hs_signal *s, uint64_t value, uint64_t now)
 {
-	uint64_t now;
-
-	if (!s)
-		return;
-	now = rtos_host_now();
-	flush_falls(now);
-	if (s->width == 0U) {
-		hs_trace_set_real(s, (double)value);
-		return;
-	}
 	if (s->width < 64U)
 		value &= (1ULL << s->width) - 1U;
 	if (s->known && !s->z && s->value == value)
@@ -216,6 +215,21 @@ void hs_trace_set(struct hs_signal *s, uint64_t value)
 	s->z = false;
 	s->value = value;
 	record(s, now);
+}
+
+void hs_trace_set(struct hs_signal *s, uint64_t value)
+{
+	uint64_t now;
+
+	if (!s)
+		return;
+	if (s->width == 0U) {
+		hs_trace_set_real(s, (double)value);
+		return;
+	}
+	now = rtos_host_now();
+	flush_falls(now);
+	set_bits(s, value, now);
 }
 
 void hs_trace_set_z(struct hs_signal *s)
@@ -267,7 +281,7 @@ void hs_trace_pulse(struct hs_signal *s)
 	flush_falls(now);
 	if (s->pulse_pending)
 		return;         /* already high in this nanosecond */
-	hs_trace_set(s, 1);
+	set_bits(s, 1, now);
 	if (tr.nfalls == tr.falls_cap) {
 		unsigned cap = tr.falls_cap ? 2U * tr.falls_cap : 16U;
 		/* NOLINTNEXTLINE(bugprone-sizeof-expression): an array of pointers */

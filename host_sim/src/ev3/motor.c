@@ -78,9 +78,31 @@ void dc_motor_model_init(struct dc_motor_model *m, const struct hs_motor_params 
 	m->inertia = p->mech_time_s * p->stall_nm / w_pub;
 }
 
-/* Exact step of J w' = Td - k w - c sign(w) with dry friction stopping at 0. */
-void dc_motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st, double dt,
-		      struct hbridge_drive drive, double vbat, double load_nm, double extra_inertia)
+/* exp(x) of the last decay exponent a motor's physics step used: the step event
+ * and a load re-applied at the same instant repeat it while the drive, the inertia
+ * and the step length stay, and exp is most of a step's cost. */
+struct exp_memo {
+	bool valid;
+	double x, e;
+};
+
+/* exp(x), from memo if it holds x (memo may be NULL). */
+static double exp_memoized(struct exp_memo *memo, double x)
+{
+	if (memo == NULL)
+		return exp(x);
+	if (!memo->valid || memo->x != x) {
+		memo->valid = true;
+		memo->x = x;
+		memo->e = exp(x);
+	}
+	return memo->e;
+}
+
+/* dc_motor_advance with the step's exp taken from memo (NULL: computed). */
+static void motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st, double dt,
+			  struct hbridge_drive drive, double vbat, double load_nm, double extra_inertia,
+			  struct exp_memo *memo)
 {
 	double J = m->inertia + (extra_inertia > 0 ? extra_inertia : 0);
 	double k = m->k_back * (drive.fwd + drive.rev + drive.brake) + m->viscous;
@@ -99,7 +121,7 @@ void dc_motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st,
 	tn = td - s * m->coulomb;
 	wss = tn / k;
 	T = J / k;
-	e = exp(-dt / T);
+	e = exp_memoized(memo, -dt / T);
 	w1 = wss + (w0 - wss) * e;
 	if (w1 * s < 0) {
 		/* speed crosses zero inside the step: friction stops the shaft there */
@@ -111,6 +133,13 @@ void dc_motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st,
 	}
 	st->theta += wss * dt + (w0 - wss) * T * (1.0 - e);
 	st->omega = w1;
+}
+
+/* Exact step of J w' = Td - k w - c sign(w) with dry friction stopping at 0. */
+void dc_motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st, double dt,
+		      struct hbridge_drive drive, double vbat, double load_nm, double extra_inertia)
+{
+	motor_advance(m, st, dt, drive, vbat, load_nm, extra_inertia, NULL);
 }
 
 /* ---- the attached motor ---- */
@@ -135,6 +164,7 @@ struct hs_motor {
 	int watch0, watch1;
 	struct hs_rng rng;
 	struct hs_signal *sig_angle, *sig_speed;
+	struct exp_memo step_exp;   /* of the segments' physics steps */
 };
 
 static struct hs_motor *port_motor[EV3_OUTPUT_PORTS];
@@ -174,10 +204,26 @@ static void show_index(struct hs_motor *m, int64_t h)
 	}
 }
 
+/* floor(x) as an integer, for |x| < 2^63, without libm's call (a step sets it, an edge reads it). */
+static int64_t floor_i64(double x)
+{
+	int64_t i = (int64_t)x;
+
+	return (double)i > x ? i - 1 : i;
+}
+
+/* ceil(x) as an integer, for 0 <= x < 2^64, without libm's call. */
+static uint64_t ceil_u64(double x)
+{
+	uint64_t c = (uint64_t)x;
+
+	return (double)c < x ? c + 1 : c;
+}
+
 /* Half-count index of an angle in rad: 720 half-counts per revolution. */
 static int64_t index_of(double theta)
 {
-	return (int64_t)floor(theta / RAD_PER_DEG * 2.0);
+	return floor_i64(theta / RAD_PER_DEG * 2.0);
 }
 
 /* Brings the pins to the angle at time t (emitting any missed edges in order). */
@@ -219,12 +265,10 @@ static void motor_schedule_edge(struct hs_motor *m)
 	 * and converting it to uint64_t ns would overflow into an edge "now". */
 	if (dt * 1e9 > (double)(m->seg_t1 - m->seg_t0))
 		return;
-	t = m->seg_t0 + (uint64_t)ceil(dt * 1e9);
+	t = m->seg_t0 + ceil_u64(dt * 1e9);
 	if (t > m->seg_t1)
 		return;
-	if (t < hs_now())
-		t = hs_now();
-	m->edge_ev = hs_event_at(t, edge_due, m);
+	m->edge_ev = hs_event_at(t, edge_due, m);   /* an edge already passed is due now */
 }
 
 /* Battery voltage in volts. */
@@ -277,8 +321,8 @@ static void motor_new_segment(struct hs_motor *m)
 	m->seg_theta0 = st.theta;
 	m->seg_omega0 = st.omega;
 	if (!m->stalled) {
-		dc_motor_advance(&m->model, &st, STEP_NS * 1e-9, m->drive, v, m->load_nm,
-				 m->extra_inertia);
+		motor_advance(&m->model, &st, STEP_NS * 1e-9, m->drive, v, m->load_nm,
+			      m->extra_inertia, &m->step_exp);
 		if (fabs(st.omega - m->seg_omega0) < STEADY_RAD_S && st.omega != 0.0) {
 			/* settled: a longer step loses nothing (inputs changes still cut it) */
 			st.theta = m->seg_theta0;

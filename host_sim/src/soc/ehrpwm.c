@@ -49,19 +49,15 @@ static void aq_sort(struct aq_event *ev, unsigned n)
 		}
 }
 
-/* Low fraction of an output over steady periods, starting from level, and
- * the level at position pos of a period (for a stopped time base). */
-static double aq_low_fraction(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uint32_t cmpb,
-			      uint32_t aqctl, bool level, uint32_t pos, bool *level_at_pos)
+/* The action events of one period, sorted; returns their count, *len the period in TBCLK cycles. */
+static unsigned aq_events(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uint32_t cmpb,
+			  uint32_t aqctl, struct aq_event ev[6], uint32_t *len)
 {
-	struct aq_event ev[6];
 	unsigned n = 0;
-	uint32_t len;
-	uint64_t low = 0;
 
 	/* AQCTL fields: ZRO 1:0, PRD 3:2, CAU 5:4, CAD 7:6, CBU 9:8, CBD 11:10 */
 	if (ctrmode == 0) {                 /* up: 0..PRD */
-		len = prd + 1U;
+		*len = prd + 1U;
 		ev[n++] = (struct aq_event){ 0, 0, (uint8_t)(aqctl & 3U) };
 		ev[n++] = (struct aq_event){ prd, 1, (uint8_t)((aqctl >> 2) & 3U) };
 		if (cmpa <= prd)
@@ -69,7 +65,7 @@ static double aq_low_fraction(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uin
 		if (cmpb <= prd)
 			ev[n++] = (struct aq_event){ cmpb, 3, (uint8_t)((aqctl >> 8) & 3U) };
 	} else if (ctrmode == 1) {          /* down: PRD..0 */
-		len = prd + 1U;
+		*len = prd + 1U;
 		ev[n++] = (struct aq_event){ 0, 1, (uint8_t)((aqctl >> 2) & 3U) };
 		ev[n++] = (struct aq_event){ prd, 0, (uint8_t)(aqctl & 3U) };
 		if (cmpa <= prd)
@@ -77,34 +73,115 @@ static double aq_low_fraction(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uin
 		if (cmpb <= prd)
 			ev[n++] = (struct aq_event){ prd - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U) };
 	} else {                            /* up-down: 0..PRD..0 */
-		len = prd ? 2U * prd : 1U;
+		uint32_t l = prd ? 2U * prd : 1U;
+
+		*len = l;
 		ev[n++] = (struct aq_event){ 0, 0, (uint8_t)(aqctl & 3U) };
 		ev[n++] = (struct aq_event){ prd, 1, (uint8_t)((aqctl >> 2) & 3U) };
 		if (cmpa < prd) {
 			ev[n++] = (struct aq_event){ cmpa, 2, (uint8_t)((aqctl >> 4) & 3U) };
 			if (cmpa)
-				ev[n++] = (struct aq_event){ len - cmpa, 2, (uint8_t)((aqctl >> 6) & 3U) };
+				ev[n++] = (struct aq_event){ l - cmpa, 2, (uint8_t)((aqctl >> 6) & 3U) };
 		}
 		if (cmpb < prd && n < 6) {
 			ev[n++] = (struct aq_event){ cmpb, 3, (uint8_t)((aqctl >> 8) & 3U) };
 			if (cmpb && n < 6)
-				ev[n++] = (struct aq_event){ len - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U) };
+				ev[n++] = (struct aq_event){ l - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U) };
 		}
 	}
 	aq_sort(ev, n);
-	/* three periods: the first settles toggles, the last two are measured */
-	for (unsigned period = 0; period < 3; period++) {
-		for (unsigned i = 0; i < n; i++) {
-			uint32_t end = (i + 1 < n) ? ev[i + 1].pos : len;
+	return n;
+}
 
-			level = aq_apply(level, ev[i].action);
-			if (period == 2 && level_at_pos && pos >= ev[i].pos && pos < end)
-				*level_at_pos = level;
-			if (period && !level)
-				low += end - ev[i].pos;
+/* AQCTL's compare-A (CAU, CAD) and compare-B (CBU, CBD) action fields. */
+#define AQ_CMPA_ACTIONS 0x0F0U
+#define AQ_CMPB_ACTIONS 0xF00U
+
+/* An output's steady periods for one setting of the counter mode, PRD, CMPA, CMPB and
+ * AQCTL: worked out when the setting changes, not on every update (a motor's duty is
+ * re-evaluated at every shadow load, its setting changes far less often).  A compare
+ * value whose actions are all "nothing" only splits a range of equal level, so it is
+ * left out of the setting: eHRPWM1's output A does not depend on CMPB, nor B on CMPA. */
+struct aq_steady {
+	bool valid;
+	unsigned ctrmode;
+	uint32_t prd, cmpa, cmpb, aqctl;
+	unsigned n;
+	uint32_t from[6], to[6];    /* positions where each event's level holds in a period */
+	bool level[2][6];           /* that level in a steady period, by the level before the first */
+	double low[2];              /* low fraction of the steady periods, likewise */
+};
+
+/* The compare value as the setting keeps it (0 when its actions do nothing). */
+static uint32_t aq_cmp_key(uint32_t cmp, uint32_t aqctl, uint32_t actions)
+{
+	return aqctl & actions ? cmp : 0;
+}
+
+/* Works c out for its setting as three periods from each start level (the first settles
+ * toggles, the last two are measured).  A period depends only on the level it starts at,
+ * so one period from each level gives all six. */
+static void aq_steady_fill(struct aq_steady *c, const struct aq_event *ev, uint32_t len)
+{
+	bool end[2], level[2][6];
+	uint64_t low[2];
+
+	for (unsigned from = 0; from < 2; from++) {
+		bool lvl = from != 0;
+
+		low[from] = 0;
+		for (unsigned i = 0; i < c->n; i++) {
+			lvl = aq_apply(lvl, ev[i].action);
+			level[from][i] = lvl;
+			if (!lvl)
+				low[from] += c->to[i] - c->from[i];
 		}
+		end[from] = lvl;
 	}
-	return (double)low / (2.0 * len);
+	for (unsigned start = 0; start < 2; start++) {
+		bool second = end[start], third = end[second];
+
+		for (unsigned i = 0; i < c->n; i++)
+			c->level[start][i] = level[third][i];
+		c->low[start] = (double)(low[second] + low[third]) / (2.0 * len);
+	}
+}
+
+/* The steady periods of a setting, from c if it holds that setting. */
+static const struct aq_steady *aq_steady_of(struct aq_steady *c, unsigned ctrmode, uint32_t prd,
+					     uint32_t cmpa, uint32_t cmpb, uint32_t aqctl)
+{
+	uint32_t cmpa_key = aq_cmp_key(cmpa, aqctl, AQ_CMPA_ACTIONS);
+	uint32_t cmpb_key = aq_cmp_key(cmpb, aqctl, AQ_CMPB_ACTIONS);
+	struct aq_event ev[6];
+	uint32_t len;
+
+	if (c->valid && c->ctrmode == ctrmode && c->prd == prd && c->cmpa == cmpa_key &&
+	    c->cmpb == cmpb_key && c->aqctl == aqctl)
+		return c;
+	c->valid = true;
+	c->ctrmode = ctrmode;
+	c->prd = prd;
+	c->cmpa = cmpa_key;
+	c->cmpb = cmpb_key;
+	c->aqctl = aqctl;
+	c->n = aq_events(ctrmode, prd, cmpa, cmpb, aqctl, ev, &len);
+	for (unsigned i = 0; i < c->n; i++) {
+		c->from[i] = ev[i].pos;
+		c->to[i] = (i + 1 < c->n) ? ev[i + 1].pos : len;
+	}
+	aq_steady_fill(c, ev, len);
+	return c;
+}
+
+/* Level at position pos of a steady period entered at level start (start
+ * itself if pos lies in no event's range; the ranges do not overlap). */
+static bool aq_level_at(const struct aq_steady *c, bool start, uint32_t pos)
+{
+	for (unsigned i = 0; i < c->n; i++)
+		if (pos >= c->from[i] && pos < c->to[i])
+			return c->level[start][i];
+	return start;
 }
 
 /* ---- eHRPWM1 ---- */
@@ -117,8 +194,11 @@ enum {
 	ETPS = 0x34, ETFLG = 0x36, ETCLR = 0x38, ETFRC = 0x3A, PCCTL = 0x3C,
 };
 
+#define EHRPWM_REG_SLOTS (PCCTL / 2 + 1)
+
 struct ehrpwm {
 	struct hs_region *r;
+	const uint32_t *value[EHRPWM_REG_SLOTS];   /* stored register values reg() reads, by offset / 2 */
 	uint16_t prd, cmpa, cmpb;   /* active registers (the CPU sees the shadows) */
 	bool prd_pending, cmpa_pending, cmpb_pending;
 	bool running;
@@ -128,11 +208,18 @@ struct ehrpwm {
 	hs_event_t load_ev;
 	double low[2];              /* outputs A, B */
 	bool level[2];
+	struct aq_steady steady[2]; /* outputs A, B */
 	int syscfg_watch;
 	enum hs_pwm_output out[2];  /* outputs A, B */
 	const char *name;
 	double freq;                /* time-base frequency last notified (Hz, 0 stopped) */
 };
+
+/* Stored value of a register (hs_reg_get without the lookup: several are read at every update). */
+static uint32_t reg(const struct ehrpwm *e, unsigned offset)
+{
+	return *e->value[offset / 2U];
+}
 
 /* Time-base clock for TBCTL dividers. */
 static uint64_t tbclk_hz(uint32_t tbctl)
@@ -155,7 +242,7 @@ static uint32_t tb_period_cycles(const struct ehrpwm *e, uint32_t tbctl)
 /* Position in the period (TBCLK cycles from the period start) now. */
 static uint32_t tb_position(const struct ehrpwm *e)
 {
-	uint32_t tbctl = hs_reg_get(e->r, TBCTL);
+	uint32_t tbctl = reg(e, TBCTL);
 	uint32_t len = tb_period_cycles(e, tbctl);
 	uint64_t pos;
 
@@ -170,7 +257,7 @@ static uint32_t tb_position(const struct ehrpwm *e)
 /* Counter value at a period position. */
 static uint32_t tb_counter(const struct ehrpwm *e, uint32_t pos)
 {
-	switch (hs_reg_get(e->r, TBCTL) & 3U) {
+	switch (reg(e, TBCTL) & 3U) {
 	case 1: return e->prd - pos;
 	case 2: return pos <= e->prd ? pos : 2U * e->prd - pos;
 	default: return pos;
@@ -180,7 +267,7 @@ static uint32_t tb_counter(const struct ehrpwm *e, uint32_t pos)
 /* Recomputes both outputs; tells the motors if anything changed. */
 static void ehrpwm_update(struct ehrpwm *e)
 {
-	uint32_t tbctl = hs_reg_get(e->r, TBCTL), csfrc = hs_reg_get(e->r, AQCSFRC);
+	uint32_t tbctl = reg(e, TBCTL), csfrc = reg(e, AQCSFRC);
 	uint32_t pos = tb_position(e), len = tb_period_cycles(e, tbctl);
 	static const uint32_t aq[2] = { AQCTLA, AQCTLB };
 	double freq = e->running && len ? (double)tbclk_hz(tbctl) / len : 0;
@@ -195,12 +282,15 @@ static void ehrpwm_update(struct ehrpwm *e)
 			low = lvl ? 0.0 : 1.0;
 		} else if (!e->running) {
 			if ((tbctl & 3U) != 3U)
-				(void)aq_low_fraction(tbctl & 3U, e->prd, e->cmpa, e->cmpb,
-						      hs_reg_get(e->r, aq[o]), lvl, pos, &lvl);
+				lvl = aq_level_at(aq_steady_of(&e->steady[o], tbctl & 3U, e->prd, e->cmpa,
+							       e->cmpb, reg(e, aq[o])), lvl, pos);
 			low = lvl ? 0.0 : 1.0;
 		} else {
-			low = aq_low_fraction(tbctl & 3U, e->prd, e->cmpa, e->cmpb,
-					      hs_reg_get(e->r, aq[o]), lvl, pos, &lvl);
+			const struct aq_steady *c = aq_steady_of(&e->steady[o], tbctl & 3U, e->prd, e->cmpa,
+								 e->cmpb, reg(e, aq[o]));
+
+			low = c->low[lvl];
+			lvl = aq_level_at(c, lvl, pos);
 		}
 		e->level[o] = lvl;
 		if (low != e->low[o] || freq != e->freq) {
@@ -217,22 +307,22 @@ static void ehrpwm_schedule_load(struct ehrpwm *e);
 static void ehrpwm_load(void *arg)
 {
 	struct ehrpwm *e = arg;
-	uint32_t cmpctl = hs_reg_get(e->r, CMPCTL);
+	uint32_t cmpctl = reg(e, CMPCTL);
 	uint32_t pos = tb_position(e), cnt = tb_counter(e, pos);
 	bool at_zero = cnt == 0, at_prd = cnt == e->prd;
 	unsigned la = cmpctl & 3U, lb = (cmpctl >> 2) & 3U;
 
 	e->load_ev = 0;
 	if (e->prd_pending && at_zero) {
-		e->prd = (uint16_t)hs_reg_get(e->r, TBPRD);
+		e->prd = (uint16_t)reg(e, TBPRD);
 		e->prd_pending = false;
 	}
 	if (e->cmpa_pending && ((la == 0 && at_zero) || (la == 1 && at_prd) || (la == 2 && (at_zero || at_prd)))) {
-		e->cmpa = (uint16_t)hs_reg_get(e->r, CMPA);
+		e->cmpa = (uint16_t)reg(e, CMPA);
 		e->cmpa_pending = false;
 	}
 	if (e->cmpb_pending && ((lb == 0 && at_zero) || (lb == 1 && at_prd) || (lb == 2 && (at_zero || at_prd)))) {
-		e->cmpb = (uint16_t)hs_reg_get(e->r, CMPB);
+		e->cmpb = (uint16_t)reg(e, CMPB);
 		e->cmpb_pending = false;
 	}
 	hs_reg_update(e->r, CMPCTL, (e->cmpa_pending ? 0U : 1U << 8) | (e->cmpb_pending ? 0U : 1U << 9), 0);
@@ -243,7 +333,7 @@ static void ehrpwm_load(void *arg)
 /* Schedules the next counter-zero or period instant if a shadow is pending. */
 static void ehrpwm_schedule_load(struct ehrpwm *e)
 {
-	uint32_t tbctl = hs_reg_get(e->r, TBCTL);
+	uint32_t tbctl = reg(e, TBCTL);
 	uint32_t len = tb_period_cycles(e, tbctl), pos, next;
 
 	hs_event_cancel(&e->load_ev);
@@ -264,7 +354,7 @@ static void ehrpwm_schedule_load(struct ehrpwm *e)
 /* Re-bases the counter at now and re-evaluates whether the time base runs. */
 static void ehrpwm_rebase(struct ehrpwm *e)
 {
-	uint32_t tbctl = hs_reg_get(e->r, TBCTL);
+	uint32_t tbctl = reg(e, TBCTL);
 	bool run = (tbctl & 3U) != 3U && hs_syscfg_tbclksync();
 
 	e->cnt_ref = tb_position(e);
@@ -293,7 +383,7 @@ static void ehrpwm_read_tbcnt(void *ctx, const struct hs_access *a, uint32_t *va
 static void ehrpwm_read_tbsts(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct ehrpwm *e = ctx;
-	uint32_t tbctl = hs_reg_get(e->r, TBCTL), pos = tb_position(e);
+	uint32_t tbctl = reg(e, TBCTL), pos = tb_position(e);
 	bool up = (tbctl & 3U) == 0U || ((tbctl & 3U) == 2U && pos < e->prd);
 
 	*value = (*value & ~1U) | (up ? 1U : 0U);
@@ -310,7 +400,7 @@ static void ehrpwm_write_tb(void *ctx, const struct hs_access *a, uint32_t old, 
 		if (nv & (1U << 6))     /* SWFSYNC: one-shot, reads back 0; loads TBPHS if PHSEN */
 			hs_reg_update(e->r, TBCTL, 1U << 6, 0);
 		if ((nv & (1U << 2)) && (nv & (1U << 6))) {
-			e->cnt_ref = hs_reg_get(e->r, TBPHS);
+			e->cnt_ref = reg(e, TBPHS);
 			e->t_ref = hs_now();
 		}
 		break;
@@ -319,7 +409,7 @@ static void ehrpwm_write_tb(void *ctx, const struct hs_access *a, uint32_t old, 
 		e->t_ref = hs_now();
 		break;
 	case TBPRD:
-		if (hs_reg_get(e->r, TBCTL) & (1U << 3))
+		if (reg(e, TBCTL) & (1U << 3))
 			e->prd = (uint16_t)nv;
 		else
 			e->prd_pending = true;
@@ -335,7 +425,7 @@ static void ehrpwm_write_cmp(void *ctx, const struct hs_access *a, uint32_t old,
 			    uint32_t written)
 {
 	struct ehrpwm *e = ctx;
-	uint32_t cmpctl = hs_reg_get(e->r, CMPCTL);
+	uint32_t cmpctl = reg(e, CMPCTL);
 
 	if (a->offset == CMPA) {
 		if (cmpctl & (1U << 4)) {
@@ -440,7 +530,7 @@ static double ehrpwm_frequency(const void *ctx, unsigned channel)
 	(void)channel;
 	if (!e->running)
 		return 0;
-	tbctl = hs_reg_get(e->r, TBCTL);
+	tbctl = reg(e, TBCTL);
 	return (double)tbclk_hz(tbctl) / tb_period_cycles(e, tbctl);
 }
 
@@ -472,6 +562,8 @@ static ER ehrpwm_create(const struct ehrpwm_instance *in, void **ctx)
 		free(e);
 		return E_PAR;
 	}
+	for (unsigned i = 0; i < HS_ARRAY_SIZE(ehrpwm_regs); i++)
+		e->value[ehrpwm_regs[i].offset / 2U] = hs_reg_value_ptr(e->r, ehrpwm_regs[i].offset);
 	e->name = in->name;
 	e->out[0] = in->out[0];
 	e->out[1] = in->out[1];

@@ -158,7 +158,7 @@ static void pin_trace_declare(unsigned pin)
 }
 
 /* Records the pin's level (or 'z' when nothing drives it) in its trace signal. */
-static void pin_trace(unsigned pin)
+static inline void pin_trace(unsigned pin)
 {
 	struct pin *p = &g.pins[pin];
 
