@@ -56,10 +56,12 @@ struct hs_uart {
 	hs_event_t tx_ev, timeout_ev, break_ev;
 	bool thre_int;              /* THRE interrupt source pending */
 	bool timeout_int;           /* character timeout pending */
+	bool timeout_deferred;      /* timeout due since the last RX activity but not armed (timeout_defer) */
 	bool overrun;               /* OE until LSR is read */
 	bool line_high;
 	bool break_sent;
 	bool irq;
+	unsigned iir;               /* iir_id() as of the last irq_update */
 	bool irq_stale;             /* a source changed without irq_update (THRE from a divisor write) */
 	struct hs_uart_peer peer;
 	struct hs_uart_stats stats;
@@ -167,8 +169,10 @@ static unsigned iir_id(const struct hs_uart *u)
 /* Drives the interrupt request line from the current sources. */
 static void irq_update(struct hs_uart *u)
 {
-	bool level = iir_id(u) != HS_UART_IIR_NONE;
+	bool level;
 
+	u->iir = iir_id(u);
+	level = u->iir != HS_UART_IIR_NONE;
 	u->irq_stale = false;
 	if (level != u->irq) {
 		u->irq = level;
@@ -196,13 +200,39 @@ static void timeout_due(void *arg)
 	irq_update(u);
 }
 
-/* Notes RX activity (a byte in or out of the FIFO) for the character timeout. */
+/* Notes RX activity (a byte in or out of the FIFO) for the character timeout.
+ * While the FIFO holds the trigger level the data interrupt outranks the
+ * timeout and only reading (activity again, which restarts the timeout)
+ * brings the FIFO below it, so the timer is not armed then: with the
+ * drivers' trigger level of 1 that is every byte.  Only a change of the
+ * trigger level or the character time could expose it; those settle it
+ * first (timeout_settle). */
 static void rx_activity(struct hs_uart *u)
 {
 	u->last_rx_activity = hs_now();
 	u->timeout_int = false;
-	if (!u->timeout_ev && fifo_mode(u) && u->rx_count && (u->ier & IER_ERBI))
+	u->timeout_deferred = false;
+	if (u->timeout_ev || !fifo_mode(u) || !u->rx_count || !(u->ier & IER_ERBI))
+		return;
+	if (u->rx_count >= rx_trigger(u))
+		u->timeout_deferred = true;
+	else
 		u->timeout_ev = hs_event_at(u->last_rx_activity + u->timeout_ns, timeout_due, u);
+}
+
+/* Before FCR or the character time changes: a deferred timeout becomes what
+ * the armed timer would have made of it by now (set, or still to come). */
+static void timeout_settle(struct hs_uart *u)
+{
+	uint64_t due = u->last_rx_activity + u->timeout_ns;
+
+	if (!u->timeout_deferred)
+		return;
+	u->timeout_deferred = false;
+	if (hs_now() > due)
+		u->timeout_int = true;
+	else
+		u->timeout_ev = hs_event_at(due, timeout_due, u);
 }
 
 /* A received character enters the FIFO, or overruns. */
@@ -338,6 +368,7 @@ static void write_thr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB) {
+		timeout_settle(u);
 		hs_reg_set(u->r, DLL, written & 0xFFU);
 		u->dll = written & 0xFFU;
 		timing_update(u);
@@ -375,6 +406,7 @@ static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB) {
+		timeout_settle(u);
 		hs_reg_set(u->r, IER, old);
 		hs_reg_set(u->r, DLH, written & 0xFFU);
 		u->dlh = written & 0xFFU;
@@ -394,7 +426,7 @@ static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32
 static void read_iir(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct hs_uart *u = ctx;
-	unsigned id = iir_id(u);
+	unsigned id = u->irq_stale ? iir_id(u) : u->iir;
 
 	*value = id | (fifo_mode(u) ? HS_UART_IIR_FIFOS_ON : 0U);
 	if (id == HS_UART_IIR_THR_EMPTY) {   /* reading IIR clears a THRE interrupt */
@@ -408,6 +440,7 @@ static void write_fcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 {
 	struct hs_uart *u = ctx;
 
+	timeout_settle(u);
 	u->fcr = (uint8_t)(written & 0xC9U);
 	if (written & 0x02U) {      /* RXCLR */
 		u->rx_count = 0;
@@ -426,6 +459,7 @@ static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	struct hs_uart *u = ctx;
 	bool brk = nv & LCR_BC;
 
+	timeout_settle(u);
 	u->lcr = nv;
 	timing_update(u);
 	if (brk != u->break_sent) {
@@ -472,6 +506,7 @@ static void write_div(void *ctx, const struct hs_access *a, uint32_t old, uint32
 {
 	struct hs_uart *u = ctx;
 
+	timeout_settle(u);
 	if (a->offset == DLL)
 		u->dll = nv;
 	else
@@ -488,6 +523,7 @@ static void write_mcr_mdr(void *ctx, const struct hs_access *a, uint32_t old, ui
 	if (a->offset == MCR) {
 		u->mcr = nv;
 	} else {
+		timeout_settle(u);
 		u->mdr = nv;
 		timing_update(u);
 	}
@@ -504,6 +540,7 @@ static void write_pwremu(void *ctx, const struct hs_access *a, uint32_t old, uin
 		u->rx_errs = 0;
 		u->overrun = false;
 		u->timeout_int = false;
+		u->timeout_deferred = false;
 		hs_event_cancel(&u->timeout_ev);
 	}
 	if (!(nv & PWREMU_UTRST)) {
@@ -568,6 +605,7 @@ ER hs_uart_create(const struct hs_uart_cfg *cfg, struct hs_uart **out)
 		hs_reg_set(u->r, PWREMU, u->pwremu);
 	}
 	u->line_high = true;
+	u->iir = HS_UART_IIR_NONE;
 	timing_update(u);
 	*out = u;
 	return E_OK;
