@@ -42,9 +42,13 @@ struct hs_uart {
 	uint8_t fcr;                /* FCR is write-only: its state lives here */
 	/* copies of the registers the byte path consults, kept by the write hooks */
 	uint32_t lcr, mcr, ier, dll, dlh, mdr, pwremu;
+	/* derived from lcr, dll, dlh, mdr by timing_update: the byte path reads them per byte */
+	uint32_t baud, baud_lo, baud_hi;    /* baud, and the +-4 % a received byte may differ by */
+	uint64_t char_ns, timeout_ns;       /* one character, and the 4-character timeout */
 	uint64_t last_rx_activity;  /* for the character timeout */
 	uint8_t rx[FIFO_SIZE], rx_err[FIFO_SIZE];
 	unsigned rx_head, rx_count;
+	unsigned rx_errs;           /* FIFO entries whose error bits LSR has not reported */
 	uint8_t tx[FIFO_SIZE];
 	unsigned tx_head, tx_count;
 	bool tsr_busy;
@@ -52,10 +56,13 @@ struct hs_uart {
 	hs_event_t tx_ev, timeout_ev, break_ev;
 	bool thre_int;              /* THRE interrupt source pending */
 	bool timeout_int;           /* character timeout pending */
+	bool timeout_deferred;      /* timeout due since the last RX activity but not armed (timeout_defer) */
 	bool overrun;               /* OE until LSR is read */
 	bool line_high;
 	bool break_sent;
 	bool irq;
+	unsigned iir;               /* iir_id() as of the last irq_update */
+	bool irq_stale;             /* a source changed without irq_update (THRE from a divisor write) */
 	struct hs_uart_peer peer;
 	struct hs_uart_stats stats;
 };
@@ -114,12 +121,20 @@ static uint64_t bits_ns(const struct hs_uart *u, unsigned n)
 /* Current baud. */
 uint32_t hs_uart_baud(const struct hs_uart *u)
 {
+	return u->baud;
+}
+
+/* Recomputes what the byte path derives from LCR, DLL, DLH and MDR; called whenever one changes. */
+static void timing_update(struct hs_uart *u)
+{
 	uint32_t div = divisor(u);
 
-	if (!div)
-		return 0;
-	return (uint32_t)((u->cfg->clock_hz + (uint64_t)oversampling(u) * div / 2U) /
-			  ((uint64_t)oversampling(u) * div));
+	u->baud = div ? (uint32_t)((u->cfg->clock_hz + (uint64_t)oversampling(u) * div / 2U) /
+				   ((uint64_t)oversampling(u) * div)) : 0U;
+	u->baud_lo = u->baud - u->baud / 25U;
+	u->baud_hi = u->baud + u->baud / 25U;
+	u->char_ns = bits_ns(u, char_bits(u));
+	u->timeout_ns = bits_ns(u, 4U * char_bits(u));
 }
 
 /* Receiver out of reset. */
@@ -154,8 +169,11 @@ static unsigned iir_id(const struct hs_uart *u)
 /* Drives the interrupt request line from the current sources. */
 static void irq_update(struct hs_uart *u)
 {
-	bool level = iir_id(u) != HS_UART_IIR_NONE;
+	bool level;
 
+	u->iir = iir_id(u);
+	level = u->iir != HS_UART_IIR_NONE;
+	u->irq_stale = false;
 	if (level != u->irq) {
 		u->irq = level;
 		hs_intc_set_level(u->cfg->intno, level);
@@ -169,7 +187,7 @@ static void irq_update(struct hs_uart *u)
 static void timeout_due(void *arg)
 {
 	struct hs_uart *u = arg;
-	uint64_t due = u->last_rx_activity + bits_ns(u, 4U * char_bits(u));
+	uint64_t due = u->last_rx_activity + u->timeout_ns;
 
 	u->timeout_ev = 0;
 	if (!fifo_mode(u) || !u->rx_count || !(u->ier & IER_ERBI))
@@ -182,13 +200,39 @@ static void timeout_due(void *arg)
 	irq_update(u);
 }
 
-/* Notes RX activity (a byte in or out of the FIFO) for the character timeout. */
+/* Notes RX activity (a byte in or out of the FIFO) for the character timeout.
+ * While the FIFO holds the trigger level the data interrupt outranks the
+ * timeout and only reading (activity again, which restarts the timeout)
+ * brings the FIFO below it, so the timer is not armed then: with the
+ * drivers' trigger level of 1 that is every byte.  Only a change of the
+ * trigger level or the character time could expose it; those settle it
+ * first (timeout_settle). */
 static void rx_activity(struct hs_uart *u)
 {
 	u->last_rx_activity = hs_now();
 	u->timeout_int = false;
-	if (!u->timeout_ev && fifo_mode(u) && u->rx_count && (u->ier & IER_ERBI))
-		u->timeout_ev = hs_event_at(u->last_rx_activity + bits_ns(u, 4U * char_bits(u)), timeout_due, u);
+	u->timeout_deferred = false;
+	if (u->timeout_ev || !fifo_mode(u) || !u->rx_count || !(u->ier & IER_ERBI))
+		return;
+	if (u->rx_count >= rx_trigger(u))
+		u->timeout_deferred = true;
+	else
+		u->timeout_ev = hs_event_at(u->last_rx_activity + u->timeout_ns, timeout_due, u);
+}
+
+/* Before FCR or the character time changes: a deferred timeout becomes what
+ * the armed timer would have made of it by now (set, or still to come). */
+static void timeout_settle(struct hs_uart *u)
+{
+	uint64_t due = u->last_rx_activity + u->timeout_ns;
+
+	if (!u->timeout_deferred)
+		return;
+	u->timeout_deferred = false;
+	if (hs_now() > due)
+		u->timeout_int = true;
+	else
+		u->timeout_ev = hs_event_at(due, timeout_due, u);
 }
 
 /* A received character enters the FIFO, or overruns. */
@@ -207,6 +251,7 @@ static void rx_push(struct hs_uart *u, uint8_t byte, uint8_t err)
 
 		u->rx[i] = byte;
 		u->rx_err[i] = err;
+		u->rx_errs += err != 0;
 		u->rx_count++;
 		u->stats.rx_bytes++;
 	}
@@ -221,8 +266,8 @@ void hs_uart_rx_byte(struct hs_uart *u, uint8_t byte, uint32_t baud)
 
 	if (!u || (u->mcr & MCR_LOOP))
 		return;
-	mine = hs_uart_baud(u);
-	if (!mine || baud < mine - mine / 25U || baud > mine + mine / 25U) {
+	mine = u->baud;
+	if (!mine || baud < u->baud_lo || baud > u->baud_hi) {
 		/* sampled at the wrong rate: the receiver assembles other bits and misses the stop bit */
 		u->stats.framing_errors++;
 		rx_push(u, (uint8_t)(baud > mine ? (byte | 0x80U) ^ 0x55U : 0x00U), LSR_FE);
@@ -249,7 +294,7 @@ void hs_uart_rx_line(struct hs_uart *u, bool high)
 	u->line_high = high;
 	hs_event_cancel(&u->break_ev);
 	if (!high && divisor(u))
-		u->break_ev = hs_event_after(bits_ns(u, char_bits(u)), break_due, u);
+		u->break_ev = hs_event_after(u->char_ns, break_due, u);
 }
 
 /* ---- transmitter ---- */
@@ -261,7 +306,7 @@ static void tx_done(void *arg)
 {
 	struct hs_uart *u = arg;
 	uint8_t b = u->tsr;
-	uint32_t baud = hs_uart_baud(u);
+	uint32_t baud = u->baud;
 
 	u->tx_ev = 0;
 	u->tsr_busy = false;
@@ -281,15 +326,17 @@ static void tx_start(struct hs_uart *u)
 
 	if (u->tsr_busy || !u->tx_count || !tx_enabled(u))
 		return;
-	ns = bits_ns(u, char_bits(u));
+	ns = u->char_ns;
 	if (!ns)
 		return;     /* no baud clock: the byte waits */
 	u->tsr = u->tx[u->tx_head];
 	u->tx_head = (u->tx_head + 1U) % FIFO_SIZE;
 	u->tx_count--;
 	u->tsr_busy = true;
-	if (!u->tx_count)
+	if (!u->tx_count) {
 		u->thre_int = true;
+		u->irq_stale = true;
+	}
 	u->tx_ev = hs_event_after(ns, tx_done, u);
 }
 
@@ -308,6 +355,7 @@ static void read_rbr(void *ctx, const struct hs_access *a, uint32_t *value)
 		return;
 	}
 	*value = u->rx[u->rx_head];
+	u->rx_errs -= u->rx_err[u->rx_head] != 0;
 	u->rx_head = (u->rx_head + 1U) % FIFO_SIZE;
 	u->rx_count--;
 	rx_activity(u);
@@ -320,8 +368,10 @@ static void write_thr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB) {
+		timeout_settle(u);
 		hs_reg_set(u->r, DLL, written & 0xFFU);
 		u->dll = written & 0xFFU;
+		timing_update(u);
 		tx_start(u);
 		return;
 	}
@@ -356,9 +406,11 @@ static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	struct hs_uart *u = ctx;
 
 	if (u->lcr & LCR_DLAB) {
+		timeout_settle(u);
 		hs_reg_set(u->r, IER, old);
 		hs_reg_set(u->r, DLH, written & 0xFFU);
 		u->dlh = written & 0xFFU;
+		timing_update(u);
 		tx_start(u);
 		return;
 	}
@@ -374,7 +426,7 @@ static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32
 static void read_iir(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct hs_uart *u = ctx;
-	unsigned id = iir_id(u);
+	unsigned id = u->irq_stale ? iir_id(u) : u->iir;
 
 	*value = id | (fifo_mode(u) ? HS_UART_IIR_FIFOS_ON : 0U);
 	if (id == HS_UART_IIR_THR_EMPTY) {   /* reading IIR clears a THRE interrupt */
@@ -388,9 +440,11 @@ static void write_fcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 {
 	struct hs_uart *u = ctx;
 
+	timeout_settle(u);
 	u->fcr = (uint8_t)(written & 0xC9U);
 	if (written & 0x02U) {      /* RXCLR */
 		u->rx_count = 0;
+		u->rx_errs = 0;
 		u->timeout_int = false;
 		hs_event_cancel(&u->timeout_ev);
 	}
@@ -405,7 +459,9 @@ static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	struct hs_uart *u = ctx;
 	bool brk = nv & LCR_BC;
 
+	timeout_settle(u);
 	u->lcr = nv;
+	timing_update(u);
 	if (brk != u->break_sent) {
 		u->break_sent = brk;
 		if (u->peer.tx_break)
@@ -413,30 +469,36 @@ static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	}
 }
 
-/* LSR read: status now; error bits clear. */
+/* LSR read: status now; error bits clear.  Only clearing an error (or a
+ * source left stale) can move the interrupt line, so a clean read, the
+ * drivers' per-byte poll, leaves it alone. */
 static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct hs_uart *u = ctx;
 	uint32_t v = 0;
-	bool any_err = false;
+	uint8_t head_err = 0;
 
 	if (u->rx_count) {
-		v |= LSR_DR | u->rx_err[u->rx_head];
-		for (unsigned i = 0; i < u->rx_count; i++)
-			any_err |= u->rx_err[(u->rx_head + i) % FIFO_SIZE] != 0;
-		u->rx_err[u->rx_head] = 0;  /* reported: cleared by this read */
+		head_err = u->rx_err[u->rx_head];
+		v |= LSR_DR | head_err;
+		if (u->rx_errs && fifo_mode(u))
+			v |= LSR_RXFIFOE;
+		if (head_err) {     /* reported: cleared by this read */
+			u->rx_err[u->rx_head] = 0;
+			u->rx_errs--;
+		}
 	}
 	if (u->overrun)
 		v |= LSR_OE;
-	if (any_err && fifo_mode(u))
-		v |= LSR_RXFIFOE;
 	if (!u->tx_count)
 		v |= LSR_THRE;
 	if (!u->tx_count && !u->tsr_busy)
 		v |= LSR_TEMT;
-	u->overrun = false;
 	*value = v;
-	irq_update(u);
+	if (u->overrun || head_err || u->irq_stale) {
+		u->overrun = false;
+		irq_update(u);
+	}
 }
 
 /* DLL/DLH write: new baud. */
@@ -444,10 +506,12 @@ static void write_div(void *ctx, const struct hs_access *a, uint32_t old, uint32
 {
 	struct hs_uart *u = ctx;
 
+	timeout_settle(u);
 	if (a->offset == DLL)
 		u->dll = nv;
 	else
 		u->dlh = nv;
+	timing_update(u);
 	tx_start(u);
 }
 
@@ -456,10 +520,13 @@ static void write_mcr_mdr(void *ctx, const struct hs_access *a, uint32_t old, ui
 {
 	struct hs_uart *u = ctx;
 
-	if (a->offset == MCR)
+	if (a->offset == MCR) {
 		u->mcr = nv;
-	else
+	} else {
+		timeout_settle(u);
 		u->mdr = nv;
+		timing_update(u);
+	}
 }
 
 /* PWREMU_MGMT: reset bits flush receiver/transmitter. */
@@ -470,8 +537,10 @@ static void write_pwremu(void *ctx, const struct hs_access *a, uint32_t old, uin
 	u->pwremu = nv;
 	if (!(nv & PWREMU_URRST)) {
 		u->rx_count = 0;
+		u->rx_errs = 0;
 		u->overrun = false;
 		u->timeout_int = false;
+		u->timeout_deferred = false;
 		hs_event_cancel(&u->timeout_ev);
 	}
 	if (!(nv & PWREMU_UTRST)) {
@@ -536,6 +605,8 @@ ER hs_uart_create(const struct hs_uart_cfg *cfg, struct hs_uart **out)
 		hs_reg_set(u->r, PWREMU, u->pwremu);
 	}
 	u->line_high = true;
+	u->iir = HS_UART_IIR_NONE;
+	timing_update(u);
 	*out = u;
 	return E_OK;
 }
