@@ -74,7 +74,6 @@ struct hs_route {
 	uint8_t kind;           /* enum hs_reg_kind */
 	bool logged;            /* the region's log flag, kept by hs_space_set_reglog */
 	bool after_read;        /* read: something is cleared or logged after the value is taken */
-	bool plain;             /* read: no hook and nothing after_read (the value is all) */
 	struct hs_access acc;   /* what the hooks are told */
 	struct hs_region *r;
 	struct hs_elem *e;
@@ -110,6 +109,7 @@ static struct {
 	struct hs_region *last;                     /* last region hit: drivers mostly stay in one */
 	unsigned next_page;
 	uint32_t access_ns;
+	uint64_t access_cost;                       /* cost_value(access_ns, 0) */
 	char *log_filter;
 	FILE *log_out;
 	bool logging;
@@ -127,11 +127,12 @@ static const struct hs_power_controller *power_ctl;
  */
 #define HS_WCACHE_SLOTS 128U    /* a power of two */
 struct wcache_slot {
-	uintptr_t addr;             /* window address; 0: empty */
+	uint64_t key;               /* wcache_key of the access; WCACHE_EMPTY: none */
 	const struct hs_route *route;
 	const bool *power_live;     /* the region's */
-	uint8_t width;
 };
+/* No access has this key (its width would be 7). */
+#define WCACHE_EMPTY UINT64_MAX
 static struct wcache_slot rd_wcache[HS_WCACHE_SLOTS], wr_wcache[HS_WCACHE_SLOTS];
 
 /* All-ones mask of width bytes (1, 2 or 4): one shift, as it is on every access. */
@@ -151,18 +152,25 @@ static inline struct wcache_slot *wcache_slot(struct wcache_slot *c, uintptr_t a
 	return &c[((uint32_t)addr * 0x9E3779B1U) >> (32U - HS_WCACHE_BITS)];
 }
 
+/* A width-byte access at window address addr as one number, so that the cache
+ * compares address and width at once (a user address is below 2^61). */
+static inline uint64_t wcache_key(uintptr_t addr, unsigned width)
+{
+	return (uint64_t)addr << 3 | width;
+}
+
 /* Empties both window caches (regions or their log flags changed). */
 static void wcache_clear(void)
 {
-	memset(rd_wcache, 0, sizeof(rd_wcache));
-	memset(wr_wcache, 0, sizeof(wr_wcache));
+	for (unsigned i = 0; i < HS_WCACHE_SLOTS; i++)
+		rd_wcache[i].key = wr_wcache[i].key = WCACHE_EMPTY;
 }
 
 /* Remembers that a width-byte access at addr (in region r) takes route rt. */
 static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, const struct hs_region *r,
 			       const struct hs_route *rt, unsigned width)
 {
-	*slot = (struct wcache_slot){ addr, rt, r->power_live, (uint8_t)width };
+	*slot = (struct wcache_slot){ wcache_key(addr, width), rt, r->power_live };
 }
 
 /* Routes an element of natural width w has per direction, when its narrowest
@@ -247,6 +255,8 @@ int hs_space_init(uint32_t access_ns)
 	space.next_page = HS_MIRROR_PAGES;
 	space.nregions = 0;
 	space.access_ns = access_ns;
+	space.access_cost = (uint64_t)access_ns << 32;
+	wcache_clear();
 	memset(space.page_owner, 0, sizeof(space.page_owner));
 	return 0;
 }
@@ -395,12 +405,11 @@ static bool map_elem(int16_t *map, const struct hs_region *r, const struct hs_el
 	return true;
 }
 
-/* Sets what a route's log flag decides: logged, and for a read whether the value is all it does. */
+/* Sets a route's log flag and, for a read, whether anything follows taking the value. */
 static void route_set_logged(struct hs_route *rt, bool logged)
 {
 	rt->logged = logged;
 	rt->after_read = !rt->acc.write && (rt->bits != 0 || logged);
-	rt->plain = !rt->acc.write && rt->before_read == NULL && !rt->after_read;
 }
 
 /* The narrowest width an element allows (its widths hold the width bits, HS_Wn == n). */
@@ -823,36 +832,43 @@ static inline uint64_t cost_value(uint32_t ns, uint32_t v)
 	return (uint64_t)ns << 32 | v;
 }
 
+/* What a read through route rt returns, taken after its hook ran. */
+static inline uint32_t route_value(const struct hs_route *rt)
+{
+	return (*rt->value >> rt->shift) & rt->wmask;
+}
+
 /* The end of a read through route rt that has something after_read: takes
- * the value, clears the clear-on-read bits, logs. */
+ * the value, clears the clear-on-read bits, logs; see route_read. */
 static __attribute__((noinline)) uint64_t route_read_after(const struct hs_route *rt)
 {
-	uint32_t v = (*rt->value >> rt->shift) & rt->wmask;
+	uint32_t v = route_value(rt);
 
 	*rt->value &= ~rt->bits;
 	if (rt->logged)
 		reglog(rt->r, rt->e, rt->phys, false, rt->acc.width, v);
-	return cost_value(space.access_ns, v);
+	return space.access_cost | v;
 }
 
-/* route_read of a route that is not plain (out of line, so that the plain
- * reads need no frame). */
-static __attribute__((noinline)) uint64_t route_read_full(const struct hs_route *rt)
+/* route_read of a route with a hook (out of line, so that the reads without
+ * one need no frame). */
+static __attribute__((noinline)) uint64_t route_read_hooked(const struct hs_route *rt)
 {
-	if (rt->before_read)
-		rt->before_read(rt->ctx, &rt->acc, rt->value);
+	rt->before_read(rt->ctx, &rt->acc, rt->value);
 	if (rt->after_read)
 		return route_read_after(rt);
-	return cost_value(space.access_ns, (*rt->value >> rt->shift) & rt->wmask);
+	return space.access_cost | route_value(rt);
 }
 
 /* A checked read through route rt: hooked, clear-on-read applied, logged;
  * the access time it costs, unspent, and the value (see cost_value). */
 static inline __attribute__((always_inline)) uint64_t route_read(const struct hs_route *rt)
 {
-	if (rt->plain)
-		return cost_value(space.access_ns, (*rt->value >> rt->shift) & rt->wmask);
-	return route_read_full(rt);
+	if (rt->before_read)
+		return route_read_hooked(rt);
+	if (rt->after_read)
+		return route_read_after(rt);
+	return space.access_cost | route_value(rt);
 }
 
 /* One CPU read of width bytes (1, 2 or 4) at offset off of r: checked, hooked,
@@ -1007,7 +1023,7 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
 		wcache_fill(slot, (uintptr_t)addr, r, rt, width);
 		return route_read(rt);
 	}
-	return cost_value(space.access_ns, 0);
+	return space.access_cost;
 }
 
 /* One accessor read of width bytes at window address addr: the access time it
@@ -1017,7 +1033,7 @@ static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *c
 	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live)
+	if (slot->key == wcache_key((uintptr_t)addr, width) && *slot->power_live)
 		return route_read(slot->route);
 	return mmio_read_miss(addr, width, slot);
 }
@@ -1060,7 +1076,7 @@ static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t dat
 	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
+	if (slot->key == wcache_key((uintptr_t)addr, width) && *slot->power_live) {
 		route_write(slot->route, data & slot->route->wmask);
 		return space.access_ns;
 	}
