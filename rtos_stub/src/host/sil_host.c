@@ -90,13 +90,14 @@ static __attribute__((noinline)) uint32_t access_end_slow(uint32_t ns, uint32_t 
  * clock and undo the deferral, takes no call and needs no frame. */
 static inline __attribute__((always_inline)) uint32_t access_end(uint32_t ns, uint32_t v)
 {
-	uint64_t now = now_ns;
+	uint64_t end = now_ns + ns;
 
-	/* Exactly the cases in which access_spend adds ns and access_done then finds no
+	/* Cases in which access_spend adds ns (no event due before the end: then
+	 * ns < event_next_time() - now_ns, its test) and access_done then finds no
 	 * interrupt to take (none pending), no task to switch to and no deadline reached. */
-	if (ns < event_next_time() - now && kernel_booted && irq_pending_lines == 0 && schedtsk == runtsk &&
-	    (now + ns < run_deadline || !run_active)) {
-		now_ns = now + ns;
+	if (end < event_next_time() && kernel_booted && irq_pending_lines == 0 && schedtsk == runtsk &&
+	    (end < run_deadline || !run_active)) {
+		now_ns = end;
 		cpu.irq_defer--;
 		return v;
 	}
