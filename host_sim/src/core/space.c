@@ -37,6 +37,8 @@
 #define HS_MAX_REGIONS   64U
 #define HS_NO_ELEM       (-1)
 
+struct hs_route;
+
 /* One register, or one element of a register array: what the access path
  * reads (its name, for reports and the log, is in the region's names). */
 struct hs_elem {
@@ -51,6 +53,31 @@ struct hs_elem {
 	uint8_t ok_widths;      /* widths an access may use without a report (none if reserved) */
 	uint8_t kind;           /* enum hs_reg_kind */
 	const struct hs_reg *reg;
+	struct hs_route *routes[2];   /* read, write: see route_index; NULL if not that direction */
+};
+
+/*
+ * How a CPU access of one width and direction reaches one element at one
+ * byte lane: everything the access path needs once the checks passed, built
+ * with the region.  It stays where it is until the region is freed, so the
+ * window cache points to it and a hook is told its acc (a cache slot may be
+ * refilled while the hook runs, a route is not).
+ */
+struct hs_route {
+	uint32_t *value;        /* the element's stored value */
+	hs_before_read_fn before_read;      /* read routes */
+	hs_after_write_fn after_write;      /* write routes */
+	void *ctx;              /* the region's hook context */
+	uint32_t wmask;         /* width_mask(width) */
+	uint32_t bits;          /* write: the mask bits the lanes drive; read: those a clear-on-read clears, or 0 */
+	uint8_t shift;          /* 8 * the byte lane */
+	uint8_t kind;           /* enum hs_reg_kind */
+	bool logged;            /* the region's log flag, kept by hs_space_set_reglog */
+	bool after_read;        /* read: something is cleared or logged after the value is taken */
+	struct hs_access acc;   /* what the hooks are told */
+	struct hs_region *r;
+	struct hs_elem *e;
+	uintptr_t phys;         /* of the access, for the log */
 };
 
 #define HS_ELEM_NAME 32U        /* "CMR[3]" */
@@ -69,6 +96,8 @@ struct hs_region {
 	int16_t *rd_map;        /* element readable there, or HS_NO_ELEM */
 	int16_t *wr_map;        /* element writable there */
 	int16_t *any_map;       /* element starting there in either direction */
+	struct hs_route *routes;   /* every element's, both directions */
+	unsigned nroutes;
 	bool logged;            /* named by the register-log filter */
 };
 
@@ -80,6 +109,7 @@ static struct {
 	struct hs_region *last;                     /* last region hit: drivers mostly stay in one */
 	unsigned next_page;
 	uint32_t access_ns;
+	uint64_t access_cost;                       /* cost_value(access_ns, 0) */
 	char *log_filter;
 	FILE *log_out;
 	bool logging;
@@ -91,24 +121,18 @@ static const struct hs_power_controller *power_ctl;
  * What the checks of a recent window access found, by window address:
  * drivers access a handful of registers over and over (a poll loop, an
  * ISR's status and data), and an access that finds its address, direction
- * and width here goes straight to the element, skipping the page, map and
+ * and width here goes straight to its route, skipping the page, map and
  * width lookups (a chain of dependent loads) but not the power check.
  * Emptied whenever a region is added or freed or the register log changes.
  */
 #define HS_WCACHE_SLOTS 128U    /* a power of two */
 struct wcache_slot {
-	uintptr_t addr;             /* window address; 0: empty */
-	struct hs_region *r;
-	struct hs_elem *e;
-	const bool *power_live;     /* r's */
-	void *ctx;                  /* r's hook context */
-	uint32_t off;               /* in r */
-	uint32_t wmask;             /* width_mask(width) */
-	uint8_t width;
-	uint8_t lane;
-	bool logged;                /* r's */
-	struct hs_access acc;       /* what e's hook is told, built once */
+	uint64_t key;               /* wcache_key of the access; WCACHE_EMPTY: none */
+	const struct hs_route *route;
+	const bool *power_live;     /* the region's */
 };
+/* No access has this key (its width would be 7). */
+#define WCACHE_EMPTY UINT64_MAX
 static struct wcache_slot rd_wcache[HS_WCACHE_SLOTS], wr_wcache[HS_WCACHE_SLOTS];
 
 /* All-ones mask of width bytes (1, 2 or 4): one shift, as it is on every access. */
@@ -128,25 +152,45 @@ static inline struct wcache_slot *wcache_slot(struct wcache_slot *c, uintptr_t a
 	return &c[((uint32_t)addr * 0x9E3779B1U) >> (32U - HS_WCACHE_BITS)];
 }
 
+/* A width-byte access at window address addr as one number, so that the cache
+ * compares address and width at once (a user address is below 2^61). */
+static inline uint64_t wcache_key(uintptr_t addr, unsigned width)
+{
+	return (uint64_t)addr << 3 | width;
+}
+
 /* Empties both window caches (regions or their log flags changed). */
 static void wcache_clear(void)
 {
-	memset(rd_wcache, 0, sizeof(rd_wcache));
-	memset(wr_wcache, 0, sizeof(wr_wcache));
+	for (unsigned i = 0; i < HS_WCACHE_SLOTS; i++)
+		rd_wcache[i].key = wr_wcache[i].key = WCACHE_EMPTY;
 }
 
-/* Remembers that access acc at addr reaches element e (lane lane) of r at off. */
-static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, struct hs_region *r, uint32_t off,
-			       struct hs_elem *e, unsigned lane, const struct hs_access *acc)
+/* Remembers that a width-byte access at addr (in region r) takes route rt. */
+static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, const struct hs_region *r,
+			       const struct hs_route *rt, unsigned width)
 {
-	*slot = (struct wcache_slot){ addr, r, e, r->power_live, r->cfg.ctx, off, width_mask(acc->width),
-				      (uint8_t)acc->width, (uint8_t)lane, r->logged, *acc };
+	*slot = (struct wcache_slot){ wcache_key(addr, width), rt, r->power_live };
 }
 
-/* What the hooks of element e are told of a width-byte access. */
-static inline struct hs_access elem_access(const struct hs_elem *e, unsigned width, bool write)
+/* Routes an element of natural width w has per direction, when its narrowest
+ * allowed width is wmin: one per width from w down to wmin, at each of its lanes. */
+static unsigned route_count(unsigned w, unsigned wmin)
 {
-	return (struct hs_access){ e->reg, e->index, e->offset, width, write };
+	return 2U * w / wmin - 1U;
+}
+
+/* Where the route of a width-byte access at byte lane lane is among its
+ * element's: widest first, then by lane (width divides lane). */
+static inline unsigned route_index(const struct hs_elem *e, unsigned width, unsigned lane)
+{
+	return e->width / width - 1U + lane / width;
+}
+
+/* The route of a checked width-byte access at byte lane lane of e. */
+static inline const struct hs_route *elem_route(const struct hs_elem *e, bool write, unsigned width, unsigned lane)
+{
+	return &e->routes[write][route_index(e, width, lane)];
 }
 
 void hs_set_power_controller(const struct hs_power_controller *pc)
@@ -211,6 +255,8 @@ int hs_space_init(uint32_t access_ns)
 	space.next_page = HS_MIRROR_PAGES;
 	space.nregions = 0;
 	space.access_ns = access_ns;
+	space.access_cost = (uint64_t)access_ns << 32;
+	wcache_clear();
 	memset(space.page_owner, 0, sizeof(space.page_owner));
 	return 0;
 }
@@ -224,6 +270,7 @@ static void region_free(struct hs_region *r)
 	free(r->rd_map);
 	free(r->wr_map);
 	free(r->any_map);
+	free(r->routes);
 	free(r);
 }
 
@@ -358,6 +405,71 @@ static bool map_elem(int16_t *map, const struct hs_region *r, const struct hs_el
 	return true;
 }
 
+/* Sets a route's log flag and, for a read, whether anything follows taking the value. */
+static void route_set_logged(struct hs_route *rt, bool logged)
+{
+	rt->logged = logged;
+	rt->after_read = !rt->acc.write && (rt->bits != 0 || logged);
+}
+
+/* The narrowest width an element allows (its widths hold the width bits, HS_Wn == n). */
+static unsigned elem_min_width(const struct hs_elem *e)
+{
+	return e->widths & (0U - e->widths);
+}
+
+/* Builds the routes of every element of r in the directions its kind allows
+ * (after the aliases are resolved: a route holds the value's address). */
+static bool region_build_routes(struct hs_region *r)
+{
+	unsigned n = 0;
+	struct hs_route *rt;
+
+	for (unsigned i = 0; i < r->nelems; i++) {
+		const struct hs_elem *e = &r->elems[i];
+
+		n += ((unsigned)kind_readable(e->kind) + (unsigned)kind_writable(e->kind)) *
+		     route_count(e->width, elem_min_width(e));
+	}
+	r->routes = calloc(n ? n : 1U, sizeof(*r->routes));
+	if (!r->routes)
+		return decl_bug(&r->cfg, NULL, "out of memory");
+	r->nroutes = n;
+	rt = r->routes;
+	for (unsigned i = 0; i < r->nelems; i++) {
+		struct hs_elem *e = &r->elems[i];
+
+		for (unsigned write = 0; write < 2U; write++) {
+			if (!(write ? kind_writable(e->kind) : kind_readable(e->kind)))
+				continue;
+			e->routes[write] = rt;
+			/* in route_index's order */
+			for (unsigned width = e->width; width >= elem_min_width(e); width /= 2U) {
+				for (unsigned lane = 0; lane < e->width; lane += width, rt++) {
+					uint32_t lane_bits = e->mask & (width_mask(width) << (8U * lane));
+
+					*rt = (struct hs_route){
+						.value = e->value,
+						.before_read = write ? NULL : e->before_read,
+						.after_write = write ? e->after_write : NULL,
+						.ctx = r->cfg.ctx,
+						.wmask = width_mask(width),
+						.bits = write || e->kind == HS_COR ? lane_bits : 0U,
+						.shift = (uint8_t)(8U * lane),
+						.kind = e->kind,
+						.acc = { e->reg, e->index, e->offset, width, write != 0 },
+						.r = r,
+						.e = e,
+						.phys = r->cfg.phys + e->offset + lane,
+					};
+					route_set_logged(rt, r->logged);
+				}
+			}
+		}
+	}
+	return true;
+}
+
 /* Builds the flattened element table of a region; false after a bug report. */
 static bool region_build(struct hs_region *r)
 {
@@ -460,7 +572,7 @@ static bool region_build(struct hs_region *r)
 	}
 	for (uint32_t off = 0; off < r->map_len; off++)
 		r->any_map[off] = r->rd_map[off] >= 0 ? r->rd_map[off] : r->wr_map[off] >= 0 ? r->wr_map[off] : HS_NO_ELEM;
-	return true;
+	return region_build_routes(r);
 }
 
 struct hs_region *hs_region_add(const struct hs_region_cfg *cfg)
@@ -714,24 +826,49 @@ static inline __attribute__((always_inline)) struct hs_elem *access_checked(stru
 	return e;
 }
 
-/* A checked read acc of element e (of r, at offset off, byte lane lane): hooked and logged. */
-static inline __attribute__((always_inline)) uint32_t elem_read(struct hs_region *r, struct hs_elem *e, uint32_t off,
-								 unsigned lane, unsigned width, uint32_t wmask,
-								 const struct hs_access *acc, void *ctx, bool logged)
+/* An accessor read's result: the access time it costs, unspent, and the value. */
+static inline uint64_t cost_value(uint32_t ns, uint32_t v)
 {
-	uint32_t v;
+	return (uint64_t)ns << 32 | v;
+}
 
-	if (e->before_read) {
-		struct hs_access a = *acc;      /* a copy: acc may be a window-cache slot */
+/* What a read through route rt returns, taken after its hook ran. */
+static inline uint32_t route_value(const struct hs_route *rt)
+{
+	return (*rt->value >> rt->shift) & rt->wmask;
+}
 
-		e->before_read(ctx, &a, e->value);
-	}
-	v = (*e->value >> (8U * lane)) & wmask;
-	if (e->kind == HS_COR)
-		*e->value &= ~(e->mask & (wmask << (8U * lane)));
-	if (logged)
-		reglog(r, e, r->cfg.phys + off, false, width, v);
-	return v;
+/* The end of a read through route rt that has something after_read: takes
+ * the value, clears the clear-on-read bits, logs; see route_read. */
+static __attribute__((noinline)) uint64_t route_read_after(const struct hs_route *rt)
+{
+	uint32_t v = route_value(rt);
+
+	*rt->value &= ~rt->bits;
+	if (rt->logged)
+		reglog(rt->r, rt->e, rt->phys, false, rt->acc.width, v);
+	return space.access_cost | v;
+}
+
+/* route_read of a route with a hook (out of line, so that the reads without
+ * one need no frame). */
+static __attribute__((noinline)) uint64_t route_read_hooked(const struct hs_route *rt)
+{
+	rt->before_read(rt->ctx, &rt->acc, rt->value);
+	if (rt->after_read)
+		return route_read_after(rt);
+	return space.access_cost | route_value(rt);
+}
+
+/* A checked read through route rt: hooked, clear-on-read applied, logged;
+ * the access time it costs, unspent, and the value (see cost_value). */
+static inline __attribute__((always_inline)) uint64_t route_read(const struct hs_route *rt)
+{
+	if (rt->before_read)
+		return route_read_hooked(rt);
+	if (rt->after_read)
+		return route_read_after(rt);
+	return space.access_cost | route_value(rt);
 }
 
 /* One CPU read of width bytes (1, 2 or 4) at offset off of r: checked, hooked,
@@ -740,50 +877,47 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 {
 	unsigned lane;
 	struct hs_elem *e = access_checked(r, off, width, false, 0, &lane);
-	struct hs_access acc;
 	uint32_t v = 0;
 
-	if (e) {
-		acc = elem_access(e, width, false);
-		v = elem_read(r, e, off, lane, width, width_mask(width), &acc, r->cfg.ctx, r->logged);
-	}
-
+	if (e)
+		v = (uint32_t)route_read(elem_route(e, false, width, lane));
 	access_cost();
 	return v;
 }
 
-/* A checked write acc of value (masked to width) to element e (of r, at offset
- * off, byte lane lane): applied with the register's kind, logged, hooked. */
-static inline __attribute__((always_inline)) void elem_write(struct hs_region *r, struct hs_elem *e, uint32_t off,
-							      unsigned lane, unsigned width, uint32_t wmask, uint32_t value,
-							      const struct hs_access *acc, void *ctx, bool logged)
+/* The rest of a logged write through route rt (see route_write): the log, then the hook. */
+static __attribute__((noinline)) void route_write_logged(const struct hs_route *rt, uint32_t data, uint32_t old,
+							  uint32_t nv, uint32_t value)
 {
-	uint32_t old = *e->value;
-	uint32_t bits = e->mask & (wmask << (8U * lane));
-	uint32_t cpu_value = value;
+	reglog(rt->r, rt->e, rt->phys, true, rt->acc.width, data);
+	if (rt->after_write)
+		rt->after_write(rt->ctx, &rt->acc, old, nv, value);
+}
+
+/* A checked write of data (masked to the route's width) through route rt:
+ * applied with the register's kind, logged, hooked. */
+static inline __attribute__((always_inline)) void route_write(const struct hs_route *rt, uint32_t data)
+{
+	uint32_t old = *rt->value;
+	uint32_t value = data << rt->shift;     /* the byte lanes the access drives */
 	uint32_t nv;
 
-	value <<= 8U * lane;    /* the byte lanes the access drives */
-
-	switch (e->kind) {
+	switch (rt->kind) {
 	case HS_W1S:
-		nv = old | (value & bits);
+		nv = old | (value & rt->bits);
 		break;
 	case HS_W1C:
-		nv = old & ~(value & bits);
+		nv = old & ~(value & rt->bits);
 		break;
 	default:        /* HS_RW, HS_WO */
-		nv = (old & ~bits) | (value & bits);
+		nv = (old & ~rt->bits) | (value & rt->bits);
 		break;
 	}
-	*e->value = nv;
-	if (logged)
-		reglog(r, e, r->cfg.phys + off, true, width, cpu_value);
-	if (e->after_write) {
-		struct hs_access a = *acc;      /* a copy: acc may be a window-cache slot */
-
-		e->after_write(ctx, &a, old, nv, value);
-	}
+	*rt->value = nv;
+	if (rt->logged)
+		route_write_logged(rt, data, old, nv, value);
+	else if (rt->after_write)
+		rt->after_write(rt->ctx, &rt->acc, old, nv, value);
 }
 
 /* One CPU write of width bytes (1, 2 or 4; value already masked to it) at
@@ -795,11 +929,8 @@ static inline __attribute__((always_inline)) void region_write(struct hs_region 
 	unsigned lane;
 	struct hs_elem *e = access_checked(r, off, width, true, value, &lane);
 
-	if (e) {
-		struct hs_access acc = elem_access(e, width, true);
-
-		elem_write(r, e, off, lane, width, width_mask(width), value, &acc, r->cfg.ctx, r->logged);
-	}
+	if (e)
+		route_write(elem_route(e, true, width, lane), value);
 	access_cost();
 }
 
@@ -865,12 +996,6 @@ static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
 	return r;
 }
 
-/* An accessor read's result: the access time it costs, unspent, and the value. */
-static inline uint64_t cost_value(uint32_t ns, uint32_t v)
-{
-	return (uint64_t)ns << 32 | v;
-}
-
 /* mmio_read_timed when the window cache does not know addr (or its power is off). */
 static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *addr, uint_t width,
 							  struct wcache_slot *slot)
@@ -879,7 +1004,7 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
 	unsigned lane;
 	struct hs_region *r = window_region((uintptr_t)addr, &off);
 	struct hs_elem *e;
-	uint32_t v = 0;
+
 
 	if (!r) {
 		rtos_host_bug("host_sim", "read of %u bytes at window address %p (physical 0x%08" PRIxPTR
@@ -893,12 +1018,12 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
 	}
 	e = access_checked(r, off, width, false, 0, &lane);
 	if (e) {
-		struct hs_access acc = elem_access(e, width, false);
+		const struct hs_route *rt = elem_route(e, false, width, lane);
 
-		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, &acc);
-		v = elem_read(r, e, off, lane, width, width_mask(width), &acc, r->cfg.ctx, r->logged);
+		wcache_fill(slot, (uintptr_t)addr, r, rt, width);
+		return route_read(rt);
 	}
-	return cost_value(space.access_ns, v);
+	return space.access_cost;
 }
 
 /* One accessor read of width bytes at window address addr: the access time it
@@ -908,9 +1033,8 @@ static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *c
 	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live)
-		return cost_value(space.access_ns, elem_read(slot->r, slot->e, slot->off, slot->lane, width,
-							      slot->wmask, &slot->acc, slot->ctx, slot->logged));
+	if (slot->key == wcache_key((uintptr_t)addr, width) && *slot->power_live)
+		return route_read(slot->route);
 	return mmio_read_miss(addr, width, slot);
 }
 
@@ -937,10 +1061,10 @@ static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, u
 	data &= width_mask(width);
 	e = access_checked(r, off, width, true, data, &lane);
 	if (e) {
-		struct hs_access acc = elem_access(e, width, true);
+		const struct hs_route *rt = elem_route(e, true, width, lane);
 
-		wcache_fill(slot, (uintptr_t)addr, r, off, e, lane, &acc);
-		elem_write(r, e, off, lane, width, width_mask(width), data, &acc, r->cfg.ctx, r->logged);
+		wcache_fill(slot, (uintptr_t)addr, r, rt, width);
+		route_write(rt, data);
 	}
 	return space.access_ns;
 }
@@ -952,9 +1076,8 @@ static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t dat
 	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->addr == (uintptr_t)addr && slot->width == width && *slot->power_live) {
-		elem_write(slot->r, slot->e, slot->off, slot->lane, width, slot->wmask, data & slot->wmask,
-			   &slot->acc, slot->ctx, slot->logged);
+	if (slot->key == wcache_key((uintptr_t)addr, width) && *slot->power_live) {
+		route_write(slot->route, data & slot->route->wmask);
 		return space.access_ns;
 	}
 	return mmio_write_miss(addr, width, data, slot);
@@ -1049,6 +1172,11 @@ void hs_space_set_reglog(const char *filter, FILE *out)
 	space.log_out = out;
 	space.logging = space.log_filter != NULL;
 	wcache_clear();
-	for (unsigned i = 0; i < space.nregions; i++)
-		space.regions[i]->logged = space.logging && filter_has(space.log_filter, space.regions[i]->cfg.name);
+	for (unsigned i = 0; i < space.nregions; i++) {
+		struct hs_region *r = space.regions[i];
+
+		r->logged = space.logging && filter_has(space.log_filter, r->cfg.name);
+		for (unsigned k = 0; k < r->nroutes; k++)
+			route_set_logged(&r->routes[k], r->logged);
+	}
 }

@@ -75,26 +75,50 @@ static inline void access_spend(uint32_t ns)
 		rtos_host_consume(ns);
 }
 
-/* True for a width of 1, 2 or 4 that mem is aligned to (width_ok reports the others). */
+/* The end of a timed-window access that cost ns and read v, as access_spend then
+ * access_done, out of line: when time reaches an event or the run's deadline, or
+ * an interrupt is pending, or another task is to run. */
+static __attribute__((noinline)) uint32_t access_end_slow(uint32_t ns, uint32_t v)
+{
+	access_spend(ns);
+	access_done();
+	return v;
+}
+
+/* access_spend(ns) then access_done() for a timed-window access that read v;
+ * returns v.  The common case, in which neither does more than advance the
+ * clock and undo the deferral, takes no call and needs no frame. */
+static inline __attribute__((always_inline)) uint32_t access_end(uint32_t ns, uint32_t v)
+{
+	uint64_t end = now_ns + ns;
+
+	/* Cases in which access_spend adds ns (no event due before the end: then
+	 * ns < event_next_time() - now_ns, its test) and access_done then finds no
+	 * interrupt to take (none pending), no task to switch to and no deadline reached. */
+	if (end < event_next_time() && kernel_booted && irq_pending_lines == 0 && schedtsk == runtsk &&
+	    (end < run_deadline || !run_active)) {
+		now_ns = end;
+		cpu.irq_defer--;
+		return v;
+	}
+	return access_end_slow(ns, v);
+}
+
+/* True for a width of 1, 2 or 4 that mem is aligned to (width_bug reports the others). */
 static inline bool width_fast_ok(const volatile void *mem, uint_t width)
 {
 	/* bits 1, 2 and 4 of 0x16 are the allowed widths */
 	return width <= 4U && ((0x16U >> width) & 1U) != 0 && ((uintptr_t)mem & (width - 1U)) == 0;
 }
 
-/* Reports register accesses of a bad width or alignment. */
-static __attribute__((noinline, cold)) bool width_ok(const char *fn, const volatile void *mem, uint_t width)
+/* Reports a register access whose width or alignment width_fast_ok refused. */
+static __attribute__((noinline, cold)) void width_bug(const char *fn, const volatile void *mem, uint_t width)
 {
-	if (width != 1U && width != 2U && width != 4U) {
+	if (width != 1U && width != 2U && width != 4U)
 		rtos_host_bug("sil", "%s: access width %u (only 1, 2, 4)", fn, width);
-		return false;
-	}
-	if (((uintptr_t)mem & (width - 1U)) != 0) {
+	else
 		rtos_host_bug("sil", "%s: misaligned %u-byte register access (ARM926 would rotate the data)",
 			      fn, width);
-		return false;
-	}
-	return true;
 }
 
 /* sil_host_read outside the timed window: the handler if it claims mem, else memory. */
@@ -130,15 +154,15 @@ uint32_t sil_host_read(const volatile void *mem, uint_t width)
 {
 	uint64_t cost_value;
 
-	if (!width_fast_ok(mem, width) && !width_ok("sil_host_read", mem, width))
+	if (!width_fast_ok(mem, width)) {
+		width_bug("sil_host_read", mem, width);
 		return 0;
+	}
 	if ((uintptr_t)mem - timed_win.start >= timed_win.len)
 		return read_other(mem, width);
 	cpu.irq_defer++;
 	cost_value = timed_win.read(mem, width, timed_win.ctx);
-	access_spend((uint32_t)(cost_value >> 32));
-	access_done();
-	return (uint32_t)cost_value;
+	return access_end((uint32_t)(cost_value >> 32), (uint32_t)cost_value);
 }
 
 /* sil_host_write outside the timed window: to the handler if it claims mem, else memory. */
@@ -171,15 +195,16 @@ static __attribute__((noinline)) void write_other(volatile void *mem, uint_t wid
 /* Writes a register of exact width: to the MMIO handler if it claims the address, else memory. */
 void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
 {
-	if (!width_fast_ok(mem, width) && !width_ok("sil_host_write", mem, width))
+	if (!width_fast_ok(mem, width)) {
+		width_bug("sil_host_write", mem, width);
 		return;
+	}
 	if ((uintptr_t)mem - timed_win.start >= timed_win.len) {
 		write_other(mem, width, data);
 		return;
 	}
 	cpu.irq_defer++;
-	access_spend(timed_win.write(mem, width, data, timed_win.ctx));
-	access_done();
+	access_end(timed_win.write(mem, width, data, timed_win.ctx), 0);
 }
 
 /* Recomputes timed_win from the handler, its window and its timed pair. */

@@ -4,6 +4,9 @@
  * one: hooks run every time, another width is still checked, a module
  * powered off in between is still reported, and the register log started
  * or stopped in between sees exactly the accesses made while it is on.
+ * Narrow accesses at byte lanes, repeated, reach their lanes and tell the
+ * hooks their own width, element and direction; a hook that empties the
+ * cache while its access is under way still sees that access.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
@@ -36,11 +39,47 @@ static void count_write(void *ctx, const struct hs_access *a, uint32_t old, uint
 	writes++;
 }
 
+/* The access the last hook of told_* or emptying_read was told of, and what told_write was written. */
+static struct hs_access told;
+static uint32_t told_written;
+
+static void told_read(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	(void)ctx; (void)value;
+	told = *a;
+}
+
+static void told_write(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written)
+{
+	(void)ctx; (void)old; (void)now;
+	told = *a;
+	told_written = written;
+}
+
+/* Empties the window cache (changing the register log does) while its access is under way. */
+static void emptying_read(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	(void)ctx;
+	hs_trace_reglog(NULL, NULL);
+	told = *a;
+	*value = 0x5A;
+}
+
 static const struct hs_reg cdev_regs[] = {
 	{ .name = "COUNT", .offset = 0x00, .kind = HS_RO, .before_read = count_read },
 	{ .name = "CTL",   .offset = 0x04, .kind = HS_RW, .after_write = count_write },
 	{ .name = "FLAGS", .offset = 0x08, .kind = HS_W1C, .reset = 0xFF, .after_write = count_write },
+	{ .name = "LANES", .offset = 0x0C, .kind = HS_COR, .widths = HS_W8 | HS_W16, .mask = 0x00FF0000,
+	  .reset = 0x44332211, .before_read = told_read },
+	{ .name = "ARR",   .offset = 0x10, .kind = HS_RW, .widths = HS_W16, .count = 2, .after_write = told_write },
+	{ .name = "EMPTY", .offset = 0x20, .kind = HS_RO, .before_read = emptying_read },
 };
+
+/* True if the last hook was told of a width-byte access to the element at offset in direction write. */
+static bool told_of(unsigned width, uint32_t offset, bool write)
+{
+	return told.width == width && told.offset == offset && told.write == write;
+}
 
 static const struct rtos_cfg cfg = { .name = "window_cache" };
 
@@ -69,7 +108,7 @@ int main(void)
 	volatile uint8_t *w;
 	FILE *log = tmpfile();
 
-	tap_plan(13);
+	tap_plan(21);
 	if (hs_sim_boot(&scn) != E_OK || !log)
 		tap_bail_out("boot failed");
 	ok(hs_region_add(&(struct hs_region_cfg){ .name = "CDEV", .phys = CDEV_PHYS, .size = 0x1000,
@@ -111,6 +150,22 @@ int main(void)
 	sil_wrw_mem((uint32_t *)(w + 0x04), 9);
 	is_int(lines_in(log), 2, "the register log sees the cached accesses made while it is on, and only those");
 	is_int(sil_rew_mem((uint32_t *)(w + 0x00)), 4, "after the log changed, reads still reach their hook");
+
+	is_int(sil_reb_mem((uint8_t *)(w + 0x0E)), 0x33, "an 8-bit read at byte lane 2 returns that byte");
+	ok(told_of(1, 0x0C, false), "and its hook is told a 1-byte read of the element");
+	is_int(sil_reb_mem((uint8_t *)(w + 0x0E)), 0x00, "repeated, it finds the byte its clear-on-read cleared");
+	is_int(sil_reb_mem((uint8_t *)(w + 0x0D)) + sil_reb_mem((uint8_t *)(w + 0x0D)), 0x22 + 0x22,
+	       "a lane outside the clear-on-read mask keeps its byte");
+	is_int(sil_reh_mem((uint16_t *)(w + 0x0E)), 0x4400, "a 16-bit read at lane 2 returns the upper half");
+	ok(told_of(2, 0x0C, false), "and its hook is told a 2-byte read");
+	sil_wrh_mem((uint16_t *)(w + 0x16), 0xBEEF);
+	sil_wrh_mem((uint16_t *)(w + 0x16), 0xCAFE);
+	ok(told_of(2, 0x14, true) && told.index == 1 && told_written == 0xCAFE0000U &&
+	   sil_rew_mem((uint32_t *)(w + 0x14)) == 0xCAFE0000U,
+	   "a repeated 16-bit write at lane 2 of an array element reaches its lanes and tells the element");
+	ok(sil_rew_mem((uint32_t *)(w + 0x20)) == 0x5A && told_of(4, 0x20, false) &&
+	   sil_rew_mem((uint32_t *)(w + 0x20)) == 0x5A && told_of(4, 0x20, false),
+	   "a hook that empties the window cache mid-access is still told its access");
 
 	fclose(log);
 	hs_sim_shutdown();
