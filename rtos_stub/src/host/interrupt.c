@@ -41,17 +41,7 @@ static struct irq_line lines[TMAX_INTNO + 1];
 static uint64_t pending_bits[IRQ_WORDS];
 uint_t irq_pending_lines;
 
-/* Lines both pending and enabled, the only ones delivery looks at: lines that
- * stay pending while disabled (or unconfigured) would otherwise be passed
- * over again on every raise and every register access of an ISR. */
-static uint64_t candidate_bits[IRQ_WORDS];
-/* The most urgent candidate whatever the current priority (the lowest number
- * among equals), or -1, while urgent_known: a level line stays pending through
- * its ISR, and every register access there asks again for a line to deliver. */
-static int urgent_line = -1;
-static bool urgent_known;
-
-/* Keeps the pending bitmap and count, and the candidates, in step with the line's edge and level. */
+/* Keeps the pending bitmap and count in step with the line's edge and level. */
 static inline void pend_update(INTNO n)
 {
 	uint64_t bit = 1ULL << (n % 64U);
@@ -62,22 +52,7 @@ static inline void pend_update(INTNO n)
 	if (is != was) {
 		*word ^= bit;
 		irq_pending_lines += is ? 1U : (uint_t)-1;
-		if (lines[n].enabled) {
-			candidate_bits[n / 64U] ^= bit;
-			urgent_known = false;
-		}
 	}
-}
-
-/* Enables or disables line n, keeping the candidates in step. */
-static void set_enabled(INTNO n, bool on)
-{
-	uint64_t bit = 1ULL << (n % 64U);
-	uint64_t *word = &candidate_bits[n / 64U];
-
-	lines[n].enabled = on;
-	*word = (*word & ~bit) | (on ? pending_bits[n / 64U] & bit : 0U);
-	urgent_known = false;
 }
 
 /* True if any line has a request. */
@@ -86,33 +61,26 @@ static bool any_pending(void)
 	return irq_pending_lines != 0;
 }
 
-/* Scans the candidates for the most urgent one, or -1. */
-static int most_urgent_line(void)
+/* The highest-priority pending line above the current priority, or -1. */
+static int pick_line(void)
 {
 	int best = -1;
+	PRI best_pri = cpu.ipm;
 
 	for (uint_t w = 0; w < IRQ_WORDS; w++) {
-		uint64_t bits = candidate_bits[w];
+		uint64_t bits = pending_bits[w];
 
 		while (bits) {
 			INTNO n = w * 64U + (INTNO)__builtin_ctzll(bits);
 
 			bits &= bits - 1;
-			if (best < 0 || lines[n].pri < lines[best].pri)
+			if (lines[n].enabled && lines[n].pri < best_pri) {
 				best = (int)n;
+				best_pri = lines[n].pri;
+			}
 		}
 	}
 	return best;
-}
-
-/* The highest-priority pending and enabled line above the current priority, or -1. */
-static inline int pick_line(void)
-{
-	if (!urgent_known) {
-		urgent_line = most_urgent_line();
-		urgent_known = true;
-	}
-	return urgent_line >= 0 && lines[urgent_line].pri < cpu.ipm ? urgent_line : -1;
 }
 
 /* Runs one handler body in non-task context kind; a CPU lock left behind is released. */
@@ -132,7 +100,8 @@ void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exin
 }
 
 /* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order
- * (out of line: most calls of irq_deliver_pending find nothing to deliver). */
+ * (out of line: most calls of irq_deliver_pending, from register accesses in an ISR
+ * while a level line stays pending, deliver nothing and need not save its registers). */
 static __attribute__((noinline)) void irq_run(INTNO n)
 {
 	struct irq_line *l = &lines[n];
@@ -142,7 +111,7 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 
 	if (l->level) {
 		if (l->storm_time == now_ns && ++l->storm_count > IRQ_STORM_LIMIT) {
-			set_enabled(n, false);
+			l->enabled = false;
 			rtos_host_bug("irq storm", "line %u is level-asserted and was delivered %u times at "
 				      "the same virtual time (its ISR does not clear the source); line disabled",
 				      n, IRQ_STORM_LIMIT);
@@ -211,7 +180,7 @@ ER irq_configure(INTNO intno, ATR intatr, PRI intpri)
 
 	l->configured = true;
 	l->pri = intpri;
-	set_enabled(intno, (intatr & TA_ENAINT) != 0);
+	l->enabled = (intatr & TA_ENAINT) != 0;
 	return E_OK;
 }
 
@@ -250,8 +219,6 @@ void irq_reset(void)
 	memset(lines, 0, sizeof(lines));
 	memset(pending_bits, 0, sizeof(pending_bits));
 	irq_pending_lines = 0;
-	memset(candidate_bits, 0, sizeof(candidate_bits));
-	urgent_known = false;
 	memset(&cpu, 0, sizeof(cpu));
 	cpu.kind = EXEC_IDLE;
 }
@@ -278,7 +245,7 @@ ER dis_int(INTNO intno)
 		return svc_result("dis_int", E_CTX);
 	if ((ercd = line_check(intno)) != E_OK)
 		return svc_result("dis_int", ercd);
-	set_enabled(intno, false);
+	lines[intno].enabled = false;
 	return E_OK;
 }
 
@@ -292,7 +259,7 @@ ER ena_int(INTNO intno)
 		return svc_result("ena_int", E_CTX);
 	if ((ercd = line_check(intno)) != E_OK)
 		return svc_result("ena_int", ercd);
-	set_enabled(intno, true);
+	lines[intno].enabled = true;
 	irq_dispatch_pending();
 	return E_OK;
 }
