@@ -5,8 +5,11 @@
  * header (which must list every signal, including ones declared late) is
  * written in front of it when the file is closed.  Output contains no dates
  * or paths, so the same run gives the same bytes.  A pulse (1 ns high) is
- * recorded as its rise at now and its fall queued for now+1, flushed before
- * any later change.
+ * recorded as its rise at now and its fall due at now+1.  While a VCD is
+ * open the fall is queued and flushed before any later change, so the body
+ * stays in time order; without one (the common case: interrupt requests
+ * pulse thousands of times per virtual second) the fall is settled lazily,
+ * by the signal's own next use, which leaves the same value and counts.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -32,7 +35,9 @@ struct hs_signal {
 	uint64_t changes;
 	uint64_t last_change;
 	char *initial;           /* VCD value at the time the file was opened (NULL: 'x') */
-	bool pulse_pending;
+	bool pulse_pending;      /* high for a pulse whose fall is due at fall_t */
+	bool fall_queued;        /* that fall is in tr.falls (a VCD was open), not settled lazily */
+	uint64_t fall_t;
 };
 
 static struct {
@@ -102,6 +107,7 @@ static void flush_falls(uint64_t now)
 		char buf[96];
 
 		s->pulse_pending = false;
+		s->fall_queued = false;
 		if (s->value == 0U || s->z)
 			continue;           /* changed again meanwhile */
 		s->value = 0;
@@ -114,6 +120,26 @@ static void flush_falls(uint64_t now)
 		}
 	}
 	tr.nfalls = 0;
+}
+
+/* True if s has a lazily kept pulse fall (no VCD was open) that is due by now
+ * and still lowers it: flush_falls's work for that signal alone. */
+static inline bool lazy_fall_due(const struct hs_signal *s, uint64_t now)
+{
+	return s->pulse_pending && !s->fall_queued && now >= s->fall_t && s->value != 0U && !s->z;
+}
+
+/* Applies the lazily kept pulse fall of s if now has reached it. */
+static inline void settle_fall(struct hs_signal *s, uint64_t now)
+{
+	if (!s->pulse_pending || s->fall_queued || now < s->fall_t)
+		return;
+	s->pulse_pending = false;
+	if (s->value == 0U || s->z)
+		return;             /* changed again meanwhile */
+	s->value = 0;
+	s->changes++;
+	s->last_change = s->fall_t;
 }
 
 /* Writes the current value of s at now to the open files. */
@@ -229,6 +255,7 @@ void hs_trace_set(struct hs_signal *s, uint64_t value)
 	}
 	now = rtos_host_now();
 	flush_falls(now);
+	settle_fall(s, now);
 	set_bits(s, value, now);
 }
 
@@ -240,6 +267,7 @@ void hs_trace_set_z(struct hs_signal *s)
 		return;
 	now = rtos_host_now();
 	flush_falls(now);
+	settle_fall(s, now);
 	if (s->known && s->z)
 		return;
 	s->known = true;
@@ -267,6 +295,25 @@ void hs_trace_set_real(struct hs_signal *s, double value)
 	record(s, now);
 }
 
+/* Puts the pending fall of s into the queue written to the VCD; false if out of memory. */
+static bool queue_fall(struct hs_signal *s)
+{
+	if (tr.nfalls == tr.falls_cap) {
+		unsigned cap = tr.falls_cap ? 2U * tr.falls_cap : 16U;
+		/* NOLINTNEXTLINE(bugprone-sizeof-expression): an array of pointers */
+		struct hs_signal **p = realloc(tr.falls, cap * sizeof(*p));
+
+		if (!p)
+			return false;
+		tr.falls = p;
+		tr.falls_cap = cap;
+	}
+	tr.falls[tr.nfalls++] = s;
+	tr.fall_t = s->fall_t;
+	s->fall_queued = true;
+	return true;
+}
+
 void hs_trace_pulse(struct hs_signal *s)
 {
 	uint64_t now;
@@ -279,29 +326,26 @@ void hs_trace_pulse(struct hs_signal *s)
 	}
 	now = rtos_host_now();
 	flush_falls(now);
+	if (lazy_fall_due(s, now) && !tr.body) {
+		/* the common train of requests: the last pulse's fall and this rise, as counts */
+		s->changes += 2U;
+		s->last_change = now;
+		s->fall_t = now + 1U;
+		return;
+	}
+	settle_fall(s, now);
 	if (s->pulse_pending)
 		return;         /* already high in this nanosecond */
 	set_bits(s, 1, now);
-	if (tr.nfalls == tr.falls_cap) {
-		unsigned cap = tr.falls_cap ? 2U * tr.falls_cap : 16U;
-		/* NOLINTNEXTLINE(bugprone-sizeof-expression): an array of pointers */
-		struct hs_signal **p = realloc(tr.falls, cap * sizeof(*p));
-
-		if (!p)
-			return;
-		tr.falls = p;
-		tr.falls_cap = cap;
-	}
-	tr.falls[tr.nfalls++] = s;
-	tr.fall_t = now + 1U;
-	s->pulse_pending = true;
+	s->fall_t = now + 1U;
+	s->pulse_pending = !tr.body || queue_fall(s);
 }
 
 uint64_t hs_signal_value(const struct hs_signal *s)
 {
 	if (s && s->pulse_pending)
 		flush_falls(rtos_host_now());
-	return s ? s->value : 0U;
+	return s ? (lazy_fall_due(s, rtos_host_now()) ? 0U : s->value) : 0U;
 }
 
 double hs_signal_real(const struct hs_signal *s)
@@ -318,14 +362,14 @@ uint64_t hs_signal_changes(const struct hs_signal *s)
 {
 	if (s && s->pulse_pending)
 		flush_falls(rtos_host_now());
-	return s ? s->changes : 0U;
+	return s ? s->changes + (lazy_fall_due(s, rtos_host_now()) ? 1U : 0U) : 0U;
 }
 
 uint64_t hs_signal_last_change(const struct hs_signal *s)
 {
 	if (s && s->pulse_pending)
 		flush_falls(rtos_host_now());
-	return s ? s->last_change : 0U;
+	return s ? (lazy_fall_due(s, rtos_host_now()) ? s->fall_t : s->last_change) : 0U;
 }
 
 int hs_trace_open_vcd(const char *path)
@@ -351,6 +395,10 @@ int hs_trace_open_vcd(const char *path)
 	for (unsigned i = 0; i < tr.nsigs; i++) {
 		struct hs_signal *s = tr.sigs[i];
 
+		/* a pulse of this nanosecond falls in the file; an older one has fallen */
+		settle_fall(s, tr.vcd_open_t);
+		if (s->pulse_pending && !s->fall_queued)
+			s->pulse_pending = queue_fall(s);
 		free(s->initial);
 		vcd_value(s, buf, sizeof(buf));
 		s->initial = strdup(buf);
@@ -429,6 +477,8 @@ int hs_trace_close(void)
 
 	if (tr.nfalls)
 		flush_falls(tr.fall_t);
+	for (unsigned i = 0; i < tr.nsigs; i++)
+		settle_fall(tr.sigs[i], UINT64_MAX);
 	if (tr.vcd) {
 		vcd_finish();
 		if (ferror(tr.vcd) || ferror(tr.body))

@@ -31,7 +31,6 @@
 static struct {
 	struct hs_region *region;
 	struct hs_signal *sig[HS_INTC_NSYSINT];
-	bool level[HS_INTC_NSYSINT];
 } ic;
 
 /* Names of the DA850 system interrupts the EV3 uses, for traces. */
@@ -59,19 +58,22 @@ static const char *sysint_name(INTNO n)
 	}
 }
 
-/* The trace signal of sysint, declared on first use. */
-static struct hs_signal *sysint_signal(INTNO n)
+/* Declares the trace signal of sysint (its first request), low. */
+static __attribute__((noinline)) struct hs_signal *declare_sysint_signal(INTNO n)
 {
 	char name[40];
-	const char *what;
+	const char *what = sysint_name(n);
 
-	if (!ic.sig[n]) {
-		what = sysint_name(n);
-		snprintf(name, sizeof(name), "int%u%s%s", (unsigned)n, *what ? "_" : "", what);
-		ic.sig[n] = hs_trace_signal("irq", name, 1);
-		hs_trace_set(ic.sig[n], 0);
-	}
+	snprintf(name, sizeof(name), "int%u%s%s", (unsigned)n, *what ? "_" : "", what);
+	ic.sig[n] = hs_trace_signal("irq", name, 1);
+	hs_trace_set(ic.sig[n], 0);
 	return ic.sig[n];
+}
+
+/* The trace signal of sysint, declared on its first request (that part out of line: requests are frequent). */
+static inline struct hs_signal *sysint_signal(INTNO n)
+{
+	return ic.sig[n] ? ic.sig[n] : declare_sysint_signal(n);
 }
 
 /* true if sysint is a valid system interrupt, else reports the caller's bug. */
@@ -97,7 +99,6 @@ void hs_intc_set_level(INTNO sysint, bool asserted)
 {
 	if (!sysint_ok(sysint, "hs_intc_set_level"))
 		return;
-	ic.level[sysint] = asserted;
 	if (ic.region)
 		hs_trace_set(sysint_signal(sysint), asserted);
 	rtos_host_irq_set_level(sysint, asserted);

@@ -99,8 +99,10 @@ void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exin
 	cpu.exec_id = saved_id;
 }
 
-/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order. */
-static void irq_run(INTNO n)
+/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order
+ * (out of line: most calls of irq_deliver_pending, from register accesses in an ISR
+ * while a level line stays pending, deliver nothing and need not save its registers). */
+static __attribute__((noinline)) void irq_run(INTNO n)
 {
 	struct irq_line *l = &lines[n];
 	enum exec_kind saved_kind = cpu.kind;
