@@ -69,8 +69,7 @@ struct spi_module {
 	bool busy, tx_full;
 	uint16_t tx_buf;            /* word waiting in the TX buffer */
 	unsigned tx_buf_fmt;
-	uint16_t shift_out;         /* what the slave shifts back in this frame */
-	unsigned shift_len;
+	uint16_t shift_out;         /* what the slave shifts back in this frame, cut to its length */
 	uint64_t frame_end;
 	hs_event_t frame_ev;
 	struct rtos_host_deferred frame_deferred;   /* armed: the frame's end is deferred */
@@ -161,7 +160,6 @@ static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt);
 static void frame_done(void *arg)
 {
 	struct spi_module *s = arg;
-	uint32_t mask = s->shift_len >= 16 ? 0xFFFFU : (1U << s->shift_len) - 1U;
 
 	s->frame_ev = 0;
 	rtos_host_deferred_disarm(&s->frame_deferred);
@@ -174,7 +172,7 @@ static void frame_done(void *arg)
 		s->stats.rx_overruns++;
 		flg_update(s, 0, FLG_OVRN);
 	}
-	s->rx = (s->rx & BUF_RXOVR) | (s->shift_out & mask);
+	s->rx = (s->rx & BUF_RXOVR) | s->shift_out;
 	flg_update(s, 0, FLG_RXINT | FLG_TXINT);
 	if (s->tx_full) {
 		s->tx_full = false;
@@ -191,11 +189,29 @@ static bool frame_end_private(const struct spi_module *s)
 	return !(*s->int0 & (INT0_RXINTENA | INT0_OVRNINTENA)) && !s->tx_full && s->slave.frame_done == NULL;
 }
 
+/* frame_done for a deferred frame: its end stayed private since it started
+ * (whatever could change that queues it), so there is no word waiting, no
+ * slave hook, no event handle, and the interrupt line stays low (no
+ * interrupt enabled: the last SPIINT0 write left it low). */
+static void frame_done_private(struct spi_module *s)
+{
+	rtos_host_deferred_disarm(&s->frame_deferred);
+	s->busy = false;
+	s->stats.transfers++;
+	if (!(s->rx & BUF_RXEMPTY)) {
+		s->rx |= BUF_RXOVR;
+		s->stats.rx_overruns++;
+		flg_update(s, 0, FLG_OVRN);
+	}
+	s->rx = (s->rx & BUF_RXOVR) | s->shift_out;
+	flg_update(s, 0, FLG_RXINT | FLG_TXINT);
+}
+
 /* Completes a deferred frame whose end has passed (its event would have run). */
-static void frame_settle(struct spi_module *s)
+static inline void frame_settle(struct spi_module *s)
 {
 	if (s->frame_deferred.armed && rtos_host_deferred_due(&s->frame_deferred))
-		frame_done(s);
+		frame_done_private(s);
 }
 
 /* Settles a deferred frame, then queues it as an event if it is still in
@@ -221,11 +237,14 @@ static void frame_settle_for_kernel(void *arg)
  * deferred when private. */
 static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt)
 {
-	uint64_t ns = frame_ns(s, fmt, &s->shift_len);
+	unsigned bits;
+	uint64_t ns = frame_ns(s, fmt, &bits);
+	uint16_t out;
 
 	s->busy = true;
 	s->word = word;
-	s->shift_out = s->slave.frame != NULL ? s->slave.frame(s->slave.ctx, word) : 0;
+	out = s->slave.frame != NULL ? s->slave.frame(s->slave.ctx, word) : 0;
+	s->shift_out = bits >= 16 ? out : out & ((1U << bits) - 1U);
 	s->frame_end = hs_now() + ns;
 	if (defer_private_ends && frame_end_private(s)) {
 		s->stats.deferred_ends++;
@@ -248,7 +267,8 @@ static void spi_send(struct spi_module *s, uint16_t word)
 			      "not master (SPIGCR1.MASTER/CLKMOD)");
 		return;
 	}
-	frame_settle(s);
+	if (s->busy)                /* an armed frame is busy */
+		frame_settle(s);
 	flg_update(s, FLG_TXINT, 0);
 	if (!s->busy) {
 		frame_start(s, word, fmt);
@@ -288,12 +308,14 @@ static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct spi_module *s = ctx;
 
-	frame_settle(s);
-	/* a poll that would see "not yet": the CPU spins until the frame ends */
-	if (s->busy && ((s->rx & BUF_RXEMPTY) || s->tx_full)) {
-		s->stats.stalls++;
-		hs_access_stall_until(s->frame_end);
+	if (s->busy) {              /* an armed frame is busy */
 		frame_settle(s);
+		/* a poll that would see "not yet": the CPU spins until the frame ends */
+		if (s->busy && ((s->rx & BUF_RXEMPTY) || s->tx_full)) {
+			s->stats.stalls++;
+			hs_access_stall_until(s->frame_end);
+			frame_settle(s);
+		}
 	}
 	*value = buf_value(s);
 	s->rx = (s->rx | BUF_RXEMPTY) & ~BUF_RXOVR;
@@ -327,7 +349,7 @@ static void write_flg(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	struct spi_module *s = ctx;
 
 	if (s->frame_deferred.armed && rtos_host_deferred_due(&s->frame_deferred)) {
-		frame_done(s);
+		frame_done_private(s);
 		flg_update(s, written & FLG_WRITABLE, 0);
 	}
 	spi_irq_update(s);
