@@ -13,6 +13,7 @@ static struct {
 	unsigned next;              /* channel selected by the previous frame */
 	uint16_t result;            /* conversion shifted out in the next frame */
 	bool range_5v;
+	const double *noise_mv;     /* the board's ADC noise (ev3_adc_noise_mv_ref) */
 } adc;
 
 /* ADS7957 output word: channel in 15-12, 10-bit result in 11-2. */
@@ -44,11 +45,10 @@ static __attribute__((noinline)) uint32_t adc_noisy_sample_mv(uint32_t mv, doubl
  * ADC samples ten thousand times per second). */
 static inline uint32_t adc_sample_mv(uint32_t mv)
 {
-	double sigma = ev3_adc_noise_mv();
 	uint64_t scaled;
 
-	if (sigma > 0)
-		return adc_noisy_sample_mv(mv, sigma);
+	if (*adc.noise_mv > 0)
+		return adc_noisy_sample_mv(mv, *adc.noise_mv);
 	scaled = adc.range_5v ? mv : 2ULL * mv;   /* 0-2.5 V range: full scale at half the voltage */
 	return scaled > 5000U ? 5000U : (uint32_t)scaled;
 }
@@ -78,6 +78,7 @@ static ER adc_create(const struct hs_board_cfg *cfg, void **ctx)
 	adc.next = 0;
 	adc.result = 0;
 	adc.range_5v = true;
+	adc.noise_mv = ev3_adc_noise_mv_ref();
 	hs_spi_connect(0, &(struct hs_spi_peer){ .frame = adc_frame });
 	*ctx = &adc;
 	return E_OK;
