@@ -66,6 +66,12 @@ struct spi_module {
 	uint32_t timing_fmt, timing_delay;
 	uint64_t timing_ns;
 	unsigned timing_bits;
+	/* A word written now starts a frame with a deferred end, timed as
+	 * timing_ns/timing_bits: the module is out of reset, enabled and
+	 * master, no interrupt is enabled, the slave has no hook at frame ends,
+	 * ends are deferred, and the timing is that of the selected format and
+	 * delay (polled_update redoes it whenever one of these may change). */
+	bool polled;
 	bool busy, tx_full;
 	uint16_t tx_buf;            /* word waiting in the TX buffer */
 	unsigned tx_buf_fmt;
@@ -87,6 +93,7 @@ static bool defer_private_ends = true;
 
 static void frame_settle(struct spi_module *s);
 static void frame_settle_or_queue(struct spi_module *s);
+static void polled_update(struct spi_module *s);
 
 void hs_spi_connect(unsigned bus, const struct hs_spi_peer *peer)
 {
@@ -97,6 +104,7 @@ void hs_spi_connect(unsigned bus, const struct hs_spi_peer *peer)
 		frame_settle(spis[bus]);            /* a frame that ended did so with the old slave */
 		spis[bus]->slave = pending[bus];
 		frame_settle_or_queue(spis[bus]);   /* the new slave may act at the frame's end */
+		polled_update(spis[bus]);
 	}
 }
 
@@ -177,6 +185,7 @@ static void frame_done(void *arg)
 	if (s->tx_full) {
 		s->tx_full = false;
 		frame_start(s, s->tx_buf, s->tx_buf_fmt);
+		polled_update(s);       /* the waiting word's format may not be the selected one */
 	}
 	spi_irq_update(s);
 }
@@ -187,6 +196,25 @@ static void frame_done(void *arg)
 static bool frame_end_private(const struct spi_module *s)
 {
 	return !(*s->int0 & (INT0_RXINTENA | INT0_OVRNINTENA)) && !s->tx_full && s->slave.frame_done == NULL;
+}
+
+/* True if the module may transfer: out of reset, enabled, master (SPIGCR0/1). */
+static bool module_ready(const struct spi_module *s)
+{
+	uint32_t gcr1 = *s->gcr1;
+
+	return (*s->gcr0 & 1U) && (gcr1 & (1U << 24)) && (gcr1 & 3U) == 3U;
+}
+
+/* Redoes s->polled (see struct spi_module) and the timing it relies on. */
+static void polled_update(struct spi_module *s)
+{
+	unsigned bits;
+
+	s->polled = defer_private_ends && module_ready(s) && !(*s->int0 & (INT0_RXINTENA | INT0_OVRNINTENA)) &&
+		    s->slave.frame_done == NULL;
+	if (s->polled)
+		frame_ns(s, (*s->dat1 >> 24) & 3U, &bits);
 }
 
 /* frame_done for a deferred frame: its end stayed private since it started
@@ -233,12 +261,10 @@ static void frame_settle_for_kernel(void *arg)
 		s->frame_ev = rtos_host_deferred_queue(&s->frame_deferred);
 }
 
-/* Starts a frame now with the slave answering; its end is an event, or
- * deferred when private. */
-static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt)
+/* Starts a frame of bits bits and ns now with the slave answering; the
+ * frame's end is left to the caller. */
+static inline void frame_begin(struct spi_module *s, uint16_t word, unsigned bits, uint64_t ns)
 {
-	unsigned bits;
-	uint64_t ns = frame_ns(s, fmt, &bits);
 	uint16_t out;
 
 	s->busy = true;
@@ -246,12 +272,27 @@ static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt)
 	out = s->slave.frame != NULL ? s->slave.frame(s->slave.ctx, word) : 0;
 	s->shift_out = bits >= 16 ? out : out & ((1U << bits) - 1U);
 	s->frame_end = hs_now() + ns;
-	if (defer_private_ends && frame_end_private(s)) {
-		s->stats.deferred_ends++;
-		rtos_host_defer_at(&s->frame_deferred, s->frame_end, frame_done, frame_settle_for_kernel, s);
-	} else {
+}
+
+/* Defers the end of the frame just begun (it is private). */
+static inline void frame_defer_end(struct spi_module *s)
+{
+	s->stats.deferred_ends++;
+	rtos_host_defer_at(&s->frame_deferred, s->frame_end, frame_done, frame_settle_for_kernel, s);
+}
+
+/* Starts a frame now with the slave answering; its end is an event, or
+ * deferred when private. */
+static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt)
+{
+	unsigned bits;
+	uint64_t ns = frame_ns(s, fmt, &bits);
+
+	frame_begin(s, word, bits, ns);
+	if (defer_private_ends && frame_end_private(s))
+		frame_defer_end(s);
+	else
 		s->frame_ev = hs_event_at(s->frame_end, frame_done, s);
-	}
 }
 
 /* A word written to SPIDAT0/1: transfer now, or park it in the TX buffer. */
@@ -260,7 +301,7 @@ static void spi_send(struct spi_module *s, uint16_t word)
 	uint32_t gcr1 = *s->gcr1;
 	unsigned fmt = (*s->dat1 >> 24) & 3U;
 
-	if (!(*s->gcr0 & 1U) || !(gcr1 & (1U << 24)) || (gcr1 & 3U) != 3U) {
+	if (!module_ready(s)) {
 		rtos_host_bug("host_sim", "%s: word 0x%04x written with the module %s: no transfer",
 			      s->inst->name, word, !(hs_reg_get(s->r, SPIGCR0) & 1U) ? "in reset (SPIGCR0.RESET=0)" :
 			      !(gcr1 & (1U << 24)) ? "disabled (SPIGCR1.ENABLE=0)" :
@@ -283,18 +324,39 @@ static void spi_send(struct spi_module *s, uint16_t word)
 	}
 }
 
-/* SPIDAT0/1 writes start a transfer. */
-static void write_dat(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+/* SPIDAT0 writes start a transfer; when polled and idle (d_analog's every
+ * frame) without spi_send's checks, which polled_update made beforehand. */
+static void write_dat0(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+{
+	struct spi_module *s = ctx;
+	uint16_t word = (uint16_t)(nv & 0xFFFFU);
+
+	/* SPIDAT0 and SPIDAT1 share the data half (SPIDAT1 is 32 bits wide) */
+	*s->dat1 = (*s->dat1 & ~0xFFFFU) | word;
+	if (s->polled && !s->busy) {
+		flg_update(s, FLG_TXINT, 0);
+		frame_begin(s, word, s->timing_bits, s->timing_ns);
+		frame_defer_end(s);
+		return;
+	}
+	spi_send(s, word);
+}
+
+/* SPIDAT1 writes (its format select may change) start a transfer. */
+static void write_dat1(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct spi_module *s = ctx;
 
-	if (a->offset == SPIDAT0) {
-		/* SPIDAT0 and SPIDAT1 share the data half (SPIDAT1 is 32 bits wide) */
-		*s->dat1 = (*s->dat1 & ~0xFFFFU) | (nv & 0xFFFFU);
-	} else if (a->width == 1) {
+	polled_update(s);
+	if (a->width == 1)
 		return;                 /* a byte write to the control half does not start a transfer */
-	}
 	spi_send(s, (uint16_t)(nv & 0xFFFFU));
+}
+
+/* SPIGCR1, SPIFMTn and SPIDELAY writes: polled_update. */
+static void write_setup(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+{
+	polled_update(ctx);
 }
 
 /* SPIBUF contents with the TXFULL flag. */
@@ -369,6 +431,7 @@ static void write_gcr0(void *ctx, const struct hs_access *a, uint32_t old, uint3
 		hs_region_reset(s->r);
 		spi_irq_update(s);
 	}
+	polled_update(s);
 }
 
 /* SPIINT0 write: re-evaluates the interrupt; a frame in flight whose end
@@ -379,26 +442,28 @@ static void write_int0(void *ctx, const struct hs_access *a, uint32_t old, uint3
 
 	frame_settle_or_queue(s);
 	spi_irq_update(s);
+	polled_update(s);
 }
 
 static const struct hs_reg spi_regs[] = {
 	{ .name = "SPIGCR0", .offset = SPIGCR0, .kind = HS_RW, .mask = 0x1, .after_write = write_gcr0 },
-	{ .name = "SPIGCR1", .offset = SPIGCR1, .kind = HS_RW, .mask = 0x01010303 },
+	{ .name = "SPIGCR1", .offset = SPIGCR1, .kind = HS_RW, .mask = 0x01010303, .after_write = write_setup },
 	{ .name = "SPIINT0", .offset = SPIINT0, .kind = HS_RW, .mask = 0x0101035F, .after_write = write_int0 },
 	{ .name = "SPILVL", .offset = SPILVL, .kind = HS_RW, .mask = 0x0000035F },
 	{ .name = "SPIFLG", .offset = SPIFLG, .kind = HS_W1C, .mask = FLG_WRITABLE,
 	  .before_read = read_flg, .after_write = write_flg },
 	{ .name = "SPIPC", .offset = SPIPC0, .kind = HS_RW, .count = 6, .stride = 4, .mask = 0x01010F3F },
 	{ .name = "SPIDAT0", .offset = SPIDAT0, .widths = HS_W16 | HS_W32, .kind = HS_RW, .mask = 0xFFFF,
-	  .after_write = write_dat },
+	  .after_write = write_dat0 },
 	{ .name = "SPIDAT1", .offset = SPIDAT1, .widths = HS_W8 | HS_W16 | HS_W32, .kind = HS_RW,
-	  .mask = 0x17FFFFFF, .after_write = write_dat },
+	  .mask = 0x17FFFFFF, .after_write = write_dat1 },
 	{ .name = "SPIBUF", .offset = SPIBUF, .widths = HS_W16 | HS_W32, .kind = HS_RO,
 	  .reset = BUF_RXEMPTY, .before_read = read_buf },
 	{ .name = "SPIEMU", .offset = SPIEMU, .kind = HS_RO, .before_read = read_emu },
-	{ .name = "SPIDELAY", .offset = SPIDELAY, .kind = HS_RW },
+	{ .name = "SPIDELAY", .offset = SPIDELAY, .kind = HS_RW, .after_write = write_setup },
 	{ .name = "SPIDEF", .offset = SPIDEF, .kind = HS_RW, .mask = 0xFF, .reset = 0xFF },
-	{ .name = "SPIFMT", .offset = SPIFMT0, .kind = HS_RW, .count = 4, .stride = 4, .mask = 0x3F7FFF1F },
+	{ .name = "SPIFMT", .offset = SPIFMT0, .kind = HS_RW, .count = 4, .stride = 4, .mask = 0x3F7FFF1F,
+	  .after_write = write_setup },
 	{ .name = "INTVEC0", .offset = INTVEC0, .kind = HS_RO },
 	{ .name = "INTVEC1", .offset = INTVEC1, .kind = HS_RO },
 };
@@ -431,6 +496,7 @@ static ER spi_create(unsigned bus, const struct hs_board_cfg *cfg, void **ctx)
 	if (!cfg || !cfg->cold_reset)
 		hs_reg_set(s->r, SPIGCR0, 1);
 	s->slave = pending[bus];
+	polled_update(s);
 	spis[bus] = s;
 	*ctx = s;
 	return E_OK;
@@ -475,6 +541,9 @@ const struct ev3_spi_stats *hs_spi_stats(unsigned bus)
 void hs_spi_defer_private_ends(bool on)
 {
 	defer_private_ends = on;
+	for (unsigned bus = 0; bus < HS_SPI_BUSES; bus++)
+		if (spis[bus])
+			polled_update(spis[bus]);
 }
 
 const struct ev3_spi_stats *ev3_spi_get_stats(void)
