@@ -221,7 +221,7 @@ static void polled_update(struct spi_module *s)
  * (whatever could change that queues it), so there is no word waiting, no
  * slave hook, no event handle, and the interrupt line stays low (no
  * interrupt enabled: the last SPIINT0 write left it low). */
-static void frame_done_private(struct spi_module *s)
+static inline void frame_done_private(struct spi_module *s)
 {
 	rtos_host_deferred_disarm(&s->frame_deferred);
 	s->busy = false;
@@ -382,7 +382,8 @@ static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 	*value = buf_value(s);
 	s->rx = (s->rx | BUF_RXEMPTY) & ~BUF_RXOVR;
 	flg_update(s, FLG_RXINT, 0);
-	spi_irq_update(s);
+	if (!s->polled)             /* polled: no interrupt enabled, the line stays low */
+		spi_irq_update(s);
 }
 
 /* SPIEMU read: SPIBUF without side effects. */
