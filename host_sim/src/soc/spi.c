@@ -164,6 +164,19 @@ static void flg_update(struct spi_module *s, uint32_t clear, uint32_t set)
 
 static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt);
 
+/* The answer of the frame ending now goes to SPIBUF (an overrun if the last
+ * one was not read) and SPIFLG. */
+static inline void frame_shift_in(struct spi_module *s)
+{
+	if (!(s->rx & BUF_RXEMPTY)) {
+		s->rx |= BUF_RXOVR;
+		s->stats.rx_overruns++;
+		flg_update(s, 0, FLG_OVRN);
+	}
+	s->rx = (s->rx & BUF_RXOVR) | s->shift_out;
+	flg_update(s, 0, FLG_RXINT | FLG_TXINT);
+}
+
 /* Event: a frame ends; SPIBUF gets the answer. */
 static void frame_done(void *arg)
 {
@@ -175,13 +188,7 @@ static void frame_done(void *arg)
 	s->stats.transfers++;
 	if (s->slave.frame_done != NULL)
 		s->slave.frame_done(s->slave.ctx, s->word);
-	if (!(s->rx & BUF_RXEMPTY)) {
-		s->rx |= BUF_RXOVR;
-		s->stats.rx_overruns++;
-		flg_update(s, 0, FLG_OVRN);
-	}
-	s->rx = (s->rx & BUF_RXOVR) | s->shift_out;
-	flg_update(s, 0, FLG_RXINT | FLG_TXINT);
+	frame_shift_in(s);
 	if (s->tx_full) {
 		s->tx_full = false;
 		frame_start(s, s->tx_buf, s->tx_buf_fmt);
@@ -190,12 +197,19 @@ static void frame_done(void *arg)
 	spi_irq_update(s);
 }
 
+/* True if a frame's end is seen by nothing but the module's registers when
+ * no word waits behind it: no interrupt it could raise is enabled, the slave
+ * has nothing to do at its end. */
+static bool ends_unseen(const struct spi_module *s)
+{
+	return !(*s->int0 & (INT0_RXINTENA | INT0_OVRNINTENA)) && s->slave.frame_done == NULL;
+}
+
 /* True if the end of the frame in flight can change nothing but the module's
- * own registers and statistics: no interrupt it could raise is enabled, no
- * word waits to start after it, the slave has nothing to do at its end. */
+ * own registers and statistics (ends_unseen, and no word waits to start after it). */
 static bool frame_end_private(const struct spi_module *s)
 {
-	return !(*s->int0 & (INT0_RXINTENA | INT0_OVRNINTENA)) && !s->tx_full && s->slave.frame_done == NULL;
+	return ends_unseen(s) && !s->tx_full;
 }
 
 /* True if the module may transfer: out of reset, enabled, master (SPIGCR0/1). */
@@ -211,8 +225,7 @@ static void polled_update(struct spi_module *s)
 {
 	unsigned bits;
 
-	s->polled = defer_private_ends && module_ready(s) && !(*s->int0 & (INT0_RXINTENA | INT0_OVRNINTENA)) &&
-		    s->slave.frame_done == NULL;
+	s->polled = defer_private_ends && module_ready(s) && ends_unseen(s);
 	if (s->polled)
 		frame_ns(s, (*s->dat1 >> 24) & 3U, &bits);
 }
@@ -226,13 +239,7 @@ static inline void frame_done_private(struct spi_module *s)
 	rtos_host_deferred_disarm(&s->frame_deferred);
 	s->busy = false;
 	s->stats.transfers++;
-	if (!(s->rx & BUF_RXEMPTY)) {
-		s->rx |= BUF_RXOVR;
-		s->stats.rx_overruns++;
-		flg_update(s, 0, FLG_OVRN);
-	}
-	s->rx = (s->rx & BUF_RXOVR) | s->shift_out;
-	flg_update(s, 0, FLG_RXINT | FLG_TXINT);
+	frame_shift_in(s);
 }
 
 /* Completes a deferred frame whose end has passed (its event would have run). */
