@@ -65,9 +65,9 @@ struct spi_module {
 	bool timing_known;
 	uint32_t timing_fmt, timing_delay;
 	uint64_t timing_ns;
-	unsigned timing_bits;
+	uint16_t timing_mask;       /* the data bits of a word of that format */
 	/* A word written now starts a frame with a deferred end, timed as
-	 * timing_ns/timing_bits: the module is out of reset, enabled and
+	 * timing_ns/timing_mask: the module is out of reset, enabled and
 	 * master, no interrupt is enabled, the slave has no hook at frame ends,
 	 * ends are deferred, and the timing is that of the selected format and
 	 * delay (polled_update redoes it whenever one of these may change). */
@@ -131,8 +131,8 @@ static inline void spi_irq_update(struct spi_module *s)
 	}
 }
 
-/* Frame length in ns for a data format. */
-static uint64_t frame_ns(struct spi_module *s, unsigned fmt, unsigned *bits)
+/* Frame length in ns for a data format, and the data bits of its words in *mask. */
+static uint64_t frame_ns(struct spi_module *s, unsigned fmt, uint16_t *mask)
 {
 	uint32_t f = *s->fmt[fmt];
 	uint32_t delay = *s->delay;
@@ -140,7 +140,7 @@ static uint64_t frame_ns(struct spi_module *s, unsigned fmt, unsigned *bits)
 	uint64_t cs_cycles;
 
 	if (s->timing_known && f == s->timing_fmt && delay == s->timing_delay) {
-		*bits = s->timing_bits;
+		*mask = s->timing_mask;
 		return s->timing_ns;
 	}
 	/* chip-select setup (C2TDELAY) and hold (T2CDELAY) in module clocks */
@@ -150,9 +150,9 @@ static uint64_t frame_ns(struct spi_module *s, unsigned fmt, unsigned *bits)
 	s->timing_known = true;
 	s->timing_fmt = f;
 	s->timing_delay = delay;
-	s->timing_bits = charlen;
+	s->timing_mask = charlen >= 16 ? 0xFFFFU : (uint16_t)((1U << charlen) - 1U);
 	s->timing_ns = hs_cycles_to_ns((uint64_t)charlen * (prescale + 1U) + cs_cycles, s->inst->clock_hz);
-	*bits = charlen;
+	*mask = s->timing_mask;
 	return s->timing_ns;
 }
 
@@ -223,11 +223,11 @@ static bool module_ready(const struct spi_module *s)
 /* Redoes s->polled (see struct spi_module) and the timing it relies on. */
 static void polled_update(struct spi_module *s)
 {
-	unsigned bits;
+	uint16_t mask;
 
 	s->polled = defer_private_ends && module_ready(s) && ends_unseen(s);
 	if (s->polled)
-		frame_ns(s, (*s->dat1 >> 24) & 3U, &bits);
+		frame_ns(s, (*s->dat1 >> 24) & 3U, &mask);
 }
 
 /* frame_done for a deferred frame: its end stayed private since it started
@@ -268,16 +268,16 @@ static void frame_settle_for_kernel(void *arg)
 		s->frame_ev = rtos_host_deferred_queue(&s->frame_deferred);
 }
 
-/* Starts a frame of bits bits and ns now with the slave answering; the
- * frame's end is left to the caller. */
-static inline void frame_begin(struct spi_module *s, uint16_t word, unsigned bits, uint64_t ns)
+/* Starts a frame of ns now with the slave answering (mask: the word's data
+ * bits); the frame's end is left to the caller. */
+static inline void frame_begin(struct spi_module *s, uint16_t word, uint16_t mask, uint64_t ns)
 {
 	uint16_t out;
 
 	s->busy = true;
 	s->word = word;
 	out = s->slave.frame != NULL ? s->slave.frame(s->slave.ctx, word) : 0;
-	s->shift_out = bits >= 16 ? out : out & ((1U << bits) - 1U);
+	s->shift_out = out & mask;
 	s->frame_end = hs_now() + ns;
 }
 
@@ -292,10 +292,10 @@ static inline void frame_defer_end(struct spi_module *s)
  * deferred when private. */
 static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt)
 {
-	unsigned bits;
-	uint64_t ns = frame_ns(s, fmt, &bits);
+	uint16_t mask;
+	uint64_t ns = frame_ns(s, fmt, &mask);
 
-	frame_begin(s, word, bits, ns);
+	frame_begin(s, word, mask, ns);
 	if (defer_private_ends && frame_end_private(s))
 		frame_defer_end(s);
 	else
@@ -342,7 +342,7 @@ static void write_dat0(void *ctx, const struct hs_access *a, uint32_t old, uint3
 	*s->dat1 = (*s->dat1 & ~0xFFFFU) | word;
 	if (s->polled && !s->busy) {
 		flg_update(s, FLG_TXINT, 0);
-		frame_begin(s, word, s->timing_bits, s->timing_ns);
+		frame_begin(s, word, s->timing_mask, s->timing_ns);
 		frame_defer_end(s);
 		return;
 	}
