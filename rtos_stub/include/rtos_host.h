@@ -148,14 +148,74 @@ struct rtos_host_deferred {
 	bool armed;
 };
 
+/* Where the kernel keeps what the inline deferred-event functions below read
+ * and update (the clock, the run's place in the queue order, the next
+ * sequence number, the armed list); only event.c and those functions use it. */
+struct rtos_host_deferred_state {
+	const uint64_t *now;        /* the virtual clock */
+	const uint64_t *pos_time;   /* the last event taken (or the time settled) */
+	const uint64_t *pos_seq;    /* its sequence (UINT64_MAX: the time settled) */
+	uint64_t *seq;              /* the next event's sequence number */
+	struct rtos_host_deferred **armed;
+};
+extern const struct rtos_host_deferred_state rtos_host_deferred_state;
+
+/* rtos_host_defer_at when d is still armed or t_ns has passed. */
+void rtos_host_defer_at_slow(struct rtos_host_deferred *d, uint64_t t_ns, rtos_host_event_fn fn,
+			     rtos_host_event_fn settle, void *arg);
+/* rtos_host_deferred_disarm when d is armed but not first in the armed list. */
+void rtos_host_deferred_unlink(struct rtos_host_deferred *d);
+
 /* Arms d as the event fn(arg) at t_ns (>= now), ordered as rtos_host_event_at
- * would order it now; settle(arg) is the owner's catch-up (see above). */
-void rtos_host_defer_at(struct rtos_host_deferred *d, uint64_t t_ns, rtos_host_event_fn fn,
-			rtos_host_event_fn settle, void *arg);
-/* True if d, had it been queued, would have run by now (d must be armed). */
-bool rtos_host_deferred_due(const struct rtos_host_deferred *d);
+ * would order it now; settle(arg) is the owner's catch-up (see above).
+ * Inline: a polled transfer arms one per frame, thousands per second. */
+static inline void rtos_host_defer_at(struct rtos_host_deferred *d, uint64_t t_ns, rtos_host_event_fn fn,
+				      rtos_host_event_fn settle, void *arg)
+{
+	const struct rtos_host_deferred_state *k = &rtos_host_deferred_state;
+
+	if (d->armed || t_ns < *k->now) {
+		rtos_host_defer_at_slow(d, t_ns, fn, settle, arg);
+		return;
+	}
+	d->time = t_ns;
+	d->seq = (*k->seq)++;
+	d->fn = fn;
+	d->settle = settle;
+	d->arg = arg;
+	d->armed = true;
+	d->next = *k->armed;
+	*k->armed = d;
+}
+
+/* True if d, had it been queued, would have run by now (d must be armed):
+ * the run is past d's place in the queue order, a later time, or d's time
+ * with an event of a higher sequence run or the time settled. */
+static inline bool rtos_host_deferred_due(const struct rtos_host_deferred *d)
+{
+	const struct rtos_host_deferred_state *k = &rtos_host_deferred_state;
+
+	if (*k->now != d->time)
+		return *k->now > d->time;
+	return *k->pos_time != d->time || *k->pos_seq > d->seq;
+}
+
 /* Disarms d (completed by its owner, or abandoned); harmless if not armed. */
-void rtos_host_deferred_disarm(struct rtos_host_deferred *d);
+static inline void rtos_host_deferred_disarm(struct rtos_host_deferred *d)
+{
+	struct rtos_host_deferred **armed = rtos_host_deferred_state.armed;
+
+	if (!d->armed)
+		return;
+	if (*armed != d) {
+		rtos_host_deferred_unlink(d);
+		return;
+	}
+	*armed = d->next;
+	d->next = NULL;
+	d->armed = false;
+}
+
 /* Disarms d and queues its event in d's place in the order; its handle. */
 rtos_host_event_t rtos_host_deferred_queue(struct rtos_host_deferred *d);
 

@@ -13,14 +13,21 @@ static struct {
 	unsigned next;              /* channel selected by the previous frame */
 	uint16_t result;            /* conversion shifted out in the next frame */
 	bool range_5v;
+	const double *noise_mv;     /* the board's ADC noise (ev3_adc_noise_mv_ref) */
 } adc;
 
-/* ADS7957 output word: channel in 15-12, 10-bit result in 11-2. */
-uint16_t ads7957_word(unsigned ch, uint32_t mv)
+/* ADS7957 output word for mV of the 0-5 V scale (full scale and above: 1023):
+ * channel in 15-12, 10-bit result in 11-2. */
+static inline uint16_t ads7957_word_of(unsigned ch, uint64_t mv)
 {
 	uint32_t code = mv >= 5000U ? 1023U : (uint32_t)((mv * 1023U + 2500U) / 5000U);
 
 	return (uint16_t)(((ch & 0xFU) << 12) | (code << 2));
+}
+
+uint16_t ads7957_word(unsigned ch, uint32_t mv)
+{
+	return ads7957_word_of(ch, mv);
 }
 
 /* adc_sample_mv with noise of standard deviation sigma mV: a draw from the
@@ -39,18 +46,15 @@ static __attribute__((noinline)) uint32_t adc_noisy_sample_mv(uint32_t mv, doubl
 
 /* The sampled channel's voltage mv as the converter's input sees it, in mV
  * of its 0-5 V scale: with the board's noise, doubled in the 0-2.5 V range,
- * clamped.  Without noise everything is a whole number of mV, so integer
- * arithmetic gives what the rounded floating-point sum gives, cheaper (the
- * ADC samples ten thousand times per second). */
-static inline uint32_t adc_sample_mv(uint32_t mv)
+ * clamped (noise-free: left to ads7957_word_of, whose code is the same at
+ * and above full scale).  Without noise everything is a whole number of mV,
+ * so integer arithmetic gives what the rounded floating-point sum gives,
+ * cheaper (the ADC samples ten thousand times per second). */
+static inline uint64_t adc_sample_mv(uint32_t mv)
 {
-	double sigma = ev3_adc_noise_mv();
-	uint64_t scaled;
-
-	if (sigma > 0)
-		return adc_noisy_sample_mv(mv, sigma);
-	scaled = adc.range_5v ? mv : 2ULL * mv;   /* 0-2.5 V range: full scale at half the voltage */
-	return scaled > 5000U ? 5000U : (uint32_t)scaled;
+	if (*adc.noise_mv > 0)
+		return adc_noisy_sample_mv(mv, *adc.noise_mv);
+	return adc.range_5v ? mv : 2ULL * mv;   /* 0-2.5 V range: full scale at half the voltage */
 }
 
 /* The converter's side of one frame starting now: returns what it shifts
@@ -58,13 +62,12 @@ static inline uint32_t adc_sample_mv(uint32_t mv)
 static uint16_t adc_frame(void *ctx, uint16_t cmd)
 {
 	uint16_t out = adc.result;
-	unsigned mode = cmd >> 12;
 
-	adc.result = ads7957_word(adc.next, adc_sample_mv(ev3_adc_channel_mv(adc.next)));
-	if (mode == 0x1U && (cmd & 0x0800U)) {
+	adc.result = ads7957_word_of(adc.next, adc_sample_mv(ev3_adc_channel_mv(adc.next)));
+	if ((cmd & 0xF800U) == 0x1800U) {               /* mode 1 with bit 11: a new channel */
 		adc.next = (cmd >> 7) & 0xFU;
 		adc.range_5v = cmd & 0x0040U;
-	} else if (mode == 0x2U || mode == 0x3U) {
+	} else if ((cmd >> 13) == 0x1U) {               /* mode 2 or 3 */
 		rtos_host_bug("host_sim", "SPI0 ADC: command 0x%04x selects an auto mode, which is not modelled "
 			      "(the EV3 uses manual mode)", cmd);
 	}
@@ -78,6 +81,7 @@ static ER adc_create(const struct hs_board_cfg *cfg, void **ctx)
 	adc.next = 0;
 	adc.result = 0;
 	adc.range_5v = true;
+	adc.noise_mv = ev3_adc_noise_mv_ref();
 	hs_spi_connect(0, &(struct hs_spi_peer){ .frame = adc_frame });
 	*ctx = &adc;
 	return E_OK;

@@ -522,6 +522,21 @@ static __attribute__((noinline)) void adc_sources_build(void)
 	adc_source_built = true;
 }
 
+/* ev3_adc_channel_mv's input pin 6 channels: out of line (it calls the GPIO
+ * model), so the dispatch saves no registers on the other channels' way. */
+static __attribute__((noinline)) uint32_t adc_input_pin6_mv(unsigned port)
+{
+	return input_pin6_mv(port);
+}
+
+/* ev3_adc_channel_mv's brick channels (battery, motor current, temperature):
+ * out of line, as adc_input_pin6_mv. */
+static __attribute__((noinline)) uint32_t adc_brick_mv(unsigned ch)
+{
+	return ev3_power_adc_mv(ch, ch == EV3_ADC_MOTOR_CURRENT || ch == EV3_ADC_BATTERY_CURRENT ||
+				     ch == EV3_ADC_BATTERY_VOLTAGE ? ev3_motors_current_a() : 0);
+}
+
 /* Voltage of an ADC channel (LEGO's d_analog.c channel map). */
 uint32_t ev3_adc_channel_mv(unsigned ch)
 {
@@ -534,14 +549,12 @@ uint32_t ev3_adc_channel_mv(unsigned ch)
 	case ADC_IN_PIN1:
 		return input_pin1_mv(&brick.in[src & 0xFU]);
 	case ADC_IN_PIN6:
-		return input_pin6_mv(src & 0xFU);
+		return adc_input_pin6_mv(src & 0xFU);
 	case ADC_OUT_PIN5:
 		return ev3_output_pin5_mv(src & 0xFU);
 	default:
-		break;
+		return adc_brick_mv(ch);
 	}
-	return ev3_power_adc_mv(ch, ch == EV3_ADC_MOTOR_CURRENT || ch == EV3_ADC_BATTERY_CURRENT ||
-					 ch == EV3_ADC_BATTERY_VOLTAGE ? ev3_motors_current_a() : 0);
 }
 
 /* Sum of the motor currents now, amperes. */
@@ -559,6 +572,12 @@ double ev3_motors_current_a(void)
 double ev3_adc_noise_mv(void)
 {
 	return brick.adc_noise_mv;
+}
+
+/* Where the ADC noise standard deviation (mV) is kept (read on every ADC frame). */
+const double *ev3_adc_noise_mv_ref(void)
+{
+	return &brick.adc_noise_mv;
 }
 
 /* One standard-normal draw from the ADC noise stream. */

@@ -65,12 +65,17 @@ struct spi_module {
 	bool timing_known;
 	uint32_t timing_fmt, timing_delay;
 	uint64_t timing_ns;
-	unsigned timing_bits;
+	uint16_t timing_mask;       /* the data bits of a word of that format */
+	/* A word written now starts a frame with a deferred end, timed as
+	 * timing_ns/timing_mask: the module is out of reset, enabled and
+	 * master, no interrupt is enabled, the slave has no hook at frame ends,
+	 * ends are deferred, and the timing is that of the selected format and
+	 * delay (polled_update redoes it whenever one of these may change). */
+	bool polled;
 	bool busy, tx_full;
 	uint16_t tx_buf;            /* word waiting in the TX buffer */
 	unsigned tx_buf_fmt;
-	uint16_t shift_out;         /* what the slave shifts back in this frame */
-	unsigned shift_len;
+	uint16_t shift_out;         /* what the slave shifts back in this frame, cut to its length */
 	uint64_t frame_end;
 	hs_event_t frame_ev;
 	struct rtos_host_deferred frame_deferred;   /* armed: the frame's end is deferred */
@@ -88,6 +93,7 @@ static bool defer_private_ends = true;
 
 static void frame_settle(struct spi_module *s);
 static void frame_settle_or_queue(struct spi_module *s);
+static void polled_update(struct spi_module *s);
 
 void hs_spi_connect(unsigned bus, const struct hs_spi_peer *peer)
 {
@@ -98,6 +104,7 @@ void hs_spi_connect(unsigned bus, const struct hs_spi_peer *peer)
 		frame_settle(spis[bus]);            /* a frame that ended did so with the old slave */
 		spis[bus]->slave = pending[bus];
 		frame_settle_or_queue(spis[bus]);   /* the new slave may act at the frame's end */
+		polled_update(spis[bus]);
 	}
 }
 
@@ -124,8 +131,8 @@ static inline void spi_irq_update(struct spi_module *s)
 	}
 }
 
-/* Frame length in ns for a data format. */
-static uint64_t frame_ns(struct spi_module *s, unsigned fmt, unsigned *bits)
+/* Frame length in ns for a data format, and the data bits of its words in *mask. */
+static uint64_t frame_ns(struct spi_module *s, unsigned fmt, uint16_t *mask)
 {
 	uint32_t f = *s->fmt[fmt];
 	uint32_t delay = *s->delay;
@@ -133,7 +140,7 @@ static uint64_t frame_ns(struct spi_module *s, unsigned fmt, unsigned *bits)
 	uint64_t cs_cycles;
 
 	if (s->timing_known && f == s->timing_fmt && delay == s->timing_delay) {
-		*bits = s->timing_bits;
+		*mask = s->timing_mask;
 		return s->timing_ns;
 	}
 	/* chip-select setup (C2TDELAY) and hold (T2CDELAY) in module clocks */
@@ -143,9 +150,9 @@ static uint64_t frame_ns(struct spi_module *s, unsigned fmt, unsigned *bits)
 	s->timing_known = true;
 	s->timing_fmt = f;
 	s->timing_delay = delay;
-	s->timing_bits = charlen;
+	s->timing_mask = charlen >= 16 ? 0xFFFFU : (uint16_t)((1U << charlen) - 1U);
 	s->timing_ns = hs_cycles_to_ns((uint64_t)charlen * (prescale + 1U) + cs_cycles, s->inst->clock_hz);
-	*bits = charlen;
+	*mask = s->timing_mask;
 	return s->timing_ns;
 }
 
@@ -157,11 +164,23 @@ static void flg_update(struct spi_module *s, uint32_t clear, uint32_t set)
 
 static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt);
 
+/* The answer of the frame ending now goes to SPIBUF (an overrun if the last
+ * one was not read) and SPIFLG. */
+static inline void frame_shift_in(struct spi_module *s)
+{
+	if (!(s->rx & BUF_RXEMPTY)) {
+		s->rx |= BUF_RXOVR;
+		s->stats.rx_overruns++;
+		flg_update(s, 0, FLG_OVRN);
+	}
+	s->rx = (s->rx & BUF_RXOVR) | s->shift_out;
+	flg_update(s, 0, FLG_RXINT | FLG_TXINT);
+}
+
 /* Event: a frame ends; SPIBUF gets the answer. */
 static void frame_done(void *arg)
 {
 	struct spi_module *s = arg;
-	uint32_t mask = s->shift_len >= 16 ? 0xFFFFU : (1U << s->shift_len) - 1U;
 
 	s->frame_ev = 0;
 	rtos_host_deferred_disarm(&s->frame_deferred);
@@ -169,33 +188,65 @@ static void frame_done(void *arg)
 	s->stats.transfers++;
 	if (s->slave.frame_done != NULL)
 		s->slave.frame_done(s->slave.ctx, s->word);
-	if (!(s->rx & BUF_RXEMPTY)) {
-		s->rx |= BUF_RXOVR;
-		s->stats.rx_overruns++;
-		flg_update(s, 0, FLG_OVRN);
-	}
-	s->rx = (s->rx & BUF_RXOVR) | (s->shift_out & mask);
-	flg_update(s, 0, FLG_RXINT | FLG_TXINT);
+	frame_shift_in(s);
 	if (s->tx_full) {
 		s->tx_full = false;
 		frame_start(s, s->tx_buf, s->tx_buf_fmt);
+		polled_update(s);       /* the waiting word's format may not be the selected one */
 	}
 	spi_irq_update(s);
 }
 
+/* True if a frame's end is seen by nothing but the module's registers when
+ * no word waits behind it: no interrupt it could raise is enabled, the slave
+ * has nothing to do at its end. */
+static bool ends_unseen(const struct spi_module *s)
+{
+	return !(*s->int0 & (INT0_RXINTENA | INT0_OVRNINTENA)) && s->slave.frame_done == NULL;
+}
+
 /* True if the end of the frame in flight can change nothing but the module's
- * own registers and statistics: no interrupt it could raise is enabled, no
- * word waits to start after it, the slave has nothing to do at its end. */
+ * own registers and statistics (ends_unseen, and no word waits to start after it). */
 static bool frame_end_private(const struct spi_module *s)
 {
-	return !(*s->int0 & (INT0_RXINTENA | INT0_OVRNINTENA)) && !s->tx_full && s->slave.frame_done == NULL;
+	return ends_unseen(s) && !s->tx_full;
+}
+
+/* True if the module may transfer: out of reset, enabled, master (SPIGCR0/1). */
+static bool module_ready(const struct spi_module *s)
+{
+	uint32_t gcr1 = *s->gcr1;
+
+	return (*s->gcr0 & 1U) && (gcr1 & (1U << 24)) && (gcr1 & 3U) == 3U;
+}
+
+/* Redoes s->polled (see struct spi_module) and the timing it relies on. */
+static void polled_update(struct spi_module *s)
+{
+	uint16_t mask;
+
+	s->polled = defer_private_ends && module_ready(s) && ends_unseen(s);
+	if (s->polled)
+		frame_ns(s, (*s->dat1 >> 24) & 3U, &mask);
+}
+
+/* frame_done for a deferred frame: its end stayed private since it started
+ * (whatever could change that queues it), so there is no word waiting, no
+ * slave hook, no event handle, and the interrupt line stays low (no
+ * interrupt enabled: the last SPIINT0 write left it low). */
+static inline void frame_done_private(struct spi_module *s)
+{
+	rtos_host_deferred_disarm(&s->frame_deferred);
+	s->busy = false;
+	s->stats.transfers++;
+	frame_shift_in(s);
 }
 
 /* Completes a deferred frame whose end has passed (its event would have run). */
-static void frame_settle(struct spi_module *s)
+static inline void frame_settle(struct spi_module *s)
 {
 	if (s->frame_deferred.armed && rtos_host_deferred_due(&s->frame_deferred))
-		frame_done(s);
+		frame_done_private(s);
 }
 
 /* Settles a deferred frame, then queues it as an event if it is still in
@@ -217,22 +268,38 @@ static void frame_settle_for_kernel(void *arg)
 		s->frame_ev = rtos_host_deferred_queue(&s->frame_deferred);
 }
 
+/* Starts a frame of ns now with the slave answering (mask: the word's data
+ * bits); the frame's end is left to the caller. */
+static inline void frame_begin(struct spi_module *s, uint16_t word, uint16_t mask, uint64_t ns)
+{
+	uint16_t out;
+
+	s->busy = true;
+	s->word = word;
+	out = s->slave.frame != NULL ? s->slave.frame(s->slave.ctx, word) : 0;
+	s->shift_out = out & mask;
+	s->frame_end = hs_now() + ns;
+}
+
+/* Defers the end of the frame just begun (it is private). */
+static inline void frame_defer_end(struct spi_module *s)
+{
+	s->stats.deferred_ends++;
+	rtos_host_defer_at(&s->frame_deferred, s->frame_end, frame_done, frame_settle_for_kernel, s);
+}
+
 /* Starts a frame now with the slave answering; its end is an event, or
  * deferred when private. */
 static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt)
 {
-	uint64_t ns = frame_ns(s, fmt, &s->shift_len);
+	uint16_t mask;
+	uint64_t ns = frame_ns(s, fmt, &mask);
 
-	s->busy = true;
-	s->word = word;
-	s->shift_out = s->slave.frame != NULL ? s->slave.frame(s->slave.ctx, word) : 0;
-	s->frame_end = hs_now() + ns;
-	if (defer_private_ends && frame_end_private(s)) {
-		s->stats.deferred_ends++;
-		rtos_host_defer_at(&s->frame_deferred, s->frame_end, frame_done, frame_settle_for_kernel, s);
-	} else {
+	frame_begin(s, word, mask, ns);
+	if (defer_private_ends && frame_end_private(s))
+		frame_defer_end(s);
+	else
 		s->frame_ev = hs_event_at(s->frame_end, frame_done, s);
-	}
 }
 
 /* A word written to SPIDAT0/1: transfer now, or park it in the TX buffer. */
@@ -241,14 +308,15 @@ static void spi_send(struct spi_module *s, uint16_t word)
 	uint32_t gcr1 = *s->gcr1;
 	unsigned fmt = (*s->dat1 >> 24) & 3U;
 
-	if (!(*s->gcr0 & 1U) || !(gcr1 & (1U << 24)) || (gcr1 & 3U) != 3U) {
+	if (!module_ready(s)) {
 		rtos_host_bug("host_sim", "%s: word 0x%04x written with the module %s: no transfer",
 			      s->inst->name, word, !(hs_reg_get(s->r, SPIGCR0) & 1U) ? "in reset (SPIGCR0.RESET=0)" :
 			      !(gcr1 & (1U << 24)) ? "disabled (SPIGCR1.ENABLE=0)" :
 			      "not master (SPIGCR1.MASTER/CLKMOD)");
 		return;
 	}
-	frame_settle(s);
+	if (s->busy)                /* an armed frame is busy */
+		frame_settle(s);
 	flg_update(s, FLG_TXINT, 0);
 	if (!s->busy) {
 		frame_start(s, word, fmt);
@@ -263,18 +331,39 @@ static void spi_send(struct spi_module *s, uint16_t word)
 	}
 }
 
-/* SPIDAT0/1 writes start a transfer. */
-static void write_dat(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+/* SPIDAT0 writes start a transfer; when polled and idle (d_analog's every
+ * frame) without spi_send's checks, which polled_update made beforehand. */
+static void write_dat0(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+{
+	struct spi_module *s = ctx;
+	uint16_t word = (uint16_t)(nv & 0xFFFFU);
+
+	/* SPIDAT0 and SPIDAT1 share the data half (SPIDAT1 is 32 bits wide) */
+	*s->dat1 = (*s->dat1 & ~0xFFFFU) | word;
+	if (s->polled && !s->busy) {
+		flg_update(s, FLG_TXINT, 0);
+		frame_begin(s, word, s->timing_mask, s->timing_ns);
+		frame_defer_end(s);
+		return;
+	}
+	spi_send(s, word);
+}
+
+/* SPIDAT1 writes (its format select may change) start a transfer. */
+static void write_dat1(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct spi_module *s = ctx;
 
-	if (a->offset == SPIDAT0) {
-		/* SPIDAT0 and SPIDAT1 share the data half (SPIDAT1 is 32 bits wide) */
-		*s->dat1 = (*s->dat1 & ~0xFFFFU) | (nv & 0xFFFFU);
-	} else if (a->width == 1) {
+	polled_update(s);
+	if (a->width == 1)
 		return;                 /* a byte write to the control half does not start a transfer */
-	}
 	spi_send(s, (uint16_t)(nv & 0xFFFFU));
+}
+
+/* SPIGCR1, SPIFMTn and SPIDELAY writes: polled_update. */
+static void write_setup(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+{
+	polled_update(ctx);
 }
 
 /* SPIBUF contents with the TXFULL flag. */
@@ -288,17 +377,20 @@ static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct spi_module *s = ctx;
 
-	frame_settle(s);
-	/* a poll that would see "not yet": the CPU spins until the frame ends */
-	if (s->busy && ((s->rx & BUF_RXEMPTY) || s->tx_full)) {
-		s->stats.stalls++;
-		hs_access_stall_until(s->frame_end);
+	if (s->busy) {              /* an armed frame is busy */
 		frame_settle(s);
+		/* a poll that would see "not yet": the CPU spins until the frame ends */
+		if (s->busy && ((s->rx & BUF_RXEMPTY) || s->tx_full)) {
+			s->stats.stalls++;
+			hs_access_stall_until(s->frame_end);
+			frame_settle(s);
+		}
 	}
 	*value = buf_value(s);
 	s->rx = (s->rx | BUF_RXEMPTY) & ~BUF_RXOVR;
 	flg_update(s, FLG_RXINT, 0);
-	spi_irq_update(s);
+	if (!s->polled)             /* polled: no interrupt enabled, the line stays low */
+		spi_irq_update(s);
 }
 
 /* SPIEMU read: SPIBUF without side effects. */
@@ -327,7 +419,7 @@ static void write_flg(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	struct spi_module *s = ctx;
 
 	if (s->frame_deferred.armed && rtos_host_deferred_due(&s->frame_deferred)) {
-		frame_done(s);
+		frame_done_private(s);
 		flg_update(s, written & FLG_WRITABLE, 0);
 	}
 	spi_irq_update(s);
@@ -347,6 +439,7 @@ static void write_gcr0(void *ctx, const struct hs_access *a, uint32_t old, uint3
 		hs_region_reset(s->r);
 		spi_irq_update(s);
 	}
+	polled_update(s);
 }
 
 /* SPIINT0 write: re-evaluates the interrupt; a frame in flight whose end
@@ -357,26 +450,28 @@ static void write_int0(void *ctx, const struct hs_access *a, uint32_t old, uint3
 
 	frame_settle_or_queue(s);
 	spi_irq_update(s);
+	polled_update(s);
 }
 
 static const struct hs_reg spi_regs[] = {
 	{ .name = "SPIGCR0", .offset = SPIGCR0, .kind = HS_RW, .mask = 0x1, .after_write = write_gcr0 },
-	{ .name = "SPIGCR1", .offset = SPIGCR1, .kind = HS_RW, .mask = 0x01010303 },
+	{ .name = "SPIGCR1", .offset = SPIGCR1, .kind = HS_RW, .mask = 0x01010303, .after_write = write_setup },
 	{ .name = "SPIINT0", .offset = SPIINT0, .kind = HS_RW, .mask = 0x0101035F, .after_write = write_int0 },
 	{ .name = "SPILVL", .offset = SPILVL, .kind = HS_RW, .mask = 0x0000035F },
 	{ .name = "SPIFLG", .offset = SPIFLG, .kind = HS_W1C, .mask = FLG_WRITABLE,
 	  .before_read = read_flg, .after_write = write_flg },
 	{ .name = "SPIPC", .offset = SPIPC0, .kind = HS_RW, .count = 6, .stride = 4, .mask = 0x01010F3F },
 	{ .name = "SPIDAT0", .offset = SPIDAT0, .widths = HS_W16 | HS_W32, .kind = HS_RW, .mask = 0xFFFF,
-	  .after_write = write_dat },
+	  .after_write = write_dat0 },
 	{ .name = "SPIDAT1", .offset = SPIDAT1, .widths = HS_W8 | HS_W16 | HS_W32, .kind = HS_RW,
-	  .mask = 0x17FFFFFF, .after_write = write_dat },
+	  .mask = 0x17FFFFFF, .after_write = write_dat1 },
 	{ .name = "SPIBUF", .offset = SPIBUF, .widths = HS_W16 | HS_W32, .kind = HS_RO,
 	  .reset = BUF_RXEMPTY, .before_read = read_buf },
 	{ .name = "SPIEMU", .offset = SPIEMU, .kind = HS_RO, .before_read = read_emu },
-	{ .name = "SPIDELAY", .offset = SPIDELAY, .kind = HS_RW },
+	{ .name = "SPIDELAY", .offset = SPIDELAY, .kind = HS_RW, .after_write = write_setup },
 	{ .name = "SPIDEF", .offset = SPIDEF, .kind = HS_RW, .mask = 0xFF, .reset = 0xFF },
-	{ .name = "SPIFMT", .offset = SPIFMT0, .kind = HS_RW, .count = 4, .stride = 4, .mask = 0x3F7FFF1F },
+	{ .name = "SPIFMT", .offset = SPIFMT0, .kind = HS_RW, .count = 4, .stride = 4, .mask = 0x3F7FFF1F,
+	  .after_write = write_setup },
 	{ .name = "INTVEC0", .offset = INTVEC0, .kind = HS_RO },
 	{ .name = "INTVEC1", .offset = INTVEC1, .kind = HS_RO },
 };
@@ -409,6 +504,7 @@ static ER spi_create(unsigned bus, const struct hs_board_cfg *cfg, void **ctx)
 	if (!cfg || !cfg->cold_reset)
 		hs_reg_set(s->r, SPIGCR0, 1);
 	s->slave = pending[bus];
+	polled_update(s);
 	spis[bus] = s;
 	*ctx = s;
 	return E_OK;
@@ -453,6 +549,9 @@ const struct ev3_spi_stats *hs_spi_stats(unsigned bus)
 void hs_spi_defer_private_ends(bool on)
 {
 	defer_private_ends = on;
+	for (unsigned bus = 0; bus < HS_SPI_BUSES; bus++)
+		if (spis[bus])
+			polled_update(spis[bus]);
 }
 
 const struct ev3_spi_stats *ev3_spi_get_stats(void)

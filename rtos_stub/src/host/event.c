@@ -364,42 +364,30 @@ void rtos_host_event_cancel(rtos_host_event_t handle)
 	ev_settle();
 }
 
-/* Arms d as fn(arg) at t_ns with the next sequence number, as if scheduled now. */
-void rtos_host_defer_at(struct rtos_host_deferred *d, uint64_t t_ns, rtos_host_event_fn fn,
-			rtos_host_event_fn settle, void *arg)
+const struct rtos_host_deferred_state rtos_host_deferred_state = {
+	&now_ns, &ev_pos_time, &ev_pos_seq, &ev_seq, &ev_deferred,
+};
+
+/* rtos_host_defer_at's rare cases: d armed again before it completed (its
+ * old place is given up), or a time in the past (a bug; due now). */
+void rtos_host_defer_at_slow(struct rtos_host_deferred *d, uint64_t t_ns, rtos_host_event_fn fn,
+			     rtos_host_event_fn settle, void *arg)
 {
-	if (d->armed)
-		rtos_host_deferred_disarm(d);
+	rtos_host_deferred_disarm(d);
 	if (t_ns < now_ns) {
 		rtos_host_bug("event", "deferred event in the past (t=%llu ns < now); due now",
 			      (unsigned long long)t_ns);
 		t_ns = now_ns;
 	}
-	d->time = t_ns;
-	d->seq = ev_seq++;
-	d->fn = fn;
-	d->settle = settle;
-	d->arg = arg;
-	d->armed = true;
-	d->next = ev_deferred;
-	ev_deferred = d;
+	rtos_host_defer_at(d, t_ns, fn, settle, arg);
 }
 
-/* True once the run is past d's place in the queue order (see the top of the file). */
-bool rtos_host_deferred_due(const struct rtos_host_deferred *d)
-{
-	if (now_ns != d->time)
-		return now_ns > d->time;
-	return ev_pos_time != d->time || ev_pos_seq > d->seq;
-}
-
-/* Unlinks d from the armed list (a handful at most: one per transfer in flight). */
-void rtos_host_deferred_disarm(struct rtos_host_deferred *d)
+/* Unlinks d from the armed list behind its head (a handful at most: one per
+ * transfer in flight). */
+void rtos_host_deferred_unlink(struct rtos_host_deferred *d)
 {
 	struct rtos_host_deferred **link = &ev_deferred;
 
-	if (!d->armed)
-		return;
 	while (*link != d)
 		link = &(*link)->next;
 	*link = d->next;

@@ -3,7 +3,8 @@
  * same sequence of polled frames (d_analog's pattern, reads in the middle of
  * a frame, flags cleared before SPIBUF is read, an interrupt enabled before
  * and during a frame, a word waiting in the TX buffer, an overrun, a reset,
- * the idle check, reads by events at the frame's end time) gives the same
+ * the idle check, reads by events at the frame's end time, the format,
+ * delay and format selection changed between frames) gives the same
  * register values at the same virtual times, the same interrupt line (VCD)
  * and the same statistics with deferral on as with every frame end an event.
  */
@@ -104,6 +105,7 @@ static uint64_t frame_length(void)
 static void run_sequence(bool defer, struct run *r, const char *vcd_path)
 {
 	uint64_t frame_ns, end;
+	uint32_t buf;
 
 	cur = r;
 	r->count = 0;
@@ -191,6 +193,25 @@ static void run_sequence(bool defer, struct run *r, const char *vcd_path)
 	hs_sim_run_until(end + frame_ns + 2 * US);
 	note("flg at end", rd32(SPIFLG));
 	rd32(SPIBUF);
+
+	/* the format, the delay and the format selected change between polled
+	 * frames: each next frame is timed and cut by them */
+	wr32(SPI + 0x50, 0x00010010U | (20U << 8));    /* SPIFMT0: a faster clock */
+	polled_frame(0x1E40);
+	wr32(SPI + 0x48, 0x02020202);                   /* SPIDELAY: shorter chip-select delays */
+	polled_frame(0x1EC0);
+	wr32(SPI + 0x54, 0x00010008U | (10U << 8));    /* SPIFMT1: 8-bit words */
+	wr32(SPI + 0x3C, (1U << 24) | 0x1F40U);         /* SPIDAT1: selects SPIFMT1 and sends */
+	while ((buf = rd32(SPIBUF)) & RXEMPTY)
+		;
+	note("8-bit frame", buf);
+	polled_frame(0x1FC0);
+	wr32(SPI + 0x3C, 0x1840);                       /* back to SPIFMT0 */
+	while (rd32(SPIBUF) & RXEMPTY)
+		;
+	polled_frame(0x1840);
+	wr32(SPIGCR1, 0x01000003);                      /* written again, unchanged */
+	polled_frame(0x18C0);
 
 	/* a reset after an unobserved end, and the statistics */
 	wr32(SPIDAT0, 0x1E40);

@@ -133,6 +133,8 @@ const struct ev3_fault_record *ev3_fault_log(unsigned i);
 void ev3_fault_uart_counts(unsigned port, uint32_t *flipped, uint32_t *dropped, uint32_t *duplicated);
 /* Current ADC noise standard deviation (mV) and the generator it draws from. */
 double ev3_adc_noise_mv(void);
+/* Where ev3_adc_noise_mv is kept: the converter reads it on every frame without a call. */
+const double *ev3_adc_noise_mv_ref(void);
 double ev3_adc_noise_sample(void);
 
 #endif /* HOST_SIM_DEVICES_EV3_BRICK_H */
