@@ -64,12 +64,30 @@ static uint32_t ev_stale;                        /* slots of cancelled events st
 static uint32_t ev_live;                         /* queued events: all device work (the tick is the timer) */
 static uint64_t ev_seq;
 uint64_t event_head_time = UINT64_MAX;
+uint64_t quiet_until;
+static uint64_t ev_run_bound;                    /* the active run's deadline, 0 outside runs */
 /* Where the run is in the queue order: the last event taken, or its time settled (sequence UINT64_MAX). */
 static uint64_t ev_pos_time;
 uint64_t ev_pos_seq = UINT64_MAX;
 static struct rtos_host_deferred *ev_deferred;   /* the armed deferred events */
 static struct ev_slot ev_timer = { UINT64_MAX, 0, 0, 0 };   /* the kernel timer: time UINT64_MAX when off */
 static rtos_host_event_fn ev_timer_fn;
+
+/* Sets the earliest event's time, and quiet_until with it. */
+static inline void ev_head_set(uint64_t t_ns)
+{
+	event_head_time = t_ns;
+	quiet_until = t_ns < ev_run_bound ? t_ns : ev_run_bound;
+}
+
+/* An event or the timer is now due at t_ns: the head and quiet_until move no later. */
+static inline void ev_head_lower(uint64_t t_ns)
+{
+	if (t_ns < event_head_time)
+		event_head_time = t_ns;
+	if (t_ns < quiet_until)
+		quiet_until = t_ns;
+}
 
 /* Queue order: earlier time first, then scheduling order. */
 static inline bool ev_before(const struct ev_slot *a, const struct ev_slot *b)
@@ -206,7 +224,7 @@ static inline void ev_settle(void)
 	const struct ev_slot *s = ev_settle_queue();
 	uint64_t t = s != NULL ? s->time : UINT64_MAX;
 
-	event_head_time = t < ev_timer.time ? t : ev_timer.time;
+	ev_head_set(t < ev_timer.time ? t : ev_timer.time);
 }
 
 /* Removes every cancelled slot (their count outgrew the live ones): the
@@ -287,8 +305,7 @@ static inline __attribute__((always_inline)) void ev_claim(uint32_t idx, uint64_
 	ev->arg = arg;
 	ev->queued = true;
 	ev_live++;
-	if (t_ns < event_head_time)
-		event_head_time = t_ns;
+	ev_head_lower(t_ns);
 }
 
 /* The handle of queued event idx: its generation and index, never 0. */
@@ -440,8 +457,14 @@ void event_timer_set(uint64_t t_ns, rtos_host_event_fn fn)
 {
 	ev_timer = (struct ev_slot){ t_ns, ev_seq++, 0, 0 };
 	ev_timer_fn = fn;
-	if (t_ns < event_head_time)
-		event_head_time = t_ns;
+	ev_head_lower(t_ns);
+}
+
+/* A run of the harness starts with deadline t_ns, or ends (0): quiet_until follows. */
+void event_set_run_bound(uint64_t t_ns)
+{
+	ev_run_bound = t_ns;
+	ev_head_set(event_head_time);
 }
 
 /* Turns the kernel timer off. */
@@ -527,7 +550,8 @@ void event_reset(void)
 	ev_heap_len = 0;
 	ev_stale = 0;
 	ev_live = 0;
-	event_head_time = UINT64_MAX;
+	ev_run_bound = 0;
+	ev_head_set(UINT64_MAX);
 	ev_timer.time = UINT64_MAX;
 	ev_seq = 0;
 	ev_pos_time = 0;
