@@ -1,10 +1,10 @@
 /*
  * event.c — the event queue of the virtual clock, ordered by (time, sequence),
  * so events at the same time run in scheduling order.  Device events,
- * interrupt-line changes and the kernel's tick are events; virtual time jumps
- * from one to the next.
+ * interrupt-line changes and the kernel's tick (a timer beside the queue, see
+ * below) are events; virtual time jumps from one to the next.
  *
- * Most events are due soon (an SPI frame's end, the next tick, a UART byte):
+ * Most events are due soon (an SPI frame's end, a motor edge, a UART byte):
  * they go into the front, a small array sorted latest-first, where inserting
  * one that is due before most others moves few slots and taking the earliest
  * is taking the last.  Everything due later than the front's latest is in a
@@ -465,13 +465,6 @@ void event_set_run_bound(uint64_t t_ns)
 {
 	ev_run_bound = t_ns;
 	ev_head_set(event_head_time);
-}
-
-/* Turns the kernel timer off. */
-void event_timer_cancel(void)
-{
-	ev_timer.time = UINT64_MAX;
-	ev_settle();
 }
 
 /* True if the kernel timer, due now, comes before the queue's head (settled) in the queue order. */

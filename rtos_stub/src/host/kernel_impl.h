@@ -301,8 +301,6 @@ static inline void event_time_settled(void)
 /* The kernel timer (the tick), beside the queue: fn(NULL) at t_ns (>= now),
  * ordered as an event scheduled now, replacing its previous setting; not device work. */
 void event_timer_set(uint64_t t_ns, rtos_host_event_fn fn);
-/* Turns the kernel timer off. */
-void event_timer_cancel(void);
 
 /* ---- Interrupts ---- */
 void irq_reset(void);
