@@ -65,7 +65,7 @@ static uint32_t ev_live;                         /* queued events: all device wo
 static uint64_t ev_seq;
 uint64_t event_head_time = UINT64_MAX;
 uint64_t quiet_until;
-static uint64_t ev_run_bound;                    /* the active run's deadline, 0 outside runs */
+static uint64_t ev_run_bound;                    /* the active run's deadline; UINT64_MAX booted, 0 not */
 /* Where the run is in the queue order: the last event taken, or its time settled (sequence UINT64_MAX). */
 static uint64_t ev_pos_time;
 uint64_t ev_pos_seq = UINT64_MAX;
@@ -460,7 +460,7 @@ void event_timer_set(uint64_t t_ns, rtos_host_event_fn fn)
 	ev_head_lower(t_ns);
 }
 
-/* A run of the harness starts with deadline t_ns, or ends (0): quiet_until follows. */
+/* Sets the bound quiet_until keeps below besides the next event (see kernel_impl.h). */
 void event_set_run_bound(uint64_t t_ns)
 {
 	ev_run_bound = t_ns;

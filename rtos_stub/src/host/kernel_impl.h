@@ -281,10 +281,11 @@ static inline uint64_t event_next_time(void)
 }
 /* Until this time nothing can stop a context spending virtual time but the
  * clock: the earliest of the next event and, during a run of the harness, the
- * run's deadline; 0 outside runs (so also before boot).  The fast ends of
- * register accesses and rtos_host_consume test it alone for both. */
+ * run's deadline; 0 while the kernel is not booted.  The fast ends of register
+ * accesses and rtos_host_consume test it alone for all three. */
 extern uint64_t quiet_until;
-/* A run of the harness starts with deadline t_ns, or ends (0): quiet_until follows. */
+/* Sets quiet_until's other bound: the run's deadline when a run starts,
+ * UINT64_MAX when it ends and at boot (event_reset sets 0). */
 void event_set_run_bound(uint64_t t_ns);
 /* Pops and runs the earliest event; now_ns must already be its time. */
 void event_run_next(void);

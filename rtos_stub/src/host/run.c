@@ -149,7 +149,7 @@ static bool run_loop(uint64_t t, bool until_idle)
 		event_run_next();
 	}
 	run_active = false;        /* the stall watch's next tick sees it and disarms its timer */
-	event_set_run_bound(0);
+	event_set_run_bound(UINT64_MAX);
 	return idle;
 }
 
@@ -270,7 +270,7 @@ static inline bool task_consume_quiet(void)
 	       !kernel_exited;
 }
 
-/* rtos_host_consume when quiet_until comes first: outside a run, or the run's
+/* rtos_host_consume when quiet_until comes first: before boot, or the run's
  * deadline before the end. */
 static __attribute__((noinline)) void consume_unquiet(uint64_t ns)
 {

@@ -201,9 +201,11 @@ void time_reset(void)
 	tick_event_time = UINT64_MAX;
 }
 
-/* Starts the tick timer (every boundary mode) once the objects exist. */
+/* Starts the tick timer (every boundary mode) once the objects exist, and
+ * lets quiet_until follow the events now that the kernel is booted. */
 void time_start(void)
 {
+	event_set_run_bound(UINT64_MAX);
 	if (tick_every) {
 		tick_event_time = RTOS_HOST_TICK_NS;
 		event_timer_set(RTOS_HOST_TICK_NS, tick_fire);
