@@ -55,11 +55,15 @@ struct event {
 static struct event *ev_pool;
 static uint32_t ev_cap;
 static uint32_t ev_free = EV_NONE;
-static struct ev_slot ev_front[EV_FRONT_CAP];   /* latest first: the earliest is last */
+/* The front, latest first (the earliest is last), after a sentinel slot due
+ * at UINT64_MAX, where an insertion's walk stops without a bound check. */
+static struct ev_slot ev_front_slots[1U + EV_FRONT_CAP] = { { UINT64_MAX, 0, 0, 0 } };
+static struct ev_slot *const ev_front = &ev_front_slots[1];
 static uint32_t ev_front_len;
 static struct ev_slot *ev_heap;                  /* all later than every front slot */
 static uint32_t ev_heap_len;
 static uint32_t ev_heap_cap;
+static uint64_t ev_heap_first = UINT64_MAX;      /* the heap's earliest time, UINT64_MAX if empty */
 static uint32_t ev_stale;                        /* slots of cancelled events still queued */
 static uint32_t ev_live;                         /* queued events: all device work (the tick is the timer) */
 static uint64_t ev_seq;
@@ -115,6 +119,12 @@ static void ev_sift_up(uint32_t pos, struct ev_slot s)
 	ev_heap[pos] = s;
 }
 
+/* Keeps ev_heap_first after the heap's root changed. */
+static inline void ev_heap_root_changed(void)
+{
+	ev_heap_first = ev_heap_len > 0 ? ev_heap[0].time : UINT64_MAX;
+}
+
 /* Adds slot s to the heap; false on ENOMEM. */
 static bool ev_heap_push(struct ev_slot s)
 {
@@ -128,6 +138,7 @@ static bool ev_heap_push(struct ev_slot s)
 		ev_heap_cap = ncap;
 	}
 	ev_sift_up(ev_heap_len++, s);
+	ev_heap_root_changed();
 	return true;
 }
 
@@ -138,8 +149,10 @@ static void ev_heap_pop(void)
 	struct ev_slot last = ev_heap[--ev_heap_len];
 	uint32_t pos = 0;
 
-	if (ev_heap_len == 0)
+	if (ev_heap_len == 0) {
+		ev_heap_root_changed();
 		return;
+	}
 	for (;;) {
 		uint32_t child = 2 * pos + 1;
 
@@ -151,6 +164,7 @@ static void ev_heap_pop(void)
 		pos = child;
 	}
 	ev_sift_up(pos, last);
+	ev_heap_root_changed();
 }
 
 /* Inserts slot s into the front (which has room), keeping it latest-first:
@@ -240,6 +254,7 @@ static void ev_sweep(void)
 	ev_heap_len = 0;
 	for (uint32_t i = 0; i < n; i++)
 		ev_sift_up(ev_heap_len++, ev_heap[i]);
+	ev_heap_root_changed();
 	ev_stale = 0;
 }
 
@@ -340,13 +355,13 @@ rtos_host_event_t rtos_host_event_at(uint64_t t_ns, rtos_host_event_fn fn, void 
 	struct ev_slot *pos;
 
 	if (fn == NULL || t_ns < now_ns || ev_free == EV_NONE || ev_front_len == EV_FRONT_CAP ||
-	    (ev_heap_len != 0 && t_ns >= ev_heap[0].time))
+	    t_ns >= ev_heap_first)
 		return ev_schedule_slow(t_ns, fn, arg);
-	/* the common case, inline and without calls: into the front, moving up the
-	 * slots due no later */
+	/* the common case, without calls: into the front, moving up the slots due
+	 * no later (t_ns < UINT64_MAX: the sentinel stops the walk) */
 	idx = ev_free;
 	pos = &ev_front[ev_front_len++];
-	while (pos > ev_front && pos[-1].time <= t_ns) {
+	while (pos[-1].time <= t_ns) {
 		pos[0] = pos[-1];
 		pos--;
 	}
@@ -541,6 +556,7 @@ void event_reset(void)
 	}
 	ev_front_len = 0;
 	ev_heap_len = 0;
+	ev_heap_root_changed();
 	ev_stale = 0;
 	ev_live = 0;
 	ev_run_bound = 0;
