@@ -1,10 +1,10 @@
 /*
  * event.c — the event queue of the virtual clock, ordered by (time, sequence),
  * so events at the same time run in scheduling order.  Device events,
- * interrupt-line changes and the kernel's tick are events; virtual time jumps
- * from one to the next.
+ * interrupt-line changes and the kernel's tick (a timer beside the queue, see
+ * below) are events; virtual time jumps from one to the next.
  *
- * Most events are due soon (an SPI frame's end, the next tick, a UART byte):
+ * Most events are due soon (an SPI frame's end, a motor edge, a UART byte):
  * they go into the front, a small array sorted latest-first, where inserting
  * one that is due before most others moves few slots and taking the earliest
  * is taking the last.  Everything due later than the front's latest is in a
@@ -13,6 +13,13 @@
  * it is and is skipped when it reaches the head (its generation no longer
  * matches); when such slots outnumber the live ones they are swept out.
  * The earliest live time is kept in event_head_time for the run loop.
+ *
+ * The kernel's tick, due every tick period when ISRs are attached to it, is
+ * not queued: it is one timer slot beside the queue with a time and a
+ * sequence taken as a queued event's would be, and the head is whichever of
+ * the two comes first in the same (time, sequence) order, so it runs exactly
+ * where its queued event would have run without an insertion and a release
+ * per tick.
  *
  * A deferred event (rtos_host.h) holds a sequence number like a queued one
  * but no slot; it is due once the run has moved past its place in the order:
@@ -43,26 +50,48 @@ struct event {
 	uint32_t gen;        /* bumped on every release: stale handles and slots are harmless */
 	uint32_t next_free;
 	bool     queued;
-	bool     kernel;     /* kernel-internal (tick): not device work */
 };
 
 static struct event *ev_pool;
 static uint32_t ev_cap;
 static uint32_t ev_free = EV_NONE;
-static struct ev_slot ev_front[EV_FRONT_CAP];   /* latest first: the earliest is last */
+/* The front, latest first (the earliest is last), after a sentinel slot due
+ * at UINT64_MAX, where an insertion's walk stops without a bound check. */
+static struct ev_slot ev_front_slots[1U + EV_FRONT_CAP] = { { UINT64_MAX, 0, 0, 0 } };
+static struct ev_slot *const ev_front = &ev_front_slots[1];
 static uint32_t ev_front_len;
 static struct ev_slot *ev_heap;                  /* all later than every front slot */
 static uint32_t ev_heap_len;
 static uint32_t ev_heap_cap;
+static uint64_t ev_heap_first = UINT64_MAX;      /* the heap's earliest time, UINT64_MAX if empty */
 static uint32_t ev_stale;                        /* slots of cancelled events still queued */
-static uint32_t ev_live;                         /* queued events */
+static uint32_t ev_live;                         /* queued events: all device work (the tick is the timer) */
 static uint64_t ev_seq;
-static uint_t ev_user;
 uint64_t event_head_time = UINT64_MAX;
+uint64_t quiet_until;
+static uint64_t ev_run_bound;                    /* the active run's deadline; UINT64_MAX booted, 0 not */
 /* Where the run is in the queue order: the last event taken, or its time settled (sequence UINT64_MAX). */
 static uint64_t ev_pos_time;
 uint64_t ev_pos_seq = UINT64_MAX;
 static struct rtos_host_deferred *ev_deferred;   /* the armed deferred events */
+static struct ev_slot ev_timer = { UINT64_MAX, 0, 0, 0 };   /* the kernel timer: time UINT64_MAX when off */
+static rtos_host_event_fn ev_timer_fn;
+
+/* Sets the earliest event's time, and quiet_until with it. */
+static inline void ev_head_set(uint64_t t_ns)
+{
+	event_head_time = t_ns;
+	quiet_until = t_ns < ev_run_bound ? t_ns : ev_run_bound;
+}
+
+/* An event or the timer is now due at t_ns: the head and quiet_until move no later. */
+static inline void ev_head_lower(uint64_t t_ns)
+{
+	if (t_ns < event_head_time)
+		event_head_time = t_ns;
+	if (t_ns < quiet_until)
+		quiet_until = t_ns;
+}
 
 /* Queue order: earlier time first, then scheduling order. */
 static inline bool ev_before(const struct ev_slot *a, const struct ev_slot *b)
@@ -90,6 +119,12 @@ static void ev_sift_up(uint32_t pos, struct ev_slot s)
 	ev_heap[pos] = s;
 }
 
+/* Keeps ev_heap_first after the heap's root changed. */
+static inline void ev_heap_root_changed(void)
+{
+	ev_heap_first = ev_heap_len > 0 ? ev_heap[0].time : UINT64_MAX;
+}
+
 /* Adds slot s to the heap; false on ENOMEM. */
 static bool ev_heap_push(struct ev_slot s)
 {
@@ -103,6 +138,7 @@ static bool ev_heap_push(struct ev_slot s)
 		ev_heap_cap = ncap;
 	}
 	ev_sift_up(ev_heap_len++, s);
+	ev_heap_root_changed();
 	return true;
 }
 
@@ -113,8 +149,10 @@ static void ev_heap_pop(void)
 	struct ev_slot last = ev_heap[--ev_heap_len];
 	uint32_t pos = 0;
 
-	if (ev_heap_len == 0)
+	if (ev_heap_len == 0) {
+		ev_heap_root_changed();
 		return;
+	}
 	for (;;) {
 		uint32_t child = 2 * pos + 1;
 
@@ -126,6 +164,7 @@ static void ev_heap_pop(void)
 		pos = child;
 	}
 	ev_sift_up(pos, last);
+	ev_heap_root_changed();
 }
 
 /* Inserts slot s into the front (which has room), keeping it latest-first:
@@ -172,30 +211,34 @@ static __attribute__((noinline)) bool ev_queue(struct ev_slot s)
 	return true;
 }
 
-/* Drops cancelled slots at the head and sets event_head_time to the earliest live event's. */
-static inline void ev_settle(void)
+/* Drops cancelled slots at the queue's head; returns the head (NULL if the queue is empty). */
+static inline const struct ev_slot *ev_settle_queue(void)
 {
 	for (;;) {
 		if (ev_front_len > 0) {
 			const struct ev_slot *s = &ev_front[ev_front_len - 1];
 
-			if (!ev_slot_stale(s)) {
-				event_head_time = s->time;
-				return;
-			}
+			if (!ev_slot_stale(s))
+				return s;
 			ev_front_len--;
 		} else if (ev_heap_len > 0) {
-			if (!ev_slot_stale(&ev_heap[0])) {
-				event_head_time = ev_heap[0].time;
-				return;
-			}
+			if (!ev_slot_stale(&ev_heap[0]))
+				return &ev_heap[0];
 			ev_heap_pop();
 		} else {
-			event_head_time = UINT64_MAX;
-			return;
+			return NULL;
 		}
 		ev_stale--;
 	}
+}
+
+/* Drops cancelled slots at the head and sets event_head_time to the earliest live event's or the timer's. */
+static inline void ev_settle(void)
+{
+	const struct ev_slot *s = ev_settle_queue();
+	uint64_t t = s != NULL ? s->time : UINT64_MAX;
+
+	ev_head_set(t < ev_timer.time ? t : ev_timer.time);
 }
 
 /* Removes every cancelled slot (their count outgrew the live ones): the
@@ -211,6 +254,7 @@ static void ev_sweep(void)
 	ev_heap_len = 0;
 	for (uint32_t i = 0; i < n; i++)
 		ev_sift_up(ev_heap_len++, ev_heap[i]);
+	ev_heap_root_changed();
 	ev_stale = 0;
 }
 
@@ -219,8 +263,6 @@ static inline void ev_release(uint32_t idx)
 {
 	struct event *ev = &ev_pool[idx];
 
-	if (!ev->kernel)
-		ev_user--;
 	ev_live--;
 	ev->queued = false;
 	ev->fn = NULL;
@@ -247,7 +289,7 @@ static bool ev_grow(void)
 	return true;
 }
 
-/* ev_schedule's checks: false after a bug report for no function or no
+/* rtos_host_event_at's checks: false after a bug report for no function or no
  * memory; a time in the past is reported and moved to now. */
 static __attribute__((noinline)) bool ev_schedule_check(uint64_t *t_ns, rtos_host_event_fn fn)
 {
@@ -269,20 +311,16 @@ static __attribute__((noinline)) bool ev_schedule_check(uint64_t *t_ns, rtos_hos
 
 /* Takes event idx off the free list (its slot is queued) as fn(arg) due at t_ns. */
 static inline __attribute__((always_inline)) void ev_claim(uint32_t idx, uint64_t t_ns, rtos_host_event_fn fn,
-							   void *arg, bool kernel)
+							   void *arg)
 {
 	struct event *ev = &ev_pool[idx];
 
 	ev_free = ev->next_free;
 	ev->fn = fn;
 	ev->arg = arg;
-	ev->kernel = kernel;
 	ev->queued = true;
 	ev_live++;
-	if (!kernel)
-		ev_user++;
-	if (t_ns < event_head_time)
-		event_head_time = t_ns;
+	ev_head_lower(t_ns);
 }
 
 /* The handle of queued event idx: its generation and index, never 0. */
@@ -291,10 +329,10 @@ static inline rtos_host_event_t ev_handle(uint32_t idx)
 	return ((rtos_host_event_t)ev_pool[idx].gen << 32) | (idx + 1U);
 }
 
-/* ev_schedule's other cases: a bad request, no free event, a full front or
+/* rtos_host_event_at's other cases: a bad request, no free event, a full front or
  * a time at or after the heap's earliest. */
 static __attribute__((noinline)) rtos_host_event_t ev_schedule_slow(uint64_t t_ns, rtos_host_event_fn fn,
-								     void *arg, bool kernel)
+								     void *arg)
 {
 	uint32_t idx;
 
@@ -306,44 +344,31 @@ static __attribute__((noinline)) rtos_host_event_t ev_schedule_slow(uint64_t t_n
 		return 0;
 	}
 	ev_seq++;
-	ev_claim(idx, t_ns, fn, arg, kernel);
-	return ev_handle(idx);
-}
-
-/* Schedules fn(arg) at t_ns; a time in the past is a bug and runs now. */
-static inline __attribute__((always_inline)) rtos_host_event_t ev_schedule(uint64_t t_ns, rtos_host_event_fn fn,
-									    void *arg, bool kernel)
-{
-	uint32_t idx;
-	struct ev_slot *pos;
-
-	if (fn == NULL || t_ns < now_ns || ev_free == EV_NONE || ev_front_len == EV_FRONT_CAP ||
-	    (ev_heap_len != 0 && t_ns >= ev_heap[0].time))
-		return ev_schedule_slow(t_ns, fn, arg, kernel);
-	/* the common case, inline and without calls: into the front, moving up the
-	 * slots due no later */
-	idx = ev_free;
-	pos = &ev_front[ev_front_len++];
-	while (pos > ev_front && pos[-1].time <= t_ns) {
-		pos[0] = pos[-1];
-		pos--;
-	}
-	*pos = (struct ev_slot){ t_ns, ev_seq, idx, ev_pool[idx].gen };
-	ev_seq++;
-	ev_claim(idx, t_ns, fn, arg, kernel);
+	ev_claim(idx, t_ns, fn, arg);
 	return ev_handle(idx);
 }
 
 /* Schedules fn(arg) at absolute virtual time t_ns; same-time events run in order. */
 rtos_host_event_t rtos_host_event_at(uint64_t t_ns, rtos_host_event_fn fn, void *arg)
 {
-	return ev_schedule(t_ns, fn, arg, false);
-}
+	uint32_t idx;
+	struct ev_slot *pos;
 
-/* Schedules a kernel-internal event (does not count as pending device work). */
-rtos_host_event_t event_at_kernel(uint64_t t_ns, rtos_host_event_fn fn, void *arg)
-{
-	return ev_schedule(t_ns, fn, arg, true);
+	if (fn == NULL || t_ns < now_ns || ev_free == EV_NONE || ev_front_len == EV_FRONT_CAP ||
+	    t_ns >= ev_heap_first)
+		return ev_schedule_slow(t_ns, fn, arg);
+	/* the common case, without calls: into the front, moving up the slots due
+	 * no later (t_ns < UINT64_MAX: the sentinel stops the walk) */
+	idx = ev_free;
+	pos = &ev_front[ev_front_len++];
+	while (pos[-1].time <= t_ns) {
+		pos[0] = pos[-1];
+		pos--;
+	}
+	*pos = (struct ev_slot){ t_ns, ev_seq, idx, ev_pool[idx].gen };
+	ev_seq++;
+	ev_claim(idx, t_ns, fn, arg);
+	return ev_handle(idx);
 }
 
 /* Cancels a scheduled event; fired, cancelled or unknown handles are ignored. */
@@ -409,11 +434,11 @@ rtos_host_event_t rtos_host_deferred_queue(struct rtos_host_deferred *d)
 		rtos_host_bug("event", "out of memory for events");
 		return 0;
 	}
-	ev_claim(idx, t_ns, d->fn, d->arg, false);
+	ev_claim(idx, t_ns, d->fn, d->arg);
 	return ev_handle(idx);
 }
 
-/* Number of scheduled device (non-kernel) events, after every deferred one
+/* Number of scheduled device events (all queued ones), after every deferred one
  * is settled: completed if due, queued otherwise (its owner decides). */
 uint_t event_user_count(void)
 {
@@ -426,7 +451,39 @@ uint_t event_user_count(void)
 			rtos_host_deferred_disarm(d);
 		}
 	}
-	return ev_user;
+	return ev_live;
+}
+
+/* Sets the kernel timer to fn(NULL) at t_ns (>= now), ordered as an event
+ * scheduled now; replaces its previous setting. */
+void event_timer_set(uint64_t t_ns, rtos_host_event_fn fn)
+{
+	ev_timer = (struct ev_slot){ t_ns, ev_seq++, 0, 0 };
+	ev_timer_fn = fn;
+	ev_head_lower(t_ns);
+}
+
+/* Sets the bound quiet_until keeps below besides the next event (see kernel_impl.h). */
+void event_set_run_bound(uint64_t t_ns)
+{
+	ev_run_bound = t_ns;
+	ev_head_set(event_head_time);
+}
+
+/* True if the kernel timer, due now, comes before the queue's head (settled) in the queue order. */
+static inline bool ev_timer_first(void)
+{
+	const struct ev_slot *s;
+
+	if (ev_timer.time != now_ns)
+		return false;
+	if (ev_front_len > 0)
+		s = &ev_front[ev_front_len - 1];
+	else if (ev_heap_len > 0)
+		s = &ev_heap[0];
+	else
+		return true;
+	return ev_before(&ev_timer, s);
 }
 
 /* Pops and runs the earliest event as the hardware; interrupts it raises are delivered after it. */
@@ -438,22 +495,30 @@ void event_run_next(void)
 	enum exec_kind saved_kind = cpu.kind;
 	ID saved_id = cpu.exec_id;
 
-	/* ev_settle left a live slot at the head */
-	if (ev_front_len > 0) {
-		const struct ev_slot *s = &ev_front[--ev_front_len];
-
-		idx = s->idx;
-		ev_pos_time = s->time;
-		ev_pos_seq = s->seq;
+	/* ev_settle left a live slot at the queue's head, or the timer is due */
+	if (ev_timer_first()) {
+		ev_pos_time = ev_timer.time;
+		ev_pos_seq = ev_timer.seq;
+		fn = ev_timer_fn;
+		arg = NULL;
+		ev_timer.time = UINT64_MAX;
 	} else {
-		idx = ev_heap[0].idx;
-		ev_pos_time = ev_heap[0].time;
-		ev_pos_seq = ev_heap[0].seq;
-		ev_heap_pop();
+		if (ev_front_len > 0) {
+			const struct ev_slot *s = &ev_front[--ev_front_len];
+
+			idx = s->idx;
+			ev_pos_time = s->time;
+			ev_pos_seq = s->seq;
+		} else {
+			idx = ev_heap[0].idx;
+			ev_pos_time = ev_heap[0].time;
+			ev_pos_seq = ev_heap[0].seq;
+			ev_heap_pop();
+		}
+		fn = ev_pool[idx].fn;
+		arg = ev_pool[idx].arg;
+		ev_release(idx);
 	}
-	fn = ev_pool[idx].fn;
-	arg = ev_pool[idx].arg;
-	ev_release(idx);
 	ev_settle();
 	cpu.kind = EXEC_EVENT;
 	cpu.exec_id = 0;
@@ -479,11 +544,13 @@ void event_reset(void)
 	}
 	ev_front_len = 0;
 	ev_heap_len = 0;
+	ev_heap_root_changed();
 	ev_stale = 0;
 	ev_live = 0;
-	event_head_time = UINT64_MAX;
+	ev_run_bound = 0;
+	ev_head_set(UINT64_MAX);
+	ev_timer.time = UINT64_MAX;
 	ev_seq = 0;
-	ev_user = 0;
 	ev_pos_time = 0;
 	ev_pos_seq = UINT64_MAX;
 	while (ev_deferred != NULL)

@@ -279,6 +279,14 @@ static inline uint64_t event_next_time(void)
 {
 	return event_head_time;
 }
+/* Until this time nothing can stop a context spending virtual time but the
+ * clock: the earliest of the next event and, during a run of the harness, the
+ * run's deadline; 0 while the kernel is not booted.  The fast ends of register
+ * accesses and rtos_host_consume test it alone for all three. */
+extern uint64_t quiet_until;
+/* Sets quiet_until's other bound: the run's deadline when a run starts,
+ * UINT64_MAX when it ends and at boot (event_reset sets 0). */
+void event_set_run_bound(uint64_t t_ns);
 /* Pops and runs the earliest event; now_ns must already be its time. */
 void event_run_next(void);
 /* Number of scheduled non-kernel events (deferred ones settled first). */
@@ -291,8 +299,9 @@ static inline void event_time_settled(void)
 {
 	ev_pos_seq = UINT64_MAX;
 }
-/* Schedules a kernel-internal event (does not count as device work). */
-rtos_host_event_t event_at_kernel(uint64_t t_ns, rtos_host_event_fn fn, void *arg);
+/* The kernel timer (the tick), beside the queue: fn(NULL) at t_ns (>= now),
+ * ordered as an event scheduled now, replacing its previous setting; not device work. */
+void event_timer_set(uint64_t t_ns, rtos_host_event_fn fn);
 
 /* ---- Interrupts ---- */
 void irq_reset(void);

@@ -116,6 +116,7 @@ static bool run_loop(uint64_t t, bool until_idle)
 
 	run_active = true;
 	run_deadline = t;
+	event_set_run_bound(t);
 	stall_watch_start();
 	for (;;) {
 		uint64_t next;
@@ -148,6 +149,7 @@ static bool run_loop(uint64_t t, bool until_idle)
 		event_run_next();
 	}
 	run_active = false;        /* the stall watch's next tick sees it and disarms its timer */
+	event_set_run_bound(UINT64_MAX);
 	return idle;
 }
 
@@ -260,30 +262,46 @@ uint64_t rtos_host_spin_until(uint64_t t_ns)
 }
 
 /* True if busy_loop's pass at task level would find nothing to do before now
- * + ns (no event falls due by then, checked by the caller): no interrupt to
- * deliver, no task to switch to, the run's deadline not reached. */
-static inline bool task_consume_quiet(uint64_t ns)
+ * + ns (no event falls due by then and the run's deadline is not reached,
+ * checked by the caller): no interrupt to deliver, no task to switch to. */
+static inline bool task_consume_quiet(void)
 {
 	return (irq_pending_lines == 0 || cpu.sil_lock != 0 || cpu.locked) && schedtsk == runtsk &&
-	       !kernel_exited && (!run_active || run_deadline >= now_ns + ns);
+	       !kernel_exited;
+}
+
+/* rtos_host_consume when quiet_until comes first: before boot, or the run's
+ * deadline before the end. */
+static __attribute__((noinline)) void consume_unquiet(uint64_t ns)
+{
+	if (ns < event_next_time() - now_ns && kernel_booted && !consume_at_task_level()) {
+		now_ns += ns;
+		return;
+	}
+	consume_slow(ns);
 }
 
 /* The calling context is busy for ns of virtual CPU time; events fire meanwhile. */
 void rtos_host_consume(uint64_t ns)
 {
-	/* When nothing can stop the time short of the next event, the common case
-	 * (a register access, a service call's charge, a short delay in an ISR) is
-	 * one addition; a task's consume also settles the time as busy_loop does. */
-	if (ns < event_next_time() - now_ns && kernel_booted) {
+	uint64_t end = now_ns + ns;
+
+	/* When nothing can stop the time short of its end, the common case (a
+	 * register access, a service call's charge, a short delay in an ISR) is one
+	 * addition; a task's consume also settles the time as busy_loop does.
+	 * (end < ns: the addition wrapped around.) */
+	if (end < quiet_until && end >= ns) {
 		if (!consume_at_task_level()) {
-			now_ns += ns;
+			now_ns = end;
 			return;
 		}
-		if (task_consume_quiet(ns)) {
-			now_ns += ns;
+		if (task_consume_quiet()) {
+			now_ns = end;
 			event_time_settled();
 			return;
 		}
+		consume_slow(ns);
+		return;
 	}
-	consume_slow(ns);
+	consume_unquiet(ns);
 }

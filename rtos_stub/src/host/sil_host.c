@@ -93,10 +93,14 @@ static inline __attribute__((always_inline)) uint32_t access_end(uint32_t ns, ui
 	uint64_t end = now_ns + ns;
 
 	/* Cases in which access_spend adds ns (no event due before the end: then
-	 * ns < event_next_time() - now_ns, its test) and access_done then finds no
-	 * interrupt to take (none pending), no task to switch to and no deadline reached. */
-	if (end < event_next_time() && kernel_booted && irq_pending_lines == 0 && schedtsk == runtsk &&
-	    (end < run_deadline || !run_active)) {
+	 * ns < event_next_time() - now_ns, its test; quiet_until is 0 before boot)
+	 * and access_done then finds no interrupt to take (none pending, or
+	 * irq_dispatch_pending held off by a lock or an enclosing access or event),
+	 * no task to switch to (none, or not from a task) and no deadline reached
+	 * (quiet_until is also the run's). */
+	if (end < quiet_until &&
+	    (irq_pending_lines == 0 || cpu.locked || cpu.sil_lock != 0 || cpu.irq_defer != 1) &&
+	    (schedtsk == runtsk || cpu.kind != EXEC_TASK || cpu.isr_depth != 0)) {
 		now_ns = end;
 		cpu.irq_defer--;
 		return v;

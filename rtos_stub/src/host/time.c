@@ -26,8 +26,7 @@ static uint_t tm_cap;
 static uint64_t tm_seq;
 
 static bool tick_every;
-static rtos_host_event_t tick_event;
-static uint64_t tick_event_time = UINT64_MAX;
+static uint64_t tick_event_time = UINT64_MAX;   /* the kernel timer's setting, UINT64_MAX when off */
 
 struct cyccb {
 	const struct rtos_cyc_cfg *cfg;
@@ -105,9 +104,7 @@ static void tick_need(uint64_t tick)
 		t = now_ns;
 	if (t >= tick_event_time)
 		return;
-	if (tick_event != 0)
-		rtos_host_event_cancel(tick_event);
-	tick_event = event_at_kernel(t, tick_fire, NULL);
+	event_timer_set(t, tick_fire);
 	tick_event_time = t;
 }
 
@@ -163,11 +160,10 @@ uint64_t tick_after_ms(RELTIM ms)
 static void tick_fire(void *arg)
 {
 	(void)arg;
-	tick_event = 0;
 	tick_event_time = UINT64_MAX;
 	if (tick_every) {
 		tick_event_time = (now_ns / RTOS_HOST_TICK_NS + 1) * RTOS_HOST_TICK_NS;
-		tick_event = event_at_kernel(tick_event_time, tick_fire, NULL);
+		event_timer_set(tick_event_time, tick_fire);
 	}
 	rtos_host_irq_raise(INTNO_TICK);
 }
@@ -202,16 +198,17 @@ void time_reset(void)
 	tm_len = 0;
 	tm_seq = 0;
 	tick_every = false;
-	tick_event = 0;
 	tick_event_time = UINT64_MAX;
 }
 
-/* Starts the tick timer (every boundary mode) once the objects exist. */
+/* Starts the tick timer (every boundary mode) once the objects exist, and
+ * lets quiet_until follow the events now that the kernel is booted. */
 void time_start(void)
 {
+	event_set_run_bound(UINT64_MAX);
 	if (tick_every) {
 		tick_event_time = RTOS_HOST_TICK_NS;
-		tick_event = event_at_kernel(RTOS_HOST_TICK_NS, tick_fire, NULL);
+		event_timer_set(RTOS_HOST_TICK_NS, tick_fire);
 	}
 }
 

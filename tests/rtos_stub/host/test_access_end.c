@@ -1,0 +1,162 @@
+/*
+ * test_access_end.c — a register access through a timed window ends as the
+ * general path would at its edges: a pending interrupt waits through the
+ * accesses a CPU lock or SIL lock covers and is taken at the unlock, a task an
+ * ISR woke runs when the ISR returns (not at the ISR's accesses), a task whose
+ * access reaches the run's deadline stops in it, and an event due exactly at
+ * an access's end runs before the next access.
+ */
+#include "tap.h"
+#include "rtos_test.h"
+#include "kernel.h"
+#include "sil.h"
+
+#define US         1000ULL
+#define ACCESS_NS  100U
+#define IRQ_DEV    120U
+
+static uint32_t regs[16];   /* the fake device's registers, in the timed window */
+static uint64_t isr_at[4];
+static uint_t isr_count;
+static uint64_t high_start, locked_end, sil_end, event_at_ns, read_after_event, poll_stop;
+
+/* A timed read: the register's value, costing ACCESS_NS. */
+static uint64_t read_timed(const volatile void *addr, uint_t width, void *ctx)
+{
+	(void)width; (void)ctx;
+	return ((uint64_t)ACCESS_NS << 32) | *(const volatile uint32_t *)addr;
+}
+
+/* A timed write, costing ACCESS_NS. */
+static uint32_t write_timed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+{
+	(void)width; (void)ctx;
+	*(volatile uint32_t *)addr = data;
+	return ACCESS_NS;
+}
+
+static bool claims(const volatile void *addr, void *ctx)
+{
+	(void)ctx;
+	return (const volatile uint32_t *)addr >= regs && (const volatile uint32_t *)addr < regs + 16;
+}
+
+static uint32_t read_untimed(const volatile void *addr, uint_t width, void *ctx)
+{
+	return (uint32_t)read_timed(addr, width, ctx);
+}
+
+static void write_untimed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
+{
+	(void)write_timed(addr, width, data, ctx);
+}
+
+static const struct rtos_host_mmio_ops fake_device = {
+	.claims = claims, .read = read_untimed, .write = write_untimed, .map = NULL, .ctx = NULL,
+};
+
+/* A device event: raises the device line. */
+static void raise_line(void *arg)
+{
+	(void)arg;
+	rtos_host_irq_raise(IRQ_DEV);
+}
+
+/* A device event: sets register 1, which the task reads right after it. */
+static void set_reg(void *arg)
+{
+	(void)arg;
+	event_at_ns = rtos_host_now();
+	regs[1] = 7;
+}
+
+/* The device's ISR: the first time it wakes the high task and makes five accesses. */
+static void isr_dev(intptr_t x)
+{
+	(void)x;
+	if (isr_count < 4)
+		isr_at[isr_count] = rtos_host_now();
+	if (isr_count++ == 0) {
+		iwup_tsk(2);
+		for (int i = 0; i < 5; i++)
+			(void)sil_rew_mem(&regs[0]);
+	}
+}
+
+static void high_task(intptr_t x)
+{
+	(void)x;
+	slp_tsk();
+	high_start = rtos_host_now();
+	slp_tsk();
+}
+
+static void low_task(intptr_t x)
+{
+	SIL_PRE_LOC;
+
+	(void)x;
+	/* 1: the ISR at 10 us wakes the high task */
+	rtos_host_event_at(10 * US, raise_line, NULL);
+	dly_tsk(1);
+
+	/* 2: raised at 2.05 ms while the CPU is locked over ten accesses */
+	rtos_host_event_at(rtos_host_now() + 50, raise_line, NULL);
+	loc_cpu();
+	for (int i = 0; i < 10; i++)
+		sil_wrw_mem(&regs[2], (uint32_t)i);
+	locked_end = rtos_host_now();
+	unl_cpu();
+
+	/* 3: the same under the SIL lock */
+	rtos_host_event_at(rtos_host_now() + 50, raise_line, NULL);
+	SIL_LOC_INT();
+	for (int i = 0; i < 10; i++)
+		(void)sil_rew_mem(&regs[3]);
+	sil_end = rtos_host_now();
+	SIL_UNL_INT();
+
+	/* 4: an event due exactly at the end of an access runs before the next one */
+	rtos_host_event_at(rtos_host_now() + ACCESS_NS, set_reg, NULL);
+	(void)sil_rew_mem(&regs[1]);
+	read_after_event = sil_rew_mem(&regs[1]);
+
+	/* 5: polling until the run's deadline */
+	for (;;) {
+		(void)sil_rew_mem(&regs[4]);
+		poll_stop = rtos_host_now();
+	}
+}
+
+static const struct rtos_task_cfg tasks[] = { RT_TASK(1, low_task, 8, true), RT_TASK(2, high_task, 2, true) };
+static const struct rtos_int_cfg ints[] = { { IRQ_DEV, TA_ENAINT, -2 } };
+static const struct rtos_isr_cfg isrs[] = { { TA_NULL, 0, IRQ_DEV, isr_dev, 1 } };
+static const struct rtos_cfg cfg = {
+	.name = "access_end", .tasks = RTOS_TABLE(tasks), .ints = RTOS_TABLE(ints), .isrs = RTOS_TABLE(isrs),
+};
+
+int main(void)
+{
+	uint64_t unlock_at;
+
+	tap_plan(8);
+	is_int(rtos_host_boot(&cfg), E_OK, "boot");
+	rtos_host_set_mmio_handler(&fake_device);
+	rtos_host_set_mmio_window((uintptr_t)regs, sizeof(regs));
+	rtos_host_set_mmio_timed(read_timed, write_timed);
+	rtos_host_run_for(3 * US * 1000);
+	is_u64(isr_at[0], 10 * US, "the ISR runs at the event");
+	is_u64(high_start, 10 * US + 5 * ACCESS_NS, "the task it woke runs when it returns, after its five accesses");
+	unlock_at = 1000 * US + 10 * ACCESS_NS;
+	ok(locked_end == unlock_at && isr_at[1] == unlock_at,
+	   "raised under loc_cpu, the interrupt waits through the accesses and is taken at unl_cpu");
+	ok(sil_end == unlock_at + 10 * ACCESS_NS && isr_at[2] == sil_end,
+	   "raised under the SIL lock, the same at SIL_UNL_INT");
+	ok(event_at_ns == sil_end + ACCESS_NS && read_after_event == 7,
+	   "an event due at an access's end runs before the next access");
+	is_u64(poll_stop, 3 * US * 1000 - ACCESS_NS, "a task polling registers stops in the access that reaches the run's deadline");
+	is_u64(rtos_host_now(), 3 * US * 1000, "the run ends at its deadline");
+	rtos_host_set_mmio_handler(NULL);
+	rtos_host_shutdown();
+	return tap_done();
+}
