@@ -18,7 +18,6 @@
 #include <math.h>
 #include <stddef.h>
 #include "host_sim/clock.h"
-#include "host_sim/trace.h"
 #include "host_sim/devices/ev3_brick.h"
 #include "ev3sim/robot.h"
 
@@ -45,7 +44,6 @@ static struct robot {
 	struct ev3sim_robot_cfg cfg;
 	const struct ev3sim_robot_params *p;
 	struct hs_motor *motor[2];
-	struct hs_signal *speed_sig[2];
 	hs_event_t step_ev;
 	double psi, psi_dot;            /* rad, rad/s */
 	double omega;                   /* shaft speed at the last step, rad/s */
@@ -107,15 +105,14 @@ static void set_gyro(double rate_dps)
 }
 
 /* The shafts' speed (rad/s) and angle (rad) now, averaged over both motors.
- * Re-applying the step's load starts a new motor segment here, and host_sim
- * publishes the segment's start speed on the motor's speed_dps signal. */
+ * The exact speed is read without starting a motor segment: the step's new
+ * loads start the one segment each motor needs. */
 static void read_shafts(double *omega, double *phi)
 {
 	*omega = 0.0;
 	*phi = 0.0;
 	for (int i = 0; i < 2; i++) {
-		hs_motor_set_load(rb.motor[i], rb.load / 2.0, rb.inertia / 2.0);
-		*omega += hs_signal_real(rb.speed_sig[i]) * DEG / 2.0;
+		*omega += hs_motor_speed_now_dps(rb.motor[i]) * DEG / 2.0;
 		*phi += hs_motor_angle_deg(rb.motor[i]) * DEG / 2.0;
 	}
 }
@@ -205,7 +202,6 @@ static void robot_step(void *arg)
 ER ev3sim_robot_start(const struct ev3sim_robot_cfg *cfg)
 {
 	unsigned ports[2];
-	char scope[8] = "motorA";
 
 	if (cfg == NULL || cfg->left_port >= 4 || cfg->right_port >= 4 ||
 	    cfg->left_port == cfg->right_port || cfg->gyro_port >= 4 ||
@@ -217,9 +213,7 @@ ER ev3sim_robot_start(const struct ev3sim_robot_cfg *cfg)
 	rb = (struct robot){ .cfg = *cfg, .p = cfg->params ? cfg->params : &ev3sim_gyro_boy };
 	for (int i = 0; i < 2; i++) {
 		rb.motor[i] = ev3_output_motor(ports[i]);
-		scope[5] = (char)('A' + ports[i]);
-		rb.speed_sig[i] = hs_trace_find(scope, "speed_dps");
-		if (rb.motor[i] == NULL || rb.speed_sig[i] == NULL)
+		if (rb.motor[i] == NULL)
 			return E_OBJ;
 	}
 	if (ev3_input_uart_sensor(cfg->gyro_port) == NULL)

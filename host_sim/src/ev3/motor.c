@@ -498,6 +498,13 @@ double hs_motor_angle_deg(struct hs_motor *m)
 	return seg_theta(m, hs_now()) / RAD_PER_DEG;
 }
 
+/* Exact shaft speed now, deg/s: the speed a segment started now begins with
+ * (the value its speed_dps signal would show). */
+double hs_motor_speed_now_dps(struct hs_motor *m)
+{
+	return omega_now(m) / RAD_PER_DEG;
+}
+
 /* Shaft speed on the current step, deg/s. */
 double hs_motor_speed_dps(struct hs_motor *m)
 {

@@ -112,6 +112,9 @@ void hs_motor_inputs_changed(struct hs_motor *m);
 /* Shaft angle (deg, continuous) and speed (deg/s) now. */
 double hs_motor_angle_deg(struct hs_motor *m);
 double hs_motor_speed_dps(struct hs_motor *m);
+/* Exact shaft speed now, deg/s (0 while stalled), without starting a new step:
+ * what the speed_dps trace signal would show if the load were re-applied now. */
+double hs_motor_speed_now_dps(struct hs_motor *m);
 /* Tacho position the pins show now, in counts (each INT edge is one count). */
 int64_t hs_motor_tacho_counts(const struct hs_motor *m);
 /* The bridge split in effect. */
