@@ -144,6 +144,13 @@ void dc_motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st,
 
 /* ---- the attached motor ---- */
 
+/* The speed omega_now last computed inside a segment, and for which instant. */
+struct omega_memo {
+	bool valid;
+	uint64_t t, seg_t0;
+	double vbat, omega;
+};
+
 struct hs_motor {
 	unsigned port;
 	enum hs_motor_kind kind;
@@ -165,6 +172,7 @@ struct hs_motor {
 	struct hs_rng rng;
 	struct hs_signal *sig_angle, *sig_speed;
 	struct exp_memo step_exp;   /* of the segments' physics steps */
+	struct omega_memo mid_memo; /* of omega_now inside a segment */
 };
 
 static struct hs_motor *port_motor[EV3_OUTPUT_PORTS];
@@ -290,18 +298,27 @@ static void step_due(void *arg)
 }
 
 /* Exact speed now: the end speed at a step boundary, else the old
- * segment's solution re-run from its start up to now. */
+ * segment's solution re-run from its start up to now (remembered for a
+ * second look at the same instant: the robot reads the speed, then sets the load). */
 static double omega_now(struct hs_motor *m)
 {
 	uint64_t now = hs_now();
 	struct dc_motor_state st = { m->seg_omega0, 0 };
+	double v;
 
 	if (now >= m->seg_t1 || m->stalled)
 		return m->stalled ? 0.0 : m->seg_omega1;
 	if (now == m->seg_t0)
 		return m->seg_omega0;
-	dc_motor_advance(&m->model, &st, (double)(now - m->seg_t0) * 1e-9, m->drive, battery_v(),
+	v = battery_v();
+	/* a segment starts at now whenever its inputs change, so within one the
+	 * solution depends on the time and the battery only */
+	if (m->mid_memo.valid && m->mid_memo.t == now && m->mid_memo.seg_t0 == m->seg_t0 &&
+	    m->mid_memo.vbat == v)
+		return m->mid_memo.omega;
+	dc_motor_advance(&m->model, &st, (double)(now - m->seg_t0) * 1e-9, m->drive, v,
 			 m->load_nm, m->extra_inertia);
+	m->mid_memo = (struct omega_memo){ true, now, m->seg_t0, v, st.omega };
 	return st.omega;
 }
 
