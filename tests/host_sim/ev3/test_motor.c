@@ -7,6 +7,7 @@
  */
 #include <math.h>
 #include "devtest.h"
+#include "host_sim/trace.h"
 
 static struct {
 	int64_t count;
@@ -48,7 +49,7 @@ int main(void)
 	double s25, s50, s75, s100, rev, a0, brake_speed, coast_speed;
 	int64_t counted;
 
-	tap_plan(24);
+	tap_plan(27);
 	devtest_boot(1, NULL);
 	devtest_pwm_setup();
 
@@ -121,6 +122,24 @@ int main(void)
 	s50 = speed_after(0, 1, 10000, 500 * MS);
 	in_range(s50, 450, 560, "half the stall torque as load halves the speed (%.0f)", s50);
 	hs_motor_set_load(m, 0, 0);
+	/* inside a step after a duty change the exact speed is between the step's
+	 * ends, and is what re-applying the load then publishes on speed_dps */
+	{
+		struct hs_signal *sig = hs_trace_find("motorA", "speed_dps");
+		double start, mid, again;
+
+		hs_sim_run_for(50 * MS);
+		devtest_duty(0, 3000);
+		start = hs_signal_real(sig);
+		hs_sim_run_for(MS / 3);
+		mid = hs_motor_speed_now_dps(m);
+		again = hs_motor_speed_now_dps(m);
+		ok(sig && mid < start && mid > 0 && mid == again,
+		   "speed now inside a step: slowing from %.1f, %.3f deg/s", start, mid);
+		hs_motor_set_load(m, 0, 0);
+		ok(hs_signal_real(sig) == mid, "re-applying the load publishes that speed");
+		devtest_duty(0, 10000);
+	}
 	{
 		struct ev3_fault f = { EV3_FAULT_MOTOR_STALL, 0, 0, 200 * MS };
 		uint64_t t = hs_now() + 100 * MS, edges;
@@ -130,6 +149,7 @@ int main(void)
 		edges = tacho.int_edges;
 		hs_sim_run_for(100 * MS);
 		is_int(tacho.int_edges, edges, "stalled shaft: no edges");
+		ok(hs_motor_speed_now_dps(m) == 0.0, "stalled shaft: speed now 0");
 		hs_sim_run_for(200 * MS);
 		ok(tacho.int_edges > edges + 50, "edges again after the stall ends");
 	}
