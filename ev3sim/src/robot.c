@@ -84,11 +84,12 @@ static double duty_of(struct hs_motor *m)
 	return d.fwd - d.rev;
 }
 
-/* Hands each motor half of the shafts' load and effective inertia. */
-static void set_loads(double load, double inertia)
+/* Hands each motor half of the shafts' load and effective inertia until the
+ * next physics step at next_ns (0: none comes). */
+static void set_loads(double load, double inertia, uint64_t next_ns)
 {
 	for (int i = 0; i < 2; i++)
-		hs_motor_set_load(rb.motor[i], load / 2.0, inertia / 2.0);
+		hs_motor_set_load_until(rb.motor[i], load / 2.0, inertia / 2.0, next_ns);
 }
 
 /* The gyro measures the body's pitch rate. */
@@ -166,7 +167,7 @@ static void robot_step(void *arg)
 		rb.psi_dot = 0.0;
 		rb.load = 0.0;
 		rb.inertia = p->wheel_inertia;
-		set_loads(rb.load, rb.inertia);
+		set_loads(rb.load, rb.inertia, 0);
 		set_gyro(0.0);
 		publish(t, phi, theta, false);
 		return;
@@ -192,7 +193,7 @@ static void robot_step(void *arg)
 		rb.load = rb.coupling * rb.force_psi / rb.m_psi + roll - h;
 		rb.inertia = (a * c - b * b) / rb.m_psi;
 	}
-	set_loads(rb.load, rb.inertia);
+	set_loads(rb.load, rb.inertia, t + EV3SIM_ROBOT_STEP_NS);
 	set_gyro(rb.psi_dot / DEG);
 	publish(t, phi, theta, held);
 	rb.step_ev = hs_event_at(t + EV3SIM_ROBOT_STEP_NS, robot_step, NULL);
@@ -227,8 +228,15 @@ ER ev3sim_robot_start(const struct ev3sim_robot_cfg *cfg)
 /* Stops the physics events. */
 void ev3sim_robot_stop(void)
 {
-	if (rb.running)
+	unsigned ports[2] = { rb.cfg.left_port, rb.cfg.right_port };
+
+	if (rb.running) {
 		hs_event_cancel(&rb.step_ev);
+		/* the motors step on their own again (one unplugged by a fault is gone) */
+		for (int i = 0; i < 2; i++)
+			if (ev3_output_motor(ports[i]) == rb.motor[i])
+				hs_motor_end_load_promise(rb.motor[i]);
+	}
 	rb.running = false;
 }
 

@@ -124,6 +124,15 @@ double hs_motor_current_a(struct hs_motor *m);
 
 /* Scenario and faults. */
 void hs_motor_set_load(struct hs_motor *m, double load_nm, double extra_inertia);
+/* hs_motor_set_load by a caller that sets the load again at next_ns (> now; 0:
+ * no promise), as a physics model stepping with the motor does: the motor's own
+ * step falling due at that instant then leaves the new segment to that call
+ * instead of solving one the call replaces.  The caller keeps the promise or
+ * withdraws it with hs_motor_end_load_promise before next_ns. */
+void hs_motor_set_load_until(struct hs_motor *m, double load_nm, double extra_inertia,
+			     uint64_t next_ns);
+/* Withdraws the promise of hs_motor_set_load_until: the motor steps on its own again. */
+void hs_motor_end_load_promise(struct hs_motor *m);
 /* Locks the shaft (true) or frees it. */
 void hs_motor_set_stalled(struct hs_motor *m, bool stalled);
 /* Freezes the tacho outputs (true); on release they jump to the true position. */
