@@ -289,10 +289,10 @@ static double battery_v(void)
 }
 
 static void motor_new_segment(struct hs_motor *m);
-static void segment_solve(struct hs_motor *m);
+static void segment_solve_late(struct hs_motor *m);
 static double omega_now(struct hs_motor *m);
 
-static void segment_begin(struct hs_motor *m, uint64_t now);
+static void segment_leave_to_owner(struct hs_motor *m);
 
 /* Event: physics step boundary.  When the load's owner promised to re-apply it
  * at this instant, only the segment's start is taken here (pins, trace): the
@@ -300,16 +300,13 @@ static void segment_begin(struct hs_motor *m, uint64_t now);
 static void step_due(void *arg)
 {
 	struct hs_motor *m = arg;
-	uint64_t now = hs_now();
 
 	m->step_ev = 0;
-	if (now != m->owner_next) {
+	/* the step falls due at the segment's end (a new segment cancels it) */
+	if (m->seg_t1 == m->owner_next)
+		segment_leave_to_owner(m);
+	else
 		motor_new_segment(m);
-		return;
-	}
-	segment_begin(m, now);
-	hs_event_cancel(&m->edge_ev);
-	m->seg_unsolved = true;
 }
 
 /* Exact speed now: the end speed at a step boundary, else the old
@@ -322,7 +319,7 @@ static double omega_now(struct hs_motor *m)
 	double v;
 
 	if (m->seg_unsolved && now != m->seg_t0)
-		segment_solve(m);
+		segment_solve_late(m);
 	if (now >= m->seg_t1 || m->stalled)
 		return m->stalled ? 0.0 : m->seg_omega1;
 	if (now == m->seg_t0)
@@ -342,7 +339,7 @@ static double omega_now(struct hs_motor *m)
 /* Starts a segment at now from the angle shown by the old one and speed
  * seg_omega1 (set by the caller to the speed now): the pins caught up, the
  * start published on the trace; its end is left to segment_solve. */
-static void segment_begin(struct hs_motor *m, uint64_t now)
+static inline __attribute__((always_inline)) void segment_begin(struct hs_motor *m, uint64_t now)
 {
 	m->seg_vbat = battery_v();
 	catch_up(m, now);
@@ -357,7 +354,7 @@ static void segment_begin(struct hs_motor *m, uint64_t now)
 }
 
 /* The begun segment's physics step: its end speed, length and linear rate. */
-static void segment_solve(struct hs_motor *m)
+static inline __attribute__((always_inline)) void segment_solve(struct hs_motor *m)
 {
 	struct dc_motor_state st = { .omega = m->seg_omega0, .theta = m->seg_theta0 };
 
@@ -379,7 +376,7 @@ static void segment_solve(struct hs_motor *m)
 }
 
 /* Queues the solved segment's next tacho edge and its end. */
-static void segment_schedule(struct hs_motor *m)
+static inline __attribute__((always_inline)) void segment_schedule(struct hs_motor *m)
 {
 	motor_schedule_edge(m);
 	hs_event_cancel(&m->step_ev);
@@ -389,12 +386,26 @@ static void segment_schedule(struct hs_motor *m)
 	m->step_ev = hs_event_at(m->seg_t1, step_due, m);
 }
 
-/* Solves a segment whose start step_due left to the load's owner, for a look at it
- * before the owner's call. */
-static void segment_settle(struct hs_motor *m)
+/* step_due at the instant the load's owner re-applies it: the segment is begun,
+ * its solving and scheduling left to the owner's call (or a look before it). */
+static __attribute__((noinline)) void segment_leave_to_owner(struct hs_motor *m)
+{
+	segment_begin(m, m->seg_t1);
+	hs_event_cancel(&m->edge_ev);
+	m->seg_unsolved = true;
+}
+
+/* segment_solve out of line, for the rare look at a segment left to the owner. */
+static __attribute__((noinline, cold)) void segment_solve_late(struct hs_motor *m)
+{
+	segment_solve(m);
+}
+
+/* Solves a segment left to the load's owner, for a look at it before the owner's call. */
+static inline void segment_settle(struct hs_motor *m)
 {
 	if (m->seg_unsolved)
-		segment_solve(m);
+		segment_solve_late(m);
 }
 
 /* Starts, solves and schedules a segment at now (see segment_begin). */
@@ -559,7 +570,7 @@ double hs_motor_angle_deg(struct hs_motor *m)
 	/* at an unsolved segment's start the angle is its start angle whatever the
 	 * rate (which decides only the sign of a zero) */
 	if (m->seg_unsolved && (now != m->seg_t0 || m->seg_theta0 == 0.0))
-		segment_solve(m);
+		segment_solve_late(m);
 	return seg_theta(m, now) / RAD_PER_DEG;
 }
 
