@@ -605,12 +605,12 @@ struct hbridge_drive hs_motor_drive(const struct hs_motor *m)
 double hs_motor_current_a(struct hs_motor *m)
 {
 	const struct dc_motor_model *md = &m->model;
-	double w;
+	double w, torque;
 
 	segment_settle(m);
 	w = m->seg_rate;
-	double torque = md->k_volt * (m->drive.fwd - m->drive.rev) * battery_v() -
-			md->k_back * (m->drive.fwd + m->drive.rev + m->drive.brake) * w;
+	torque = md->k_volt * (m->drive.fwd - m->drive.rev) * battery_v() -
+		 md->k_back * (m->drive.fwd + m->drive.rev + m->drive.brake) * w;
 
 	return fabs(torque) / md->p->stall_nm * md->p->stall_a;
 }
