@@ -18,7 +18,6 @@
 #include <math.h>
 #include <stddef.h>
 #include "host_sim/clock.h"
-#include "host_sim/trace.h"
 #include "host_sim/devices/ev3_brick.h"
 #include "ev3sim/robot.h"
 
@@ -45,7 +44,6 @@ static struct robot {
 	struct ev3sim_robot_cfg cfg;
 	const struct ev3sim_robot_params *p;
 	struct hs_motor *motor[2];
-	struct hs_signal *speed_sig[2];
 	hs_event_t step_ev;
 	double psi, psi_dot;            /* rad, rad/s */
 	double omega;                   /* shaft speed at the last step, rad/s */
@@ -86,11 +84,12 @@ static double duty_of(struct hs_motor *m)
 	return d.fwd - d.rev;
 }
 
-/* Hands each motor half of the shafts' load and effective inertia. */
-static void set_loads(double load, double inertia)
+/* Hands each motor half of the shafts' load and effective inertia until the
+ * next physics step at next_ns (0: none comes). */
+static void set_loads(double load, double inertia, uint64_t next_ns)
 {
 	for (int i = 0; i < 2; i++)
-		hs_motor_set_load(rb.motor[i], load / 2.0, inertia / 2.0);
+		hs_motor_set_load_until(rb.motor[i], load / 2.0, inertia / 2.0, next_ns);
 }
 
 /* The gyro measures the body's pitch rate. */
@@ -107,15 +106,14 @@ static void set_gyro(double rate_dps)
 }
 
 /* The shafts' speed (rad/s) and angle (rad) now, averaged over both motors.
- * Re-applying the step's load starts a new motor segment here, and host_sim
- * publishes the segment's start speed on the motor's speed_dps signal. */
+ * The exact speed is read without starting a motor segment: the step's new
+ * loads start the one segment each motor needs. */
 static void read_shafts(double *omega, double *phi)
 {
 	*omega = 0.0;
 	*phi = 0.0;
 	for (int i = 0; i < 2; i++) {
-		hs_motor_set_load(rb.motor[i], rb.load / 2.0, rb.inertia / 2.0);
-		*omega += hs_signal_real(rb.speed_sig[i]) * DEG / 2.0;
+		*omega += hs_motor_speed_now_dps(rb.motor[i]) * DEG / 2.0;
 		*phi += hs_motor_angle_deg(rb.motor[i]) * DEG / 2.0;
 	}
 }
@@ -169,7 +167,7 @@ static void robot_step(void *arg)
 		rb.psi_dot = 0.0;
 		rb.load = 0.0;
 		rb.inertia = p->wheel_inertia;
-		set_loads(rb.load, rb.inertia);
+		set_loads(rb.load, rb.inertia, 0);
 		set_gyro(0.0);
 		publish(t, phi, theta, false);
 		return;
@@ -195,7 +193,7 @@ static void robot_step(void *arg)
 		rb.load = rb.coupling * rb.force_psi / rb.m_psi + roll - h;
 		rb.inertia = (a * c - b * b) / rb.m_psi;
 	}
-	set_loads(rb.load, rb.inertia);
+	set_loads(rb.load, rb.inertia, t + EV3SIM_ROBOT_STEP_NS);
 	set_gyro(rb.psi_dot / DEG);
 	publish(t, phi, theta, held);
 	rb.step_ev = hs_event_at(t + EV3SIM_ROBOT_STEP_NS, robot_step, NULL);
@@ -205,7 +203,6 @@ static void robot_step(void *arg)
 ER ev3sim_robot_start(const struct ev3sim_robot_cfg *cfg)
 {
 	unsigned ports[2];
-	char scope[8] = "motorA";
 
 	if (cfg == NULL || cfg->left_port >= 4 || cfg->right_port >= 4 ||
 	    cfg->left_port == cfg->right_port || cfg->gyro_port >= 4 ||
@@ -217,9 +214,7 @@ ER ev3sim_robot_start(const struct ev3sim_robot_cfg *cfg)
 	rb = (struct robot){ .cfg = *cfg, .p = cfg->params ? cfg->params : &ev3sim_gyro_boy };
 	for (int i = 0; i < 2; i++) {
 		rb.motor[i] = ev3_output_motor(ports[i]);
-		scope[5] = (char)('A' + ports[i]);
-		rb.speed_sig[i] = hs_trace_find(scope, "speed_dps");
-		if (rb.motor[i] == NULL || rb.speed_sig[i] == NULL)
+		if (rb.motor[i] == NULL)
 			return E_OBJ;
 	}
 	if (ev3_input_uart_sensor(cfg->gyro_port) == NULL)
@@ -233,8 +228,15 @@ ER ev3sim_robot_start(const struct ev3sim_robot_cfg *cfg)
 /* Stops the physics events. */
 void ev3sim_robot_stop(void)
 {
-	if (rb.running)
+	unsigned ports[2] = { rb.cfg.left_port, rb.cfg.right_port };
+
+	if (rb.running) {
 		hs_event_cancel(&rb.step_ev);
+		/* the motors step on their own again (one unplugged by a fault is gone) */
+		for (int i = 0; i < 2; i++)
+			if (ev3_output_motor(ports[i]) == rb.motor[i])
+				hs_motor_end_load_promise(rb.motor[i]);
+	}
 	rb.running = false;
 }
 

@@ -144,6 +144,13 @@ void dc_motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st,
 
 /* ---- the attached motor ---- */
 
+/* The speed omega_now last computed inside a segment, and for which instant. */
+struct omega_memo {
+	bool valid;
+	uint64_t t, seg_t0;
+	double vbat, omega;
+};
+
 struct hs_motor {
 	unsigned port;
 	enum hs_motor_kind kind;
@@ -165,6 +172,10 @@ struct hs_motor {
 	struct hs_rng rng;
 	struct hs_signal *sig_angle, *sig_speed;
 	struct exp_memo step_exp;   /* of the segments' physics steps */
+	struct omega_memo mid_memo; /* of omega_now inside a segment */
+	double seg_vbat;            /* battery voltage the segment is solved with */
+	bool seg_unsolved;          /* begun by step_due, left to the load's owner */
+	uint64_t owner_next;        /* when the load's owner re-applies it (0: no promise) */
 };
 
 static struct hs_motor *port_motor[EV3_OUTPUT_PORTS];
@@ -278,72 +289,131 @@ static double battery_v(void)
 }
 
 static void motor_new_segment(struct hs_motor *m);
+static void segment_solve_late(struct hs_motor *m);
 static double omega_now(struct hs_motor *m);
 
-/* Event: physics step boundary. */
+static void segment_leave_to_owner(struct hs_motor *m);
+
+/* Event: physics step boundary.  When the load's owner promised to re-apply it
+ * at this instant, only the segment's start is taken here (pins, trace): the
+ * owner's call, due next at this instant, solves and schedules the segment. */
 static void step_due(void *arg)
 {
 	struct hs_motor *m = arg;
 
 	m->step_ev = 0;
-	motor_new_segment(m);
+	/* the step falls due at the segment's end (a new segment cancels it) */
+	if (m->seg_t1 == m->owner_next)
+		segment_leave_to_owner(m);
+	else
+		motor_new_segment(m);
 }
 
 /* Exact speed now: the end speed at a step boundary, else the old
- * segment's solution re-run from its start up to now. */
+ * segment's solution re-run from its start up to now (remembered for a
+ * second look at the same instant: the robot reads the speed, then sets the load). */
 static double omega_now(struct hs_motor *m)
 {
 	uint64_t now = hs_now();
 	struct dc_motor_state st = { m->seg_omega0, 0 };
+	double v;
 
+	if (m->seg_unsolved && now != m->seg_t0)
+		segment_solve_late(m);
 	if (now >= m->seg_t1 || m->stalled)
 		return m->stalled ? 0.0 : m->seg_omega1;
 	if (now == m->seg_t0)
 		return m->seg_omega0;
-	dc_motor_advance(&m->model, &st, (double)(now - m->seg_t0) * 1e-9, m->drive, battery_v(),
+	v = battery_v();
+	/* a segment starts at now whenever its inputs change, so within one the
+	 * solution depends on the time and the battery only */
+	if (m->mid_memo.valid && m->mid_memo.t == now && m->mid_memo.seg_t0 == m->seg_t0 &&
+	    m->mid_memo.vbat == v)
+		return m->mid_memo.omega;
+	dc_motor_advance(&m->model, &st, (double)(now - m->seg_t0) * 1e-9, m->drive, v,
 			 m->load_nm, m->extra_inertia);
+	m->mid_memo = (struct omega_memo){ true, now, m->seg_t0, v, st.omega };
 	return st.omega;
 }
 
 /* Starts a segment at now from the angle shown by the old one and speed
- * seg_omega1 (set by the caller to the speed now). */
-static void motor_new_segment(struct hs_motor *m)
+ * seg_omega1 (set by the caller to the speed now): the pins caught up, the
+ * start published on the trace; its end is left to segment_solve. */
+static inline __attribute__((always_inline)) void segment_begin(struct hs_motor *m, uint64_t now)
 {
-	uint64_t now = hs_now();
-	struct dc_motor_state st;
-	double v = battery_v();
-
+	m->seg_vbat = battery_v();
 	catch_up(m, now);
-	st.theta = seg_theta(m, now);
-	st.omega = m->stalled ? 0.0 : m->seg_omega1;
+	m->seg_theta0 = seg_theta(m, now);
+	m->seg_omega0 = m->stalled ? 0.0 : m->seg_omega1;
 	m->seg_t0 = now;
 	m->seg_t1 = now + STEP_NS;
-	m->seg_theta0 = st.theta;
-	m->seg_omega0 = st.omega;
+	if (m->sig_angle) {
+		hs_trace_set_real(m->sig_angle, m->seg_theta0 / RAD_PER_DEG);
+		hs_trace_set_real(m->sig_speed, m->seg_omega0 / RAD_PER_DEG);
+	}
+}
+
+/* The begun segment's physics step: its end speed, length and linear rate. */
+static inline __attribute__((always_inline)) void segment_solve(struct hs_motor *m)
+{
+	struct dc_motor_state st = { .omega = m->seg_omega0, .theta = m->seg_theta0 };
+
+	m->seg_unsolved = false;
 	if (!m->stalled) {
-		motor_advance(&m->model, &st, STEP_NS * 1e-9, m->drive, v, m->load_nm,
+		motor_advance(&m->model, &st, STEP_NS * 1e-9, m->drive, m->seg_vbat, m->load_nm,
 			      m->extra_inertia, &m->step_exp);
 		if (fabs(st.omega - m->seg_omega0) < STEADY_RAD_S && st.omega != 0.0) {
 			/* settled: a longer step loses nothing (inputs changes still cut it) */
 			st.theta = m->seg_theta0;
 			st.omega = m->seg_omega0;
-			dc_motor_advance(&m->model, &st, STEADY_STEP_NS * 1e-9, m->drive, v, m->load_nm,
-					 m->extra_inertia);
-			m->seg_t1 = now + STEADY_STEP_NS;
+			dc_motor_advance(&m->model, &st, STEADY_STEP_NS * 1e-9, m->drive, m->seg_vbat,
+					 m->load_nm, m->extra_inertia);
+			m->seg_t1 = m->seg_t0 + STEADY_STEP_NS;
 		}
 	}
-	m->seg_rate = (st.theta - m->seg_theta0) / ((double)(m->seg_t1 - now) * 1e-9);
+	m->seg_rate = (st.theta - m->seg_theta0) / ((double)(m->seg_t1 - m->seg_t0) * 1e-9);
 	m->seg_omega1 = st.omega;
-	if (m->sig_angle) {
-		hs_trace_set_real(m->sig_angle, m->seg_theta0 / RAD_PER_DEG);
-		hs_trace_set_real(m->sig_speed, m->seg_omega0 / RAD_PER_DEG);
-	}
+}
+
+/* Queues the solved segment's next tacho edge and its end. */
+static inline __attribute__((always_inline)) void segment_schedule(struct hs_motor *m)
+{
 	motor_schedule_edge(m);
 	hs_event_cancel(&m->step_ev);
 	/* at rest and held there (friction, stall or no drive): sleep until an input changes */
-	if (m->seg_rate == 0.0 && st.omega == 0.0)
+	if (m->seg_rate == 0.0 && m->seg_omega1 == 0.0)
 		return;
 	m->step_ev = hs_event_at(m->seg_t1, step_due, m);
+}
+
+/* step_due at the instant the load's owner re-applies it: the segment is begun,
+ * its solving and scheduling left to the owner's call (or a look before it). */
+static __attribute__((noinline)) void segment_leave_to_owner(struct hs_motor *m)
+{
+	segment_begin(m, m->seg_t1);
+	hs_event_cancel(&m->edge_ev);
+	m->seg_unsolved = true;
+}
+
+/* segment_solve out of line, for the rare look at a segment left to the owner. */
+static __attribute__((noinline, cold)) void segment_solve_late(struct hs_motor *m)
+{
+	segment_solve(m);
+}
+
+/* Solves a segment left to the load's owner, for a look at it before the owner's call. */
+static inline void segment_settle(struct hs_motor *m)
+{
+	if (m->seg_unsolved)
+		segment_solve_late(m);
+}
+
+/* Starts, solves and schedules a segment at now (see segment_begin). */
+static void motor_new_segment(struct hs_motor *m)
+{
+	segment_begin(m, hs_now());
+	segment_solve(m);
+	segment_schedule(m);
 }
 
 /* The bridge input of one GPIO. */
@@ -495,12 +565,26 @@ struct hs_motor *hs_motor_on_port(unsigned port)
 /* Shaft angle now, degrees. */
 double hs_motor_angle_deg(struct hs_motor *m)
 {
-	return seg_theta(m, hs_now()) / RAD_PER_DEG;
+	uint64_t now = hs_now();
+
+	/* at an unsolved segment's start the angle is its start angle whatever the
+	 * rate (which decides only the sign of a zero) */
+	if (m->seg_unsolved && (now != m->seg_t0 || m->seg_theta0 == 0.0))
+		segment_solve_late(m);
+	return seg_theta(m, now) / RAD_PER_DEG;
+}
+
+/* Exact shaft speed now, deg/s: the speed a segment started now begins with
+ * (the value its speed_dps signal would show). */
+double hs_motor_speed_now_dps(struct hs_motor *m)
+{
+	return omega_now(m) / RAD_PER_DEG;
 }
 
 /* Shaft speed on the current step, deg/s. */
 double hs_motor_speed_dps(struct hs_motor *m)
 {
+	segment_settle(m);
 	return m->seg_rate / RAD_PER_DEG;
 }
 
@@ -521,9 +605,12 @@ struct hbridge_drive hs_motor_drive(const struct hs_motor *m)
 double hs_motor_current_a(struct hs_motor *m)
 {
 	const struct dc_motor_model *md = &m->model;
-	double w = m->seg_rate;
-	double torque = md->k_volt * (m->drive.fwd - m->drive.rev) * battery_v() -
-			md->k_back * (m->drive.fwd + m->drive.rev + m->drive.brake) * w;
+	double w, torque;
+
+	segment_settle(m);
+	w = m->seg_rate;
+	torque = md->k_volt * (m->drive.fwd - m->drive.rev) * battery_v() -
+		 md->k_back * (m->drive.fwd + m->drive.rev + m->drive.brake) * w;
 
 	return fabs(torque) / md->p->stall_nm * md->p->stall_a;
 }
@@ -531,10 +618,28 @@ double hs_motor_current_a(struct hs_motor *m)
 /* Sets the external load from now on. */
 void hs_motor_set_load(struct hs_motor *m, double load_nm, double extra_inertia)
 {
+	hs_motor_set_load_until(m, load_nm, extra_inertia, 0);
+}
+
+/* Sets the external load from now on and notes when the caller sets it next. */
+void hs_motor_set_load_until(struct hs_motor *m, double load_nm, double extra_inertia,
+			     uint64_t next_ns)
+{
 	m->seg_omega1 = omega_now(m);
 	m->load_nm = load_nm;
 	m->extra_inertia = extra_inertia;
+	m->owner_next = next_ns;
 	motor_new_segment(m);
+}
+
+/* Withdraws the promise of hs_motor_set_load_until: the motor steps on its own. */
+void hs_motor_end_load_promise(struct hs_motor *m)
+{
+	m->owner_next = 0;
+	if (m->seg_unsolved) {
+		segment_solve(m);
+		segment_schedule(m);
+	}
 }
 
 /* Locks or frees the shaft from now on. */
@@ -548,6 +653,7 @@ void hs_motor_set_stalled(struct hs_motor *m, bool stalled)
 /* Freezes or releases the tacho outputs. */
 void hs_motor_set_encoder_stuck(struct hs_motor *m, bool stuck)
 {
+	segment_settle(m);
 	m->stuck = stuck;
 	if (!stuck)
 		catch_up(m, hs_now());

@@ -7,6 +7,7 @@
  */
 #include <math.h>
 #include "devtest.h"
+#include "host_sim/trace.h"
 
 static struct {
 	int64_t count;
@@ -34,6 +35,68 @@ static void dir_watch(void *ctx, unsigned pin, const struct hs_pin_state *st)
 	tacho.dir_edges++;
 }
 
+/* A physics model loading the motor on D every 1 ms, plainly or with the
+ * next call promised (hs_motor_set_load_until). */
+static struct owner {
+	struct hs_motor *m;
+	bool promise;
+	unsigned steps, left;
+	hs_event_t ev;
+} owner;
+
+static void owner_step(void *arg)
+{
+	uint64_t next = hs_now() + MS;
+	double load = 0.15 * sin(owner.steps++ * 0.3);
+
+	(void)arg;
+	owner.ev = 0;
+	if (owner.promise)
+		hs_motor_set_load_until(owner.m, load, 1e-4, owner.left > 1 ? next : 0);
+	else
+		hs_motor_set_load(owner.m, load, 1e-4);
+	if (--owner.left > 0)
+		owner.ev = hs_event_at(next, owner_step, NULL);
+}
+
+/* The motor's state at three points of the owner's run: while it steps, after
+ * its last call, after it withdrew a promise mid-run. */
+struct owner_snap {
+	double angle, speed_now, speed;
+	int64_t counts;
+};
+
+static struct owner_snap owner_snap(void)
+{
+	return (struct owner_snap){ hs_motor_angle_deg(owner.m), hs_motor_speed_now_dps(owner.m),
+				    hs_motor_speed_dps(owner.m), hs_motor_tacho_counts(owner.m) };
+}
+
+static void owner_run(bool promise, struct owner_snap snap[3])
+{
+	devtest_boot(1, NULL);
+	devtest_pwm_setup();
+	if (ev3_attach_motor(3, HS_MOTOR_LARGE, NULL) != E_OK)
+		tap_bail_out("no motor on D");
+	owner = (struct owner){ .m = ev3_output_motor(3), .promise = promise, .left = 300 };
+	devtest_duty(3, 10000);
+	devtest_bridge(3, 1);
+	owner.ev = hs_event_at(hs_now() + MS / 4, owner_step, NULL);
+	hs_sim_run_for(150 * MS);
+	snap[0] = owner_snap();
+	hs_sim_run_for(250 * MS);
+	snap[1] = owner_snap();
+	owner.left = 40;
+	owner_step(NULL);
+	hs_sim_run_for(20 * MS + MS / 2);
+	hs_event_cancel(&owner.ev);
+	if (promise)
+		hs_motor_end_load_promise(owner.m);
+	hs_sim_run_for(100 * MS);
+	snap[2] = owner_snap();
+	hs_sim_shutdown();
+}
+
 static double speed_after(unsigned port, int mode, uint16_t duty, uint64_t ns)
 {
 	devtest_duty(port, duty);
@@ -48,7 +111,7 @@ int main(void)
 	double s25, s50, s75, s100, rev, a0, brake_speed, coast_speed;
 	int64_t counted;
 
-	tap_plan(24);
+	tap_plan(31);
 	devtest_boot(1, NULL);
 	devtest_pwm_setup();
 
@@ -121,6 +184,24 @@ int main(void)
 	s50 = speed_after(0, 1, 10000, 500 * MS);
 	in_range(s50, 450, 560, "half the stall torque as load halves the speed (%.0f)", s50);
 	hs_motor_set_load(m, 0, 0);
+	/* inside a step after a duty change the exact speed is between the step's
+	 * ends, and is what re-applying the load then publishes on speed_dps */
+	{
+		struct hs_signal *sig = hs_trace_find("motorA", "speed_dps");
+		double start, mid, again;
+
+		hs_sim_run_for(50 * MS);
+		devtest_duty(0, 3000);
+		start = hs_signal_real(sig);
+		hs_sim_run_for(MS / 3);
+		mid = hs_motor_speed_now_dps(m);
+		again = hs_motor_speed_now_dps(m);
+		ok(sig && mid < start && mid > 0 && mid == again,
+		   "speed now inside a step: slowing from %.1f, %.3f deg/s", start, mid);
+		hs_motor_set_load(m, 0, 0);
+		ok(hs_signal_real(sig) == mid, "re-applying the load publishes that speed");
+		devtest_duty(0, 10000);
+	}
 	{
 		struct ev3_fault f = { EV3_FAULT_MOTOR_STALL, 0, 0, 200 * MS };
 		uint64_t t = hs_now() + 100 * MS, edges;
@@ -130,6 +211,7 @@ int main(void)
 		edges = tacho.int_edges;
 		hs_sim_run_for(100 * MS);
 		is_int(tacho.int_edges, edges, "stalled shaft: no edges");
+		ok(hs_motor_speed_now_dps(m) == 0.0, "stalled shaft: speed now 0");
 		hs_sim_run_for(200 * MS);
 		ok(tacho.int_edges > edges + 50, "edges again after the stall ends");
 	}
@@ -147,5 +229,21 @@ int main(void)
 		ok(tacho.int_edges == edges && hs_motor_angle_deg(m) > a + 30, "stuck encoder: shaft moves, pins frozen");
 	}
 	hs_sim_shutdown();
+
+	/* a load's owner stepping with the motor gets the physics of plain loads */
+	{
+		struct owner_snap plain[3], promised[3];
+		static const char *const when[3] = { "while it steps", "after its last call",
+						     "after it withdrew its promise" };
+
+		owner_run(false, plain);
+		owner_run(true, promised);
+		for (int i = 0; i < 3; i++)
+			ok(plain[i].angle == promised[i].angle && plain[i].speed_now == promised[i].speed_now &&
+			   plain[i].speed == promised[i].speed && plain[i].counts == promised[i].counts,
+			   "promised loads %s: the same angle (%.3f deg), speeds and counts", when[i],
+			   promised[i].angle);
+		ok(promised[2].angle > promised[1].angle + 30, "the motor steps on its own after the promise");
+	}
 	return tap_done();
 }

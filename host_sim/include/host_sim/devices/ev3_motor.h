@@ -112,6 +112,9 @@ void hs_motor_inputs_changed(struct hs_motor *m);
 /* Shaft angle (deg, continuous) and speed (deg/s) now. */
 double hs_motor_angle_deg(struct hs_motor *m);
 double hs_motor_speed_dps(struct hs_motor *m);
+/* Exact shaft speed now, deg/s (0 while stalled), without starting a new step:
+ * what the speed_dps trace signal would show if the load were re-applied now. */
+double hs_motor_speed_now_dps(struct hs_motor *m);
 /* Tacho position the pins show now, in counts (each INT edge is one count). */
 int64_t hs_motor_tacho_counts(const struct hs_motor *m);
 /* The bridge split in effect. */
@@ -121,6 +124,15 @@ double hs_motor_current_a(struct hs_motor *m);
 
 /* Scenario and faults. */
 void hs_motor_set_load(struct hs_motor *m, double load_nm, double extra_inertia);
+/* hs_motor_set_load by a caller that sets the load again at next_ns (> now; 0:
+ * no promise), as a physics model stepping with the motor does: the motor's own
+ * step falling due at that instant then leaves the new segment to that call
+ * instead of solving one the call replaces.  The caller keeps the promise or
+ * withdraws it with hs_motor_end_load_promise before next_ns. */
+void hs_motor_set_load_until(struct hs_motor *m, double load_nm, double extra_inertia,
+			     uint64_t next_ns);
+/* Withdraws the promise of hs_motor_set_load_until: the motor steps on its own again. */
+void hs_motor_end_load_promise(struct hs_motor *m);
 /* Locks the shaft (true) or frees it. */
 void hs_motor_set_stalled(struct hs_motor *m, bool stalled);
 /* Freezes the tacho outputs (true); on release they jump to the true position. */
