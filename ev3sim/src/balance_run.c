@@ -154,6 +154,8 @@ static ER plug_in(const struct ev3sim_balance_opts *o, char *err, size_t errlen)
 		snprintf(err, errlen, "cannot attach the robot's devices (%d)", (int)ercd);
 		return E_SYS;
 	}
+	if (ev3sim_fault_check_wheels(o->faults, o->nfaults, LEFT_PORT, RIGHT_PORT, err, errlen) != E_OK)
+		return E_PAR;
 	for (unsigned i = 0; i < o->nfaults; i++) {
 		if (o->faults[i].target != EV3SIM_FAULT_BRICK)
 			continue;

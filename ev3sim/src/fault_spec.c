@@ -141,3 +141,19 @@ bool ev3sim_fault_parse(const char *spec, unsigned gyro_port, struct ev3sim_faul
 	}
 	return true;
 }
+
+ER ev3sim_fault_check_wheels(const struct ev3sim_fault_spec *faults, unsigned n, unsigned left,
+			     unsigned right, char *err, size_t errlen)
+{
+	for (unsigned i = 0; i < n; i++) {
+		const struct ev3_fault *f = &faults[i].fault;
+
+		if (faults[i].target == EV3SIM_FAULT_BRICK && f->kind == EV3_FAULT_MOTOR_UNPLUG &&
+		    (f->port == left || f->port == right)) {
+			snprintf(err, errlen, "--fault unplug:%c would take a wheel off the robot (its motor "
+				 "is the wheel's shaft); stall it or stick its encoder instead", 'A' + (int)f->port);
+			return E_PAR;
+		}
+	}
+	return E_OK;
+}

@@ -273,11 +273,25 @@ static void touch_event(void *arg)
 			ev3_set_touch(p, arg != NULL);
 }
 
+/* The output ports of the robot's wheel motors (A = 0); false for a robot without wheels. */
+static bool wheel_ports(enum ev3sim_robot_kind robot, unsigned *left, unsigned *right)
+{
+	switch (robot) {
+	case EV3SIM_ROBOT_GYROBOY: *left = 0; *right = 3; return true;
+	case EV3SIM_ROBOT_TRIBOT:  *left = 1; *right = 2; return true;
+	default:                   return false;
+	}
+}
+
 /* Schedules the user's actions and the faults. */
 static ER schedule(const struct ev3sim_run_opts *o, char *err, size_t errlen)
 {
 	static const char press = 1;
+	unsigned left, right;
 
+	if (wheel_ports(o->robot, &left, &right) &&
+	    ev3sim_fault_check_wheels(o->faults, o->nfaults, left, right, err, errlen) != E_OK)
+		return E_PAR;
 	for (unsigned i = 0; i < o->nactions; i++) {
 		const struct ev3sim_action *a = &o->actions[i];
 
@@ -304,9 +318,13 @@ static ER schedule(const struct ev3sim_run_opts *o, char *err, size_t errlen)
 /* Starts the robot's physics. */
 static ER start_world(const struct ev3sim_run_opts *o)
 {
+	unsigned left, right;
+
+	if (!wheel_ports(o->robot, &left, &right))
+		return E_OK;
 	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
 		struct ev3sim_robot_cfg cfg = {
-			.left_port = 0, .right_port = 3, .gyro_port = 1, .release_ns = o->release_ns,
+			.left_port = left, .right_port = right, .gyro_port = 1, .release_ns = o->release_ns,
 			.start_tilt_deg = o->start_tilt_deg, .pushes = o->pushes, .npushes = o->npushes,
 		};
 
@@ -314,7 +332,7 @@ static ER start_world(const struct ev3sim_run_opts *o)
 	}
 	if (o->robot == EV3SIM_ROBOT_TRIBOT) {
 		struct ev3sim_tribot_cfg cfg = {
-			.left_port = 1, .right_port = 2,
+			.left_port = left, .right_port = right,
 			.color_port = o->in[2] == EV3SIM_IN_COLOR ? 2 : -1,
 		};
 

@@ -141,14 +141,33 @@ static void test_determinism(void)
 	ok(strcmp(l1, l2) != 0, "another seed gives another run (gyro noise)");
 }
 
+/* A wheel's motor cannot be unplugged (the robot keeps no pointer to a freed
+ * motor): a clear error and no run; another port's motor can. */
+static void test_wheel_unplug(void)
+{
+	const char *wheel[] = { "balance", "--seconds", "1", "--fault", "unplug:D:0.5", NULL };
+	const char *other[] = { "balance", "--seconds", "1", "--fault", "unplug:B:0.5", NULL };
+	char line[1024];
+
+	ok(et_run(&run, wheel), "balance --fault unplug:D ran");
+	ok(run.status != 0 && strstr(run.err, "unplug:D would take a wheel off the robot") != NULL,
+	   "unplugging a wheel motor is refused with its reason (status %d)", run.status);
+	ok(strstr(run.out, "result=") == NULL, "and nothing is reported as a result");
+	ok(et_run(&run, other), "balance --fault unplug:B ran");
+	et_last_line(&run, line, sizeof(line));
+	ok(run.status == 0 && strncmp(line, "result=upright ", 15) == 0,
+	   "an empty output port may be unplugged: %s", line);
+}
+
 int main(void)
 {
-	tap_plan(39);
+	tap_plan(44);
 	test_upright();
 	test_push();
 	test_negative_control();
 	test_ablation();
 	test_drift_and_faults();
 	test_determinism();
+	test_wheel_unplug();
 	return tap_done();
 }

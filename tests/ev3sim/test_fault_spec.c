@@ -25,7 +25,7 @@ int main(void)
 	double d = 0;
 	unsigned port = 9;
 
-	tap_plan(40);
+	tap_plan(44);
 	ok(ev3sim_parse_time("5s", &ns) && ns == 5 * S, "5s");
 	ok(ev3sim_parse_time("2.5", &ns) && ns == 2500000000ULL, "2.5 (seconds by default)");
 	ok(ev3sim_parse_time("500ms", &ns) && ns == 500000000ULL, "500ms");
@@ -93,5 +93,17 @@ int main(void)
 	ok(!parse("motor-stall:A:1:2:3") && strstr(err, "too many fields"), "motor-stall with extra: %s", err);
 	ok(!parse("adc-noise:6000") && strstr(err, "bad value"), "ADC noise above 5 V: %s", err);
 	ok(!parse("uart-dup:x") && strstr(err, "bad value"), "not a number: %s", err);
+	{
+		struct ev3sim_fault_spec specs[3];
+
+		ok(parse("motor-stall:A:1") && (specs[0] = f, parse("unplug:1:1")) && (specs[1] = f, parse("unplug:C:2")),
+		   "a stall on A, an input unplug on 1, an output unplug on C");
+		specs[2] = f;
+		is_int(ev3sim_fault_check_wheels(specs, 3, 0, 3, err, sizeof(err)), E_OK,
+		       "wheels on A and D: none of them takes a wheel motor away");
+		is_int(ev3sim_fault_check_wheels(specs, 3, 2, 3, err, sizeof(err)), E_PAR,
+		       "wheels on C and D: unplug:C would");
+		ok(strstr(err, "unplug:C would take a wheel off the robot") != NULL, "and says so: %s", err);
+	}
 	return tap_done();
 }

@@ -43,4 +43,9 @@ struct ev3sim_fault_spec {
 bool ev3sim_fault_parse(const char *spec, unsigned gyro_port, struct ev3sim_fault_spec *out,
 			char *err, size_t errlen);
 
+/* E_OK, or E_PAR with a message in err if a fault of faults[0..n) would unplug the motor of output port left or right:
+ * a robot's wheels are its motors' shafts, so the motor cannot leave. */
+ER ev3sim_fault_check_wheels(const struct ev3sim_fault_spec *faults, unsigned n, unsigned left,
+			     unsigned right, char *err, size_t errlen);
+
 #endif /* EV3SIM_FAULT_SPEC_H */
