@@ -7,6 +7,7 @@
 #define _GNU_SOURCE
 #include <errno.h>
 #include <inttypes.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
@@ -66,12 +67,14 @@ struct hs_elem {
 struct hs_route {
 	uint32_t *value;        /* the element's stored value */
 	hs_before_read_fn before_read;      /* read routes */
-	hs_after_write_fn after_write;      /* write routes */
+	hs_after_write_fn after_write;      /* write routes: the element's hook, or route_write_log; NULL: none */
 	void *ctx;              /* the region's hook context */
 	uint32_t wmask;         /* width_mask(width) */
 	uint32_t bits;          /* write: the mask bits the lanes drive; read: those a clear-on-read clears, or 0 */
+	/* A write of lanes value makes the stored old
+	 * (old & keep & ~(value & clear)) | (value & set): the register's kind as masks. */
+	uint32_t keep, clear, set;
 	uint8_t shift;          /* 8 * the byte lane */
-	uint8_t kind;           /* enum hs_reg_kind */
 	bool logged;            /* the region's log flag, kept by hs_space_set_reglog */
 	bool after_read;        /* read: something is cleared or logged after the value is taken */
 	struct hs_access acc;   /* what the hooks are told */
@@ -121,15 +124,15 @@ static const struct hs_power_controller *power_ctl;
  * What the checks of a recent window access found, by window address:
  * drivers access a handful of registers over and over (a poll loop, an
  * ISR's status and data), and an access that finds its address, direction
- * and width here goes straight to its route, skipping the page, map and
- * width lookups (a chain of dependent loads) but not the power check.
- * Emptied whenever a region is added or freed or the register log changes.
+ * and width here goes straight to its route, skipping the page, map,
+ * width and power lookups (a chain of dependent loads).  Emptied whenever a
+ * region is added or freed, the register log changes or a PSC module's power
+ * does (hs_space_power_changed), so a slot only ever names a powered route.
  */
 #define HS_WCACHE_SLOTS 128U    /* a power of two */
 struct wcache_slot {
 	uint64_t key;               /* wcache_key of the access; WCACHE_EMPTY: none */
 	const struct hs_route *route;
-	const bool *power_live;     /* the region's */
 };
 /* No access has this key (its width would be 7). */
 #define WCACHE_EMPTY UINT64_MAX
@@ -159,18 +162,22 @@ static inline uint64_t wcache_key(uintptr_t addr, unsigned width)
 	return (uint64_t)addr << 3 | width;
 }
 
-/* Empties both window caches (regions or their log flags changed). */
+/* Empties both window caches (regions, their log flags or their power changed). */
 static void wcache_clear(void)
 {
 	for (unsigned i = 0; i < HS_WCACHE_SLOTS; i++)
 		rd_wcache[i].key = wr_wcache[i].key = WCACHE_EMPTY;
 }
 
-/* Remembers that a width-byte access at addr (in region r) takes route rt. */
-static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, const struct hs_region *r,
-			       const struct hs_route *rt, unsigned width)
+void hs_space_power_changed(void)
 {
-	*slot = (struct wcache_slot){ wcache_key(addr, width), rt, r->power_live };
+	wcache_clear();
+}
+
+/* Remembers that a width-byte access at addr takes route rt (its region is powered). */
+static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, const struct hs_route *rt, unsigned width)
+{
+	*slot = (struct wcache_slot){ wcache_key(addr, width), rt };
 }
 
 /* Routes an element of natural width w has per direction, when its narrowest
@@ -405,11 +412,24 @@ static bool map_elem(int16_t *map, const struct hs_region *r, const struct hs_el
 	return true;
 }
 
-/* Sets a route's log flag and, for a read, whether anything follows taking the value. */
+static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written);
+
+/* Sets a route's log flag and what follows its access: for a read whether
+ * anything follows taking the value, for a write the hook it calls. */
 static void route_set_logged(struct hs_route *rt, bool logged)
 {
 	rt->logged = logged;
 	rt->after_read = !rt->acc.write && (rt->bits != 0 || logged);
+	if (rt->acc.write)
+		rt->after_write = logged ? route_write_log : rt->e->after_write;
+}
+
+/* The masks of route_write for kind k driving bits. */
+static void route_set_kind(struct hs_route *rt, enum hs_reg_kind k, uint32_t bits)
+{
+	rt->keep = k == HS_W1S || k == HS_W1C ? 0xFFFFFFFFU : ~bits;
+	rt->clear = k == HS_W1C ? bits : 0U;
+	rt->set = k == HS_W1C ? 0U : bits;
 }
 
 /* The narrowest width an element allows (its widths hold the width bits, HS_Wn == n). */
@@ -451,17 +471,17 @@ static bool region_build_routes(struct hs_region *r)
 					*rt = (struct hs_route){
 						.value = e->value,
 						.before_read = write ? NULL : e->before_read,
-						.after_write = write ? e->after_write : NULL,
 						.ctx = r->cfg.ctx,
 						.wmask = width_mask(width),
 						.bits = write || e->kind == HS_COR ? lane_bits : 0U,
 						.shift = (uint8_t)(8U * lane),
-						.kind = e->kind,
 						.acc = { e->reg, e->index, e->offset, width, write != 0 },
 						.r = r,
 						.e = e,
 						.phys = r->cfg.phys + e->offset + lane,
 					};
+					if (write)
+						route_set_kind(rt, (enum hs_reg_kind)e->kind, lane_bits);
 					route_set_logged(rt, r->logged);
 				}
 			}
@@ -850,9 +870,9 @@ static __attribute__((noinline)) uint64_t route_read_after(const struct hs_route
 	return space.access_cost | v;
 }
 
-/* route_read of a route with a hook (out of line, so that the reads without
- * one need no frame). */
-static __attribute__((noinline)) uint64_t route_read_hooked(const struct hs_route *rt)
+/* route_read of a route with a hook (inline: the compiler saves a register
+ * for rt only on this path, so the reads without one still need no frame). */
+static inline __attribute__((always_inline)) uint64_t route_read_hooked(const struct hs_route *rt)
 {
 	rt->before_read(rt->ctx, &rt->acc, rt->value);
 	if (rt->after_read)
@@ -885,13 +905,22 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 	return v;
 }
 
-/* The rest of a logged write through route rt (see route_write): the log, then the hook. */
-static __attribute__((noinline)) void route_write_logged(const struct hs_route *rt, uint32_t data, uint32_t old,
-							  uint32_t nv, uint32_t value)
+/* The route whose hooks are told a (a route's acc is inside it). */
+static inline const struct hs_route *acc_route(const struct hs_access *a)
 {
-	reglog(rt->r, rt->e, rt->phys, true, rt->acc.width, data);
-	if (rt->after_write)
-		rt->after_write(rt->ctx, &rt->acc, old, nv, value);
+	return (const struct hs_route *)(const void *)((const char *)a - offsetof(struct hs_route, acc));
+}
+
+/* The after-write hook of a logged write route (see route_set_logged): the
+ * log line of the data written, then the element's own hook. */
+static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written)
+{
+	const struct hs_route *rt = acc_route(a);
+	hs_after_write_fn hook = rt->e->after_write;
+
+	reglog(rt->r, rt->e, rt->phys, true, a->width, written >> rt->shift);
+	if (hook)
+		hook(ctx, a, old, now, written);
 }
 
 /* A checked write of data (masked to the route's width) through route rt:
@@ -900,23 +929,10 @@ static inline __attribute__((always_inline)) void route_write(const struct hs_ro
 {
 	uint32_t old = *rt->value;
 	uint32_t value = data << rt->shift;     /* the byte lanes the access drives */
-	uint32_t nv;
+	uint32_t nv = (old & rt->keep & ~(value & rt->clear)) | (value & rt->set);
 
-	switch (rt->kind) {
-	case HS_W1S:
-		nv = old | (value & rt->bits);
-		break;
-	case HS_W1C:
-		nv = old & ~(value & rt->bits);
-		break;
-	default:        /* HS_RW, HS_WO */
-		nv = (old & ~rt->bits) | (value & rt->bits);
-		break;
-	}
 	*rt->value = nv;
-	if (rt->logged)
-		route_write_logged(rt, data, old, nv, value);
-	else if (rt->after_write)
+	if (rt->after_write)
 		rt->after_write(rt->ctx, &rt->acc, old, nv, value);
 }
 
@@ -996,7 +1012,7 @@ static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
 	return r;
 }
 
-/* mmio_read_timed when the window cache does not know addr (or its power is off). */
+/* mmio_read_timed when the window cache does not know addr. */
 static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *addr, uint_t width,
 							  struct wcache_slot *slot)
 {
@@ -1020,7 +1036,7 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
 	if (e) {
 		const struct hs_route *rt = elem_route(e, false, width, lane);
 
-		wcache_fill(slot, (uintptr_t)addr, r, rt, width);
+		wcache_fill(slot, (uintptr_t)addr, rt, width);
 		return route_read(rt);
 	}
 	return space.access_cost;
@@ -1033,12 +1049,12 @@ static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *c
 	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->key == wcache_key((uintptr_t)addr, width) && *slot->power_live)
+	if (slot->key == wcache_key((uintptr_t)addr, width))
 		return route_read(slot->route);
 	return mmio_read_miss(addr, width, slot);
 }
 
-/* mmio_write_timed when the window cache does not know addr (or its power is off). */
+/* mmio_write_timed when the window cache does not know addr. */
 static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, uint_t width, uint32_t data,
 							   struct wcache_slot *slot)
 {
@@ -1063,7 +1079,7 @@ static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, u
 	if (e) {
 		const struct hs_route *rt = elem_route(e, true, width, lane);
 
-		wcache_fill(slot, (uintptr_t)addr, r, rt, width);
+		wcache_fill(slot, (uintptr_t)addr, rt, width);
 		route_write(rt, data);
 	}
 	return space.access_ns;
@@ -1076,7 +1092,7 @@ static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t dat
 	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->key == wcache_key((uintptr_t)addr, width) && *slot->power_live) {
+	if (slot->key == wcache_key((uintptr_t)addr, width)) {
 		route_write(slot->route, data & slot->route->wmask);
 		return space.access_ns;
 	}
