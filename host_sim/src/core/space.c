@@ -65,6 +65,8 @@ struct hs_elem {
  * refilled while the hook runs, a route is not).
  */
 struct hs_route {
+	/* read routes: the whole read (see route_read), chosen for what the route has to do */
+	uint64_t (*read)(const struct hs_route *rt);
 	uint32_t *value;        /* the element's stored value */
 	hs_before_read_fn before_read;      /* read routes */
 	hs_after_write_fn after_write;      /* write routes: the element's hook, or route_write_log; NULL: none */
@@ -76,7 +78,6 @@ struct hs_route {
 	uint32_t keep, clear, set;
 	uint8_t shift;          /* 8 * the byte lane */
 	bool logged;            /* the region's log flag, kept by hs_space_set_reglog */
-	bool after_read;        /* read: something is cleared or logged after the value is taken */
 	struct hs_access acc;   /* what the hooks are told */
 	struct hs_region *r;
 	struct hs_elem *e;
@@ -412,16 +413,26 @@ static bool map_elem(int16_t *map, const struct hs_region *r, const struct hs_el
 	return true;
 }
 
+static uint64_t route_read_plain(const struct hs_route *rt);
+static uint64_t route_read_after(const struct hs_route *rt);
+static uint64_t route_read_hooked(const struct hs_route *rt);
+static uint64_t route_read_hooked_after(const struct hs_route *rt);
 static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written);
 
-/* Sets a route's log flag and what follows its access: for a read whether
- * anything follows taking the value, for a write the hook it calls. */
+/* Sets a route's log flag and what its access does: for a read, the read
+ * function (something follows taking the value if a clear-on-read clears
+ * bits or the access is logged), for a write the hook it calls. */
 static void route_set_logged(struct hs_route *rt, bool logged)
 {
+	bool after_read = rt->bits != 0 || logged;
+
 	rt->logged = logged;
-	rt->after_read = !rt->acc.write && (rt->bits != 0 || logged);
 	if (rt->acc.write)
 		rt->after_write = logged ? route_write_log : rt->e->after_write;
+	else if (rt->before_read)
+		rt->read = after_read ? route_read_hooked_after : route_read_hooked;
+	else
+		rt->read = after_read ? route_read_after : route_read_plain;
 }
 
 /* The masks of route_write for kind k driving bits. */
@@ -858,9 +869,15 @@ static inline uint32_t route_value(const struct hs_route *rt)
 	return (*rt->value >> rt->shift) & rt->wmask;
 }
 
-/* The end of a read through route rt that has something after_read: takes
- * the value, clears the clear-on-read bits, logs; see route_read. */
-static __attribute__((noinline)) uint64_t route_read_after(const struct hs_route *rt)
+/* A read through route rt with nothing before or after taking the value. */
+static uint64_t route_read_plain(const struct hs_route *rt)
+{
+	return space.access_cost | route_value(rt);
+}
+
+/* A read through route rt that has something after taking the value: clears
+ * the clear-on-read bits, logs. */
+static uint64_t route_read_after(const struct hs_route *rt)
 {
 	uint32_t v = route_value(rt);
 
@@ -870,25 +887,27 @@ static __attribute__((noinline)) uint64_t route_read_after(const struct hs_route
 	return space.access_cost | v;
 }
 
-/* route_read of a route with a hook (inline: the compiler saves a register
- * for rt only on this path, so the reads without one still need no frame). */
-static inline __attribute__((always_inline)) uint64_t route_read_hooked(const struct hs_route *rt)
+/* A read through route rt with a hook and nothing after. */
+static uint64_t route_read_hooked(const struct hs_route *rt)
 {
 	rt->before_read(rt->ctx, &rt->acc, rt->value);
-	if (rt->after_read)
-		return route_read_after(rt);
 	return space.access_cost | route_value(rt);
 }
 
-/* A checked read through route rt: hooked, clear-on-read applied, logged;
- * the access time it costs, unspent, and the value (see cost_value). */
-static inline __attribute__((always_inline)) uint64_t route_read(const struct hs_route *rt)
+/* A read through route rt with a hook and something after. */
+static uint64_t route_read_hooked_after(const struct hs_route *rt)
 {
-	if (rt->before_read)
-		return route_read_hooked(rt);
-	if (rt->after_read)
-		return route_read_after(rt);
-	return space.access_cost | route_value(rt);
+	rt->before_read(rt->ctx, &rt->acc, rt->value);
+	return route_read_after(rt);
+}
+
+/* A checked read through route rt: hooked, clear-on-read applied, logged;
+ * the access time it costs, unspent, and the value (see cost_value).  One
+ * indirect call: the route chose its read function when it was built or its
+ * log flag changed, so the window cache's hit tests nothing more. */
+static inline uint64_t route_read(const struct hs_route *rt)
+{
+	return rt->read(rt);
 }
 
 /* One CPU read of width bytes (1, 2 or 4) at offset off of r: checked, hooked,
