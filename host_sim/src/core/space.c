@@ -67,6 +67,9 @@ struct hs_elem {
 struct hs_route {
 	/* read routes: the whole read (see route_read), chosen for what the route has to do */
 	uint64_t (*read)(const struct hs_route *rt);
+	/* write routes: the whole write of data (not yet masked to the width), returning its
+	 * access time (see route_write), chosen likewise */
+	uint32_t (*write)(const struct hs_route *rt, uint32_t data);
 	uint32_t *value;        /* the element's stored value */
 	hs_before_read_fn before_read;      /* read routes */
 	hs_after_write_fn after_write;      /* write routes: the element's hook, or route_write_log; NULL: none */
@@ -417,6 +420,9 @@ static uint64_t route_read_plain(const struct hs_route *rt);
 static uint64_t route_read_after(const struct hs_route *rt);
 static uint64_t route_read_hooked(const struct hs_route *rt);
 static uint64_t route_read_hooked_after(const struct hs_route *rt);
+static uint32_t route_write_any(const struct hs_route *rt, uint32_t data);
+static uint32_t route_write_store0(const struct hs_route *rt, uint32_t data);
+static uint32_t route_write_store0_hooked(const struct hs_route *rt, uint32_t data);
 static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written);
 
 /* Sets a route's log flag and what its access does: for a read, the read
@@ -427,9 +433,16 @@ static void route_set_logged(struct hs_route *rt, bool logged)
 	bool after_read = rt->bits != 0 || logged;
 
 	rt->logged = logged;
-	if (rt->acc.write)
+	if (rt->acc.write) {
+		/* a plain store (read-write or write-only) at byte lane 0 has its own */
+		bool store0 = rt->shift == 0U && rt->clear == 0U && rt->keep == ~rt->set;
+
 		rt->after_write = logged ? route_write_log : rt->e->after_write;
-	else if (rt->before_read)
+		if (!store0)
+			rt->write = route_write_any;
+		else
+			rt->write = rt->after_write ? route_write_store0_hooked : route_write_store0;
+	} else if (rt->before_read)
 		rt->read = after_read ? route_read_hooked_after : route_read_hooked;
 	else
 		rt->read = after_read ? route_read_after : route_read_plain;
@@ -942,17 +955,46 @@ static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, 
 		hook(ctx, a, old, now, written);
 }
 
-/* A checked write of data (masked to the route's width) through route rt:
- * applied with the register's kind, logged, hooked. */
-static inline __attribute__((always_inline)) void route_write(const struct hs_route *rt, uint32_t data)
+/* A write of data through route rt of any kind and lane (see route_write). */
+static uint32_t route_write_any(const struct hs_route *rt, uint32_t data)
 {
 	uint32_t old = *rt->value;
-	uint32_t value = data << rt->shift;     /* the byte lanes the access drives */
+	uint32_t value = (data & rt->wmask) << rt->shift;     /* the byte lanes the access drives */
 	uint32_t nv = (old & rt->keep & ~(value & rt->clear)) | (value & rt->set);
 
 	*rt->value = nv;
 	if (rt->after_write)
 		rt->after_write(rt->ctx, &rt->acc, old, nv, value);
+	return space.access_ns;
+}
+
+/* route_write_any for a plain store at lane 0 without a hook: the mask bits
+ * take data's (bits lies within the width, so data needs no masking). */
+static uint32_t route_write_store0(const struct hs_route *rt, uint32_t data)
+{
+	uint32_t old = *rt->value;
+
+	*rt->value = old ^ ((old ^ data) & rt->bits);
+	return space.access_ns;
+}
+
+/* route_write_store0 with a hook, which is told data masked to the width. */
+static uint32_t route_write_store0_hooked(const struct hs_route *rt, uint32_t data)
+{
+	uint32_t old = *rt->value;
+	uint32_t value = data & rt->wmask;
+	uint32_t nv = old ^ ((old ^ value) & rt->bits);
+
+	*rt->value = nv;
+	rt->after_write(rt->ctx, &rt->acc, old, nv, value);
+	return space.access_ns;
+}
+
+/* A checked write of data through route rt: applied with the register's
+ * kind, logged, hooked; returns the access time it costs, unspent. */
+static inline uint32_t route_write(const struct hs_route *rt, uint32_t data)
+{
+	return rt->write(rt, data);
 }
 
 /* One CPU write of width bytes (1, 2 or 4; value already masked to it) at
@@ -1111,10 +1153,8 @@ static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t dat
 	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->key == wcache_key((uintptr_t)addr, width)) {
-		route_write(slot->route, data & slot->route->wmask);
-		return space.access_ns;
-	}
+	if (slot->key == wcache_key((uintptr_t)addr, width))
+		return route_write(slot->route, data);
 	return mmio_write_miss(addr, width, data, slot);
 }
 
