@@ -134,13 +134,15 @@ static const struct hs_power_controller *power_ctl;
  * does (hs_space_power_changed), so a slot only ever names a powered route.
  */
 #define HS_WCACHE_SLOTS 128U    /* a power of two */
-struct wcache_slot {
-	uint64_t key;               /* wcache_key of the access; WCACHE_EMPTY: none */
-	const struct hs_route *route;
+/* Keys and routes in two arrays of 8-byte entries, so that a slot's index
+ * addresses both (scaled by 8, the routes at a fixed displacement). */
+struct wcache {
+	uint64_t key[HS_WCACHE_SLOTS];      /* wcache_key of the access; WCACHE_EMPTY: none */
+	const struct hs_route *route[HS_WCACHE_SLOTS];
 };
 /* No access has this key (its width would be 7). */
 #define WCACHE_EMPTY UINT64_MAX
-static struct wcache_slot rd_wcache[HS_WCACHE_SLOTS], wr_wcache[HS_WCACHE_SLOTS];
+static struct wcache rd_wcache, wr_wcache;
 
 /* All-ones mask of width bytes (1, 2 or 4): one shift, as it is on every access. */
 static inline uint32_t width_mask(unsigned width)
@@ -151,26 +153,27 @@ static inline uint32_t width_mask(unsigned width)
 #define HS_WCACHE_BITS 7U      /* log2(HS_WCACHE_SLOTS) */
 _Static_assert(HS_WCACHE_SLOTS == 1U << HS_WCACHE_BITS, "HS_WCACHE_BITS is log2(HS_WCACHE_SLOTS)");
 
-/* The slot of window address addr in cache c: a multiplicative hash of its low
- * 32 bits, whose top bits depend on every address bit (registers at the same
- * offset in different modules should not collide), in one multiply and shift. */
-static inline struct wcache_slot *wcache_slot(struct wcache_slot *c, uintptr_t addr)
+/* The slot of window address addr: a multiplicative hash of its low 32 bits,
+ * whose top bits depend on every address bit (registers at the same offset in
+ * different modules should not collide), in one multiply and shift. */
+static inline unsigned wcache_slot(uintptr_t addr)
 {
-	return &c[((uint32_t)addr * 0x9E3779B1U) >> (32U - HS_WCACHE_BITS)];
+	return ((uint32_t)addr * 0x9E3779B1U) >> (32U - HS_WCACHE_BITS);
 }
 
 /* A width-byte access at window address addr as one number, so that the cache
- * compares address and width at once (a user address is below 2^61). */
+ * compares address and width at once (a user address is below 2^61; the
+ * width is below 8, so the sum is one address computation). */
 static inline uint64_t wcache_key(uintptr_t addr, unsigned width)
 {
-	return (uint64_t)addr << 3 | width;
+	return (uint64_t)addr * 8U + width;
 }
 
 /* Empties both window caches (regions, their log flags or their power changed). */
 static void wcache_clear(void)
 {
 	for (unsigned i = 0; i < HS_WCACHE_SLOTS; i++)
-		rd_wcache[i].key = wr_wcache[i].key = WCACHE_EMPTY;
+		rd_wcache.key[i] = wr_wcache.key[i] = WCACHE_EMPTY;
 }
 
 void hs_space_power_changed(void)
@@ -178,10 +181,12 @@ void hs_space_power_changed(void)
 	wcache_clear();
 }
 
-/* Remembers that a width-byte access at addr takes route rt (its region is powered). */
-static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, const struct hs_route *rt, unsigned width)
+/* Remembers in slot of c that a width-byte access at addr takes route rt (its region is powered). */
+static inline void wcache_fill(struct wcache *c, unsigned slot, uintptr_t addr, const struct hs_route *rt,
+			       unsigned width)
 {
-	*slot = (struct wcache_slot){ wcache_key(addr, width), rt };
+	c->key[slot] = wcache_key(addr, width);
+	c->route[slot] = rt;
 }
 
 /* Routes an element of natural width w has per direction, when its narrowest
@@ -1074,8 +1079,7 @@ static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
 }
 
 /* mmio_read_timed when the window cache does not know addr. */
-static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *addr, uint_t width,
-							  struct wcache_slot *slot)
+static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *addr, uint_t width)
 {
 	uint32_t off;
 	unsigned lane;
@@ -1097,7 +1101,7 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
 	if (e) {
 		const struct hs_route *rt = elem_route(e, false, width, lane);
 
-		wcache_fill(slot, (uintptr_t)addr, rt, width);
+		wcache_fill(&rd_wcache, wcache_slot((uintptr_t)addr), (uintptr_t)addr, rt, width);
 		return route_read(rt);
 	}
 	return space.access_cost;
@@ -1107,17 +1111,16 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
  * costs, unspent, and the value (0 after a bug report); see cost_value. */
 static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *ctx)
 {
-	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
+	unsigned slot = wcache_slot((uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->key == wcache_key((uintptr_t)addr, width))
-		return route_read(slot->route);
-	return mmio_read_miss(addr, width, slot);
+	if (rd_wcache.key[slot] == wcache_key((uintptr_t)addr, width))
+		return route_read(rd_wcache.route[slot]);
+	return mmio_read_miss(addr, width);
 }
 
 /* mmio_write_timed when the window cache does not know addr. */
-static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, uint_t width, uint32_t data,
-							   struct wcache_slot *slot)
+static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, uint_t width, uint32_t data)
 {
 	uint32_t off;
 	unsigned lane;
@@ -1140,7 +1143,7 @@ static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, u
 	if (e) {
 		const struct hs_route *rt = elem_route(e, true, width, lane);
 
-		wcache_fill(slot, (uintptr_t)addr, rt, width);
+		wcache_fill(&wr_wcache, wcache_slot((uintptr_t)addr), (uintptr_t)addr, rt, width);
 		route_write(rt, data);
 	}
 	return space.access_ns;
@@ -1150,12 +1153,12 @@ static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, u
  * access time it costs, unspent. */
 static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
 {
-	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
+	unsigned slot = wcache_slot((uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->key == wcache_key((uintptr_t)addr, width))
-		return route_write(slot->route, data);
-	return mmio_write_miss(addr, width, data, slot);
+	if (wr_wcache.key[slot] == wcache_key((uintptr_t)addr, width))
+		return route_write(wr_wcache.route[slot], data);
+	return mmio_write_miss(addr, width, data);
 }
 
 /* The untimed read the handler must have: the timed one, then its cost spent. */
