@@ -76,7 +76,7 @@ struct hs_route {
 	void *ctx;              /* the region's hook context */
 	uint32_t wmask;         /* width_mask(width) */
 	uint32_t bits;          /* write: the mask bits the lanes drive; read: those a clear-on-read clears, or 0 */
-	/* A write of lanes value makes the stored old
+	/* A write driving lanes value turns the stored old into
 	 * (old & keep & ~(value & clear)) | (value & set): the register's kind as masks. */
 	uint32_t keep, clear, set;
 	uint8_t shift;          /* 8 * the byte lane */
@@ -440,7 +440,7 @@ static void route_set_logged(struct hs_route *rt, bool logged)
 
 	rt->logged = logged;
 	if (rt->acc.write) {
-		/* a plain store (read-write or write-only) at byte lane 0 has its own */
+		/* a plain store (read-write or write-only: keep = ~set, clear = 0) at byte lane 0 has its own */
 		bool store0 = rt->shift == 0U && rt->clear == 0U && rt->keep == ~rt->set;
 
 		rt->after_write = logged ? route_write_log : rt->e->after_write;
