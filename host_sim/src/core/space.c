@@ -7,6 +7,7 @@
 #define _GNU_SOURCE
 #include <errno.h>
 #include <inttypes.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
@@ -64,16 +65,22 @@ struct hs_elem {
  * refilled while the hook runs, a route is not).
  */
 struct hs_route {
+	/* read routes: the whole read (see route_read), chosen for what the route has to do */
+	uint64_t (*read)(const struct hs_route *rt);
+	/* write routes: the whole write of data (not yet masked to the width), returning its
+	 * access time (see route_write), chosen likewise */
+	uint32_t (*write)(const struct hs_route *rt, uint32_t data);
 	uint32_t *value;        /* the element's stored value */
 	hs_before_read_fn before_read;      /* read routes */
-	hs_after_write_fn after_write;      /* write routes */
+	hs_after_write_fn after_write;      /* write routes: the element's hook, or route_write_log; NULL: none */
 	void *ctx;              /* the region's hook context */
 	uint32_t wmask;         /* width_mask(width) */
 	uint32_t bits;          /* write: the mask bits the lanes drive; read: those a clear-on-read clears, or 0 */
+	/* A write driving lanes value turns the stored old into
+	 * (old & keep & ~(value & clear)) | (value & set): the register's kind as masks. */
+	uint32_t keep, clear, set;
 	uint8_t shift;          /* 8 * the byte lane */
-	uint8_t kind;           /* enum hs_reg_kind */
 	bool logged;            /* the region's log flag, kept by hs_space_set_reglog */
-	bool after_read;        /* read: something is cleared or logged after the value is taken */
 	struct hs_access acc;   /* what the hooks are told */
 	struct hs_region *r;
 	struct hs_elem *e;
@@ -121,19 +128,21 @@ static const struct hs_power_controller *power_ctl;
  * What the checks of a recent window access found, by window address:
  * drivers access a handful of registers over and over (a poll loop, an
  * ISR's status and data), and an access that finds its address, direction
- * and width here goes straight to its route, skipping the page, map and
- * width lookups (a chain of dependent loads) but not the power check.
- * Emptied whenever a region is added or freed or the register log changes.
+ * and width here goes straight to its route, skipping the page, map,
+ * width and power lookups (a chain of dependent loads).  Emptied whenever a
+ * region is added or freed, the register log changes or a PSC module's power
+ * does (hs_space_power_changed), so a slot only ever names a powered route.
  */
 #define HS_WCACHE_SLOTS 128U    /* a power of two */
-struct wcache_slot {
-	uint64_t key;               /* wcache_key of the access; WCACHE_EMPTY: none */
-	const struct hs_route *route;
-	const bool *power_live;     /* the region's */
+/* Keys and routes in two arrays of 8-byte entries, so that a slot's index
+ * addresses both (scaled by 8, the routes at a fixed displacement). */
+struct wcache {
+	uint64_t key[HS_WCACHE_SLOTS];      /* wcache_key of the access; WCACHE_EMPTY: none */
+	const struct hs_route *route[HS_WCACHE_SLOTS];
 };
 /* No access has this key (its width would be 7). */
 #define WCACHE_EMPTY UINT64_MAX
-static struct wcache_slot rd_wcache[HS_WCACHE_SLOTS], wr_wcache[HS_WCACHE_SLOTS];
+static struct wcache rd_wcache, wr_wcache;
 
 /* All-ones mask of width bytes (1, 2 or 4): one shift, as it is on every access. */
 static inline uint32_t width_mask(unsigned width)
@@ -144,33 +153,40 @@ static inline uint32_t width_mask(unsigned width)
 #define HS_WCACHE_BITS 7U      /* log2(HS_WCACHE_SLOTS) */
 _Static_assert(HS_WCACHE_SLOTS == 1U << HS_WCACHE_BITS, "HS_WCACHE_BITS is log2(HS_WCACHE_SLOTS)");
 
-/* The slot of window address addr in cache c: a multiplicative hash of its low
- * 32 bits, whose top bits depend on every address bit (registers at the same
- * offset in different modules should not collide), in one multiply and shift. */
-static inline struct wcache_slot *wcache_slot(struct wcache_slot *c, uintptr_t addr)
+/* The slot of window address addr: a multiplicative hash of its low 32 bits,
+ * whose top bits depend on every address bit (registers at the same offset in
+ * different modules should not collide), in one multiply and shift. */
+static inline unsigned wcache_slot(uintptr_t addr)
 {
-	return &c[((uint32_t)addr * 0x9E3779B1U) >> (32U - HS_WCACHE_BITS)];
+	return ((uint32_t)addr * 0x9E3779B1U) >> (32U - HS_WCACHE_BITS);
 }
 
 /* A width-byte access at window address addr as one number, so that the cache
- * compares address and width at once (a user address is below 2^61). */
+ * compares address and width at once (a user address is below 2^61; the
+ * width is below 8, so the sum is one address computation). */
 static inline uint64_t wcache_key(uintptr_t addr, unsigned width)
 {
-	return (uint64_t)addr << 3 | width;
+	return (uint64_t)addr * 8U + width;
 }
 
-/* Empties both window caches (regions or their log flags changed). */
+/* Empties both window caches (regions, their log flags or their power changed). */
 static void wcache_clear(void)
 {
 	for (unsigned i = 0; i < HS_WCACHE_SLOTS; i++)
-		rd_wcache[i].key = wr_wcache[i].key = WCACHE_EMPTY;
+		rd_wcache.key[i] = wr_wcache.key[i] = WCACHE_EMPTY;
 }
 
-/* Remembers that a width-byte access at addr (in region r) takes route rt. */
-static inline void wcache_fill(struct wcache_slot *slot, uintptr_t addr, const struct hs_region *r,
-			       const struct hs_route *rt, unsigned width)
+void hs_space_power_changed(void)
 {
-	*slot = (struct wcache_slot){ wcache_key(addr, width), rt, r->power_live };
+	wcache_clear();
+}
+
+/* Remembers in slot of c that a width-byte access at addr takes route rt (its region is powered). */
+static inline void wcache_fill(struct wcache *c, unsigned slot, uintptr_t addr, const struct hs_route *rt,
+			       unsigned width)
+{
+	c->key[slot] = wcache_key(addr, width);
+	c->route[slot] = rt;
 }
 
 /* Routes an element of natural width w has per direction, when its narrowest
@@ -405,11 +421,47 @@ static bool map_elem(int16_t *map, const struct hs_region *r, const struct hs_el
 	return true;
 }
 
-/* Sets a route's log flag and, for a read, whether anything follows taking the value. */
+static uint64_t route_read_plain(const struct hs_route *rt);
+static uint64_t route_read_after(const struct hs_route *rt);
+static uint64_t route_read_hooked(const struct hs_route *rt);
+static uint64_t route_read_hooked0(const struct hs_route *rt);
+static uint64_t route_read_hooked_after(const struct hs_route *rt);
+static uint32_t route_write_any(const struct hs_route *rt, uint32_t data);
+static uint32_t route_write_store0(const struct hs_route *rt, uint32_t data);
+static uint32_t route_write_store0_hooked(const struct hs_route *rt, uint32_t data);
+static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written);
+
+/* Sets a route's log flag and what its access does: for a read, the read
+ * function (something follows taking the value if a clear-on-read clears
+ * bits or the access is logged), for a write the hook it calls. */
 static void route_set_logged(struct hs_route *rt, bool logged)
 {
+	bool after_read = rt->bits != 0 || logged;
+
 	rt->logged = logged;
-	rt->after_read = !rt->acc.write && (rt->bits != 0 || logged);
+	if (rt->acc.write) {
+		/* a plain store (read-write or write-only: keep = ~set, clear = 0) at byte lane 0 has its own */
+		bool store0 = rt->shift == 0U && rt->clear == 0U && rt->keep == ~rt->set;
+
+		rt->after_write = logged ? route_write_log : rt->e->after_write;
+		if (!store0)
+			rt->write = route_write_any;
+		else
+			rt->write = rt->after_write ? route_write_store0_hooked : route_write_store0;
+	} else if (rt->before_read && after_read)
+		rt->read = route_read_hooked_after;
+	else if (rt->before_read)
+		rt->read = rt->shift == 0U ? route_read_hooked0 : route_read_hooked;
+	else
+		rt->read = after_read ? route_read_after : route_read_plain;
+}
+
+/* The masks of route_write for kind k driving bits. */
+static void route_set_kind(struct hs_route *rt, enum hs_reg_kind k, uint32_t bits)
+{
+	rt->keep = k == HS_W1S || k == HS_W1C ? 0xFFFFFFFFU : ~bits;
+	rt->clear = k == HS_W1C ? bits : 0U;
+	rt->set = k == HS_W1C ? 0U : bits;
 }
 
 /* The narrowest width an element allows (its widths hold the width bits, HS_Wn == n). */
@@ -451,17 +503,17 @@ static bool region_build_routes(struct hs_region *r)
 					*rt = (struct hs_route){
 						.value = e->value,
 						.before_read = write ? NULL : e->before_read,
-						.after_write = write ? e->after_write : NULL,
 						.ctx = r->cfg.ctx,
 						.wmask = width_mask(width),
 						.bits = write || e->kind == HS_COR ? lane_bits : 0U,
 						.shift = (uint8_t)(8U * lane),
-						.kind = e->kind,
 						.acc = { e->reg, e->index, e->offset, width, write != 0 },
 						.r = r,
 						.e = e,
 						.phys = r->cfg.phys + e->offset + lane,
 					};
+					if (write)
+						route_set_kind(rt, (enum hs_reg_kind)e->kind, lane_bits);
 					route_set_logged(rt, r->logged);
 				}
 			}
@@ -838,9 +890,15 @@ static inline uint32_t route_value(const struct hs_route *rt)
 	return (*rt->value >> rt->shift) & rt->wmask;
 }
 
-/* The end of a read through route rt that has something after_read: takes
- * the value, clears the clear-on-read bits, logs; see route_read. */
-static __attribute__((noinline)) uint64_t route_read_after(const struct hs_route *rt)
+/* A read through route rt with nothing before or after taking the value. */
+static uint64_t route_read_plain(const struct hs_route *rt)
+{
+	return space.access_cost | route_value(rt);
+}
+
+/* A read through route rt that has something after taking the value: clears
+ * the clear-on-read bits, logs. */
+static uint64_t route_read_after(const struct hs_route *rt)
 {
 	uint32_t v = route_value(rt);
 
@@ -850,25 +908,35 @@ static __attribute__((noinline)) uint64_t route_read_after(const struct hs_route
 	return space.access_cost | v;
 }
 
-/* route_read of a route with a hook (out of line, so that the reads without
- * one need no frame). */
-static __attribute__((noinline)) uint64_t route_read_hooked(const struct hs_route *rt)
+/* A read through route rt with a hook and nothing after. */
+static uint64_t route_read_hooked(const struct hs_route *rt)
 {
 	rt->before_read(rt->ctx, &rt->acc, rt->value);
-	if (rt->after_read)
-		return route_read_after(rt);
 	return space.access_cost | route_value(rt);
 }
 
-/* A checked read through route rt: hooked, clear-on-read applied, logged;
- * the access time it costs, unspent, and the value (see cost_value). */
-static inline __attribute__((always_inline)) uint64_t route_read(const struct hs_route *rt)
+/* route_read_hooked for a route at byte lane 0 (the common case: a driver
+ * reads its registers whole), whose value needs no shift. */
+static uint64_t route_read_hooked0(const struct hs_route *rt)
 {
-	if (rt->before_read)
-		return route_read_hooked(rt);
-	if (rt->after_read)
-		return route_read_after(rt);
-	return space.access_cost | route_value(rt);
+	rt->before_read(rt->ctx, &rt->acc, rt->value);
+	return space.access_cost | (*rt->value & rt->wmask);
+}
+
+/* A read through route rt with a hook and something after. */
+static uint64_t route_read_hooked_after(const struct hs_route *rt)
+{
+	rt->before_read(rt->ctx, &rt->acc, rt->value);
+	return route_read_after(rt);
+}
+
+/* A checked read through route rt: hooked, clear-on-read applied, logged;
+ * the access time it costs, unspent, and the value (see cost_value).  One
+ * indirect call: the route chose its read function when it was built or its
+ * log flag changed, so the window cache's hit tests nothing more. */
+static inline uint64_t route_read(const struct hs_route *rt)
+{
+	return rt->read(rt);
 }
 
 /* One CPU read of width bytes (1, 2 or 4) at offset off of r: checked, hooked,
@@ -885,39 +953,64 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 	return v;
 }
 
-/* The rest of a logged write through route rt (see route_write): the log, then the hook. */
-static __attribute__((noinline)) void route_write_logged(const struct hs_route *rt, uint32_t data, uint32_t old,
-							  uint32_t nv, uint32_t value)
+/* The route whose hooks are told a (a route's acc is inside it). */
+static inline const struct hs_route *acc_route(const struct hs_access *a)
 {
-	reglog(rt->r, rt->e, rt->phys, true, rt->acc.width, data);
-	if (rt->after_write)
-		rt->after_write(rt->ctx, &rt->acc, old, nv, value);
+	return (const struct hs_route *)(const void *)((const char *)a - offsetof(struct hs_route, acc));
 }
 
-/* A checked write of data (masked to the route's width) through route rt:
- * applied with the register's kind, logged, hooked. */
-static inline __attribute__((always_inline)) void route_write(const struct hs_route *rt, uint32_t data)
+/* The after-write hook of a logged write route (see route_set_logged): the
+ * log line of the data written, then the element's own hook. */
+static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written)
+{
+	const struct hs_route *rt = acc_route(a);
+	hs_after_write_fn hook = rt->e->after_write;
+
+	reglog(rt->r, rt->e, rt->phys, true, a->width, written >> rt->shift);
+	if (hook)
+		hook(ctx, a, old, now, written);
+}
+
+/* A write of data through route rt of any kind and lane (see route_write). */
+static uint32_t route_write_any(const struct hs_route *rt, uint32_t data)
 {
 	uint32_t old = *rt->value;
-	uint32_t value = data << rt->shift;     /* the byte lanes the access drives */
-	uint32_t nv;
+	uint32_t value = (data & rt->wmask) << rt->shift;     /* the byte lanes the access drives */
+	uint32_t nv = (old & rt->keep & ~(value & rt->clear)) | (value & rt->set);
 
-	switch (rt->kind) {
-	case HS_W1S:
-		nv = old | (value & rt->bits);
-		break;
-	case HS_W1C:
-		nv = old & ~(value & rt->bits);
-		break;
-	default:        /* HS_RW, HS_WO */
-		nv = (old & ~rt->bits) | (value & rt->bits);
-		break;
-	}
 	*rt->value = nv;
-	if (rt->logged)
-		route_write_logged(rt, data, old, nv, value);
-	else if (rt->after_write)
+	if (rt->after_write)
 		rt->after_write(rt->ctx, &rt->acc, old, nv, value);
+	return space.access_ns;
+}
+
+/* route_write_any for a plain store at lane 0 without a hook: the mask bits
+ * take data's (bits lies within the width, so data needs no masking). */
+static uint32_t route_write_store0(const struct hs_route *rt, uint32_t data)
+{
+	uint32_t old = *rt->value;
+
+	*rt->value = old ^ ((old ^ data) & rt->bits);
+	return space.access_ns;
+}
+
+/* route_write_store0 with a hook, which is told data masked to the width. */
+static uint32_t route_write_store0_hooked(const struct hs_route *rt, uint32_t data)
+{
+	uint32_t old = *rt->value;
+	uint32_t value = data & rt->wmask;
+	uint32_t nv = old ^ ((old ^ value) & rt->bits);
+
+	*rt->value = nv;
+	rt->after_write(rt->ctx, &rt->acc, old, nv, value);
+	return space.access_ns;
+}
+
+/* A checked write of data through route rt: applied with the register's
+ * kind, logged, hooked; returns the access time it costs, unspent. */
+static inline uint32_t route_write(const struct hs_route *rt, uint32_t data)
+{
+	return rt->write(rt, data);
 }
 
 /* One CPU write of width bytes (1, 2 or 4; value already masked to it) at
@@ -996,9 +1089,8 @@ static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
 	return r;
 }
 
-/* mmio_read_timed when the window cache does not know addr (or its power is off). */
-static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *addr, uint_t width,
-							  struct wcache_slot *slot)
+/* mmio_read_timed when the window cache does not know addr. */
+static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *addr, uint_t width)
 {
 	uint32_t off;
 	unsigned lane;
@@ -1020,7 +1112,7 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
 	if (e) {
 		const struct hs_route *rt = elem_route(e, false, width, lane);
 
-		wcache_fill(slot, (uintptr_t)addr, r, rt, width);
+		wcache_fill(&rd_wcache, wcache_slot((uintptr_t)addr), (uintptr_t)addr, rt, width);
 		return route_read(rt);
 	}
 	return space.access_cost;
@@ -1030,17 +1122,16 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
  * costs, unspent, and the value (0 after a bug report); see cost_value. */
 static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *ctx)
 {
-	struct wcache_slot *slot = wcache_slot(rd_wcache, (uintptr_t)addr);
+	unsigned slot = wcache_slot((uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->key == wcache_key((uintptr_t)addr, width) && *slot->power_live)
-		return route_read(slot->route);
-	return mmio_read_miss(addr, width, slot);
+	if (rd_wcache.key[slot] == wcache_key((uintptr_t)addr, width))
+		return route_read(rd_wcache.route[slot]);
+	return mmio_read_miss(addr, width);
 }
 
-/* mmio_write_timed when the window cache does not know addr (or its power is off). */
-static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, uint_t width, uint32_t data,
-							   struct wcache_slot *slot)
+/* mmio_write_timed when the window cache does not know addr. */
+static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, uint_t width, uint32_t data)
 {
 	uint32_t off;
 	unsigned lane;
@@ -1063,7 +1154,7 @@ static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, u
 	if (e) {
 		const struct hs_route *rt = elem_route(e, true, width, lane);
 
-		wcache_fill(slot, (uintptr_t)addr, r, rt, width);
+		wcache_fill(&wr_wcache, wcache_slot((uintptr_t)addr), (uintptr_t)addr, rt, width);
 		route_write(rt, data);
 	}
 	return space.access_ns;
@@ -1073,14 +1164,12 @@ static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, u
  * access time it costs, unspent. */
 static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
 {
-	struct wcache_slot *slot = wcache_slot(wr_wcache, (uintptr_t)addr);
+	unsigned slot = wcache_slot((uintptr_t)addr);
 
 	(void)ctx;
-	if (slot->key == wcache_key((uintptr_t)addr, width) && *slot->power_live) {
-		route_write(slot->route, data & slot->route->wmask);
-		return space.access_ns;
-	}
-	return mmio_write_miss(addr, width, data, slot);
+	if (wr_wcache.key[slot] == wcache_key((uintptr_t)addr, width))
+		return route_write(wr_wcache.route[slot], data);
+	return mmio_write_miss(addr, width, data);
 }
 
 /* The untimed read the handler must have: the timed one, then its cost spent. */

@@ -25,6 +25,10 @@ void hs_space_bounds(uintptr_t *start, uintptr_t *len);
 void hs_space_install_handler(void);
 void hs_space_remove_handler(void);
 
+/* Forgets what the window caches learnt: a PSC module's power changed, so
+ * its regions' accesses must meet the power check again. */
+void hs_space_power_changed(void);
+
 /* Register-access log (trace.h's hs_trace_reglog) state. */
 void hs_space_set_reglog(const char *filter, FILE *out);
 

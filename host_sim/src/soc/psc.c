@@ -14,6 +14,7 @@
 #include "host_sim/psc.h"
 #include "host_sim/regs.h"
 #include "soc_parts.h"
+#include "../core/space_internal.h"
 
 #define PSC_NMOD       32U
 #define PSC_PTCMD      0x120U
@@ -30,7 +31,7 @@ struct psc {
 	unsigned id;                   /* 0 or 1 */
 	struct hs_region *region;
 	enum hs_psc_state state[PSC_NMOD];
-	bool live[PSC_NMOD];           /* state == HS_PSC_ENABLE, for the register space */
+	bool live[PSC_NMOD];           /* state == HS_PSC_ENABLE, for the register space (told of each change) */
 };
 
 static struct psc pscs[2];
@@ -59,7 +60,10 @@ static void psc_set_state(struct psc *p, unsigned m, enum hs_psc_state st)
 	unsigned module = (p->id == 0U ? HS_PSC0_MODULE(m) : HS_PSC1_MODULE(m));
 
 	p->state[m] = st;
-	p->live[m] = st == HS_PSC_ENABLE;
+	if (p->live[m] != (st == HS_PSC_ENABLE)) {
+		p->live[m] = st == HS_PSC_ENABLE;
+		hs_space_power_changed();
+	}
 	if (p->region)
 		hs_reg_set(p->region, PSC_MDSTAT0 + 4U * m, mdstat_of(st));
 	if (old == st)
@@ -138,6 +142,7 @@ static ER psc_create_one(unsigned id, uintptr_t phys, const unsigned *on, unsign
 	}
 	for (unsigned m = 0; m < PSC_NMOD; m++)
 		hs_reg_set(p->region, PSC_MDSTAT0 + 4U * m, mdstat_of(p->state[m]));
+	hs_space_power_changed();
 	return E_OK;
 }
 
@@ -165,6 +170,7 @@ void hs_psc_destroy(void)
 {
 	memset(pscs, 0, sizeof(pscs));
 	memset(watches, 0, sizeof(watches));
+	hs_space_power_changed();
 }
 
 /* The PSC and module number of an HS_PSCx_MODULE value; NULL if invalid. */
@@ -190,7 +196,8 @@ enum hs_psc_state hs_psc_state(unsigned module)
 }
 
 /* The register space's power check: module's live flag, stable for the
- * process's life (the PSC state is static). */
+ * process's life (the PSC state is static); every change of it is told to
+ * the space (hs_space_power_changed). */
 static const bool *psc_live_flag(unsigned module)
 {
 	static const bool always = true, never = false;

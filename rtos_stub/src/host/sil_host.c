@@ -111,8 +111,10 @@ static inline __attribute__((always_inline)) uint32_t access_end(uint32_t ns, ui
 /* True for a width of 1, 2 or 4 that mem is aligned to (width_bug reports the others). */
 static inline bool width_fast_ok(const volatile void *mem, uint_t width)
 {
-	/* bits 1, 2 and 4 of 0x16 are the allowed widths */
-	return width <= 4U && ((0x16U >> width) & 1U) != 0 && ((uintptr_t)mem & (width - 1U)) == 0;
+	uint_t below = width - 1U;      /* 0, 1 or 3 for an allowed width, also its alignment mask */
+
+	/* below <= 3 leaves 1 to 4, and no bit shared with width leaves powers of two */
+	return below <= 3U && (((uintptr_t)mem | width) & below) == 0;
 }
 
 /* Reports a register access whose width or alignment width_fast_ok refused. */

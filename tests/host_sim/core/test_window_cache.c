@@ -6,7 +6,10 @@
  * or stopped in between sees exactly the accesses made while it is on.
  * Narrow accesses at byte lanes, repeated, reach their lanes and tell the
  * hooks their own width, element and direction; a hook that empties the
- * cache while its access is under way still sees that access.
+ * cache while its access is under way still sees that access.  A repeated
+ * byte write of a value wider than a byte stores and tells only its byte,
+ * with a hook or without, and a repeated write-1-to-set at a byte lane sets
+ * only the ones of its lane.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
@@ -73,6 +76,9 @@ static const struct hs_reg cdev_regs[] = {
 	  .reset = 0x44332211, .before_read = told_read },
 	{ .name = "ARR",   .offset = 0x10, .kind = HS_RW, .widths = HS_W16, .count = 2, .after_write = told_write },
 	{ .name = "EMPTY", .offset = 0x20, .kind = HS_RO, .before_read = emptying_read },
+	{ .name = "BYTE",  .offset = 0x24, .width = 1, .kind = HS_RW, .after_write = told_write },
+	{ .name = "PLAIN", .offset = 0x28, .width = 1, .kind = HS_RW },
+	{ .name = "SET",   .offset = 0x2C, .kind = HS_W1S, .widths = HS_W8, .reset = 0x01 },
 };
 
 /* True if the last hook was told of a width-byte access to the element at offset in direction write. */
@@ -108,7 +114,7 @@ int main(void)
 	volatile uint8_t *w;
 	FILE *log = tmpfile();
 
-	tap_plan(21);
+	tap_plan(24);
 	if (hs_sim_boot(&scn) != E_OK || !log)
 		tap_bail_out("boot failed");
 	ok(hs_region_add(&(struct hs_region_cfg){ .name = "CDEV", .phys = CDEV_PHYS, .size = 0x1000,
@@ -166,6 +172,16 @@ int main(void)
 	ok(sil_rew_mem((uint32_t *)(w + 0x20)) == 0x5A && told_of(4, 0x20, false) &&
 	   sil_rew_mem((uint32_t *)(w + 0x20)) == 0x5A && told_of(4, 0x20, false),
 	   "a hook that empties the window cache mid-access is still told its access");
+	sil_host_write(w + 0x24, 1, 0x1A5);
+	sil_host_write(w + 0x24, 1, 0x1A5);
+	ok(sil_reb_mem((uint8_t *)(w + 0x24)) == 0xA5 && told_of(1, 0x24, true) && told_written == 0xA5,
+	   "a repeated byte write of a wider value stores and tells its byte only");
+	sil_host_write(w + 0x28, 1, 0x13C);
+	sil_host_write(w + 0x28, 1, 0x13C);
+	is_int(sil_reb_mem((uint8_t *)(w + 0x28)), 0x3C, "so does one to a register without a hook");
+	sil_wrb_mem((uint8_t *)(w + 0x2D), 0x80);
+	sil_wrb_mem((uint8_t *)(w + 0x2D), 0x02);
+	is_int(sil_rew_mem((uint32_t *)(w + 0x2C)), 0x8201, "repeated write-1-to-set bytes at lane 1 set their ones there");
 
 	fclose(log);
 	hs_sim_shutdown();
