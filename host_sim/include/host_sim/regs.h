@@ -111,8 +111,10 @@ struct hs_region;
  * The power controller regions with a .power module consult (the SoC's PSC
  * model installs itself when created, so the register space needs no
  * knowledge of it): where the module's live flag is kept - true while it
- * may be accessed, stable for the process's life - and a word for its
- * state in bug reports.  Without a controller such regions are dead.
+ * may be accessed; its address stable for the process's life, and every
+ * change of it reported with hs_space_power_changed (space_internal.h: the
+ * window cache holds no power check) - and a word for its state in bug
+ * reports.  Without a controller such regions are dead.
  */
 struct hs_power_controller {
 	const bool *(*live_flag)(unsigned power);
