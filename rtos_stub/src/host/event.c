@@ -45,11 +45,10 @@ struct ev_slot {
 };
 
 struct event {
-	rtos_host_event_fn fn;
+	rtos_host_event_fn fn;   /* NULL while the event is free (not queued) */
 	void    *arg;
 	uint32_t gen;        /* bumped on every release: stale handles and slots are harmless */
 	uint32_t next_free;
-	bool     queued;
 };
 
 static struct event *ev_pool;
@@ -211,6 +210,14 @@ static __attribute__((noinline)) bool ev_queue(struct ev_slot s)
 	return true;
 }
 
+/* The queue's head slot (live: ev_settle leaves one there), NULL if the queue is empty. */
+static inline const struct ev_slot *ev_queue_head(void)
+{
+	if (ev_front_len > 0)
+		return &ev_front[ev_front_len - 1];
+	return ev_heap_len > 0 ? &ev_heap[0] : NULL;
+}
+
 /* Drops cancelled slots at the queue's head; returns the head (NULL if the queue is empty). */
 static inline const struct ev_slot *ev_settle_queue(void)
 {
@@ -264,7 +271,6 @@ static inline void ev_release(uint32_t idx)
 	struct event *ev = &ev_pool[idx];
 
 	ev_live--;
-	ev->queued = false;
 	ev->fn = NULL;
 	ev->gen++;
 	ev->next_free = ev_free;
@@ -318,7 +324,6 @@ static inline __attribute__((always_inline)) void ev_claim(uint32_t idx, uint64_
 	ev_free = ev->next_free;
 	ev->fn = fn;
 	ev->arg = arg;
-	ev->queued = true;
 	ev_live++;
 	ev_head_lower(t_ns);
 }
@@ -376,17 +381,22 @@ void rtos_host_event_cancel(rtos_host_event_t handle)
 {
 	uint32_t idx = (uint32_t)(handle & 0xffffffffU);
 	uint32_t gen = (uint32_t)(handle >> 32);
+	bool was_head;
 
 	if (idx == 0 || idx > ev_cap)
 		return;
 	idx--;
-	if (ev_pool[idx].gen != gen || !ev_pool[idx].queued)
+	if (ev_pool[idx].gen != gen || ev_pool[idx].fn == NULL)
 		return;
+	/* the head slot is live, so it is this event's slot if it has its index;
+	 * if not, the head stays where it is (a sweep keeps it too) */
+	was_head = ev_queue_head()->idx == idx;
 	ev_release(idx);
 	ev_stale++;
 	if (ev_stale > EV_SWEEP_MIN && ev_stale > ev_live)
 		ev_sweep();
-	ev_settle();
+	if (was_head)
+		ev_settle();
 }
 
 const struct rtos_host_deferred_state rtos_host_deferred_state = {
@@ -470,14 +480,6 @@ void event_set_run_bound(uint64_t t_ns)
 	ev_head_set(event_head_time);
 }
 
-/* The queue's head slot (live: ev_settle leaves one there), NULL if the queue is empty. */
-static inline const struct ev_slot *ev_queue_head(void)
-{
-	if (ev_front_len > 0)
-		return &ev_front[ev_front_len - 1];
-	return ev_heap_len > 0 ? &ev_heap[0] : NULL;
-}
-
 /* Takes event idx's function and *arg its argument, and releases it (its slot
  * has left the queue). */
 static inline rtos_host_event_fn ev_take(uint32_t idx, void **arg)
@@ -546,9 +548,8 @@ void event_reset(void)
 {
 	ev_free = EV_NONE;
 	for (uint32_t i = ev_cap; i-- > 0;) {
-		if (ev_pool[i].queued)
+		if (ev_pool[i].fn != NULL)
 			ev_pool[i].gen++;
-		ev_pool[i].queued = false;
 		ev_pool[i].fn = NULL;
 		ev_pool[i].next_free = ev_free;
 		ev_free = i;
