@@ -45,11 +45,10 @@ struct ev_slot {
 };
 
 struct event {
-	rtos_host_event_fn fn;
+	rtos_host_event_fn fn;   /* NULL while the event is free (not queued) */
 	void    *arg;
 	uint32_t gen;        /* bumped on every release: stale handles and slots are harmless */
 	uint32_t next_free;
-	bool     queued;
 };
 
 static struct event *ev_pool;
@@ -211,6 +210,14 @@ static __attribute__((noinline)) bool ev_queue(struct ev_slot s)
 	return true;
 }
 
+/* The queue's head slot (live: ev_settle leaves one there), NULL if the queue is empty. */
+static inline const struct ev_slot *ev_queue_head(void)
+{
+	if (ev_front_len > 0)
+		return &ev_front[ev_front_len - 1];
+	return ev_heap_len > 0 ? &ev_heap[0] : NULL;
+}
+
 /* Drops cancelled slots at the queue's head; returns the head (NULL if the queue is empty). */
 static inline const struct ev_slot *ev_settle_queue(void)
 {
@@ -264,7 +271,6 @@ static inline void ev_release(uint32_t idx)
 	struct event *ev = &ev_pool[idx];
 
 	ev_live--;
-	ev->queued = false;
 	ev->fn = NULL;
 	ev->gen++;
 	ev->next_free = ev_free;
@@ -318,7 +324,6 @@ static inline __attribute__((always_inline)) void ev_claim(uint32_t idx, uint64_
 	ev_free = ev->next_free;
 	ev->fn = fn;
 	ev->arg = arg;
-	ev->queued = true;
 	ev_live++;
 	ev_head_lower(t_ns);
 }
@@ -376,17 +381,22 @@ void rtos_host_event_cancel(rtos_host_event_t handle)
 {
 	uint32_t idx = (uint32_t)(handle & 0xffffffffU);
 	uint32_t gen = (uint32_t)(handle >> 32);
+	bool was_head;
 
 	if (idx == 0 || idx > ev_cap)
 		return;
 	idx--;
-	if (ev_pool[idx].gen != gen || !ev_pool[idx].queued)
+	if (ev_pool[idx].gen != gen || ev_pool[idx].fn == NULL)
 		return;
+	/* the head slot is live, so it is this event's slot if it has its index;
+	 * if not, the head stays where it is (a sweep keeps it too) */
+	was_head = ev_queue_head()->idx == idx;
 	ev_release(idx);
 	ev_stale++;
 	if (ev_stale > EV_SWEEP_MIN && ev_stale > ev_live)
 		ev_sweep();
-	ev_settle();
+	if (was_head)
+		ev_settle();
 }
 
 const struct rtos_host_deferred_state rtos_host_deferred_state = {
@@ -470,56 +480,59 @@ void event_set_run_bound(uint64_t t_ns)
 	ev_head_set(event_head_time);
 }
 
-/* True if the kernel timer, due now, comes before the queue's head (settled) in the queue order. */
-static inline bool ev_timer_first(void)
+/* Takes event idx's function and *arg its argument, and releases it (its slot
+ * has left the queue). */
+static inline rtos_host_event_fn ev_take(uint32_t idx, void **arg)
 {
-	const struct ev_slot *s;
+	rtos_host_event_fn fn = ev_pool[idx].fn;
 
-	if (ev_timer.time != now_ns)
-		return false;
-	if (ev_front_len > 0)
-		s = &ev_front[ev_front_len - 1];
-	else if (ev_heap_len > 0)
-		s = &ev_heap[0];
-	else
-		return true;
-	return ev_before(&ev_timer, s);
+	*arg = ev_pool[idx].arg;
+	ev_release(idx);
+	return fn;
+}
+
+/* event_run_next's step when the queue's head is the heap's root (the front is
+ * empty): pops it and settles the head; returns its function, *arg its argument. */
+static __attribute__((noinline)) rtos_host_event_fn ev_take_heap_root(void **arg)
+{
+	uint32_t idx = ev_heap[0].idx;
+
+	ev_pos_time = ev_heap[0].time;
+	ev_pos_seq = ev_heap[0].seq;
+	ev_heap_pop();
+	ev_settle();
+	return ev_take(idx, arg);
 }
 
 /* Pops and runs the earliest event as the hardware; interrupts it raises are delivered after it. */
 void event_run_next(void)
 {
-	uint32_t idx;
+	const struct ev_slot *head = ev_queue_head();
 	rtos_host_event_fn fn;
-	void *arg;
+	void *arg = NULL;
 	enum exec_kind saved_kind = cpu.kind;
 	ID saved_id = cpu.exec_id;
 
-	/* ev_settle left a live slot at the queue's head, or the timer is due */
-	if (ev_timer_first()) {
+	/* the timer, due now and before the queue's (live) head: the head stays
+	 * where it is, so only the timer leaves the earliest time */
+	if (ev_timer.time == now_ns && (head == NULL || ev_before(&ev_timer, head))) {
 		ev_pos_time = ev_timer.time;
 		ev_pos_seq = ev_timer.seq;
 		fn = ev_timer_fn;
-		arg = NULL;
 		ev_timer.time = UINT64_MAX;
-	} else {
-		if (ev_front_len > 0) {
-			const struct ev_slot *s = &ev_front[--ev_front_len];
+		ev_head_set(head != NULL ? head->time : UINT64_MAX);
+	} else if (ev_front_len > 0) {
+		uint32_t idx = head->idx;
 
-			idx = s->idx;
-			ev_pos_time = s->time;
-			ev_pos_seq = s->seq;
-		} else {
-			idx = ev_heap[0].idx;
-			ev_pos_time = ev_heap[0].time;
-			ev_pos_seq = ev_heap[0].seq;
-			ev_heap_pop();
-		}
-		fn = ev_pool[idx].fn;
-		arg = ev_pool[idx].arg;
-		ev_release(idx);
+		ev_pos_time = head->time;
+		ev_pos_seq = head->seq;
+		ev_front_len--;
+		/* the event is off the queue: settling first does not look at it */
+		ev_settle();
+		fn = ev_take(idx, &arg);
+	} else {
+		fn = ev_take_heap_root(&arg);
 	}
-	ev_settle();
 	cpu.kind = EXEC_EVENT;
 	cpu.exec_id = 0;
 	cpu.irq_defer++;
@@ -535,9 +548,8 @@ void event_reset(void)
 {
 	ev_free = EV_NONE;
 	for (uint32_t i = ev_cap; i-- > 0;) {
-		if (ev_pool[i].queued)
+		if (ev_pool[i].fn != NULL)
 			ev_pool[i].gen++;
-		ev_pool[i].queued = false;
 		ev_pool[i].fn = NULL;
 		ev_pool[i].next_free = ev_free;
 		ev_free = i;

@@ -250,9 +250,17 @@ static __attribute__((noinline)) void consume_slow(uint64_t ns)
 	busy_loop(true, ns, UINT64_MAX);
 }
 
-/* The calling context spins until t_ns like a loop polling a clock: time spent
- * preempted counts toward t_ns.  Returns the CPU time it spun. */
-uint64_t rtos_host_spin_until(uint64_t t_ns)
+/* True if busy_loop's pass at task level would find nothing to do before now
+ * + ns (no event falls due by then and the run's deadline is not reached,
+ * checked by the caller): no interrupt to deliver, no task to switch to. */
+static inline bool task_consume_quiet(void)
+{
+	return (irq_pending_lines == 0 || cpu.sil_lock != 0 || cpu.locked) && schedtsk == runtsk &&
+	       !kernel_exited;
+}
+
+/* rtos_host_spin_until when something may stop the spin short of t_ns, or before boot. */
+static __attribute__((noinline)) uint64_t spin_slow(uint64_t t_ns)
 {
 	if (!kernel_booted) {
 		rtos_host_bug("spin", "rtos_host_spin_until before rtos_host_boot");
@@ -261,13 +269,23 @@ uint64_t rtos_host_spin_until(uint64_t t_ns)
 	return busy_loop(false, 0, t_ns);
 }
 
-/* True if busy_loop's pass at task level would find nothing to do before now
- * + ns (no event falls due by then and the run's deadline is not reached,
- * checked by the caller): no interrupt to deliver, no task to switch to. */
-static inline bool task_consume_quiet(void)
+/* The calling context spins until t_ns like a loop polling a clock: time spent
+ * preempted counts toward t_ns.  Returns the CPU time it spun. */
+uint64_t rtos_host_spin_until(uint64_t t_ns)
 {
-	return (irq_pending_lines == 0 || cpu.sil_lock != 0 || cpu.locked) && schedtsk == runtsk &&
-	       !kernel_exited;
+	uint64_t now = now_ns;
+
+	/* Most polls of a serial line end before the next event, the run's
+	 * deadline and boot (all in quiet_until) with nothing to deliver or
+	 * switch to: busy_loop's one pass, advancing to t_ns and settling it. */
+	if (t_ns < quiet_until && (!consume_at_task_level() || task_consume_quiet())) {
+		if (now >= t_ns)
+			return 0;
+		now_ns = t_ns;
+		event_time_settled();
+		return t_ns - now;
+	}
+	return spin_slow(t_ns);
 }
 
 /* rtos_host_consume when quiet_until comes first: before boot, or the run's
