@@ -158,9 +158,11 @@ static inline void irq_run(INTNO n)
 		rtos_host_trace("kernel", "isr %u enter", n);
 	if (n == INTNO_TICK)
 		tick_handler();
-	for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end; e++) {
+	for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end;) {
 		e->isr(e->exinf);
 		cpu.locked = false;   /* TOPPERS releases a CPU lock an ISR returns with */
+		if (++e == end)
+			break;        /* the restore below sets kind and exec_id */
 		cpu.kind = EXEC_ISR;
 		cpu.exec_id = (ID)n;
 	}
