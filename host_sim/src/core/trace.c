@@ -36,6 +36,7 @@ struct hs_signal {
 	uint64_t last_change;
 	char *initial;           /* VCD value at the time the file was opened (NULL: 'x') */
 	bool pulse_pending;      /* high for a pulse whose fall is due at fall_t */
+	bool plain;              /* 1 bit, known, not z, no pulse pending: see plain_update */
 	bool fall_queued;        /* that fall is in tr.falls (a VCD was open), not settled lazily */
 	uint64_t fall_t;
 };
@@ -97,6 +98,14 @@ static void vcd_time(uint64_t t)
 	}
 }
 
+/* Notes whether s is a plain bit, which hs_trace_set changes by its fast path while no
+ * file is open (GPIO pins and level interrupt requests change thousands of times per
+ * virtual second); called after each change of width, known, z or pulse_pending. */
+static inline void plain_update(struct hs_signal *s)
+{
+	s->plain = s->width == 1U && s->known && !s->z && !s->pulse_pending;
+}
+
 /* Emits queued pulse falls if the clock has reached them. */
 static void flush_falls(uint64_t now)
 {
@@ -108,6 +117,7 @@ static void flush_falls(uint64_t now)
 
 		s->pulse_pending = false;
 		s->fall_queued = false;
+		plain_update(s);
 		if (s->value == 0U || s->z)
 			continue;           /* changed again meanwhile */
 		s->value = 0;
@@ -135,6 +145,7 @@ static inline void settle_fall(struct hs_signal *s, uint64_t now)
 	if (!s->pulse_pending || s->fall_queued || now < s->fall_t)
 		return;
 	s->pulse_pending = false;
+	plain_update(s);
 	if (s->value == 0U || s->z)
 		return;             /* changed again meanwhile */
 	s->value = 0;
@@ -239,6 +250,7 @@ static inline void set_bits(struct hs_signal *s, uint64_t value, uint64_t now)
 		return;
 	s->known = true;
 	s->z = false;
+	plain_update(s);
 	s->value = value;
 	record(s, now);
 }
@@ -249,6 +261,17 @@ void hs_trace_set(struct hs_signal *s, uint64_t value)
 
 	if (!s)
 		return;
+	if (s->plain && !tr.body) {
+		/* the general path's work for a plain bit without a VCD (the CSV has no 1-bit
+		 * signals): no fall to flush or settle, only the count */
+		value &= 1U;
+		if (s->value != value) {
+			s->value = value;
+			s->changes++;
+			s->last_change = rtos_host_now();
+		}
+		return;
+	}
 	if (s->width == 0U) {
 		hs_trace_set_real(s, (double)value);
 		return;
@@ -272,6 +295,7 @@ void hs_trace_set_z(struct hs_signal *s)
 		return;
 	s->known = true;
 	s->z = true;
+	s->plain = false;
 	s->value = 0;
 	record(s, now);
 }
@@ -339,6 +363,7 @@ void hs_trace_pulse(struct hs_signal *s)
 	set_bits(s, 1, now);
 	s->fall_t = now + 1U;
 	s->pulse_pending = !tr.body || queue_fall(s);
+	plain_update(s);
 }
 
 uint64_t hs_signal_value(const struct hs_signal *s)
@@ -397,8 +422,10 @@ int hs_trace_open_vcd(const char *path)
 
 		/* a pulse of this nanosecond falls in the file; an older one has fallen */
 		settle_fall(s, tr.vcd_open_t);
-		if (s->pulse_pending && !s->fall_queued)
+		if (s->pulse_pending && !s->fall_queued) {
 			s->pulse_pending = queue_fall(s);
+			plain_update(s);
+		}
 		free(s->initial);
 		vcd_value(s, buf, sizeof(buf));
 		s->initial = strdup(buf);

@@ -58,7 +58,8 @@ static const char *sysint_name(INTNO n)
 	}
 }
 
-/* Declares the trace signal of sysint (its first request), low. */
+/* Declares the trace signal of sysint, low, on its first request while the AINTC
+ * exists (out of line: requests are frequent). */
 static __attribute__((noinline)) struct hs_signal *declare_sysint_signal(INTNO n)
 {
 	char name[40];
@@ -68,12 +69,6 @@ static __attribute__((noinline)) struct hs_signal *declare_sysint_signal(INTNO n
 	ic.sig[n] = hs_trace_signal("irq", name, 1);
 	hs_trace_set(ic.sig[n], 0);
 	return ic.sig[n];
-}
-
-/* The trace signal of sysint, declared on its first request (that part out of line: requests are frequent). */
-static inline struct hs_signal *sysint_signal(INTNO n)
-{
-	return ic.sig[n] ? ic.sig[n] : declare_sysint_signal(n);
 }
 
 /* true if sysint is a valid system interrupt, else reports the caller's bug. */
@@ -90,8 +85,10 @@ void hs_intc_raise(INTNO sysint)
 {
 	if (!sysint_ok(sysint, "hs_intc_raise"))
 		return;
-	if (ic.region)
-		hs_trace_pulse(sysint_signal(sysint));
+	if (ic.sig[sysint])
+		hs_trace_pulse(ic.sig[sysint]);
+	else if (ic.region)
+		hs_trace_pulse(declare_sysint_signal(sysint));
 	rtos_host_irq_raise(sysint);
 }
 
@@ -99,8 +96,10 @@ void hs_intc_set_level(INTNO sysint, bool asserted)
 {
 	if (!sysint_ok(sysint, "hs_intc_set_level"))
 		return;
-	if (ic.region)
-		hs_trace_set(sysint_signal(sysint), asserted);
+	if (ic.sig[sysint])
+		hs_trace_set(ic.sig[sysint], asserted);
+	else if (ic.region)
+		hs_trace_set(declare_sysint_signal(sysint), asserted);
 	rtos_host_irq_set_level(sysint, asserted);
 }
 

@@ -40,33 +40,52 @@ struct cpu_state cpu;
 static struct irq_line lines[TMAX_INTNO + 1];
 static uint64_t pending_bits[IRQ_WORDS];
 uint_t irq_pending_lines;
+PRI irq_best_pri = IRQ_BEST_NONE;
+static INTNO irq_best_line;   /* the line of irq_best_pri, when that is a priority */
 
-/* Keeps the pending bitmap and count in step with the line's edge and level. */
-static inline void pend_update(INTNO n)
+/* Sets the pending bit of line n, which has just got a request; if it was clear,
+ * the line may come before the best one. */
+static inline void pend_set(INTNO n)
 {
 	uint64_t bit = 1ULL << (n % 64U);
 	uint64_t *word = &pending_bits[n / 64U];
-	bool was = (*word & bit) != 0;
-	bool is = lines[n].edge || lines[n].level;
+	const struct irq_line *l = &lines[n];
 
-	if (is != was) {
-		*word ^= bit;
-		irq_pending_lines += is ? 1U : (uint_t)-1;
+	if (*word & bit)
+		return;
+	*word |= bit;
+	irq_pending_lines++;
+	/* a rescan (the lowest value) stays one; none (the highest) gives way to any line */
+	if (l->enabled && irq_best_pri != IRQ_BEST_RESCAN &&
+	    (l->pri < irq_best_pri || (l->pri == irq_best_pri && n < irq_best_line))) {
+		irq_best_pri = l->pri;
+		irq_best_line = n;
 	}
 }
 
-/* True if any line has a request. */
-static bool any_pending(void)
+/* Clears the pending bit of line n, which had it, now that it has neither edge nor level. */
+static inline void pend_clear_set_bit(INTNO n)
 {
-	return irq_pending_lines != 0;
+	pending_bits[n / 64U] &= ~(1ULL << (n % 64U));
+	irq_pending_lines--;
+	if (irq_pending_lines == 0)
+		irq_best_pri = IRQ_BEST_NONE;
+	else if (irq_best_pri != IRQ_BEST_NONE && n == irq_best_line)
+		irq_best_pri = IRQ_BEST_RESCAN;
 }
 
-/* The highest-priority pending line above the current priority, or -1. */
-static int pick_line(void)
+/* Clears the pending bit of line n if it has neither edge nor level any more. */
+static inline void pend_drop(INTNO n)
 {
-	int best = -1;
-	PRI best_pri = cpu.ipm;
+	if (!lines[n].edge && !lines[n].level && (pending_bits[n / 64U] & (1ULL << (n % 64U))))
+		pend_clear_set_bit(n);
+}
 
+/* Finds the best line again (IRQ_BEST_RESCAN): the first pending enabled one in
+ * (priority, number) order. */
+static __attribute__((noinline)) void best_rescan(void)
+{
+	irq_best_pri = IRQ_BEST_NONE;
 	for (uint_t w = 0; w < IRQ_WORDS; w++) {
 		uint64_t bits = pending_bits[w];
 
@@ -74,13 +93,20 @@ static int pick_line(void)
 			INTNO n = w * 64U + (INTNO)__builtin_ctzll(bits);
 
 			bits &= bits - 1;
-			if (lines[n].enabled && lines[n].pri < best_pri) {
-				best = (int)n;
-				best_pri = lines[n].pri;
+			if (lines[n].enabled && lines[n].pri < irq_best_pri) {
+				irq_best_pri = lines[n].pri;
+				irq_best_line = n;
 			}
 		}
 	}
-	return best;
+}
+
+/* The priority of the best line (IRQ_BEST_NONE if none), looked for again if needed. */
+static inline PRI best_pri(void)
+{
+	if (irq_best_pri == IRQ_BEST_RESCAN)
+		best_rescan();
+	return irq_best_pri;
 }
 
 /* Runs one handler body in non-task context kind; a CPU lock left behind is released. */
@@ -99,10 +125,8 @@ void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exin
 	cpu.exec_id = saved_id;
 }
 
-/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order
- * (out of line: most calls of irq_deliver_pending, from register accesses in an ISR
- * while a level line stays pending, deliver nothing and need not save its registers). */
-static __attribute__((noinline)) void irq_run(INTNO n)
+/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order. */
+static inline void irq_run(INTNO n)
 {
 	struct irq_line *l = &lines[n];
 	enum exec_kind saved_kind = cpu.kind;
@@ -112,6 +136,7 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 	if (l->level) {
 		if (l->storm_time == now_ns && ++l->storm_count > IRQ_STORM_LIMIT) {
 			l->enabled = false;
+			irq_best_pri = IRQ_BEST_RESCAN;
 			rtos_host_bug("irq storm", "line %u is level-asserted and was delivered %u times at "
 				      "the same virtual time (its ISR does not clear the source); line disabled",
 				      n, IRQ_STORM_LIMIT);
@@ -123,7 +148,8 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 		}
 	}
 	l->edge = false;
-	pend_update(n);
+	if (!l->level)
+		pend_clear_set_bit(n);
 	cpu.kind = EXEC_ISR;
 	cpu.exec_id = (ID)n;
 	cpu.ipm = l->pri;
@@ -132,9 +158,11 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 		rtos_host_trace("kernel", "isr %u enter", n);
 	if (n == INTNO_TICK)
 		tick_handler();
-	for (uint_t i = 0; i < l->nisrs; i++) {
-		l->isrs[i].isr(l->isrs[i].exinf);
+	for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end;) {
+		e->isr(e->exinf);
 		cpu.locked = false;   /* TOPPERS releases a CPU lock an ISR returns with */
+		if (++e == end)
+			break;        /* the restore below sets kind and exec_id */
 		cpu.kind = EXEC_ISR;
 		cpu.exec_id = (ID)n;
 	}
@@ -149,21 +177,18 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 /* True if some line could be delivered in the current CPU state. */
 bool irq_deliverable(void)
 {
-	return any_pending() && !cpu.locked && cpu.sil_lock == 0 && cpu.irq_defer == 0 &&
-	       pick_line() >= 0;
+	return irq_pending_lines != 0 && !cpu.locked && cpu.sil_lock == 0 && cpu.irq_defer == 0 &&
+	       best_pri() < cpu.ipm;
 }
 
 /* Delivers the pending interrupts the CPU accepts now, nested on the current stack
- * (irq_dispatch_pending's work once some line is pending). */
+ * (irq_dispatch_pending's work once it found a line pending and no lock or deferral). */
 void irq_deliver_pending(void)
 {
-	int n;
-
-	if (!any_pending() || cpu.locked || cpu.sil_lock != 0 || cpu.irq_defer != 0 || paused_task != NULL)
+	if (paused_task != NULL)
 		return;
-	/* the common ISR clears the only request: no scan of the bitmap after it */
-	while (any_pending() && (n = pick_line()) >= 0) {
-		irq_run((INTNO)n);
+	while (best_pri() < cpu.ipm) {
+		irq_run(irq_best_line);
 		if (cpu.locked || cpu.sil_lock != 0)
 			break;
 	}
@@ -181,6 +206,7 @@ ER irq_configure(INTNO intno, ATR intatr, PRI intpri)
 	l->configured = true;
 	l->pri = intpri;
 	l->enabled = (intatr & TA_ENAINT) != 0;
+	irq_best_pri = irq_pending_lines ? IRQ_BEST_RESCAN : IRQ_BEST_NONE;
 	return E_OK;
 }
 
@@ -219,6 +245,7 @@ void irq_reset(void)
 	memset(lines, 0, sizeof(lines));
 	memset(pending_bits, 0, sizeof(pending_bits));
 	irq_pending_lines = 0;
+	irq_best_pri = IRQ_BEST_NONE;
 	memset(&cpu, 0, sizeof(cpu));
 	cpu.kind = EXEC_IDLE;
 }
@@ -246,6 +273,7 @@ ER dis_int(INTNO intno)
 	if ((ercd = line_check(intno)) != E_OK)
 		return svc_result("dis_int", ercd);
 	lines[intno].enabled = false;
+	irq_best_pri = irq_pending_lines ? IRQ_BEST_RESCAN : IRQ_BEST_NONE;
 	return E_OK;
 }
 
@@ -260,6 +288,7 @@ ER ena_int(INTNO intno)
 	if ((ercd = line_check(intno)) != E_OK)
 		return svc_result("ena_int", ercd);
 	lines[intno].enabled = true;
+	irq_best_pri = irq_pending_lines ? IRQ_BEST_RESCAN : IRQ_BEST_NONE;
 	irq_dispatch_pending();
 	return E_OK;
 }
@@ -282,7 +311,7 @@ void rtos_host_irq_raise(INTNO intno)
 	if (!harness_line_ok("rtos_host_irq_raise", intno))
 		return;
 	lines[intno].edge = true;
-	pend_update(intno);
+	pend_set(intno);
 	irq_dispatch_pending();
 }
 
@@ -292,9 +321,12 @@ void rtos_host_irq_set_level(INTNO intno, bool asserted)
 	if (!harness_line_ok("rtos_host_irq_set_level", intno))
 		return;
 	lines[intno].level = asserted;
-	pend_update(intno);
-	if (asserted)
+	if (asserted) {
+		pend_set(intno);
 		irq_dispatch_pending();
+	} else {
+		pend_drop(intno);
+	}
 }
 
 /* Device event: arg encodes the line and the change (0 edge, 1 level low, 2 level high). */
@@ -332,7 +364,7 @@ void rtos_host_irq_clear(INTNO intno)
 	if (!harness_line_ok("rtos_host_irq_clear", intno))
 		return;
 	lines[intno].edge = false;
-	pend_update(intno);
+	pend_drop(intno);
 }
 
 /* True while an edge is latched or the level asserted. */

@@ -11,6 +11,7 @@
 #ifndef RTOS_HOST_KERNEL_IMPL_H
 #define RTOS_HOST_KERNEL_IMPL_H
 
+#include <limits.h>
 #include <setjmp.h>
 #include <stdbool.h>
 #include <stddef.h>
@@ -306,13 +307,21 @@ void event_timer_set(uint64_t t_ns, rtos_host_event_fn fn);
 /* ---- Interrupts ---- */
 void irq_reset(void);
 extern uint_t irq_pending_lines;   /* lines with a latched edge or an asserted level */
-/* irq_dispatch_pending's work when some line is pending. */
+/* Priority of the pending enabled line delivered first (the lowest priority value, then
+ * the lowest number), kept as lines change: IRQ_BEST_NONE if there is none, IRQ_BEST_RESCAN
+ * when it is to be looked for again (below every interrupt priority mask: a delivery looks). */
+extern PRI irq_best_pri;
+#define IRQ_BEST_NONE   INT_MAX
+#define IRQ_BEST_RESCAN INT_MIN
+/* irq_dispatch_pending's work, once its checks passed (a line pending, no lock, no deferral). */
 void irq_deliver_pending(void);
 /* Delivers pending interrupts the CPU accepts now (nested on the current stack). */
 static inline void irq_dispatch_pending(void)
 {
-	/* inside a device event or access, or under a lock, nothing is delivered yet */
-	if (irq_pending_lines != 0 && cpu.irq_defer == 0 && cpu.sil_lock == 0 && !cpu.locked)
+	/* inside a device event or access, or under a lock, nothing is delivered yet; in an
+	 * ISR (the ipm is 0 outside them), nothing either unless a line is above its priority */
+	if (irq_pending_lines != 0 && cpu.irq_defer == 0 && cpu.sil_lock == 0 && !cpu.locked &&
+	    (irq_best_pri < cpu.ipm || cpu.isr_depth == 0))
 		irq_deliver_pending();
 }
 /* True if some line could be delivered in the current CPU state. */
