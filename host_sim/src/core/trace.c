@@ -106,6 +106,21 @@ static inline void plain_update(struct hs_signal *s)
 	s->plain = s->width == 1U && s->known && !s->z && !s->pulse_pending;
 }
 
+/* Ends the pending pulse of s at its fall_t (every queued fall is of tr.fall_t);
+ * false if the signal had changed again meanwhile and so does not fall. */
+static inline bool apply_fall(struct hs_signal *s)
+{
+	s->pulse_pending = false;
+	s->fall_queued = false;
+	plain_update(s);
+	if (s->value == 0U || s->z)
+		return false;
+	s->value = 0;
+	s->changes++;
+	s->last_change = s->fall_t;
+	return true;
+}
+
 /* Emits queued pulse falls if the clock has reached them. */
 static void flush_falls(uint64_t now)
 {
@@ -115,15 +130,7 @@ static void flush_falls(uint64_t now)
 		struct hs_signal *s = tr.falls[i];
 		char buf[96];
 
-		s->pulse_pending = false;
-		s->fall_queued = false;
-		plain_update(s);
-		if (s->value == 0U || s->z)
-			continue;           /* changed again meanwhile */
-		s->value = 0;
-		s->changes++;
-		s->last_change = tr.fall_t;
-		if (tr.body) {
+		if (apply_fall(s) && tr.body) {
 			vcd_time(tr.fall_t);
 			vcd_value(s, buf, sizeof(buf));
 			fprintf(tr.body, "%s\n", buf);
@@ -142,15 +149,8 @@ static inline bool lazy_fall_due(const struct hs_signal *s, uint64_t now)
 /* Applies the lazily kept pulse fall of s if now has reached it. */
 static inline void settle_fall(struct hs_signal *s, uint64_t now)
 {
-	if (!s->pulse_pending || s->fall_queued || now < s->fall_t)
-		return;
-	s->pulse_pending = false;
-	plain_update(s);
-	if (s->value == 0U || s->z)
-		return;             /* changed again meanwhile */
-	s->value = 0;
-	s->changes++;
-	s->last_change = s->fall_t;
+	if (s->pulse_pending && !s->fall_queued && now >= s->fall_t)
+		(void)apply_fall(s);
 }
 
 /* Writes the current value of s at now to the open files. */
@@ -183,6 +183,25 @@ static inline void record(struct hs_signal *s, uint64_t now)
 		record_files(s, now);
 }
 
+/* Makes room for one more pointer in the array *arr holding n of *cap (doubling,
+ * first_cap at first); false if out of memory (the array is kept). */
+static bool room_for_one(struct hs_signal ***arr, unsigned n, unsigned *cap, unsigned first_cap)
+{
+	unsigned new_cap;
+	struct hs_signal **p;
+
+	if (n < *cap)
+		return true;
+	new_cap = *cap ? 2U * *cap : first_cap;
+	/* NOLINTNEXTLINE(bugprone-sizeof-expression): an array of pointers */
+	p = realloc(*arr, new_cap * sizeof(*p));
+	if (!p)
+		return false;
+	*arr = p;
+	*cap = new_cap;
+	return true;
+}
+
 static struct hs_signal *declare(const char *scope, const char *name, unsigned width)
 {
 	struct hs_signal *s = hs_trace_find(scope, name);
@@ -193,16 +212,8 @@ static struct hs_signal *declare(const char *scope, const char *name, unsigned w
 				      scope, name, s->width, width);
 		return s;
 	}
-	if (tr.nsigs == tr.cap) {
-		unsigned cap = tr.cap ? 2U * tr.cap : 64U;
-		/* NOLINTNEXTLINE(bugprone-sizeof-expression): an array of pointers */
-		struct hs_signal **p = realloc(tr.sigs, cap * sizeof(*p));
-
-		if (!p)
-			return NULL;
-		tr.sigs = p;
-		tr.cap = cap;
-	}
+	if (!room_for_one(&tr.sigs, tr.nsigs, &tr.cap, 64U))
+		return NULL;
 	s = calloc(1, sizeof(*s));
 	if (!s)
 		return NULL;
@@ -322,16 +333,8 @@ void hs_trace_set_real(struct hs_signal *s, double value)
 /* Puts the pending fall of s into the queue written to the VCD; false if out of memory. */
 static bool queue_fall(struct hs_signal *s)
 {
-	if (tr.nfalls == tr.falls_cap) {
-		unsigned cap = tr.falls_cap ? 2U * tr.falls_cap : 16U;
-		/* NOLINTNEXTLINE(bugprone-sizeof-expression): an array of pointers */
-		struct hs_signal **p = realloc(tr.falls, cap * sizeof(*p));
-
-		if (!p)
-			return false;
-		tr.falls = p;
-		tr.falls_cap = cap;
-	}
+	if (!room_for_one(&tr.falls, tr.nfalls, &tr.falls_cap, 16U))
+		return false;
 	tr.falls[tr.nfalls++] = s;
 	tr.fall_t = s->fall_t;
 	s->fall_queued = true;
