@@ -334,23 +334,33 @@ static inline rtos_host_event_t ev_handle(uint32_t idx)
 	return ((rtos_host_event_t)ev_pool[idx].gen << 32) | (idx + 1U);
 }
 
+/* Queues the first free event (there is one) as fn(arg) at t_ns with sequence
+ * seq and claims it; its handle, or 0 after a bug report for no memory. */
+static rtos_host_event_t ev_queue_free(uint64_t t_ns, uint64_t seq, rtos_host_event_fn fn, void *arg)
+{
+	uint32_t idx = ev_free;
+
+	if (!ev_queue((struct ev_slot){ t_ns, seq, idx, ev_pool[idx].gen })) {
+		rtos_host_bug("event", "out of memory for events");
+		return 0;
+	}
+	ev_claim(idx, t_ns, fn, arg);
+	return ev_handle(idx);
+}
+
 /* rtos_host_event_at's other cases: a bad request, no free event, a full front or
  * a time at or after the heap's earliest. */
 static __attribute__((noinline)) rtos_host_event_t ev_schedule_slow(uint64_t t_ns, rtos_host_event_fn fn,
 								     void *arg)
 {
-	uint32_t idx;
+	rtos_host_event_t handle;
 
 	if ((fn == NULL || t_ns < now_ns || ev_free == EV_NONE) && !ev_schedule_check(&t_ns, fn))
 		return 0;
-	idx = ev_free;
-	if (!ev_queue((struct ev_slot){ t_ns, ev_seq, idx, ev_pool[idx].gen })) {
-		rtos_host_bug("event", "out of memory for events");
-		return 0;
-	}
-	ev_seq++;
-	ev_claim(idx, t_ns, fn, arg);
-	return ev_handle(idx);
+	handle = ev_queue_free(t_ns, ev_seq, fn, arg);
+	if (handle != 0)
+		ev_seq++;
+	return handle;
 }
 
 /* Schedules fn(arg) at absolute virtual time t_ns; same-time events run in order. */
@@ -434,18 +444,11 @@ void rtos_host_deferred_unlink(struct rtos_host_deferred *d)
 rtos_host_event_t rtos_host_deferred_queue(struct rtos_host_deferred *d)
 {
 	uint64_t t_ns = d->time;
-	uint32_t idx;
 
 	rtos_host_deferred_disarm(d);
 	if (!ev_schedule_check(&t_ns, d->fn))
 		return 0;
-	idx = ev_free;
-	if (!ev_queue((struct ev_slot){ t_ns, d->seq, idx, ev_pool[idx].gen })) {
-		rtos_host_bug("event", "out of memory for events");
-		return 0;
-	}
-	ev_claim(idx, t_ns, d->fn, d->arg);
-	return ev_handle(idx);
+	return ev_queue_free(t_ns, d->seq, d->fn, d->arg);
 }
 
 /* Number of scheduled device events (all queued ones), after every deferred one
