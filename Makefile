@@ -26,7 +26,7 @@ include mk/rules.mk
 include $(filter-out mk/deps.mk mk/config.mk mk/layers.mk mk/rules.mk,$(sort $(wildcard mk/*.mk)))
 
 .PHONY: all test clean main-job
-all: deps-check host-all am1808
+all: deps-check host-all am1808 pgo
 	@$(MAKE) --no-print-directory main-job
 
 test: deps-check

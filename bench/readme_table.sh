@@ -28,10 +28,10 @@ END {
 	printf "| tick with 1 / 16 / 256 armed hrtimers and timer_list timers, one of each due (`bench/timers`) | %s / %s / %s; 256 / 1 = %sx | | ≤ 1.5x | %s |\n", n(v["tick with 1 armed timers avg"]), n(v["tick with 16 armed timers avg"]), n(v["tick with 256 armed timers avg"]), v["tick 256 / 1 armed timers"], st["tick 256 / 1 armed timers"]
 	printf "| linux_compat per due hrtimer (forwarded by its callback), 1 / 256 armed | %s / %s | | ≤ 80 | %s |\n", n(v["due hrtimer linux_compat with 1 armed"]), n(v["due hrtimer linux_compat with 256 armed"]), st["due hrtimer linux_compat with 1 armed"]
 	printf "| linux_compat per due timer_list timer (re-armed by its callback), 1 / 256 armed | %s / %s | | ≤ 60 | %s |\n", n(v["due timer_list linux_compat with 1 armed"]), n(v["due timer_list linux_compat with 256 armed"]), st["due timer_list linux_compat with 1 armed"]
-	print "| **host_sim speed** (virtual s per CPU s of the process; per wall s in brackets) | | | | |"
-	printf "| devices only (`ev3_bench_full_brick`) | %sx (%sx) | | ≥ 1 500x | %s |\n", n(v["host_sim devices per CPU second"]), n(v["host_sim devices (ev3_bench_full_brick)"]), st["host_sim devices per CPU second"]
-	printf "| full stack (drivers + 4 motors + 4 sensors) | %sx (%sx) | | ≥ 750x | %s |\n", n(v["full stack per CPU second"]), n(v["full stack (drivers + 4 motors + 4 sensors)"]), st["full stack per CPU second"]
-	printf "| `ev3sim balance` with the 1 kHz logger | %sx (%sx) | | ≥ 500x | %s |\n", n(v["ev3sim balance per CPU second"]), n(v["ev3sim balance (1 kHz logger)"]), st["ev3sim balance per CPU second"]
+	print "| **host_sim speed** (virtual s per CPU s of the process, profile-guided build as `make` builds it; per wall s, and the -O2 build, in brackets) | | | | |"
+	printf "| devices only (`ev3_bench_full_brick`) | %sx (%sx; -O2 %sx) | | ≥ 1 500x | %s |\n", n(v["host_sim devices per CPU second"]), n(v["host_sim devices (ev3_bench_full_brick)"]), n(v["host_sim devices per CPU second (-O2 build)"]), st["host_sim devices per CPU second"]
+	printf "| full stack (drivers + 4 motors + 4 sensors) | %sx (%sx; -O2 %sx) | | ≥ 750x | %s |\n", n(v["full stack per CPU second"]), n(v["full stack (drivers + 4 motors + 4 sensors)"]), n(v["full stack per CPU second (-O2 build)"]), st["full stack per CPU second"]
+	printf "| `ev3sim balance` with the 1 kHz logger | %sx (%sx; -O2 %sx) | | ≥ 500x | %s |\n", n(v["ev3sim balance per CPU second"]), n(v["ev3sim balance (1 kHz logger)"]), n(v["ev3sim balance per CPU second (-O2 build)"]), st["ev3sim balance per CPU second"]
 	print "| **AM1808 image** (-Os, --gc-sections, every API function rooted) | | | | |"
 	printf "| linux_compat + RTOS glue .text | %s bytes | | ≤ 8 192 | %s |\n", big(v["linux_compat + RTOS glue text in the AM1808 image"]), st["linux_compat + RTOS glue text in the AM1808 image"]
 	print "| **host** (x86-64, ns per call, best of 3 × 10 000; information) | | | | |"

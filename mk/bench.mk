@@ -99,7 +99,7 @@ TEST_SUITE_EXTRA += prod-tests
 TEST_SUITE_EXTRA_DEPS += $(PROD_TEST_BINS)
 
 .PHONY: bench bench-quick
-bench: deps-check $(BENCH_DEPS)
+bench: deps-check $(BENCH_DEPS) pgo
 	@bash bench/run_bench.sh full $(BENCH_OUT) $(BUILD)
 	@bash bench/readme_table.sh $(BENCH_OUT)/bench.csv > $(BENCH_OUT)/readme.md
 	@bash bench/update_readme.sh README.md $(BENCH_OUT)/readme.md

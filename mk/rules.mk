@@ -57,16 +57,17 @@ prove-$(1): tests-$(1)
 endef
 $(foreach c,$(HOST_CONFIGS),$(eval $(call host_config_rules,$(c))))
 
-# Programs (host configuration only).
+# Program $(1) in configuration $(2): the host's, and the simulator's
+# profile-guided builds (mk/pgo.mk).
 define host_program_rules
-$(BUILD)/host/$(1): $$(patsubst %.c,$(BUILD)/host/obj/%.o,$$($(1)_SRCS)) $$(LIB_host)
+$(BUILD)/$(2)/$(1): $$(patsubst %.c,$(BUILD)/$(2)/obj/%.o,$$($(1)_SRCS)) $$(LIB_$(2))
 	@mkdir -p $$(@D)
-	$$(quiet) LD host $$@
-	$(Q)$$(CC_host) $$(CFLAGS_host) -o $$@ $$(patsubst %.c,$(BUILD)/host/obj/%.o,$$($(1)_SRCS)) \
-		-Wl,--start-group $$(LIB_host) -Wl,--end-group -lm $$($(1)_LDLIBS)
--include $$(patsubst %.c,$(BUILD)/host/obj/%.d,$$($(1)_SRCS))
+	$$(quiet) LD $(2) $$@
+	$(Q)$$(CC_$(2)) $$(CFLAGS_$(2)) -o $$@ $$(patsubst %.c,$(BUILD)/$(2)/obj/%.o,$$($(1)_SRCS)) \
+		-Wl,--start-group $$(LIB_$(2)) -Wl,--end-group -lm $$($(1)_LDLIBS)
+-include $$(patsubst %.c,$(BUILD)/$(2)/obj/%.d,$$($(1)_SRCS))
 endef
-$(foreach p,$(HOST_PROGRAMS),$(eval $(call host_program_rules,$(p))))
+$(foreach p,$(HOST_PROGRAMS),$(eval $(call host_program_rules,$(p),host)))
 
 .PHONY: host-all test-suite
 host-all: $(LIB_host) $(addprefix $(BUILD)/host/,$(HOST_PROGRAMS)) tests-host
