@@ -91,13 +91,15 @@ uint_t sil_host_loc_int(void)
 }
 
 /* Restores the lock depth sil_host_loc_int returned; at depth 0 pending interrupts
- * run, then a dispatch held off by the lock happens. */
+ * run, then a dispatch held off by the lock happens (dispatch_if_needed does
+ * nothing unless another task is to run or the kernel has exited: no call). */
 void sil_host_unl_int(uint_t saved)
 {
 	cpu.sil_lock = saved;
 	if (saved == 0) {
 		irq_dispatch_pending();
-		dispatch_if_needed();
+		if (schedtsk != runtsk || kernel_exited)
+			dispatch_if_needed();
 	}
 }
 
@@ -142,7 +144,9 @@ static __attribute__((noinline)) uint32_t access_end_slow(uint32_t ns, uint32_t 
  * (loaded here, so that the fast path need not keep it). */
 static __attribute__((noinline)) uint32_t route_end_slow(uint32_t v)
 {
-	return access_end_slow(route_ns, v);
+	access_spend(route_ns);
+	access_done();
+	return v;
 }
 
 /* access_spend(ns) then access_done() for a timed-window access that read v;
