@@ -264,6 +264,34 @@ typedef uint32_t (*rtos_host_mmio_write_timed_fn)(volatile void *addr, uint_t wi
  * they return right after them — without a call when no event falls due
  * before its end (a handler change forgets them; both or neither). */
 void rtos_host_set_mmio_timed(rtos_host_mmio_read_timed_fn read, rtos_host_mmio_write_timed_fn write);
+/*
+ * Optional, after rtos_host_set_mmio_timed: the route cache.  A handler whose
+ * accesses all cost the same time can tell the accessors how it serves an
+ * access it has checked (address, width, direction): a route, which it embeds
+ * in its own structure.  An access the cache knows calls the route's function
+ * directly, with no window test and no call to the timed pair; any other goes
+ * the way above.  The handler fills the cache from its timed pair and empties
+ * it whenever a route stops being right for its address (the device's power,
+ * its registers or their logging changed); a handler change empties it.
+ */
+struct rtos_host_mmio_route {
+	/* read routes: the value the access reads */
+	uint32_t (*read)(const struct rtos_host_mmio_route *rt);
+	/* write routes: the write of data (not yet masked to the access's width) */
+	void (*write)(const struct rtos_host_mmio_route *rt, uint32_t data);
+};
+/* Turns the route cache on (emptied); every access it serves costs access_ns
+ * of virtual CPU time, spent as the timed pair's. */
+void rtos_host_set_mmio_route_cache(uint32_t access_ns);
+/* Caches rt for width-byte accesses at addr (write: writes, else reads); nothing
+ * while the cache is off.  The access must be one the timed pair serves in the
+ * window, with a width of 1, 2 or 4 that addr is aligned to, and rt must stay
+ * valid until the cache is emptied; anything else is reported as a bug and not
+ * cached. */
+void rtos_host_mmio_route_cache_fill(bool write, const volatile void *addr, uint_t width,
+				     const struct rtos_host_mmio_route *rt);
+/* Empties the route cache. */
+void rtos_host_mmio_route_cache_clear(void);
 /* The window for a physical register range, or NULL if none is modelled. */
 void *rtos_host_map_io(uintptr_t phys, SIZE size);
 

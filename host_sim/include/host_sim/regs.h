@@ -113,7 +113,7 @@ struct hs_region;
  * knowledge of it): where the module's live flag is kept - true while it
  * may be accessed; its address stable for the process's life, and every
  * change of it reported with hs_space_power_changed (space_internal.h: the
- * window cache holds no power check) - and a word for its state in bug
+ * accessors' route cache holds no power check) - and a word for its state in bug
  * reports.  Without a controller such regions are dead.
  */
 struct hs_power_controller {

@@ -61,15 +61,14 @@ struct hs_elem {
  * How a CPU access of one width and direction reaches one element at one
  * byte lane: everything the access path needs once the checks passed, built
  * with the region.  It stays where it is until the region is freed, so the
- * window cache points to it and a hook is told its acc (a cache slot may be
- * refilled while the hook runs, a route is not).
+ * accessors' route cache points to it and a hook is told its acc (a cache
+ * slot may be refilled while the hook runs, a route is not).
  */
 struct hs_route {
-	/* read routes: the whole read (see route_read), chosen for what the route has to do */
-	uint64_t (*read)(const struct hs_route *rt);
-	/* write routes: the whole write of data (not yet masked to the width), returning its
-	 * access time (see route_write), chosen likewise */
-	uint32_t (*write)(const struct hs_route *rt, uint32_t data);
+	/* First, so that the accessors' route cache calls its functions with it: for
+	 * a read route the whole read (see route_read), for a write route the whole
+	 * write (see route_write), chosen for what the route has to do. */
+	struct rtos_host_mmio_route base;
 	uint32_t *value;        /* the element's stored value */
 	hs_before_read_fn before_read;      /* read routes */
 	hs_after_write_fn after_write;      /* write routes: the element's hook, or route_write_log; NULL: none */
@@ -116,7 +115,6 @@ static struct {
 	struct hs_region *last;                     /* last region hit: drivers mostly stay in one */
 	unsigned next_page;
 	uint32_t access_ns;
-	uint64_t access_cost;                       /* cost_value(access_ns, 0) */
 	char *log_filter;
 	FILE *log_out;
 	bool logging;
@@ -124,69 +122,29 @@ static struct {
 
 static const struct hs_power_controller *power_ctl;
 
-/*
- * What the checks of a recent window access found, by window address:
- * drivers access a handful of registers over and over (a poll loop, an
- * ISR's status and data), and an access that finds its address, direction
- * and width here goes straight to its route, skipping the page, map,
- * width and power lookups (a chain of dependent loads).  Emptied whenever a
- * region is added or freed, the register log changes or a PSC module's power
- * does (hs_space_power_changed), so a slot only ever names a powered route.
- */
-#define HS_WCACHE_SLOTS 128U    /* a power of two */
-/* Keys and routes in two arrays of 8-byte entries, so that a slot's index
- * addresses both (scaled by 8, the routes at a fixed displacement). */
-struct wcache {
-	uint64_t key[HS_WCACHE_SLOTS];      /* wcache_key of the access; WCACHE_EMPTY: none */
-	const struct hs_route *route[HS_WCACHE_SLOTS];
-};
-/* No access has this key (its width would be 7). */
-#define WCACHE_EMPTY UINT64_MAX
-static struct wcache rd_wcache, wr_wcache;
-
 /* All-ones mask of width bytes (1, 2 or 4): one shift, as it is on every access. */
 static inline uint32_t width_mask(unsigned width)
 {
 	return 0xFFFFFFFFU >> ((32U - 8U * width) & 31U);
 }
 
-#define HS_WCACHE_BITS 7U      /* log2(HS_WCACHE_SLOTS) */
-_Static_assert(HS_WCACHE_SLOTS == 1U << HS_WCACHE_BITS, "HS_WCACHE_BITS is log2(HS_WCACHE_SLOTS)");
-
-/* The slot of window address addr: a multiplicative hash of its low 32 bits,
- * whose top bits depend on every address bit (registers at the same offset in
- * different modules should not collide), in one multiply and shift. */
-static inline unsigned wcache_slot(uintptr_t addr)
-{
-	return ((uint32_t)addr * 0x9E3779B1U) >> (32U - HS_WCACHE_BITS);
-}
-
-/* A width-byte access at window address addr as one number, so that the cache
- * compares address and width at once (a user address is below 2^61; the
- * width is below 8, so the sum is one address computation). */
-static inline uint64_t wcache_key(uintptr_t addr, unsigned width)
-{
-	return (uint64_t)addr * 8U + width;
-}
-
-/* Empties both window caches (regions, their log flags or their power changed). */
+/*
+ * What the checks of a recent window access found is kept in the accessors'
+ * route cache (rtos_host_set_mmio_route_cache): an access that finds its
+ * address, direction and width there goes from sil_host_read/write straight
+ * to its route, skipping the page, map, width and power lookups (a chain of
+ * dependent loads).  Emptied whenever a region is added or freed, the
+ * register log changes or a PSC module's power does (hs_space_power_changed),
+ * so it only ever names a powered route.
+ */
 static void wcache_clear(void)
 {
-	for (unsigned i = 0; i < HS_WCACHE_SLOTS; i++)
-		rd_wcache.key[i] = wr_wcache.key[i] = WCACHE_EMPTY;
+	rtos_host_mmio_route_cache_clear();
 }
 
 void hs_space_power_changed(void)
 {
 	wcache_clear();
-}
-
-/* Remembers in slot of c that a width-byte access at addr takes route rt (its region is powered). */
-static inline void wcache_fill(struct wcache *c, unsigned slot, uintptr_t addr, const struct hs_route *rt,
-			       unsigned width)
-{
-	c->key[slot] = wcache_key(addr, width);
-	c->route[slot] = rt;
 }
 
 /* Routes an element of natural width w has per direction, when its narrowest
@@ -271,7 +229,6 @@ int hs_space_init(uint32_t access_ns)
 	space.next_page = HS_MIRROR_PAGES;
 	space.nregions = 0;
 	space.access_ns = access_ns;
-	space.access_cost = (uint64_t)access_ns << 32;
 	wcache_clear();
 	memset(space.page_owner, 0, sizeof(space.page_owner));
 	return 0;
@@ -421,14 +378,14 @@ static bool map_elem(int16_t *map, const struct hs_region *r, const struct hs_el
 	return true;
 }
 
-static uint64_t route_read_plain(const struct hs_route *rt);
-static uint64_t route_read_after(const struct hs_route *rt);
-static uint64_t route_read_hooked(const struct hs_route *rt);
-static uint64_t route_read_hooked0(const struct hs_route *rt);
-static uint64_t route_read_hooked_after(const struct hs_route *rt);
-static uint32_t route_write_any(const struct hs_route *rt, uint32_t data);
-static uint32_t route_write_store0(const struct hs_route *rt, uint32_t data);
-static uint32_t route_write_store0_hooked(const struct hs_route *rt, uint32_t data);
+static uint32_t route_read_plain(const struct rtos_host_mmio_route *base);
+static uint32_t route_read_after(const struct rtos_host_mmio_route *base);
+static uint32_t route_read_hooked(const struct rtos_host_mmio_route *base);
+static uint32_t route_read_hooked0(const struct rtos_host_mmio_route *base);
+static uint32_t route_read_hooked_after(const struct rtos_host_mmio_route *base);
+static void route_write_any(const struct rtos_host_mmio_route *base, uint32_t data);
+static void route_write_store0(const struct rtos_host_mmio_route *base, uint32_t data);
+static void route_write_store0_hooked(const struct rtos_host_mmio_route *base, uint32_t data);
 static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written);
 
 /* Sets a route's log flag and what its access does: for a read, the read
@@ -445,15 +402,15 @@ static void route_set_logged(struct hs_route *rt, bool logged)
 
 		rt->after_write = logged ? route_write_log : rt->e->after_write;
 		if (!store0)
-			rt->write = route_write_any;
+			rt->base.write = route_write_any;
 		else
-			rt->write = rt->after_write ? route_write_store0_hooked : route_write_store0;
+			rt->base.write = rt->after_write ? route_write_store0_hooked : route_write_store0;
 	} else if (rt->before_read && after_read)
-		rt->read = route_read_hooked_after;
+		rt->base.read = route_read_hooked_after;
 	else if (rt->before_read)
-		rt->read = rt->shift == 0U ? route_read_hooked0 : route_read_hooked;
+		rt->base.read = rt->shift == 0U ? route_read_hooked0 : route_read_hooked;
 	else
-		rt->read = after_read ? route_read_after : route_read_plain;
+		rt->base.read = after_read ? route_read_after : route_read_plain;
 }
 
 /* The masks of route_write for kind k driving bits. */
@@ -884,59 +841,72 @@ static inline uint64_t cost_value(uint32_t ns, uint32_t v)
 	return (uint64_t)ns << 32 | v;
 }
 
+/* The route whose base is base (its first member). */
+static inline const struct hs_route *route_of(const struct rtos_host_mmio_route *base)
+{
+	return (const struct hs_route *)(const void *)base;
+}
+
 /* What a read through route rt returns, taken after its hook ran. */
 static inline uint32_t route_value(const struct hs_route *rt)
 {
 	return (*rt->value >> rt->shift) & rt->wmask;
 }
 
-/* A read through route rt with nothing before or after taking the value. */
-static uint64_t route_read_plain(const struct hs_route *rt)
+/* A read through a route with nothing before or after taking the value. */
+static uint32_t route_read_plain(const struct rtos_host_mmio_route *base)
 {
-	return space.access_cost | route_value(rt);
+	return route_value(route_of(base));
 }
 
-/* A read through route rt that has something after taking the value: clears
+/* A read through a route that has something after taking the value: clears
  * the clear-on-read bits, logs. */
-static uint64_t route_read_after(const struct hs_route *rt)
+static uint32_t route_read_after(const struct rtos_host_mmio_route *base)
 {
+	const struct hs_route *rt = route_of(base);
 	uint32_t v = route_value(rt);
 
 	*rt->value &= ~rt->bits;
 	if (rt->logged)
 		reglog(rt->r, rt->e, rt->phys, false, rt->acc.width, v);
-	return space.access_cost | v;
+	return v;
 }
 
-/* A read through route rt with a hook and nothing after. */
-static uint64_t route_read_hooked(const struct hs_route *rt)
+/* A read through a route with a hook and nothing after. */
+static uint32_t route_read_hooked(const struct rtos_host_mmio_route *base)
 {
+	const struct hs_route *rt = route_of(base);
+
 	rt->before_read(rt->ctx, &rt->acc, rt->value);
-	return space.access_cost | route_value(rt);
+	return route_value(rt);
 }
 
 /* route_read_hooked for a route at byte lane 0 (the common case: a driver
  * reads its registers whole), whose value needs no shift. */
-static uint64_t route_read_hooked0(const struct hs_route *rt)
+static uint32_t route_read_hooked0(const struct rtos_host_mmio_route *base)
 {
+	const struct hs_route *rt = route_of(base);
+
 	rt->before_read(rt->ctx, &rt->acc, rt->value);
-	return space.access_cost | (*rt->value & rt->wmask);
+	return *rt->value & rt->wmask;
 }
 
-/* A read through route rt with a hook and something after. */
-static uint64_t route_read_hooked_after(const struct hs_route *rt)
+/* A read through a route with a hook and something after. */
+static uint32_t route_read_hooked_after(const struct rtos_host_mmio_route *base)
 {
+	const struct hs_route *rt = route_of(base);
+
 	rt->before_read(rt->ctx, &rt->acc, rt->value);
-	return route_read_after(rt);
+	return route_read_after(base);
 }
 
-/* A checked read through route rt: hooked, clear-on-read applied, logged;
- * the access time it costs, unspent, and the value (see cost_value).  One
- * indirect call: the route chose its read function when it was built or its
- * log flag changed, so the window cache's hit tests nothing more. */
-static inline uint64_t route_read(const struct hs_route *rt)
+/* A checked read through route rt: hooked, clear-on-read applied, logged; the
+ * value (the access time is the caller's to spend).  One indirect call: the
+ * route chose its read function when it was built or its log flag changed, so
+ * the route cache's hit tests nothing more. */
+static inline uint32_t route_read(const struct hs_route *rt)
 {
-	return rt->read(rt);
+	return rt->base.read(&rt->base);
 }
 
 /* One CPU read of width bytes (1, 2 or 4) at offset off of r: checked, hooked,
@@ -948,7 +918,7 @@ static inline __attribute__((always_inline)) uint32_t region_read(struct hs_regi
 	uint32_t v = 0;
 
 	if (e)
-		v = (uint32_t)route_read(elem_route(e, false, width, lane));
+		v = route_read(elem_route(e, false, width, lane));
 	access_cost();
 	return v;
 }
@@ -971,9 +941,10 @@ static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, 
 		hook(ctx, a, old, now, written);
 }
 
-/* A write of data through route rt of any kind and lane (see route_write). */
-static uint32_t route_write_any(const struct hs_route *rt, uint32_t data)
+/* A write of data through a route of any kind and lane (see route_write). */
+static void route_write_any(const struct rtos_host_mmio_route *base, uint32_t data)
 {
+	const struct hs_route *rt = route_of(base);
 	uint32_t old = *rt->value;
 	uint32_t value = (data & rt->wmask) << rt->shift;     /* the byte lanes the access drives */
 	uint32_t nv = (old & rt->keep & ~(value & rt->clear)) | (value & rt->set);
@@ -981,36 +952,35 @@ static uint32_t route_write_any(const struct hs_route *rt, uint32_t data)
 	*rt->value = nv;
 	if (rt->after_write)
 		rt->after_write(rt->ctx, &rt->acc, old, nv, value);
-	return space.access_ns;
 }
 
 /* route_write_any for a plain store at lane 0 without a hook: the mask bits
  * take data's (bits lies within the width, so data needs no masking). */
-static uint32_t route_write_store0(const struct hs_route *rt, uint32_t data)
+static void route_write_store0(const struct rtos_host_mmio_route *base, uint32_t data)
 {
+	const struct hs_route *rt = route_of(base);
 	uint32_t old = *rt->value;
 
 	*rt->value = old ^ ((old ^ data) & rt->bits);
-	return space.access_ns;
 }
 
 /* route_write_store0 with a hook, which is told data masked to the width. */
-static uint32_t route_write_store0_hooked(const struct hs_route *rt, uint32_t data)
+static void route_write_store0_hooked(const struct rtos_host_mmio_route *base, uint32_t data)
 {
+	const struct hs_route *rt = route_of(base);
 	uint32_t old = *rt->value;
 	uint32_t value = data & rt->wmask;
 	uint32_t nv = old ^ ((old ^ value) & rt->bits);
 
 	*rt->value = nv;
 	rt->after_write(rt->ctx, &rt->acc, old, nv, value);
-	return space.access_ns;
 }
 
 /* A checked write of data through route rt: applied with the register's
- * kind, logged, hooked; returns the access time it costs, unspent. */
-static inline uint32_t route_write(const struct hs_route *rt, uint32_t data)
+ * kind, logged, hooked (the access time is the caller's to spend). */
+static inline void route_write(const struct hs_route *rt, uint32_t data)
 {
-	return rt->write(rt, data);
+	rt->base.write(&rt->base, data);
 }
 
 /* One CPU write of width bytes (1, 2 or 4; value already masked to it) at
@@ -1089,15 +1059,17 @@ static inline struct hs_region *window_region(uintptr_t addr, uint32_t *off)
 	return r;
 }
 
-/* mmio_read_timed when the window cache does not know addr. */
-static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *addr, uint_t width)
+/* One accessor read of width bytes at window address addr that the route
+ * cache did not know: the access time it costs, unspent, and the value (0
+ * after a bug report; see cost_value).  A checked access's route is cached. */
+static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *ctx)
 {
 	uint32_t off;
 	unsigned lane;
 	struct hs_region *r = window_region((uintptr_t)addr, &off);
 	struct hs_elem *e;
 
-
+	(void)ctx;
 	if (!r) {
 		rtos_host_bug("host_sim", "read of %u bytes at window address %p (physical 0x%08" PRIxPTR
 			      "): no modelled device there", width, (const void *)addr, hs_space_to_phys((uintptr_t)addr));
@@ -1112,32 +1084,23 @@ static __attribute__((noinline)) uint64_t mmio_read_miss(const volatile void *ad
 	if (e) {
 		const struct hs_route *rt = elem_route(e, false, width, lane);
 
-		wcache_fill(&rd_wcache, wcache_slot((uintptr_t)addr), (uintptr_t)addr, rt, width);
-		return route_read(rt);
+		rtos_host_mmio_route_cache_fill(false, addr, width, &rt->base);
+		return cost_value(space.access_ns, route_read(rt));
 	}
-	return space.access_cost;
+	return cost_value(space.access_ns, 0);
 }
 
-/* One accessor read of width bytes at window address addr: the access time it
- * costs, unspent, and the value (0 after a bug report); see cost_value. */
-static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *ctx)
-{
-	unsigned slot = wcache_slot((uintptr_t)addr);
-
-	(void)ctx;
-	if (rd_wcache.key[slot] == wcache_key((uintptr_t)addr, width))
-		return route_read(rd_wcache.route[slot]);
-	return mmio_read_miss(addr, width);
-}
-
-/* mmio_write_timed when the window cache does not know addr. */
-static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, uint_t width, uint32_t data)
+/* One accessor write of width bytes at window address addr that the route
+ * cache did not know; returns the access time it costs, unspent.  A checked
+ * access's route is cached. */
+static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
 {
 	uint32_t off;
 	unsigned lane;
 	struct hs_region *r = window_region((uintptr_t)addr, &off);
 	struct hs_elem *e;
 
+	(void)ctx;
 	if (!r) {
 		rtos_host_bug("host_sim", "write of %u bytes (0x%" PRIx32 ") at window address %p (physical 0x%08"
 			      PRIxPTR "): no modelled device there", width, data, (void *)addr,
@@ -1154,22 +1117,10 @@ static __attribute__((noinline)) uint32_t mmio_write_miss(volatile void *addr, u
 	if (e) {
 		const struct hs_route *rt = elem_route(e, true, width, lane);
 
-		wcache_fill(&wr_wcache, wcache_slot((uintptr_t)addr), (uintptr_t)addr, rt, width);
+		rtos_host_mmio_route_cache_fill(true, addr, width, &rt->base);
 		route_write(rt, data);
 	}
 	return space.access_ns;
-}
-
-/* One accessor write of width bytes at window address addr; returns the
- * access time it costs, unspent. */
-static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
-{
-	unsigned slot = wcache_slot((uintptr_t)addr);
-
-	(void)ctx;
-	if (wr_wcache.key[slot] == wcache_key((uintptr_t)addr, width))
-		return route_write(wr_wcache.route[slot], data);
-	return mmio_write_miss(addr, width, data);
 }
 
 /* The untimed read the handler must have: the timed one, then its cost spent. */
@@ -1223,6 +1174,8 @@ void hs_space_install_handler(void)
 	rtos_host_set_mmio_handler(&space_mmio_ops);
 	rtos_host_set_mmio_window((uintptr_t)space.base, space.base ? (uintptr_t)HS_SPACE_PAGES * HS_PAGE : 0);
 	rtos_host_set_mmio_timed(mmio_read_timed, mmio_write_timed);
+	if (space.base)
+		rtos_host_set_mmio_route_cache(space.access_ns);
 }
 
 void hs_space_remove_handler(void)

@@ -25,7 +25,7 @@ void hs_space_bounds(uintptr_t *start, uintptr_t *len);
 void hs_space_install_handler(void);
 void hs_space_remove_handler(void);
 
-/* Forgets what the window caches learnt: a PSC module's power changed, so
+/* Forgets what the accessors' route cache learnt: a PSC module's power changed, so
  * its regions' accesses must meet the power check again. */
 void hs_space_power_changed(void);
 

@@ -21,6 +21,59 @@ static struct {
 	void *ctx;
 } timed_win;
 
+/*
+ * The route cache (rtos_host_set_mmio_route_cache): the handler's routes for
+ * recent accesses, by address, width and direction.  Drivers access a handful
+ * of registers over and over (a poll loop, an ISR's status and data), and a
+ * hit goes from the accessor straight to the route.  A slot matches an access
+ * only if both its address and its width are the access's, and only checked
+ * accesses in the window are filled in (rtos_host_mmio_route_cache_fill), so a
+ * hit needs no width, alignment or window test.  An empty slot holds an
+ * address whose slot is another one (ROUTE_EMPTY_ADDR), so no access matches
+ * it.
+ */
+#define ROUTE_CACHE_BITS 7U
+#define ROUTE_CACHE_SLOTS (1U << ROUTE_CACHE_BITS)
+/* Addresses, routes and widths in arrays, so that one base and the slot's
+ * index address all three. */
+struct route_cache {
+	uintptr_t addr[ROUTE_CACHE_SLOTS];
+	const struct rtos_host_mmio_route *route[ROUTE_CACHE_SLOTS];
+	uint_t width[ROUTE_CACHE_SLOTS];
+};
+/* An empty slot's address: address 0 is in slot 0 (0 times anything is 0),
+ * address 1 in slot 79 (0x9E3779B1 >> 25), so neither is looked up in the
+ * slot that holds it. */
+#define ROUTE_EMPTY_ADDR(slot) ((slot) == 0U ? 1U : 0U)
+static struct route_cache read_routes = { .addr = { [0] = ROUTE_EMPTY_ADDR(0U) } };
+static struct route_cache write_routes = { .addr = { [0] = ROUTE_EMPTY_ADDR(0U) } };
+static bool route_cache_on;
+static uint32_t route_ns;       /* what an access through a cached route costs */
+
+/* The slot of address addr: a multiplicative hash of its low 32 bits, whose
+ * top bits depend on every address bit (registers at the same offset in
+ * different modules should not collide), in one multiply and shift. */
+static inline unsigned route_slot(const volatile void *addr)
+{
+	return ((uint32_t)(uintptr_t)addr * 0x9E3779B1U) >> (32U - ROUTE_CACHE_BITS);
+}
+
+/* Empties both route caches. */
+static void route_cache_clear(void)
+{
+	for (unsigned i = 0; i < ROUTE_CACHE_SLOTS; i++) {
+		read_routes.addr[i] = write_routes.addr[i] = ROUTE_EMPTY_ADDR(i);
+		read_routes.width[i] = write_routes.width[i] = 0;
+		read_routes.route[i] = write_routes.route[i] = NULL;
+	}
+}
+
+/* True if slot of c holds a width-byte access at mem (then its route is set). */
+static inline bool route_hit(const struct route_cache *c, unsigned slot, const volatile void *mem, uint_t width)
+{
+	return c->addr[slot] == (uintptr_t)mem && c->width[slot] == width;
+}
+
 /* True if the installed handler serves mem. */
 static inline bool mmio_claimed(const struct rtos_host_mmio_ops *ops, const volatile void *mem)
 {
@@ -38,13 +91,15 @@ uint_t sil_host_loc_int(void)
 }
 
 /* Restores the lock depth sil_host_loc_int returned; at depth 0 pending interrupts
- * run, then a dispatch held off by the lock happens. */
+ * run, then a dispatch held off by the lock happens (dispatch_if_needed does
+ * nothing unless another task is to run or the kernel has exited: no call). */
 void sil_host_unl_int(uint_t saved)
 {
 	cpu.sil_lock = saved;
 	if (saved == 0) {
 		irq_dispatch_pending();
-		dispatch_if_needed();
+		if (schedtsk != runtsk || kernel_exited)
+			dispatch_if_needed();
 	}
 }
 
@@ -85,10 +140,20 @@ static __attribute__((noinline)) uint32_t access_end_slow(uint32_t ns, uint32_t 
 	return v;
 }
 
+/* access_end_slow for an access through a cached route, which costs route_ns
+ * (loaded here, so that the fast path need not keep it). */
+static __attribute__((noinline)) uint32_t route_end_slow(uint32_t v)
+{
+	access_spend(route_ns);
+	access_done();
+	return v;
+}
+
 /* access_spend(ns) then access_done() for a timed-window access that read v;
  * returns v.  The common case, in which neither does more than advance the
- * clock and undo the deferral, takes no call and needs no frame. */
-static inline __attribute__((always_inline)) uint32_t access_end(uint32_t ns, uint32_t v)
+ * clock and undo the deferral, takes no call and needs no frame.  routed: the
+ * access went through a cached route, and ns is route_ns. */
+static inline __attribute__((always_inline)) uint32_t access_end(uint32_t ns, uint32_t v, bool routed)
 {
 	uint64_t end = now_ns + ns;
 
@@ -105,7 +170,7 @@ static inline __attribute__((always_inline)) uint32_t access_end(uint32_t ns, ui
 		cpu.irq_defer--;
 		return v;
 	}
-	return access_end_slow(ns, v);
+	return routed ? route_end_slow(v) : access_end_slow(ns, v);
 }
 
 /* True for a width of 1, 2 or 4 that mem is aligned to (width_bug reports the others). */
@@ -155,8 +220,9 @@ static __attribute__((noinline)) uint32_t read_other(const volatile void *mem, u
 	}
 }
 
-/* Reads a register of exact width: from the MMIO handler if it claims the address, else memory. */
-uint32_t sil_host_read(const volatile void *mem, uint_t width)
+/* sil_host_read of an access the route cache does not know: checked, then the
+ * timed window's read or read_other. */
+static __attribute__((noinline)) uint32_t read_uncached(const volatile void *mem, uint_t width)
 {
 	uint64_t cost_value;
 
@@ -168,7 +234,20 @@ uint32_t sil_host_read(const volatile void *mem, uint_t width)
 		return read_other(mem, width);
 	cpu.irq_defer++;
 	cost_value = timed_win.read(mem, width, timed_win.ctx);
-	return access_end((uint32_t)(cost_value >> 32), (uint32_t)cost_value);
+	return access_end((uint32_t)(cost_value >> 32), (uint32_t)cost_value, false);
+}
+
+/* Reads a register of exact width: from the MMIO handler if it claims the address, else memory. */
+uint32_t sil_host_read(const volatile void *mem, uint_t width)
+{
+	unsigned slot = route_slot(mem);
+	const struct rtos_host_mmio_route *rt;
+
+	if (!route_hit(&read_routes, slot, mem, width))
+		return read_uncached(mem, width);
+	rt = read_routes.route[slot];
+	cpu.irq_defer++;
+	return access_end(route_ns, rt->read(rt), true);
 }
 
 /* sil_host_write outside the timed window: to the handler if it claims mem, else memory. */
@@ -198,8 +277,9 @@ static __attribute__((noinline)) void write_other(volatile void *mem, uint_t wid
 	}
 }
 
-/* Writes a register of exact width: to the MMIO handler if it claims the address, else memory. */
-void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
+/* sil_host_write of an access the route cache does not know: checked, then the
+ * timed window's write or write_other. */
+static __attribute__((noinline)) void write_uncached(volatile void *mem, uint_t width, uint32_t data)
 {
 	if (!width_fast_ok(mem, width)) {
 		width_bug("sil_host_write", mem, width);
@@ -210,10 +290,27 @@ void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
 		return;
 	}
 	cpu.irq_defer++;
-	access_end(timed_win.write(mem, width, data, timed_win.ctx), 0);
+	access_end(timed_win.write(mem, width, data, timed_win.ctx), 0, false);
 }
 
-/* Recomputes timed_win from the handler, its window and its timed pair. */
+/* Writes a register of exact width: to the MMIO handler if it claims the address, else memory. */
+void sil_host_write(volatile void *mem, uint_t width, uint32_t data)
+{
+	unsigned slot = route_slot(mem);
+	const struct rtos_host_mmio_route *rt;
+
+	if (!route_hit(&write_routes, slot, mem, width)) {
+		write_uncached(mem, width, data);
+		return;
+	}
+	rt = write_routes.route[slot];
+	cpu.irq_defer++;
+	rt->write(rt, data);
+	access_end(route_ns, 0, true);
+}
+
+/* Recomputes timed_win from the handler, its window and its timed pair; the
+ * route cache is off until the handler turns it on again. */
 static void timed_win_update(void)
 {
 	bool on = mmio_ops != NULL && mmio_window_len != 0 && mmio_read_timed != NULL;
@@ -223,6 +320,8 @@ static void timed_win_update(void)
 	timed_win.read = mmio_read_timed;
 	timed_win.write = mmio_write_timed;
 	timed_win.ctx = on ? mmio_ops->ctx : NULL;
+	route_cache_on = false;
+	route_cache_clear();
 }
 
 /* Installs the MMIO handler (NULL: plain memory, no device windows). */
@@ -270,6 +369,43 @@ void rtos_host_set_mmio_timed(rtos_host_mmio_read_timed_fn read, rtos_host_mmio_
 	mmio_read_timed = read;
 	mmio_write_timed = write;
 	timed_win_update();
+}
+
+/* Turns the route cache on, emptied; its accesses cost access_ns. */
+void rtos_host_set_mmio_route_cache(uint32_t access_ns)
+{
+	if (timed_win.len == 0) {
+		rtos_host_bug("sil", "rtos_host_set_mmio_route_cache without a window and timed pair");
+		return;
+	}
+	route_ns = access_ns;
+	route_cache_on = true;
+	route_cache_clear();
+}
+
+/* Caches rt for width-byte accesses at addr in the direction write. */
+void rtos_host_mmio_route_cache_fill(bool write, const volatile void *addr, uint_t width,
+				     const struct rtos_host_mmio_route *rt)
+{
+	struct route_cache *c = write ? &write_routes : &read_routes;
+	unsigned slot = route_slot(addr);
+
+	if (!route_cache_on)
+		return;
+	if (rt == NULL || (write ? rt->write == NULL : rt->read == NULL) ||
+	    !width_fast_ok(addr, width) || (uintptr_t)addr - timed_win.start >= timed_win.len) {
+		rtos_host_bug("sil", "rtos_host_mmio_route_cache_fill: %s of %u bytes at %p is not an access to cache",
+			      write ? "write" : "read", width, (const void *)addr);
+		return;
+	}
+	c->addr[slot] = (uintptr_t)addr;
+	c->width[slot] = width;
+	c->route[slot] = rt;
+}
+
+void rtos_host_mmio_route_cache_clear(void)
+{
+	route_cache_clear();
 }
 
 /* The handler's window for [phys, phys+size), or NULL if none is modelled. */

@@ -1,7 +1,7 @@
 /*
  * test_window_cache.c — accesses through the CPU windows that repeat an
- * address (served from the window cache in space.c) behave as the first
- * one: hooks run every time, another width is still checked, a module
+ * address (served from the accessors' route cache, which space.c fills)
+ * behave as the first one: hooks run every time, another width is still checked, a module
  * powered off in between is still reported, and the register log started
  * or stopped in between sees exactly the accesses made while it is on.
  * Narrow accesses at byte lanes, repeated, reach their lanes and tell the

@@ -4,7 +4,9 @@
  * accesses a CPU lock or SIL lock covers and is taken at the unlock, a task an
  * ISR woke runs when the ISR returns (not at the ISR's accesses), a task whose
  * access reaches the run's deadline stops in it, and an event due exactly at
- * an access's end runs before the next access.
+ * an access's end runs before the next access.  All of it twice: through the
+ * timed pair alone, and with the route cache on (a repeated access calls its
+ * route directly, and must end the same way).
  */
 #include "tap.h"
 #include "rtos_test.h"
@@ -19,18 +21,47 @@ static uint32_t regs[16];   /* the fake device's registers, in the timed window 
 static uint64_t isr_at[4];
 static uint_t isr_count;
 static uint64_t high_start, locked_end, sil_end, event_at_ns, read_after_event, poll_stop;
+static bool routed;                     /* the timed pair caches a route for each access */
+static unsigned timed_calls, route_calls;
 
-/* A timed read: the register's value, costing ACCESS_NS. */
+/* A register's route, either direction. */
+struct reg_route {
+	struct rtos_host_mmio_route base;
+	volatile uint32_t *reg;
+};
+static struct reg_route read_routes[16], write_routes[16];
+
+static uint32_t route_read(const struct rtos_host_mmio_route *rt)
+{
+	route_calls++;
+	return *((const struct reg_route *)rt)->reg;
+}
+
+static void route_write(const struct rtos_host_mmio_route *rt, uint32_t data)
+{
+	route_calls++;
+	*((const struct reg_route *)rt)->reg = data;
+}
+
+/* A timed read: the register's value, costing ACCESS_NS; its route cached if routed. */
 static uint64_t read_timed(const volatile void *addr, uint_t width, void *ctx)
 {
-	(void)width; (void)ctx;
+	(void)ctx;
+	timed_calls++;
+	if (routed)
+		rtos_host_mmio_route_cache_fill(false, addr, width,
+						&read_routes[(const volatile uint32_t *)addr - regs].base);
 	return ((uint64_t)ACCESS_NS << 32) | *(const volatile uint32_t *)addr;
 }
 
-/* A timed write, costing ACCESS_NS. */
+/* A timed write, costing ACCESS_NS; its route cached if routed. */
 static uint32_t write_timed(volatile void *addr, uint_t width, uint32_t data, void *ctx)
 {
-	(void)width; (void)ctx;
+	(void)ctx;
+	timed_calls++;
+	if (routed)
+		rtos_host_mmio_route_cache_fill(true, addr, width,
+						&write_routes[(volatile uint32_t *)addr - regs].base);
 	*(volatile uint32_t *)addr = data;
 	return ACCESS_NS;
 }
@@ -135,28 +166,54 @@ static const struct rtos_cfg cfg = {
 	.name = "access_end", .tasks = RTOS_TABLE(tasks), .ints = RTOS_TABLE(ints), .isrs = RTOS_TABLE(isrs),
 };
 
-int main(void)
+/* Boots, runs the accesses above for 3 ms and checks how they ended. */
+static void run(bool with_routes)
 {
+	const char *how = with_routes ? "cached routes" : "timed pair";
 	uint64_t unlock_at;
 
-	tap_plan(8);
-	is_int(rtos_host_boot(&cfg), E_OK, "boot");
+	routed = with_routes;
+	isr_count = 0;
+	timed_calls = route_calls = 0;
+	regs[1] = 0;
+	is_int(rtos_host_boot(&cfg), E_OK, "boot (%s)", how);
 	rtos_host_set_mmio_handler(&fake_device);
 	rtos_host_set_mmio_window((uintptr_t)regs, sizeof(regs));
 	rtos_host_set_mmio_timed(read_timed, write_timed);
+	if (with_routes)
+		rtos_host_set_mmio_route_cache(ACCESS_NS);
 	rtos_host_run_for(3 * US * 1000);
-	is_u64(isr_at[0], 10 * US, "the ISR runs at the event");
-	is_u64(high_start, 10 * US + 5 * ACCESS_NS, "the task it woke runs when it returns, after its five accesses");
+	is_u64(isr_at[0], 10 * US, "the ISR runs at the event (%s)", how);
+	is_u64(high_start, 10 * US + 5 * ACCESS_NS,
+	       "the task it woke runs when it returns, after its five accesses (%s)", how);
 	unlock_at = 1000 * US + 10 * ACCESS_NS;
 	ok(locked_end == unlock_at && isr_at[1] == unlock_at,
-	   "raised under loc_cpu, the interrupt waits through the accesses and is taken at unl_cpu");
+	   "raised under loc_cpu, the interrupt waits through the accesses and is taken at unl_cpu (%s)", how);
 	ok(sil_end == unlock_at + 10 * ACCESS_NS && isr_at[2] == sil_end,
-	   "raised under the SIL lock, the same at SIL_UNL_INT");
+	   "raised under the SIL lock, the same at SIL_UNL_INT (%s)", how);
 	ok(event_at_ns == sil_end + ACCESS_NS && read_after_event == 7,
-	   "an event due at an access's end runs before the next access");
-	is_u64(poll_stop, 3 * US * 1000 - ACCESS_NS, "a task polling registers stops in the access that reaches the run's deadline");
-	is_u64(rtos_host_now(), 3 * US * 1000, "the run ends at its deadline");
+	   "an event due at an access's end runs before the next access (%s)", how);
+	is_u64(poll_stop, 3 * US * 1000 - ACCESS_NS,
+	       "a task polling registers stops in the access that reaches the run's deadline (%s)", how);
+	is_u64(rtos_host_now(), 3 * US * 1000, "the run ends at its deadline (%s)", how);
+	if (with_routes)
+		ok(timed_calls == 5 && route_calls > 1000,
+		   "each register's first access in each direction took the timed pair, the others its route "
+		   "(%u timed, %u routed)", timed_calls, route_calls);
+	else
+		ok(route_calls == 0 && timed_calls > 1000, "without the cache every access took the timed pair");
 	rtos_host_set_mmio_handler(NULL);
 	rtos_host_shutdown();
+}
+
+int main(void)
+{
+	tap_plan(18);
+	for (int i = 0; i < 16; i++) {
+		read_routes[i] = (struct reg_route){ { route_read, NULL }, &regs[i] };
+		write_routes[i] = (struct reg_route){ { NULL, route_write }, &regs[i] };
+	}
+	run(false);
+	run(true);
 	return tap_done();
 }
