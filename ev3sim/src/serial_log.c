@@ -36,30 +36,80 @@ const struct serial_log_stats *serial_log_get_stats(void)
 	return &port.stats;
 }
 
-/* Spins until the holding register is empty (polling the line status): a
- * spin preempted meanwhile finds the register empty when it resumes. */
-static void wait_holding_register(void)
+/* Records bytes buf[from..to) as sent (the far end's copy, the counts) with
+ * spin_ns of spinning and the line busy until free_at: what the kernel may
+ * let others see (a task preempting the writer, the end of the run). */
+static void record_sent(const char *buf, uint_t from, uint_t to, uint64_t free_at, uint64_t spin_ns)
 {
-	uint64_t now = rtos_host_now();
-
-	if (port.line_free_at > now + port.byte_ns)
-		port.stats.spin_ns += rtos_host_spin_until(port.line_free_at - port.byte_ns);
+	port.line_free_at = free_at;
+	port.stats.spin_ns += spin_ns;
+	port.stats.bytes += to - from;
+	if (port.out && to > from)
+		fwrite(buf + from, 1, to - from, port.out);
 }
 
-/* The polled write of buf[0..len) by the calling task (checked by the caller). */
+/*
+ * The polled write of buf[0..len) by the calling task (checked by the caller).
+ * Per byte the driver spins until the holding register is empty, then makes
+ * one register access.  A spin or access that ends before
+ * rtos_host_quiet_until() cannot be preempted and only moves the clock, so
+ * it is timed here, running ahead of the kernel's clock; the kernel catches
+ * up in one call: the next spin that reaches the quiet bound (spinning from
+ * the kernel's clock, it spins through the time ahead first: that time is
+ * counted already), or one spin to where the bytes left the clock.  An
+ * access that reaches the bound is the kernel's rtos_host_consume, as each
+ * was before: the times, counts and spin statistics are those of one
+ * rtos_host_spin_until and one rtos_host_consume per byte.
+ */
 ER_UINT serial_log_send(const char *buf, uint_t len)
 {
-	for (uint_t i = 0; i < len; i++) {
-		uint64_t now;
+	const uint64_t byte_ns = port.byte_ns;
+	uint64_t kernel_clock = rtos_host_now();
+	uint64_t clock = kernel_clock;          /* where the bytes so far left the CPU */
+	uint64_t quiet = rtos_host_quiet_until();
+	uint64_t free_at = port.line_free_at;
+	uint64_t spin_ns = 0;                   /* spun by bytes [recorded..i) */
+	uint_t recorded = 0;
 
-		wait_holding_register();
-		now = rtos_host_now();
-		port.line_free_at = (port.line_free_at > now ? port.line_free_at : now) + port.byte_ns;
-		rtos_host_consume(SERIAL_LOG_ACCESS_NS);
-		if (port.out)
-			fputc(buf[i], port.out);
-		port.stats.bytes++;
+	for (uint_t i = 0; i < len; i++) {
+		/* the holding register is empty once no more than one byte time is left on the line */
+		if (free_at > clock + byte_ns) {
+			uint64_t empty_at = free_at - byte_ns;
+
+			if (empty_at < quiet) {
+				spin_ns += empty_at - clock;
+				clock = empty_at;
+			} else {
+				uint64_t spun;
+
+				record_sent(buf, recorded, i, free_at, spin_ns);
+				recorded = i;
+				spin_ns = 0;
+				spun = rtos_host_spin_until(empty_at);
+				port.stats.spin_ns += spun - (clock - kernel_clock);
+				clock = kernel_clock = rtos_host_now();
+				quiet = rtos_host_quiet_until();
+				free_at = port.line_free_at;
+			}
+		}
+		free_at = (free_at > clock ? free_at : clock) + byte_ns;
+		if (clock + SERIAL_LOG_ACCESS_NS < quiet) {
+			clock += SERIAL_LOG_ACCESS_NS;
+		} else {
+			record_sent(buf, recorded, i, free_at, spin_ns);
+			recorded = i;
+			spin_ns = 0;
+			if (clock > kernel_clock)
+				rtos_host_spin_until(clock);
+			rtos_host_consume(SERIAL_LOG_ACCESS_NS);
+			clock = kernel_clock = rtos_host_now();
+			quiet = rtos_host_quiet_until();
+			free_at = port.line_free_at;
+		}
 	}
+	record_sent(buf, recorded, len, free_at, spin_ns);
+	if (clock > kernel_clock)
+		rtos_host_spin_until(clock);
 	port.stats.writes++;
 	return (ER_UINT)len;
 }

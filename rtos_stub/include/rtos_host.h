@@ -67,6 +67,15 @@ void rtos_host_consume(uint64_t ns);
  * caller itself spun (0 if t_ns has passed). */
 uint64_t rtos_host_spin_until(uint64_t t_ns);
 
+/* The time before which the calling task, at task level, spends CPU time
+ * with nothing but the clock advancing: no event falls due, the run's
+ * deadline is not reached, nothing is to be delivered or switched to.  Time
+ * spent before it by rtos_host_consume and rtos_host_spin_until only moves
+ * the clock, so one call to a time before it does what several would.  The
+ * clock itself when something may happen at once, before boot, or when the
+ * caller is not a task at task level. */
+uint64_t rtos_host_quiet_until(void);
+
 /* ---- CPU time of service calls and stalled tasks ---- */
 
 /*

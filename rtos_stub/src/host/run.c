@@ -288,6 +288,15 @@ uint64_t rtos_host_spin_until(uint64_t t_ns)
 	return spin_slow(t_ns);
 }
 
+/* The end of the stretch a task may spend with nothing but the clock moving
+ * (the fast paths of rtos_host_spin_until and rtos_host_consume). */
+uint64_t rtos_host_quiet_until(void)
+{
+	if (!consume_at_task_level() || !task_consume_quiet())
+		return now_ns;
+	return quiet_until;
+}
+
 /* rtos_host_consume when quiet_until comes first: before boot, or the run's
  * deadline before the end. */
 static __attribute__((noinline)) void consume_unquiet(uint64_t ns)
