@@ -382,6 +382,28 @@ void svc_charge(void);
  * it makes; returns the calling task (NULL in non-task context) for svc_ext_exit. */
 struct tcb *svc_ext_enter(FN fncd);
 void svc_ext_exit(struct tcb *caller);
+/* True if a task consuming time at task level would find nothing to do before
+ * the clock passes its end (which the caller checked is before quiet_until):
+ * no interrupt to deliver, no task to switch to, the kernel not ended. */
+static inline bool task_consume_quiet(void)
+{
+	return (irq_pending_lines == 0 || cpu.sil_lock != 0 || cpu.locked) && schedtsk == runtsk &&
+	       !kernel_exited;
+}
+/* rtos_host_consume from a task at task level (the charges of service calls):
+ * its quiet case inline, without the context checks the caller already made. */
+static inline void task_consume(uint64_t ns)
+{
+	uint64_t end = now_ns + ns;
+
+	/* (end < ns: the addition wrapped around) */
+	if (end < quiet_until && end >= ns && task_consume_quiet()) {
+		now_ns = end;
+		event_time_settled();
+		return;
+	}
+	rtos_host_consume(ns);
+}
 /* Starts the stall watch for a run of the harness (it ends with run_active). */
 void stall_watch_start(void);
 extern bool kernel_stalled;

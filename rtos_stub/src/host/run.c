@@ -250,15 +250,6 @@ static __attribute__((noinline)) void consume_slow(uint64_t ns)
 	busy_loop(true, ns, UINT64_MAX);
 }
 
-/* True if busy_loop's pass at task level would find nothing to do before now
- * + ns (no event falls due by then and the run's deadline is not reached,
- * checked by the caller): no interrupt to deliver, no task to switch to. */
-static inline bool task_consume_quiet(void)
-{
-	return (irq_pending_lines == 0 || cpu.sil_lock != 0 || cpu.locked) && schedtsk == runtsk &&
-	       !kernel_exited;
-}
-
 /* rtos_host_spin_until when something may stop the spin short of t_ns, or before boot. */
 static __attribute__((noinline)) uint64_t spin_slow(uint64_t t_ns)
 {
