@@ -158,7 +158,11 @@ static inline void irq_run(INTNO n)
 		rtos_host_trace("kernel", "isr %u enter", n);
 	if (n == INTNO_TICK)
 		tick_handler();
-	for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end;) {
+	if (l->nisrs == 1) {
+		/* most lines have one ISR (the tick, a GPIO bank, a UART): no list walk */
+		l->isrs[0].isr(l->isrs[0].exinf);
+		cpu.locked = false;
+	} else for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end;) {
 		e->isr(e->exinf);
 		cpu.locked = false;   /* TOPPERS releases a CPU lock an ISR returns with */
 		if (++e == end)
