@@ -125,8 +125,9 @@ void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exin
 	cpu.exec_id = saved_id;
 }
 
-/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order. */
-static inline void irq_run(INTNO n)
+/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order.
+ * Out of line: the delivery loop around it then saves no registers of its own. */
+static __attribute__((noinline)) void irq_run(INTNO n)
 {
 	struct irq_line *l = &lines[n];
 	enum exec_kind saved_kind = cpu.kind;

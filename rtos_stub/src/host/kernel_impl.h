@@ -12,7 +12,6 @@
 #define RTOS_HOST_KERNEL_IMPL_H
 
 #include <limits.h>
-#include <setjmp.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -89,9 +88,13 @@ extern struct cpu_state cpu;
 
 /* ---- Coroutines ---- */
 
+/* A resume point of GCC's __builtin_setjmp: frame pointer, resume address,
+ * stack pointer (five words, as GCC documents). */
+typedef void *co_resume_point[5];
+
 struct coroutine {
-	jmp_buf  jb;             /* where a suspended coroutine resumes */
-	jmp_buf  start_jb;       /* the entry point, kept for restarts */
+	co_resume_point jb;      /* where a suspended coroutine resumes */
+	co_resume_point start_jb;   /* the entry point, kept for restarts */
 	void    *map_base;       /* mmap'ed region including the guard page */
 	size_t   map_size;
 	void    *stack_lo;       /* usable stack [stack_lo, stack_lo + stack_size) */
