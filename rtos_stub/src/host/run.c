@@ -221,16 +221,19 @@ static inline __attribute__((always_inline)) uint64_t busy_loop(bool budgeted, u
 		limit = until;
 		if (budgeted && cpu_ns - spun < limit - now_ns)
 			limit = now_ns + (cpu_ns - spun);
-		/* Only a task can be suspended: ISRs and the harness share the thread's stack. */
-		if (task_level && run_active && run_deadline < limit)
-			limit = run_deadline > now_ns ? run_deadline : now_ns;
 		next = event_next_time();
-		if (next <= limit) {
+		/* At task level the run's deadline stops the time too; quiet_until is
+		 * the earlier of it and the next event, so an event that is quiet_until
+		 * comes no later than the deadline. */
+		if (next <= limit && (!task_level || next == quiet_until)) {
 			spun += next - now_ns;
 			now_ns = next;
 			event_run_next();
 			continue;
 		}
+		/* Only a task can be suspended: ISRs and the harness share the thread's stack. */
+		if (task_level && run_active && run_deadline < limit)
+			limit = run_deadline > now_ns ? run_deadline : now_ns;
 		spun += limit - now_ns;
 		now_ns = limit;
 		event_time_settled();
@@ -257,6 +260,9 @@ static __attribute__((noinline)) uint64_t spin_slow(uint64_t t_ns)
 		rtos_host_bug("spin", "rtos_host_spin_until before rtos_host_boot");
 		return 0;
 	}
+	/* two copies: in the second the bound is known finite, so its checks of the clock are one compare */
+	if (t_ns == UINT64_MAX)
+		return busy_loop(false, 0, UINT64_MAX);
 	return busy_loop(false, 0, t_ns);
 }
 
