@@ -51,7 +51,7 @@ static bool charge_applies(void)
 void svc_charge(void)
 {
 	if (cpu_cost.svc_ns != 0 && charge_applies())
-		rtos_host_consume(cpu_cost.svc_ns);
+		task_consume(cpu_cost.svc_ns);
 }
 
 /* cal_svc: charges the measured total of extended service fncd; the calls it makes are covered. */
@@ -63,7 +63,7 @@ struct tcb *svc_ext_enter(FN fncd)
 	if (cpu.kind != EXEC_TASK)
 		return NULL;
 	if (ns != 0 && charge_applies())
-		rtos_host_consume(ns);
+		task_consume(ns);
 	/* the task that called, even if another ran meanwhile */
 	caller = runtsk;
 	caller->nocharge_depth++;

@@ -483,20 +483,25 @@ void event_set_run_bound(uint64_t t_ns)
 	ev_head_set(event_head_time);
 }
 
-/* Takes event idx's function and *arg its argument, and releases it (its slot
- * has left the queue). */
-static inline rtos_host_event_fn ev_take(uint32_t idx, void **arg)
-{
-	rtos_host_event_fn fn = ev_pool[idx].fn;
+/* An event taken off the queue: what event_run_next calls (returned in two
+ * registers, so that no argument lives in memory across the selection). */
+struct ev_call {
+	rtos_host_event_fn fn;
+	void *arg;
+};
 
-	*arg = ev_pool[idx].arg;
+/* Takes event idx's call and releases it (its slot has left the queue). */
+static inline struct ev_call ev_take(uint32_t idx)
+{
+	struct ev_call c = { ev_pool[idx].fn, ev_pool[idx].arg };
+
 	ev_release(idx);
-	return fn;
+	return c;
 }
 
 /* event_run_next's step when the queue's head is the heap's root (the front is
- * empty): pops it and settles the head; returns its function, *arg its argument. */
-static __attribute__((noinline)) rtos_host_event_fn ev_take_heap_root(void **arg)
+ * empty): pops it, settles the head and returns its call. */
+static __attribute__((noinline)) struct ev_call ev_take_heap_root(void)
 {
 	uint32_t idx = ev_heap[0].idx;
 
@@ -504,15 +509,14 @@ static __attribute__((noinline)) rtos_host_event_fn ev_take_heap_root(void **arg
 	ev_pos_seq = ev_heap[0].seq;
 	ev_heap_pop();
 	ev_settle();
-	return ev_take(idx, arg);
+	return ev_take(idx);
 }
 
 /* Pops and runs the earliest event as the hardware; interrupts it raises are delivered after it. */
 void event_run_next(void)
 {
 	const struct ev_slot *head = ev_queue_head();
-	rtos_host_event_fn fn;
-	void *arg = NULL;
+	struct ev_call c;
 	enum exec_kind saved_kind = cpu.kind;
 	ID saved_id = cpu.exec_id;
 
@@ -521,7 +525,7 @@ void event_run_next(void)
 	if (ev_timer.time == now_ns && (head == NULL || ev_before(&ev_timer, head))) {
 		ev_pos_time = ev_timer.time;
 		ev_pos_seq = ev_timer.seq;
-		fn = ev_timer_fn;
+		c = (struct ev_call){ ev_timer_fn, NULL };
 		ev_timer.time = UINT64_MAX;
 		ev_head_set(head != NULL ? head->time : UINT64_MAX);
 	} else if (ev_front_len > 0) {
@@ -532,14 +536,14 @@ void event_run_next(void)
 		ev_front_len--;
 		/* the event is off the queue: settling first does not look at it */
 		ev_settle();
-		fn = ev_take(idx, &arg);
+		c = ev_take(idx);
 	} else {
-		fn = ev_take_heap_root(&arg);
+		c = ev_take_heap_root();
 	}
 	cpu.kind = EXEC_EVENT;
 	cpu.exec_id = 0;
 	cpu.irq_defer++;
-	fn(arg);
+	c.fn(c.arg);
 	cpu.irq_defer--;
 	cpu.kind = saved_kind;
 	cpu.exec_id = saved_id;

@@ -125,8 +125,9 @@ void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exin
 	cpu.exec_id = saved_id;
 }
 
-/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order. */
-static inline void irq_run(INTNO n)
+/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order.
+ * Out of line: the delivery loop around it then saves no registers of its own. */
+static __attribute__((noinline)) void irq_run(INTNO n)
 {
 	struct irq_line *l = &lines[n];
 	enum exec_kind saved_kind = cpu.kind;
@@ -158,7 +159,11 @@ static inline void irq_run(INTNO n)
 		rtos_host_trace("kernel", "isr %u enter", n);
 	if (n == INTNO_TICK)
 		tick_handler();
-	for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end;) {
+	if (l->nisrs == 1) {
+		/* most lines have one ISR (the tick, a GPIO bank, a UART): no list walk */
+		l->isrs[0].isr(l->isrs[0].exinf);
+		cpu.locked = false;
+	} else for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end;) {
 		e->isr(e->exinf);
 		cpu.locked = false;   /* TOPPERS releases a CPU lock an ISR returns with */
 		if (++e == end)

@@ -12,7 +12,6 @@
 #define RTOS_HOST_KERNEL_IMPL_H
 
 #include <limits.h>
-#include <setjmp.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -89,9 +88,13 @@ extern struct cpu_state cpu;
 
 /* ---- Coroutines ---- */
 
+/* A resume point of GCC's __builtin_setjmp: frame pointer, resume address,
+ * stack pointer (five words, as GCC documents). */
+typedef void *co_resume_point[5];
+
 struct coroutine {
-	jmp_buf  jb;             /* where a suspended coroutine resumes */
-	jmp_buf  start_jb;       /* the entry point, kept for restarts */
+	co_resume_point jb;      /* where a suspended coroutine resumes */
+	co_resume_point start_jb;   /* the entry point, kept for restarts */
 	void    *map_base;       /* mmap'ed region including the guard page */
 	size_t   map_size;
 	void    *stack_lo;       /* usable stack [stack_lo, stack_lo + stack_size) */
@@ -382,6 +385,28 @@ void svc_charge(void);
  * it makes; returns the calling task (NULL in non-task context) for svc_ext_exit. */
 struct tcb *svc_ext_enter(FN fncd);
 void svc_ext_exit(struct tcb *caller);
+/* True if a task consuming time at task level would find nothing to do before
+ * the clock passes its end (which the caller checked is before quiet_until):
+ * no interrupt to deliver, no task to switch to, the kernel not ended. */
+static inline bool task_consume_quiet(void)
+{
+	return (irq_pending_lines == 0 || cpu.sil_lock != 0 || cpu.locked) && schedtsk == runtsk &&
+	       !kernel_exited;
+}
+/* rtos_host_consume from a task at task level (the charges of service calls):
+ * its quiet case inline, without the context checks the caller already made. */
+static inline void task_consume(uint64_t ns)
+{
+	uint64_t end = now_ns + ns;
+
+	/* (end < ns: the addition wrapped around) */
+	if (end < quiet_until && end >= ns && task_consume_quiet()) {
+		now_ns = end;
+		event_time_settled();
+		return;
+	}
+	rtos_host_consume(ns);
+}
 /* Starts the stall watch for a run of the harness (it ends with run_active). */
 void stall_watch_start(void);
 extern bool kernel_stalled;

@@ -221,16 +221,19 @@ static inline __attribute__((always_inline)) uint64_t busy_loop(bool budgeted, u
 		limit = until;
 		if (budgeted && cpu_ns - spun < limit - now_ns)
 			limit = now_ns + (cpu_ns - spun);
-		/* Only a task can be suspended: ISRs and the harness share the thread's stack. */
-		if (task_level && run_active && run_deadline < limit)
-			limit = run_deadline > now_ns ? run_deadline : now_ns;
 		next = event_next_time();
-		if (next <= limit) {
+		/* At task level the run's deadline stops the time too; quiet_until is
+		 * the earlier of it and the next event, so an event that is quiet_until
+		 * comes no later than the deadline. */
+		if (next <= limit && (!task_level || next == quiet_until)) {
 			spun += next - now_ns;
 			now_ns = next;
 			event_run_next();
 			continue;
 		}
+		/* Only a task can be suspended: ISRs and the harness share the thread's stack. */
+		if (task_level && run_active && run_deadline < limit)
+			limit = run_deadline > now_ns ? run_deadline : now_ns;
 		spun += limit - now_ns;
 		now_ns = limit;
 		event_time_settled();
@@ -250,15 +253,6 @@ static __attribute__((noinline)) void consume_slow(uint64_t ns)
 	busy_loop(true, ns, UINT64_MAX);
 }
 
-/* True if busy_loop's pass at task level would find nothing to do before now
- * + ns (no event falls due by then and the run's deadline is not reached,
- * checked by the caller): no interrupt to deliver, no task to switch to. */
-static inline bool task_consume_quiet(void)
-{
-	return (irq_pending_lines == 0 || cpu.sil_lock != 0 || cpu.locked) && schedtsk == runtsk &&
-	       !kernel_exited;
-}
-
 /* rtos_host_spin_until when something may stop the spin short of t_ns, or before boot. */
 static __attribute__((noinline)) uint64_t spin_slow(uint64_t t_ns)
 {
@@ -266,6 +260,9 @@ static __attribute__((noinline)) uint64_t spin_slow(uint64_t t_ns)
 		rtos_host_bug("spin", "rtos_host_spin_until before rtos_host_boot");
 		return 0;
 	}
+	/* two copies: in the second the bound is known finite, so its checks of the clock are one compare */
+	if (t_ns == UINT64_MAX)
+		return busy_loop(false, 0, UINT64_MAX);
 	return busy_loop(false, 0, t_ns);
 }
 
