@@ -183,8 +183,10 @@ static void pin_state_of(unsigned pin, struct hs_pin_state *st)
 	st->contention = p->contention;
 }
 
-/* Recomputes pin from both sides; handles edges, interrupts, trace, watchers. */
-static void pin_resolve(unsigned pin, bool notify)
+/* pin_resolve; input: the caller saw the pin's DIR bit set (the SoC does not
+ * drive it), which lets a constant true fold the SoC side away (a motor's tacho
+ * edges, thousands per second, resolve input pins). */
+static inline __attribute__((always_inline)) void pin_resolve_as(unsigned pin, bool notify, bool input)
 {
 	struct pin *p = &g.pins[pin];
 	unsigned pair = pin / 32U, bit = pin % 32U;
@@ -195,8 +197,8 @@ static void pin_resolve(unsigned pin, bool notify)
 	if (!g.region)
 		return;
 	p->muxed = pin_muxed(pin);
-	drives = p->muxed && !(pair_reg(pair, R_DIR) & m);
-	out = (pair_reg(pair, R_OUT_DATA) & m) != 0;
+	drives = !input && p->muxed && !(pair_reg(pair, R_DIR) & m);
+	out = drives && (pair_reg(pair, R_OUT_DATA) & m) != 0;
 	if (drives)
 		level = out;
 	else
@@ -234,6 +236,12 @@ static void pin_resolve(unsigned pin, bool notify)
 		for (int16_t w = p->first_watch; w >= 0; w = g.watches[w].next)
 			g.watches[w].fn(g.watches[w].ctx, pin, &st);
 	}
+}
+
+/* Recomputes pin from both sides; handles edges, interrupts, trace, watchers. */
+static void pin_resolve(unsigned pin, bool notify)
+{
+	pin_resolve_as(pin, notify, false);
 }
 
 /* DIR/OUT_DATA/SET_DATA/CLR_DATA written: resolve the pins whose bits changed. */
@@ -393,7 +401,10 @@ void hs_gpio_drive(unsigned pin, enum hs_pin_ext ext)
 		return;
 	p->ext = (uint8_t)ext;
 	pin_trace_declare(pin);
-	pin_resolve(pin, true);
+	if ((pair_reg(pin / 32U, R_DIR) & (1U << (pin % 32U))))
+		pin_resolve_as(pin, true, true);
+	else
+		pin_resolve(pin, true);
 }
 
 void hs_gpio_set_input(unsigned pin, int level)
