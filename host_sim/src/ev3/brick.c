@@ -144,11 +144,9 @@ static inline uint32_t input_pin6_mv(unsigned port)
 	bool lvl;
 	unsigned pin6 = ev3_input_pins[port].pin6;
 
-	if (hs_gpio_soc_output(pin6, &lvl))
-		return lvl ? LOGIC_HIGH_MV : 0U;
-	if (effective_kind(&brick.in[port]) == EV3_INPUT_EV3_TOUCH)
+	if (!hs_gpio_soc_output_or_level(pin6, &lvl) && effective_kind(&brick.in[port]) == EV3_INPUT_EV3_TOUCH)
 		return brick.in[port].contact ? 5000U : 0U;
-	return hs_gpio_level(pin6) ? LOGIC_HIGH_MV : 0U;
+	return lvl ? LOGIC_HIGH_MV : 0U;
 }
 
 /* Voltage of an input pin now. */

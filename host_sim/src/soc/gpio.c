@@ -434,6 +434,23 @@ bool hs_gpio_soc_output(unsigned pin, bool *level)
 	return known && g.pins[pin].soc_drives;
 }
 
+bool hs_gpio_soc_output_or_level(unsigned pin, bool *level)
+{
+	const struct pin *p;
+
+	if (!pin_ok(pin, "hs_gpio_soc_output_or_level")) {
+		*level = false;
+		return false;
+	}
+	p = &g.pins[pin];
+	if (!p->soc_drives) {
+		*level = p->level;
+		return false;
+	}
+	*level = (pair_reg(pin / 32U, R_OUT_DATA) >> (pin % 32U)) & 1U;
+	return true;
+}
+
 int hs_gpio_watch(unsigned pin, hs_pin_watch_fn fn, void *ctx)
 {
 	if (!pin_ok(pin, "hs_gpio_watch") || !fn)
