@@ -148,20 +148,25 @@ static uint32_t pair_reg(unsigned pair, uint32_t r)
 	return *g.pair_val[pair][r / 4U];
 }
 
-/* Makes the pin visible in traces. */
-static void pin_trace_declare(unsigned pin)
+/* pin_trace_declare's first activity: out of line, so that the resolve, which
+ * asks on every change, keeps no name buffer. */
+static __attribute__((noinline)) void pin_trace_declare_first(unsigned pin)
 {
 	char name[8];
 
+	g.pins[pin].sig = hs_trace_signal("gpio", hs_gpio_name(pin, name), 1);
+}
+
+/* Makes the pin visible in traces. */
+static inline void pin_trace_declare(unsigned pin)
+{
 	if (!g.pins[pin].sig)
-		g.pins[pin].sig = hs_trace_signal("gpio", hs_gpio_name(pin, name), 1);
+		pin_trace_declare_first(pin);
 }
 
 /* Records the pin's level (or 'z' when nothing drives it) in its trace signal. */
-static inline void pin_trace(unsigned pin)
+static inline void pin_trace(const struct pin *p)
 {
-	struct pin *p = &g.pins[pin];
-
 	if (!p->sig)
 		return;
 	if (!p->soc_drives && p->ext == HS_EXT_FLOAT)
@@ -183,6 +188,27 @@ static void pin_state_of(unsigned pin, struct hs_pin_state *st)
 	st->contention = p->contention;
 }
 
+/* Reports a pin starting to be driven against the SoC's out level (out of
+ * line, as pin_notify). */
+static __attribute__((noinline)) void contention_report(unsigned pin, bool out)
+{
+	char name[8];
+
+	rtos_host_trace("host_sim", "gpio %s: contention, SoC drives %d against an external %s",
+			hs_gpio_name(pin, name), out, out ? "low" : "high");
+}
+
+/* Tells the pin's watchers its state: out of line, so that the resolve of
+ * an unwatched pin (a tacho edge) keeps no state on its stack. */
+static __attribute__((noinline)) void pin_notify(unsigned pin)
+{
+	struct hs_pin_state st;
+
+	pin_state_of(pin, &st);
+	for (int16_t w = g.pins[pin].first_watch; w >= 0; w = g.watches[w].next)
+		g.watches[w].fn(g.watches[w].ctx, pin, &st);
+}
+
 /* pin_resolve; input: the caller saw the pin's DIR bit set (the SoC does not
  * drive it), which lets a constant true fold the SoC side away (a motor's tacho
  * edges, thousands per second, resolve input pins). */
@@ -194,7 +220,7 @@ static inline __attribute__((always_inline)) void pin_resolve_as(unsigned pin, b
 	bool out, drives, level, changed;
 	bool old_drives = p->soc_drives, old_level = p->level, old_cont = p->contention;
 
-	if (!g.region)
+	if (!input && !g.region)    /* input: the caller saw the region's DIR */
 		return;
 	p->muxed = pin_muxed(pin);
 	drives = !input && p->muxed && !(pair_reg(pair, R_DIR) & m);
@@ -206,12 +232,8 @@ static inline __attribute__((always_inline)) void pin_resolve_as(unsigned pin, b
 	p->soc_drives = drives;
 	p->level = level;
 	p->contention = drives && ((p->ext == HS_EXT_LOW && out) || (p->ext == HS_EXT_HIGH && !out));
-	if (p->contention && !old_cont) {
-		char name[8];
-
-		rtos_host_trace("host_sim", "gpio %s: contention, SoC drives %d against an external %s",
-				hs_gpio_name(pin, name), out, out ? "low" : "high");
-	}
+	if (p->contention && !old_cont)
+		contention_report(pin, out);
 	if (drives)
 		pin_trace_declare(pin);
 	changed = level != old_level;
@@ -228,14 +250,9 @@ static inline __attribute__((always_inline)) void pin_resolve_as(unsigned pin, b
 				hs_intc_raise(HS_GPIO_BANK_INTNO(bank));
 		}
 	}
-	pin_trace(pin);
-	if (p->first_watch >= 0 && (notify || changed || drives != old_drives || p->contention != old_cont)) {
-		struct hs_pin_state st;
-
-		pin_state_of(pin, &st);
-		for (int16_t w = p->first_watch; w >= 0; w = g.watches[w].next)
-			g.watches[w].fn(g.watches[w].ctx, pin, &st);
-	}
+	pin_trace(p);
+	if (p->first_watch >= 0 && (notify || changed || drives != old_drives || p->contention != old_cont))
+		pin_notify(pin);
 }
 
 /* Recomputes pin from both sides; handles edges, interrupts, trace, watchers. */
@@ -463,7 +480,7 @@ int hs_gpio_watch(unsigned pin, hs_pin_watch_fn fn, void *ctx)
 			g.watches[i].next = g.pins[pin].first_watch;
 			g.pins[pin].first_watch = (int16_t)i;
 			pin_trace_declare(pin);
-			pin_trace(pin);
+			pin_trace(&g.pins[pin]);
 			return (int)i + 1;
 		}
 	}
