@@ -96,6 +96,8 @@ static uint32_t half_value(const struct half *h, uint64_t hz, uint32_t prd, bool
 		return (uint32_t)n;
 	if (one_shot)
 		return n > prd ? prd : (uint32_t)n;
+	if (prd == UINT32_MAX)                    /* the free-running stamp: the wrap is the cast's */
+		return (uint32_t)n;
 	return (uint32_t)(n % ((uint64_t)prd + 1U));
 }
 
