@@ -49,9 +49,8 @@ struct pin {
 	bool muxed;
 	bool contention;
 	bool mux_reported;
-	bool mux_known;             /* pin_mux_field knows its PINMUX field */
-	uint8_t mux_shift;
-	const uint32_t *mux_reg;    /* that PINMUX register's stored value (NULL: no SYSCFG0) */
+	uint8_t mux_shift;          /* pin_muxed reads the field at mux_shift of *mux_reg */
+	const uint32_t *mux_reg;
 	int16_t first_watch;        /* index into watches, -1 for none */
 	struct hs_signal *sig;      /* declared on first activity */
 };
@@ -118,27 +117,35 @@ void hs_gpio_mux_as_gpio(unsigned pin)
 		hs_reg_update(syscfg0, 0x120U + 4U * reg, 0xFU << shift, GPIO_MUX_FUNC << shift);
 }
 
-/* true if pin is muxed to GPIO (or its mux is not known here); every
- * resolve asks, so the field's place is found once (pin_mux_locate). */
+/* PINMUX words pin_muxed reads for a pin whose field it does not consult: one
+ * selecting GPIO at bits 3:0 (the mux is not known here, or not checked), one
+ * selecting nothing (no SYSCFG0 to read it from). */
+static const uint32_t mux_word_gpio = GPIO_MUX_FUNC;
+static const uint32_t mux_word_none;
+
+/* true if pin is muxed to GPIO (or its mux is not known here, or not checked);
+ * every resolve asks, so pin_mux_locate finds once what to read: one field,
+ * no branch. */
 static inline bool pin_muxed(unsigned pin)
 {
 	const struct pin *p = &g.pins[pin];
 
-	if (!g.pinmux_check || !p->mux_known)
-		return true;
-	return p->mux_reg != NULL && ((*p->mux_reg >> p->mux_shift) & 0xFU) == GPIO_MUX_FUNC;
+	return ((*p->mux_reg >> p->mux_shift) & 0xFU) == GPIO_MUX_FUNC;
 }
 
-/* Finds where pin's PINMUX field is stored, for pin_muxed. */
+/* Finds where pin's PINMUX field is stored, for pin_muxed (g.pinmux_check set). */
 static void pin_mux_locate(unsigned pin)
 {
 	struct pin *p = &g.pins[pin];
 	unsigned reg, shift;
 
-	p->mux_known = pin_mux_field(pin, &reg, &shift);
-	if (p->mux_known) {
+	p->mux_reg = &mux_word_gpio;
+	p->mux_shift = 0;
+	if (g.pinmux_check && pin_mux_field(pin, &reg, &shift)) {
+		const uint32_t *word = hs_syscfg_pinmux_ptr(reg);
+
+		p->mux_reg = word != NULL ? word : &mux_word_none;
 		p->mux_shift = (uint8_t)shift;
-		p->mux_reg = hs_syscfg_pinmux_ptr(reg);
 	}
 }
 
@@ -352,11 +359,11 @@ ER hs_gpio_create(bool cold, bool pinmux_check)
 	struct hs_region *sys0;
 
 	memset(&g, 0, sizeof(g));
+	g.pinmux_check = pinmux_check;
 	for (unsigned i = 0; i < HS_GPIO_NPINS; i++) {
 		g.pins[i].first_watch = -1;
 		pin_mux_locate(i);
 	}
-	g.pinmux_check = pinmux_check;
 	g.region = hs_region_add(&(struct hs_region_cfg){
 		.name = "GPIO", .phys = HS_GPIO_BASE, .size = 0x1000,
 		.regs = gpio_regs, .nregs = HS_ARRAY_SIZE(gpio_regs),
