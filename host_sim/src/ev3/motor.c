@@ -206,12 +206,14 @@ static int64_t floor_i64(double x)
 	return (double)i > x ? i - 1 : i;
 }
 
-/* ceil(x) as an integer, for 0 <= x < 2^64, without libm's call. */
-static uint64_t ceil_u64(double x)
+/* ceil(x) as an integer, for 0 <= x < 2^63, without libm's call; the signed
+ * conversions are single instructions (the unsigned ones branch around them)
+ * and give the same values in that range. */
+static uint64_t ceil_u63(double x)
 {
-	uint64_t c = (uint64_t)x;
+	int64_t c = (int64_t)x;
 
-	return (double)c < x ? c + 1 : c;
+	return (uint64_t)((double)c < x ? c + 1 : c);
 }
 
 /* Half-count index of an angle in rad: 720 half-counts per revolution. */
@@ -276,9 +278,9 @@ static void motor_schedule_edge(struct hs_motor *m)
 		dt = 0;
 	/* Compare in double first: at a near-zero rate dt is astronomically large,
 	 * and converting it to uint64_t ns would overflow into an edge "now". */
-	if (dt * 1e9 > (double)(m->seg_t1 - m->seg_t0))
+	if (dt * 1e9 > (double)(int64_t)(m->seg_t1 - m->seg_t0))   /* a segment lasts far less than 2^63 ns */
 		return;
-	t = m->seg_t0 + ceil_u64(dt * 1e9);
+	t = m->seg_t0 + ceil_u63(dt * 1e9);
 	if (t > m->seg_t1)
 		return;
 	m->edge_ev = hs_event_at(t, edge_due, m);   /* an edge already passed is due now */
