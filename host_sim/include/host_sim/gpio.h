@@ -73,6 +73,9 @@ bool hs_gpio_level(unsigned pin);
 void hs_gpio_state(unsigned pin, struct hs_pin_state *st);
 /* true if the SoC drives the pin; *level receives the driven level. */
 bool hs_gpio_soc_output(unsigned pin, bool *level);
+/* hs_gpio_soc_output, with *level the resolved level (hs_gpio_level) when
+ * the SoC does not drive the pin: one call for a model that needs either. */
+bool hs_gpio_soc_output_or_level(unsigned pin, bool *level);
 
 /* Calls fn on every change of pin; returns a handle > 0, or 0 if out of slots. */
 int hs_gpio_watch(unsigned pin, hs_pin_watch_fn fn, void *ctx);

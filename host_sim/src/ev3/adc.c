@@ -2,18 +2,21 @@
  * adc.c — the EV3's analog-to-digital converter, a TI ADS7957 in manual
  * mode on SPI0 (spi_adc.h; ADS7957 data sheet, "Manual mode"): each frame
  * shifts out the conversion of the channel selected two frames before.
- * The voltages come from the board's analog front end (ev3_adc_channel_mv).
+ * The voltages come from the board's analog front end (ev3_adc_channel_source).
  */
 #include <math.h>
 #include "rtos_host.h"
 #include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/spi_adc.h"
 
+#define ADS7957_CHANNELS 16U
+
 static struct {
 	unsigned next;              /* channel selected by the previous frame */
 	uint16_t result;            /* conversion shifted out in the next frame */
 	bool range_5v;
 	const double *noise_mv;     /* the board's ADC noise (ev3_adc_noise_mv_ref) */
+	struct ev3_adc_source source[ADS7957_CHANNELS];   /* what each channel measures */
 } adc;
 
 /* ADS7957 output word for mV of the 0-5 V scale (full scale and above: 1023):
@@ -62,8 +65,9 @@ static inline uint64_t adc_sample_mv(uint32_t mv)
 static uint16_t adc_frame(void *ctx, uint16_t cmd)
 {
 	uint16_t out = adc.result;
+	const struct ev3_adc_source *src = &adc.source[adc.next];
 
-	adc.result = ads7957_word_of(adc.next, adc_sample_mv(ev3_adc_channel_mv(adc.next)));
+	adc.result = ads7957_word_of(adc.next, adc_sample_mv(src->mv(src->arg)));
 	if ((cmd & 0xF800U) == 0x1800U) {               /* mode 1 with bit 11: a new channel */
 		adc.next = (cmd >> 7) & 0xFU;
 		adc.range_5v = cmd & 0x0040U;
@@ -82,6 +86,8 @@ static ER adc_create(const struct hs_board_cfg *cfg, void **ctx)
 	adc.result = 0;
 	adc.range_5v = true;
 	adc.noise_mv = ev3_adc_noise_mv_ref();
+	for (unsigned ch = 0; ch < ADS7957_CHANNELS; ch++)
+		adc.source[ch] = ev3_adc_channel_source(ch);
 	hs_spi_connect(0, &(struct hs_spi_peer){ .frame = adc_frame });
 	*ctx = &adc;
 	return E_OK;

@@ -144,11 +144,9 @@ static inline uint32_t input_pin6_mv(unsigned port)
 	bool lvl;
 	unsigned pin6 = ev3_input_pins[port].pin6;
 
-	if (hs_gpio_soc_output(pin6, &lvl))
-		return lvl ? LOGIC_HIGH_MV : 0U;
-	if (effective_kind(&brick.in[port]) == EV3_INPUT_EV3_TOUCH)
+	if (!hs_gpio_soc_output_or_level(pin6, &lvl) && effective_kind(&brick.in[port]) == EV3_INPUT_EV3_TOUCH)
 		return brick.in[port].contact ? 5000U : 0U;
-	return hs_gpio_level(pin6) ? LOGIC_HIGH_MV : 0U;
+	return lvl ? LOGIC_HIGH_MV : 0U;
 }
 
 /* Voltage of an input pin now. */
@@ -503,9 +501,8 @@ static uint8_t adc_source[ADC_CHANNELS];
 static bool adc_source_built;
 
 /* Builds adc_source from the wiring tables (the first port naming a channel
- * wins, input pins before output pins); out of line, so the per-frame
- * caller does not carry its loop. */
-static __attribute__((noinline)) void adc_sources_build(void)
+ * wins, input pins before output pins). */
+static void adc_sources_build(void)
 {
 	for (unsigned ch = 0; ch < ADC_CHANNELS; ch++) {
 		adc_source[ch] = ADC_BRICK;
@@ -522,23 +519,26 @@ static __attribute__((noinline)) void adc_sources_build(void)
 	adc_source_built = true;
 }
 
-/* ev3_adc_channel_mv's input pin 6 channels: out of line (it calls the GPIO
- * model), so the dispatch saves no registers on the other channels' way. */
-static __attribute__((noinline)) uint32_t adc_input_pin6_mv(unsigned port)
+/* ev3_adc_channel_source's functions: an input port's pin 1 and pin 6, a
+ * brick quantity (battery, motor current, temperature) by channel. */
+static uint32_t adc_input_pin1_mv(unsigned port)
+{
+	return input_pin1_mv(&brick.in[port]);
+}
+
+static uint32_t adc_input_pin6_mv(unsigned port)
 {
 	return input_pin6_mv(port);
 }
 
-/* ev3_adc_channel_mv's brick channels (battery, motor current, temperature):
- * out of line, as adc_input_pin6_mv. */
-static __attribute__((noinline)) uint32_t adc_brick_mv(unsigned ch)
+static uint32_t adc_brick_mv(unsigned ch)
 {
 	return ev3_power_adc_mv(ch, ch == EV3_ADC_MOTOR_CURRENT || ch == EV3_ADC_BATTERY_CURRENT ||
 				     ch == EV3_ADC_BATTERY_VOLTAGE ? ev3_motors_current_a() : 0);
 }
 
-/* Voltage of an ADC channel (LEGO's d_analog.c channel map). */
-uint32_t ev3_adc_channel_mv(unsigned ch)
+/* What an ADC channel measures (LEGO's d_analog.c channel map). */
+struct ev3_adc_source ev3_adc_channel_source(unsigned ch)
 {
 	unsigned src;
 
@@ -547,14 +547,22 @@ uint32_t ev3_adc_channel_mv(unsigned ch)
 	src = ch < ADC_CHANNELS ? adc_source[ch] : ADC_BRICK;
 	switch (src & 0xF0U) {
 	case ADC_IN_PIN1:
-		return input_pin1_mv(&brick.in[src & 0xFU]);
+		return (struct ev3_adc_source){ adc_input_pin1_mv, src & 0xFU };
 	case ADC_IN_PIN6:
-		return adc_input_pin6_mv(src & 0xFU);
+		return (struct ev3_adc_source){ adc_input_pin6_mv, src & 0xFU };
 	case ADC_OUT_PIN5:
-		return ev3_output_pin5_mv(src & 0xFU);
+		return (struct ev3_adc_source){ ev3_output_pin5_mv, src & 0xFU };
 	default:
-		return adc_brick_mv(ch);
+		return (struct ev3_adc_source){ adc_brick_mv, ch };
 	}
+}
+
+/* Voltage of an ADC channel. */
+uint32_t ev3_adc_channel_mv(unsigned ch)
+{
+	struct ev3_adc_source src = ev3_adc_channel_source(ch);
+
+	return src.mv(src.arg);
 }
 
 /* Sum of the motor currents now, amperes. */

@@ -198,23 +198,6 @@ static void quad_levels(int64_t h, bool *int_lvl, bool *dir_lvl)
 	*dir_lvl = q == 2 || q == 3;
 }
 
-/* Shows quadrature index h on the INT and DIR pins (only changed pins are driven). */
-static void show_index(struct hs_motor *m, int64_t h)
-{
-	bool il, dl;
-
-	m->shown = h;
-	quad_levels(h, &il, &dl);
-	if (il != m->int_level) {
-		m->int_level = il;
-		hs_gpio_drive(m->pins->tacho_int, il ? HS_EXT_HIGH : HS_EXT_LOW);
-	}
-	if (dl != m->dir_level) {
-		m->dir_level = dl;
-		hs_gpio_drive(m->pins->tacho_dir, dl ? HS_EXT_HIGH : HS_EXT_LOW);
-	}
-}
-
 /* floor(x) as an integer, for |x| < 2^63, without libm's call (a step sets it, an edge reads it). */
 static int64_t floor_i64(double x)
 {
@@ -223,18 +206,39 @@ static int64_t floor_i64(double x)
 	return (double)i > x ? i - 1 : i;
 }
 
-/* ceil(x) as an integer, for 0 <= x < 2^64, without libm's call. */
-static uint64_t ceil_u64(double x)
+/* ceil(x) as an integer, for 0 <= x < 2^63, without libm's call; the signed
+ * conversions are single instructions (the unsigned ones branch around them)
+ * and give the same values in that range. */
+static uint64_t ceil_u63(double x)
 {
-	uint64_t c = (uint64_t)x;
+	int64_t c = (int64_t)x;
 
-	return (double)c < x ? c + 1 : c;
+	return (uint64_t)((double)c < x ? c + 1 : c);
 }
 
 /* Half-count index of an angle in rad: 720 half-counts per revolution. */
 static int64_t index_of(double theta)
 {
 	return floor_i64(theta / RAD_PER_DEG * 2.0);
+}
+
+/* Shows quadrature index m->shown + dir (dir +1 or -1) on the INT and DIR
+ * pins, which show m->shown (int_level and dir_level follow it; a glitch
+ * drives INT without changing them).  The quadrature is a Gray code: one pin
+ * changes per step, INT on a step from an even index up or to one down (00-10
+ * and 11-01 going forward), DIR on the others. */
+static void show_step(struct hs_motor *m, int64_t dir)
+{
+	int64_t lower = dir > 0 ? m->shown : m->shown - 1;
+
+	m->shown += dir;
+	if ((lower & 1) == 0) {
+		m->int_level = !m->int_level;
+		hs_gpio_drive(m->pins->tacho_int, m->int_level ? HS_EXT_HIGH : HS_EXT_LOW);
+	} else {
+		m->dir_level = !m->dir_level;
+		hs_gpio_drive(m->pins->tacho_dir, m->dir_level ? HS_EXT_HIGH : HS_EXT_LOW);
+	}
 }
 
 /* Brings the pins to the angle at time t (emitting any missed edges in order). */
@@ -245,7 +249,7 @@ static void catch_up(struct hs_motor *m, uint64_t t)
 	if (m->stuck)
 		return;
 	while (m->shown != target)
-		show_index(m, m->shown + (target > m->shown ? 1 : -1));
+		show_step(m, target > m->shown ? 1 : -1);
 }
 
 /* Event: the next tacho edge. */
@@ -255,7 +259,7 @@ static void edge_due(void *arg)
 
 	m->edge_ev = 0;
 	if (!m->stuck)
-		show_index(m, m->shown + (m->seg_rate > 0 ? 1 : -1));
+		show_step(m, m->seg_rate > 0 ? 1 : -1);
 	motor_schedule_edge(m);
 }
 
@@ -274,9 +278,9 @@ static void motor_schedule_edge(struct hs_motor *m)
 		dt = 0;
 	/* Compare in double first: at a near-zero rate dt is astronomically large,
 	 * and converting it to uint64_t ns would overflow into an edge "now". */
-	if (dt * 1e9 > (double)(m->seg_t1 - m->seg_t0))
+	if (dt * 1e9 > (double)(int64_t)(m->seg_t1 - m->seg_t0))   /* a segment lasts far less than 2^63 ns */
 		return;
-	t = m->seg_t0 + ceil_u64(dt * 1e9);
+	t = m->seg_t0 + ceil_u63(dt * 1e9);
 	if (t > m->seg_t1)
 		return;
 	m->edge_ev = hs_event_at(t, edge_due, m);   /* an edge already passed is due now */

@@ -147,23 +147,19 @@ static void aq_steady_fill(struct aq_steady *c, const struct aq_event *ev, uint3
 	}
 }
 
-/* The steady periods of a setting, from c if it holds that setting. */
-static const struct aq_steady *aq_steady_of(struct aq_steady *c, unsigned ctrmode, uint32_t prd,
-					     uint32_t cmpa, uint32_t cmpb, uint32_t aqctl)
+/* aq_steady_of when c does not hold the setting: works it out into c.  Out of
+ * line: a duty change misses once, the updates after it hit. */
+static __attribute__((noinline)) const struct aq_steady *aq_steady_fill_setting(
+	struct aq_steady *c, unsigned ctrmode, uint32_t prd, uint32_t cmpa, uint32_t cmpb, uint32_t aqctl)
 {
-	uint32_t cmpa_key = aq_cmp_key(cmpa, aqctl, AQ_CMPA_ACTIONS);
-	uint32_t cmpb_key = aq_cmp_key(cmpb, aqctl, AQ_CMPB_ACTIONS);
 	struct aq_event ev[6];
 	uint32_t len;
 
-	if (c->valid && c->ctrmode == ctrmode && c->prd == prd && c->cmpa == cmpa_key &&
-	    c->cmpb == cmpb_key && c->aqctl == aqctl)
-		return c;
 	c->valid = true;
 	c->ctrmode = ctrmode;
 	c->prd = prd;
-	c->cmpa = cmpa_key;
-	c->cmpb = cmpb_key;
+	c->cmpa = aq_cmp_key(cmpa, aqctl, AQ_CMPA_ACTIONS);
+	c->cmpb = aq_cmp_key(cmpb, aqctl, AQ_CMPB_ACTIONS);
 	c->aqctl = aqctl;
 	c->n = aq_events(ctrmode, prd, cmpa, cmpb, aqctl, ev, &len);
 	for (unsigned i = 0; i < c->n; i++) {
@@ -172,6 +168,17 @@ static const struct aq_steady *aq_steady_of(struct aq_steady *c, unsigned ctrmod
 	}
 	aq_steady_fill(c, ev, len);
 	return c;
+}
+
+/* The steady periods of a setting, from c if it holds that setting. */
+static inline const struct aq_steady *aq_steady_of(struct aq_steady *c, unsigned ctrmode, uint32_t prd,
+						    uint32_t cmpa, uint32_t cmpb, uint32_t aqctl)
+{
+	if (c->valid && c->ctrmode == ctrmode && c->prd == prd &&
+	    c->cmpa == aq_cmp_key(cmpa, aqctl, AQ_CMPA_ACTIONS) &&
+	    c->cmpb == aq_cmp_key(cmpb, aqctl, AQ_CMPB_ACTIONS) && c->aqctl == aqctl)
+		return c;
+	return aq_steady_fill_setting(c, ctrmode, prd, cmpa, cmpb, aqctl);
 }
 
 /* Level at position pos of a steady period entered at level start (start
@@ -213,6 +220,8 @@ struct ehrpwm {
 	enum hs_pwm_output out[2];  /* outputs A, B */
 	const char *name;
 	double freq;                /* time-base frequency last notified (Hz, 0 stopped) */
+	uint32_t tbclk_tbctl;       /* the TBCTL tbclk was worked out for (tbclk_of) */
+	uint64_t tbclk;
 };
 
 /* Stored value of a register (hs_reg_get without the lookup: several are read at every update). */
@@ -229,6 +238,17 @@ static uint64_t tbclk_hz(uint32_t tbctl)
 	return PWM_CLOCK_HZ / ((hsp ? 2U * hsp : 1U) * (1U << clk));
 }
 
+/* tbclk_hz of TBCTL value tbctl, remembered: every update and counter
+ * read asks, TBCTL's dividers change almost never. */
+static uint64_t tbclk_of(struct ehrpwm *e, uint32_t tbctl)
+{
+	if (tbctl != e->tbclk_tbctl) {
+		e->tbclk_tbctl = tbctl;
+		e->tbclk = tbclk_hz(tbctl);
+	}
+	return e->tbclk;
+}
+
 /* TBCLK cycles of one counter period (0 while frozen). */
 static uint32_t tb_period_cycles(const struct ehrpwm *e, uint32_t tbctl)
 {
@@ -240,7 +260,7 @@ static uint32_t tb_period_cycles(const struct ehrpwm *e, uint32_t tbctl)
 }
 
 /* Position in the period (TBCLK cycles from the period start) now. */
-static uint32_t tb_position(const struct ehrpwm *e)
+static uint32_t tb_position(struct ehrpwm *e)
 {
 	uint32_t tbctl = reg(e, TBCTL);
 	uint32_t len = tb_period_cycles(e, tbctl);
@@ -250,7 +270,7 @@ static uint32_t tb_position(const struct ehrpwm *e)
 		return 0;
 	pos = e->cnt_ref;
 	if (e->running)
-		pos += hs_ns_to_cycles(hs_now() - e->t_ref, tbclk_hz(tbctl));
+		pos += hs_ns_to_cycles(hs_now() - e->t_ref, tbclk_of(e, tbctl));
 	return (uint32_t)(pos % len);
 }
 
@@ -270,7 +290,7 @@ static void ehrpwm_update(struct ehrpwm *e)
 	uint32_t tbctl = reg(e, TBCTL), csfrc = reg(e, AQCSFRC);
 	uint32_t pos = tb_position(e), len = tb_period_cycles(e, tbctl);
 	static const uint32_t aq[2] = { AQCTLA, AQCTLB };
-	double freq = e->running && len ? (double)tbclk_hz(tbctl) / len : 0;
+	double freq = e->running && len ? (double)tbclk_of(e, tbctl) / len : 0;
 
 	for (int o = 0; o < 2; o++) {
 		unsigned force = (csfrc >> (2 * o)) & 3U;
@@ -343,7 +363,7 @@ static void ehrpwm_schedule_load(struct ehrpwm *e)
 	/* zero and period sit at positions 0 (= len) and PRD in every counting mode */
 	next = pos < e->prd ? e->prd : len;
 	{
-		uint64_t hz = tbclk_hz(tbctl);
+		uint64_t hz = tbclk_of(e, tbctl);
 		uint64_t elapsed = e->cnt_ref + hs_ns_to_cycles(hs_now() - e->t_ref, hz);
 
 		e->load_ev = hs_event_at(e->t_ref + hs_cycles_to_ns(elapsed - pos + next - e->cnt_ref, hz),
@@ -555,6 +575,7 @@ static ER ehrpwm_create(const struct ehrpwm_instance *in, void **ctx)
 
 	if (!e)
 		return E_NOMEM;
+	e->tbclk_tbctl = UINT32_MAX;    /* no TBCTL value: tbclk_of works it out on first use */
 	e->r = hs_region_add(&(struct hs_region_cfg){ .name = in->name, .phys = in->phys,
 		.size = 0x1000, .regs = ehrpwm_regs, .nregs = HS_ARRAY_SIZE(ehrpwm_regs),
 		.power = HS_PSC1_MODULE(HS_LPSC1_EHRPWM), .ctx = e });

@@ -49,9 +49,8 @@ struct pin {
 	bool muxed;
 	bool contention;
 	bool mux_reported;
-	bool mux_known;             /* pin_mux_field knows its PINMUX field */
-	uint8_t mux_shift;
-	const uint32_t *mux_reg;    /* that PINMUX register's stored value (NULL: no SYSCFG0) */
+	uint8_t mux_shift;          /* pin_muxed reads the field at mux_shift of *mux_reg */
+	const uint32_t *mux_reg;
 	int16_t first_watch;        /* index into watches, -1 for none */
 	struct hs_signal *sig;      /* declared on first activity */
 };
@@ -118,27 +117,35 @@ void hs_gpio_mux_as_gpio(unsigned pin)
 		hs_reg_update(syscfg0, 0x120U + 4U * reg, 0xFU << shift, GPIO_MUX_FUNC << shift);
 }
 
-/* true if pin is muxed to GPIO (or its mux is not known here); every
- * resolve asks, so the field's place is found once (pin_mux_locate). */
+/* PINMUX words pin_muxed reads for a pin whose field it does not consult: one
+ * selecting GPIO at bits 3:0 (the mux is not known here, or not checked), one
+ * selecting nothing (no SYSCFG0 to read it from). */
+static const uint32_t mux_word_gpio = GPIO_MUX_FUNC;
+static const uint32_t mux_word_none;
+
+/* true if pin is muxed to GPIO (or its mux is not known here, or not checked);
+ * every resolve asks, so pin_mux_locate finds once what to read: one field,
+ * no branch. */
 static inline bool pin_muxed(unsigned pin)
 {
 	const struct pin *p = &g.pins[pin];
 
-	if (!g.pinmux_check || !p->mux_known)
-		return true;
-	return p->mux_reg != NULL && ((*p->mux_reg >> p->mux_shift) & 0xFU) == GPIO_MUX_FUNC;
+	return ((*p->mux_reg >> p->mux_shift) & 0xFU) == GPIO_MUX_FUNC;
 }
 
-/* Finds where pin's PINMUX field is stored, for pin_muxed. */
+/* Finds where pin's PINMUX field is stored, for pin_muxed (g.pinmux_check set). */
 static void pin_mux_locate(unsigned pin)
 {
 	struct pin *p = &g.pins[pin];
 	unsigned reg, shift;
 
-	p->mux_known = pin_mux_field(pin, &reg, &shift);
-	if (p->mux_known) {
+	p->mux_reg = &mux_word_gpio;
+	p->mux_shift = 0;
+	if (g.pinmux_check && pin_mux_field(pin, &reg, &shift)) {
+		const uint32_t *word = hs_syscfg_pinmux_ptr(reg);
+
+		p->mux_reg = word != NULL ? word : &mux_word_none;
 		p->mux_shift = (uint8_t)shift;
-		p->mux_reg = hs_syscfg_pinmux_ptr(reg);
 	}
 }
 
@@ -148,20 +155,25 @@ static uint32_t pair_reg(unsigned pair, uint32_t r)
 	return *g.pair_val[pair][r / 4U];
 }
 
-/* Makes the pin visible in traces. */
-static void pin_trace_declare(unsigned pin)
+/* pin_trace_declare's first activity: out of line, so that the resolve, which
+ * asks on every change, keeps no name buffer. */
+static __attribute__((noinline)) void pin_trace_declare_first(unsigned pin)
 {
 	char name[8];
 
+	g.pins[pin].sig = hs_trace_signal("gpio", hs_gpio_name(pin, name), 1);
+}
+
+/* Makes the pin visible in traces. */
+static inline void pin_trace_declare(unsigned pin)
+{
 	if (!g.pins[pin].sig)
-		g.pins[pin].sig = hs_trace_signal("gpio", hs_gpio_name(pin, name), 1);
+		pin_trace_declare_first(pin);
 }
 
 /* Records the pin's level (or 'z' when nothing drives it) in its trace signal. */
-static inline void pin_trace(unsigned pin)
+static inline void pin_trace(const struct pin *p)
 {
-	struct pin *p = &g.pins[pin];
-
 	if (!p->sig)
 		return;
 	if (!p->soc_drives && p->ext == HS_EXT_FLOAT)
@@ -183,8 +195,31 @@ static void pin_state_of(unsigned pin, struct hs_pin_state *st)
 	st->contention = p->contention;
 }
 
-/* Recomputes pin from both sides; handles edges, interrupts, trace, watchers. */
-static void pin_resolve(unsigned pin, bool notify)
+/* Reports a pin starting to be driven against the SoC's out level (out of
+ * line, as pin_notify). */
+static __attribute__((noinline)) void contention_report(unsigned pin, bool out)
+{
+	char name[8];
+
+	rtos_host_trace("host_sim", "gpio %s: contention, SoC drives %d against an external %s",
+			hs_gpio_name(pin, name), out, out ? "low" : "high");
+}
+
+/* Tells the pin's watchers its state: out of line, so that the resolve of
+ * an unwatched pin (a tacho edge) keeps no state on its stack. */
+static __attribute__((noinline)) void pin_notify(unsigned pin)
+{
+	struct hs_pin_state st;
+
+	pin_state_of(pin, &st);
+	for (int16_t w = g.pins[pin].first_watch; w >= 0; w = g.watches[w].next)
+		g.watches[w].fn(g.watches[w].ctx, pin, &st);
+}
+
+/* pin_resolve; input: the caller saw the pin's DIR bit set (the SoC does not
+ * drive it), which lets a constant true fold the SoC side away (a motor's tacho
+ * edges, thousands per second, resolve input pins). */
+static inline __attribute__((always_inline)) void pin_resolve_as(unsigned pin, bool notify, bool input)
 {
 	struct pin *p = &g.pins[pin];
 	unsigned pair = pin / 32U, bit = pin % 32U;
@@ -192,11 +227,11 @@ static void pin_resolve(unsigned pin, bool notify)
 	bool out, drives, level, changed;
 	bool old_drives = p->soc_drives, old_level = p->level, old_cont = p->contention;
 
-	if (!g.region)
+	if (!input && !g.region)    /* input: the caller saw the region's DIR */
 		return;
 	p->muxed = pin_muxed(pin);
-	drives = p->muxed && !(pair_reg(pair, R_DIR) & m);
-	out = (pair_reg(pair, R_OUT_DATA) & m) != 0;
+	drives = !input && p->muxed && !(pair_reg(pair, R_DIR) & m);
+	out = drives && (pair_reg(pair, R_OUT_DATA) & m) != 0;
 	if (drives)
 		level = out;
 	else
@@ -204,12 +239,8 @@ static void pin_resolve(unsigned pin, bool notify)
 	p->soc_drives = drives;
 	p->level = level;
 	p->contention = drives && ((p->ext == HS_EXT_LOW && out) || (p->ext == HS_EXT_HIGH && !out));
-	if (p->contention && !old_cont) {
-		char name[8];
-
-		rtos_host_trace("host_sim", "gpio %s: contention, SoC drives %d against an external %s",
-				hs_gpio_name(pin, name), out, out ? "low" : "high");
-	}
+	if (p->contention && !old_cont)
+		contention_report(pin, out);
 	if (drives)
 		pin_trace_declare(pin);
 	changed = level != old_level;
@@ -226,14 +257,15 @@ static void pin_resolve(unsigned pin, bool notify)
 				hs_intc_raise(HS_GPIO_BANK_INTNO(bank));
 		}
 	}
-	pin_trace(pin);
-	if (p->first_watch >= 0 && (notify || changed || drives != old_drives || p->contention != old_cont)) {
-		struct hs_pin_state st;
+	pin_trace(p);
+	if (p->first_watch >= 0 && (notify || changed || drives != old_drives || p->contention != old_cont))
+		pin_notify(pin);
+}
 
-		pin_state_of(pin, &st);
-		for (int16_t w = p->first_watch; w >= 0; w = g.watches[w].next)
-			g.watches[w].fn(g.watches[w].ctx, pin, &st);
-	}
+/* Recomputes pin from both sides; handles edges, interrupts, trace, watchers. */
+static void pin_resolve(unsigned pin, bool notify)
+{
+	pin_resolve_as(pin, notify, false);
 }
 
 /* DIR/OUT_DATA/SET_DATA/CLR_DATA written: resolve the pins whose bits changed. */
@@ -327,11 +359,11 @@ ER hs_gpio_create(bool cold, bool pinmux_check)
 	struct hs_region *sys0;
 
 	memset(&g, 0, sizeof(g));
+	g.pinmux_check = pinmux_check;
 	for (unsigned i = 0; i < HS_GPIO_NPINS; i++) {
 		g.pins[i].first_watch = -1;
 		pin_mux_locate(i);
 	}
-	g.pinmux_check = pinmux_check;
 	g.region = hs_region_add(&(struct hs_region_cfg){
 		.name = "GPIO", .phys = HS_GPIO_BASE, .size = 0x1000,
 		.regs = gpio_regs, .nregs = HS_ARRAY_SIZE(gpio_regs),
@@ -393,7 +425,10 @@ void hs_gpio_drive(unsigned pin, enum hs_pin_ext ext)
 		return;
 	p->ext = (uint8_t)ext;
 	pin_trace_declare(pin);
-	pin_resolve(pin, true);
+	if ((pair_reg(pin / 32U, R_DIR) & (1U << (pin % 32U))))
+		pin_resolve_as(pin, true, true);
+	else
+		pin_resolve(pin, true);
 }
 
 void hs_gpio_set_input(unsigned pin, int level)
@@ -423,6 +458,23 @@ bool hs_gpio_soc_output(unsigned pin, bool *level)
 	return known && g.pins[pin].soc_drives;
 }
 
+bool hs_gpio_soc_output_or_level(unsigned pin, bool *level)
+{
+	const struct pin *p;
+
+	if (!pin_ok(pin, "hs_gpio_soc_output_or_level")) {
+		*level = false;
+		return false;
+	}
+	p = &g.pins[pin];
+	if (!p->soc_drives) {
+		*level = p->level;
+		return false;
+	}
+	*level = (pair_reg(pin / 32U, R_OUT_DATA) >> (pin % 32U)) & 1U;
+	return true;
+}
+
 int hs_gpio_watch(unsigned pin, hs_pin_watch_fn fn, void *ctx)
 {
 	if (!pin_ok(pin, "hs_gpio_watch") || !fn)
@@ -435,7 +487,7 @@ int hs_gpio_watch(unsigned pin, hs_pin_watch_fn fn, void *ctx)
 			g.watches[i].next = g.pins[pin].first_watch;
 			g.pins[pin].first_watch = (int16_t)i;
 			pin_trace_declare(pin);
-			pin_trace(pin);
+			pin_trace(&g.pins[pin]);
 			return (int)i + 1;
 		}
 	}

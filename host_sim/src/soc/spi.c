@@ -372,25 +372,43 @@ static uint32_t buf_value(const struct spi_module *s)
 	return s->rx | (s->tx_full ? BUF_TXFULL : 0U);
 }
 
+/* SPIBUF read of the frame's answer: the value with TXFULL, then consumed. */
+static inline void buf_take(struct spi_module *s, uint32_t *value)
+{
+	uint32_t rx = s->rx;        /* read once: *value may alias it as far as the compiler knows */
+
+	*value = rx | (s->tx_full ? BUF_TXFULL : 0U);
+	s->rx = (rx | BUF_RXEMPTY) & ~BUF_RXOVR;
+	flg_update(s, FLG_RXINT, 0);
+	if (!s->polled)             /* polled: no interrupt enabled, the line stays low */
+		spi_irq_update(s);
+}
+
+/* read_buf while a frame is busy: settle it, stall until its end if the poll
+ * would see "not yet", then consume.  Out of line: the idle read, one of
+ * d_analog's two per frame, then needs no registers saved. */
+static __attribute__((noinline)) void read_buf_busy(struct spi_module *s, uint32_t *value)
+{
+	frame_settle(s);
+	/* a poll that would see "not yet": the CPU spins until the frame ends */
+	if (s->busy && ((s->rx & BUF_RXEMPTY) || s->tx_full)) {
+		s->stats.stalls++;
+		hs_access_stall_until(s->frame_end);
+		frame_settle(s);
+	}
+	buf_take(s, value);
+}
+
 /* SPIBUF read: stall while in flight, then consume. */
 static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct spi_module *s = ctx;
 
 	if (s->busy) {              /* an armed frame is busy */
-		frame_settle(s);
-		/* a poll that would see "not yet": the CPU spins until the frame ends */
-		if (s->busy && ((s->rx & BUF_RXEMPTY) || s->tx_full)) {
-			s->stats.stalls++;
-			hs_access_stall_until(s->frame_end);
-			frame_settle(s);
-		}
+		read_buf_busy(s, value);
+		return;
 	}
-	*value = buf_value(s);
-	s->rx = (s->rx | BUF_RXEMPTY) & ~BUF_RXOVR;
-	flg_update(s, FLG_RXINT, 0);
-	if (!s->polled)             /* polled: no interrupt enabled, the line stays low */
-		spi_irq_update(s);
+	buf_take(s, value);
 }
 
 /* SPIEMU read: SPIBUF without side effects. */

@@ -58,6 +58,7 @@ struct timer64 {
 	const char *name;
 	struct hs_region *region;
 	uint32_t tgcr, tcr, prd12, prd34, intctl;   /* settings in effect */
+	uint64_t hz[2];       /* half_hz of TIM12 and TIM34 under them (rates_update) */
 	struct half h12, h34;
 	uint64_t input_hz;
 	INTNO tint[2];        /* TINT12, TINT34 lines; 0: no interrupt modelled */
@@ -86,25 +87,34 @@ static uint64_t half_hz(const struct timer64 *tm, bool hi)
 /* Value of a 32-bit half counting from h at hz, wrapping or stopping at prd. */
 static uint32_t half_value(const struct half *h, uint64_t hz, uint32_t prd, bool one_shot, uint64_t now)
 {
-	uint64_t n = h->base_count + hs_ns_to_cycles(now - h->base_t, hz);
+	uint64_t n;
 
 	if (hz == 0)
 		return h->base_count;
+	n = h->base_count + hs_ns_to_cycles(now - h->base_t, hz);
 	if (h->base_count > prd)                  /* past the period: counts up to wrap at 2^32 */
 		return (uint32_t)n;
 	if (one_shot)
 		return n > prd ? prd : (uint32_t)n;
+	if (prd == UINT32_MAX)                    /* the free-running stamp: the wrap is the cast's */
+		return (uint32_t)n;
 	return (uint32_t)(n % ((uint64_t)prd + 1U));
 }
 
-/* Both counters at the current instant under the settings in effect. */
-static void timer_values(const struct timer64 *tm, uint32_t *t12, uint32_t *t34)
+/* Redoes tm->hz after TGCR or TCR changed (the counters read them on every read). */
+static void rates_update(struct timer64 *tm)
+{
+	tm->hz[0] = half_hz(tm, false);
+	tm->hz[1] = half_hz(tm, true);
+}
+
+/* One counter (TIM34 if hi) at the current instant under the settings in effect. */
+static uint32_t timer_value(const struct timer64 *tm, bool hi)
 {
 	uint64_t now = rtos_host_now();
-	unsigned mode = (tm->tgcr >> 2) & 3U;
 
-	if (mode == 0U) {
-		uint64_t hz = half_hz(tm, false);
+	if (((tm->tgcr >> 2) & 3U) == 0U) {
+		uint64_t hz = tm->hz[0];
 		uint64_t base = ((uint64_t)tm->h34.base_count << 32) | tm->h12.base_count;
 		uint64_t prd = ((uint64_t)tm->prd34 << 32) | tm->prd12;
 		uint64_t n = base + (hz ? hs_ns_to_cycles(now - tm->h12.base_t, hz) : 0U);
@@ -112,21 +122,19 @@ static void timer_values(const struct timer64 *tm, uint32_t *t12, uint32_t *t34)
 
 		if (base <= prd && hz)
 			n = one_shot ? (n > prd ? prd : n) : (prd == UINT64_MAX ? n : n % (prd + 1U));
-		*t12 = (uint32_t)n;
-		*t34 = (uint32_t)(n >> 32);
-		return;
+		return hi ? (uint32_t)(n >> 32) : (uint32_t)n;
 	}
-	*t12 = half_value(&tm->h12, half_hz(tm, false), tm->prd12, ((tm->tcr >> 6) & 3U) == 1U, now);
-	*t34 = half_value(&tm->h34, half_hz(tm, true), tm->prd34, ((tm->tcr >> 22) & 3U) == 1U, now);
+	if (hi)
+		return half_value(&tm->h34, tm->hz[1], tm->prd34, ((tm->tcr >> 22) & 3U) == 1U, now);
+	return half_value(&tm->h12, tm->hz[0], tm->prd12, ((tm->tcr >> 6) & 3U) == 1U, now);
 }
 
 /* Freezes the counters at their current values as the new base (before a settings change). */
 static void timer_rebase(struct timer64 *tm)
 {
-	uint32_t t12, t34;
+	uint32_t t12 = timer_value(tm, false), t34 = timer_value(tm, true);
 	uint64_t now = rtos_host_now();
 
-	timer_values(tm, &t12, &t34);
 	tm->h12.base_count = t12;
 	tm->h34.base_count = t34;
 	tm->h12.base_t = tm->h34.base_t = now;
@@ -139,7 +147,7 @@ static void period_schedule(struct timer64 *tm, bool hi)
 {
 	struct half *h = hi ? &tm->h34 : &tm->h12;
 	uint32_t prd = hi ? tm->prd34 : tm->prd12;
-	uint64_t hz = half_hz(tm, hi);
+	uint64_t hz = tm->hz[hi];
 	uint64_t now = rtos_host_now(), k, t;
 
 	hs_event_cancel(&h->prd_ev);
@@ -183,36 +191,27 @@ static void timer_reschedule(struct timer64 *tm)
 
 uint32_t hs_timer64p3_tim12(void)
 {
-	uint32_t t12, t34;
-
-	timer_values(&tm3, &t12, &t34);
-	return t12;
+	return timer_value(&tm3, false);
 }
 
 uint32_t hs_timer64p3_tim34(void)
 {
-	uint32_t t12, t34;
-
-	timer_values(&tm3, &t12, &t34);
-	return t34;
+	return timer_value(&tm3, true);
 }
 
 uint64_t hs_timer64p3_tim34_hz(void)
 {
-	return ((tm3.tgcr >> 2) & 3U) == 0U ? 0U : half_hz(&tm3, true);
+	return ((tm3.tgcr >> 2) & 3U) == 0U ? 0U : tm3.hz[1];
 }
 
 uint64_t hs_timer64p1_tim34_hz(void)
 {
-	return ((tm1.tgcr >> 2) & 3U) == 0U ? 0U : half_hz(&tm1, true);
+	return ((tm1.tgcr >> 2) & 3U) == 0U ? 0U : tm1.hz[1];
 }
 
 static void tim_read(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	uint32_t t12, t34;
-
-	timer_values(ctx, &t12, &t34);
-	*value = a->offset == T_TIM12 ? t12 : t34;
+	*value = timer_value(ctx, a->offset != T_TIM12);
 }
 
 static void tim_written(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written)
@@ -258,6 +257,7 @@ static void setting_written(void *ctx, const struct hs_access *a, uint32_t old, 
 		tm->prd34 = now;
 		break;
 	}
+	rates_update(tm);
 	timer_reschedule(tm);
 }
 

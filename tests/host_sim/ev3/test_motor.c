@@ -111,7 +111,7 @@ int main(void)
 	double s25, s50, s75, s100, rev, a0, brake_speed, coast_speed;
 	int64_t counted;
 
-	tap_plan(31);
+	tap_plan(32);
 	devtest_boot(1, NULL);
 	devtest_pwm_setup();
 
@@ -227,6 +227,9 @@ int main(void)
 		a = hs_motor_angle_deg(m);
 		hs_sim_run_for(50 * MS);
 		ok(tacho.int_edges == edges && hs_motor_angle_deg(m) > a + 30, "stuck encoder: shaft moves, pins frozen");
+		hs_sim_run_for(60 * MS);
+		ok(tacho.int_edges > edges + 50 && hs_motor_tacho_counts(m) == tacho.count,
+		   "released: the pins catch up, edge by edge, to the model's count");
 	}
 	hs_sim_shutdown();
 

@@ -95,8 +95,9 @@ int main(void)
 	struct hs_scenario scn = { .rtos = &cfg };
 	struct hs_signal *sig;
 	uint64_t t0;
+	bool lvl;
 
-	tap_plan(32);
+	tap_plan(37);
 	if (hs_sim_boot(&scn) != E_OK)
 		tap_bail_out("boot failed");
 
@@ -127,6 +128,20 @@ int main(void)
 	wr(PAIR(1) + DIR, rd(PAIR(1) + DIR) | MOTOR_BIT);
 	ok(!watch_log.last.soc_drives, "floating again: the watcher sees no SoC drive");
 	is_int(watch_log.n, 5, "one watcher call per change (pull, OUT_DATA, DIR, CLR_DATA, DIR)");
+
+	/* hs_gpio_drive on an output pin (the SoC side decides) and on an input (the drive does) */
+	wr(PAIR(1) + DIR, rd(PAIR(1) + DIR) & ~MOTOR_BIT);
+	hs_gpio_drive(MOTOR, HS_EXT_HIGH);
+	ok(watch_log.last.soc_drives && !watch_log.last.level && watch_log.last.contention,
+	   "an external high against the SoC's low: contention, the SoC's level");
+	ok(hs_gpio_soc_output_or_level(MOTOR, &lvl) && !lvl, "the SoC drives it, low");
+	wr(PAIR(1) + DIR, rd(PAIR(1) + DIR) | MOTOR_BIT);
+	ok(watch_log.last.level && !watch_log.last.contention, "an input again: the external high");
+	ok(!hs_gpio_soc_output_or_level(MOTOR, &lvl) && lvl, "not driven by the SoC: its level, high");
+	hs_gpio_drive(MOTOR, HS_EXT_LOW);
+	ok(!watch_log.last.soc_drives && !watch_log.last.level && !hs_gpio_level(MOTOR) &&
+	   !(rd(PAIR(1) + IN_DATA) & MOTOR_BIT) && watch_log.n == 9,
+	   "an input follows its drive, the watcher told of each change");
 
 	/* Edge -> INTSTAT -> bank interrupt -> ISR */
 	wr(PAIR(2) + SET_RIS, TACHO_BIT);

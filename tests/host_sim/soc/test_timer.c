@@ -38,7 +38,7 @@ int main(void)
 	uint64_t t_start, t;
 	uint32_t v, s1, s2;
 
-	tap_plan(13);
+	tap_plan(15);
 	if (hs_sim_boot(&scn) != E_OK)
 		tap_bail_out("boot failed");
 
@@ -99,6 +99,18 @@ int main(void)
 	is_int(hs_timer64p3_tim34(), v, "ENAMODE 0 freezes the count");
 	wr(TGCR, 0x3304);
 	is_int(rd(TIM34), 0, "TIM34RS = 0 holds the half in reset at 0");
+	/* 64-bit mode: TIM34:TIM12 one counter at the input clock, read a half at a time. */
+	wr(TGCR, 0x0003);
+	wr(PRD12, 0xFFFFFFFFU);
+	wr(PRD34, 0xFFFFFFFFU);
+	wr(TIM12, 0xFFFFFF00U);
+	wr(TIM34, 7);
+	t = hs_now();
+	wr(TCR, 0x00000080U);
+	hs_sim_run_for(10000);
+	v = (uint32_t)hs_ns_to_cycles(hs_now() - t, 132000000);
+	is_int(rd(TIM12), (uint32_t)(0xFFFFFF00U + v), "64-bit mode: TIM12 is the low half of the count");
+	is_int(rd(TIM34), 8, "and TIM34 the high half, carried into");
 	hs_sim_shutdown();
 	return tap_done();
 }

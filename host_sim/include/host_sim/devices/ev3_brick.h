@@ -95,6 +95,15 @@ uint32_t ev3_output_pin5_mv(unsigned port);
 /* Voltage (mV, 0..5000) on ADC channel ch (0..15) now, before ADC noise. */
 uint32_t ev3_adc_channel_mv(unsigned ch);
 
+/* What an ADC channel measures: its ev3_adc_channel_mv is mv(arg).  The
+ * converter asks once per channel, then calls mv on every frame (ten
+ * thousand per second) without ev3_adc_channel_mv's dispatch. */
+struct ev3_adc_source {
+	uint32_t (*mv)(unsigned arg);
+	unsigned arg;
+};
+struct ev3_adc_source ev3_adc_channel_source(unsigned ch);
+
 /* ---- faults (seeded, at scenario times) ---- */
 
 enum ev3_fault_kind {
