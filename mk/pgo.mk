@@ -5,8 +5,8 @@
 # (the register routes, the event queue, the models' fast cases) whose likely
 # sides gcc cannot know from the source; a profile of real runs tells it,
 # and it lays the hot paths out straight and inlines where the calls are
-# frequent.  Same sources, same semantics: gcc's profile-directed
-# optimisations never change what a program computes (no floating-point
+# frequent, across files (link-time optimisation).  Same sources, same
+# semantics: neither changes what a program computes (no floating-point
 # reassociation without -ffast-math, which ev3lx never uses), and `make
 # bench` checks it — it compares the profile-guided ev3sim's balance run
 # with the -O2 build's, byte for byte, before it reports a speed.
@@ -15,8 +15,9 @@
 #              programs write a profile (one .gcda per object, below
 #              $(BUILD)/pgo-profile) when they exit
 #   host-pgo   the host configuration compiled with that profile
-#              (-fprofile-use); a source the training runs never reached is
-#              compiled as -O2 would (-fprofile-partial-training)
+#              (-fprofile-use) and optimised at link time (-flto); a source
+#              the training runs never reached is compiled as -O2 would
+#              (-fprofile-partial-training)
 #
 # The training runs are the simulator's own workloads, short and with other
 # seeds and settings than the benchmark's: a balancing run with a push, the
@@ -33,12 +34,20 @@ PGO_PROGRAMS := ev3sim bench_host
 # compiler cache: the cache could not know that a profile is an input.
 PGO_DATA := $(BUILD)/pgo-profile
 pgo_dumpbase = -dumpbase $(PGO_DATA)/$(patsubst $(BUILD)/host-prof/%,%,$(patsubst $(BUILD)/host-pgo/%,%,$@))
+# host-pgo also optimises across files (-flto: the kernel's and the
+# simulator's small functions inline into their hot callers), except in
+# a module (a hack with its driver), which must stay one relocatable object
+# with its hidden symbols made local (mk/config.mk), and in an EV3RT app's
+# objects, which are relinked and renamed (mk/ev3rt_app.mk) — both keep
+# their code as compiled.
+pgo_lto = $(if $(filter $(BUILD)/host-pgo/ev3rt/%,$@),,$(if $(call is_module_src,$<),,-flto=auto))
 CC_host-prof       := gcc
 CFLAGS_host-prof    = $(CFLAGS_host) -fprofile-generate -fprofile-update=single $(pgo_dumpbase)
 LDFLAGS_host-prof  :=
 RUN_host-prof      :=
 CC_host-pgo        := gcc
-CFLAGS_host-pgo     = $(CFLAGS_host) -fprofile-use -fprofile-partial-training -Wno-missing-profile $(pgo_dumpbase)
+CFLAGS_host-pgo     = $(CFLAGS_host) -fprofile-use -fprofile-partial-training -Wno-missing-profile \
+	$(pgo_dumpbase) $(pgo_lto)
 LDFLAGS_host-pgo   :=
 RUN_host-pgo       :=
 $(foreach c,$(PGO_CONFIGS),$(eval LD_$(c) := $(LD_host))$(eval OBJCOPY_$(c) := $(OBJCOPY_host)))
