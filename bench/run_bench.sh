@@ -30,11 +30,11 @@ bash "$(dirname "$0")/insn_count_selftest.sh" "$counter" >&2 || fail "insn_count
 
 # ---- 1 and 3: the host ----
 # The simulator's speed is measured on the programs users run: in the full run
-# the profile-guided build (build/host-pgo, mk/pgo.mk), once a balancing run of
-# it has matched the -O2 build's byte for byte (summary, series and trace); the
-# -O2 build's speed is reported beside it.  The quick run, which asserts no
-# speed, has the -O2 build's figures stand for both, so that `make test` need
-# not build the profile-guided one.
+# the profile-guided build (build/host-pgo, mk/pgo.mk), once its runs have
+# matched the -O2 build's byte for byte (same_results); the -O2 build's speed
+# is reported beside it.  The quick run, which asserts no speed, has the -O2
+# build's figures stand for both, so that `make test` need not build the
+# profile-guided one.
 echo "bench ($mode): host: $calls calls each, host_sim for $virtual_s virtual s ..." >&2
 "$host_bench" $calls $virtual_s > "$out/host_raw.txt" || fail "bench_host (see $out/host_raw.txt)"
 grep -E '^call,' "$out/host_raw.txt" > "$out/host.txt"
@@ -59,18 +59,20 @@ balance_speed() {
 		"$out/balance_time_$tag.txt" >> "$out/sim_$tag.txt"
 }
 
-# The same balancing run (a push, another seed) by programs $1 and $2: its
-# summary but for the speed, the series and the trace.
-same_balance() {
-	local p n=0
+# The same runs by ev3sim programs $1 and $2: a balancing run (a push, another
+# seed: its summary but for the speed, the series and the trace) and the motor
+# and sensor applications (their output but for the speed).
+same_results() {
+	local p n=0 f
 	for p in "$1" "$2"; do
 		n=$((n + 1))
-		"$p" balance --seconds 3 --seed 5 --push 1s:0.2 --no-progress --csv "$out/same_$n.csv" \
-			--trace "$out/same_$n.vcd" 2>&1 | sed 's/ sim_speed=.*//' > "$out/same_$n.txt" ||
-			fail "$p balance (see $out/same_$n.txt)"
+		{ "$p" balance --seconds 3 --seed 5 --push 1s:0.2 --no-progress --csv "$out/same_$n.csv" \
+			--trace "$out/same_$n.vcd" && "$p" motor --port C --speed -60 --seconds 1 &&
+			"$p" sensors; } 2>&1 | sed 's/sim_speed=[^ ]*//' > "$out/same_$n.txt" ||
+			fail "$p (see $out/same_$n.txt)"
 	done
-	for p in txt csv vcd; do
-		cmp -s "$out/same_1.$p" "$out/same_2.$p" || return 1
+	for f in txt csv vcd; do
+		cmp -s "$out/same_1.$f" "$out/same_2.$f" || return 1
 	done
 	rm -f "$out"/same_[12].*
 }
@@ -79,8 +81,8 @@ grep '^speed,' "$out/host_raw.txt" > "$out/sim_o2.txt"
 balance_speed "$build/host/ev3sim" o2
 if [ "$mode" = full ]; then
 	pgo=$build/host-pgo
-	same_balance "$build/host/ev3sim" "$pgo/ev3sim" ||
-		fail "the profile-guided ev3sim's balancing run differs from the -O2 build's (see $out/same_*)"
+	same_results "$build/host/ev3sim" "$pgo/ev3sim" ||
+		fail "the profile-guided ev3sim computes other results than the -O2 build (see $out/same_*)"
 	"$pgo/bench_host" 1 $virtual_s > "$out/host_raw_pgo.txt" || fail "$pgo/bench_host (see $out/host_raw_pgo.txt)"
 	grep '^speed,' "$out/host_raw_pgo.txt" > "$out/sim_pgo.txt"
 	balance_speed "$pgo/ev3sim" pgo

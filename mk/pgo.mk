@@ -23,8 +23,8 @@
 # seeds and settings than the benchmark's: a balancing run with a push, the
 # motor and sensor applications, and the register-level bench.  The profile
 # is deterministic (virtual time), so two builds of one tree are identical.
-# The test suite runs on the -O2 build (build/host); `make prove-host-pgo`
-# runs it on this one.
+# The test suite runs on the -O2 build (build/host), whose tests would each
+# pay for a link-time optimisation of the library here.
 PGO_CONFIGS := host-prof host-pgo
 PGO_PROGRAMS := ev3sim bench_host
 
@@ -57,7 +57,7 @@ PGO_TRAIN    = $(BUILD)/host-prof/$(1)
 
 # Each configuration's library (with ev3sim's gyro boy, ev3sim/module.mk) and programs.
 $(foreach c,$(PGO_CONFIGS),$(eval HOST_LIB_EXTRA_$(c) += $(call EV3SIM_GYROBOY_OBJ,$(c))))
-$(foreach c,$(PGO_CONFIGS),$(eval $(call host_config_rules,$(c))))
+$(foreach c,$(PGO_CONFIGS),$(eval $(call host_lib_rules,$(c))))
 $(foreach c,$(PGO_CONFIGS),$(eval $(call ev3sim_gyroboy_rules,$(c))))
 $(foreach c,$(PGO_CONFIGS),$(foreach p,$(PGO_PROGRAMS),$(eval $(call host_program_rules,$(p),$(c)))))
 

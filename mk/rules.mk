@@ -24,12 +24,10 @@ TEST_TOP_DIRS := $(sort $(foreach t,$(TEST_SRCS),$(word 2,$(subst /, ,$(t)))))
 PROVE_DIRS := $(addprefix tests/,$(filter $(PROVE_FIRST),$(TEST_TOP_DIRS)) \
 	$(filter-out $(PROVE_FIRST),$(TEST_TOP_DIRS)))
 
-# $(1) = config
-define host_config_rules
+# The library of configuration $(1): its objects, modules and libev3lx.a.
+define host_lib_rules
 OBJS_$(1)      := $$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$$(HOST_SRCS))
-SUPPORT_OBJS_$(1) := $$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$$(TEST_SUPPORT_SRCS))
 LIB_$(1)       := $(BUILD)/$(1)/libev3lx.a
-TESTS_$(1)     := $$(patsubst %.c,$(BUILD)/$(1)/%.t,$$(TEST_SRCS))
 
 $(call obj_rule,$(1),$(BUILD)/$(1))
 $(call module_link_rule,$(1),$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(HOST_SRCS)))
@@ -39,6 +37,15 @@ $$(LIB_$(1)): $$(call module_objs,$$(OBJS_$(1))) $$(HOST_LIB_EXTRA_$(1))
 	$$(quiet) AR $(1) $$@
 	$(Q)rm -f $$@
 	$(Q)$$(if $$(filter arm926-test,$(1)),arm-linux-gnueabi-ar,ar) rcs $$@ $$^
+
+-include $$(OBJS_$(1):.o=.d)
+endef
+
+# A test configuration $(1): the library, the test programs and their prove run.
+define host_config_rules
+$(call host_lib_rules,$(1))
+SUPPORT_OBJS_$(1) := $$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$$(TEST_SUPPORT_SRCS))
+TESTS_$(1)     := $$(patsubst %.c,$(BUILD)/$(1)/%.t,$$(TEST_SRCS))
 
 $(BUILD)/$(1)/tests/%.t: $(BUILD)/$(1)/obj/tests/%.o $$(SUPPORT_OBJS_$(1)) $$(LIB_$(1))
 	@mkdir -p $$(@D)
@@ -53,7 +60,7 @@ prove-$(1): tests-$(1)
 	@echo "=== prove: $(1) ==="
 	@cd $(BUILD)/$(1) && prove -j$(PROVE_JOBS) --state=slow,save --exec '$$(RUN_$(1))' -r $(PROVE_DIRS)
 
--include $$(OBJS_$(1):.o=.d) $$(SUPPORT_OBJS_$(1):.o=.d) $$(patsubst %.c,$(BUILD)/$(1)/obj/%.d,$$(TEST_SRCS))
+-include $$(SUPPORT_OBJS_$(1):.o=.d) $$(patsubst %.c,$(BUILD)/$(1)/obj/%.d,$$(TEST_SRCS))
 endef
 $(foreach c,$(HOST_CONFIGS),$(eval $(call host_config_rules,$(c))))
 
