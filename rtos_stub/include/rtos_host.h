@@ -161,11 +161,15 @@ struct rtos_host_deferred {
  * and update (the clock, the run's place in the queue order, the next
  * sequence number, the armed list); only event.c and those functions use it. */
 struct rtos_host_deferred_state {
-	const uint64_t *now;        /* the virtual clock */
+	uint64_t *now;              /* the virtual clock */
 	const uint64_t *pos_time;   /* the last event taken (or the time settled) */
 	const uint64_t *pos_seq;    /* its sequence (UINT64_MAX: the time settled) */
 	uint64_t *seq;              /* the next event's sequence number */
 	struct rtos_host_deferred **armed;
+	/* before this time nothing stops time spent but the clock (no event due,
+	 * not the run's deadline); 0 before boot */
+	const uint64_t *quiet_until;
+	const uint_t *access_depth; /* >0 inside a device event or register access */
 };
 extern const struct rtos_host_deferred_state rtos_host_deferred_state;
 
