@@ -228,14 +228,22 @@ static inline void rtos_host_defer_at(struct rtos_host_deferred *d, uint64_t t_n
 
 /* The calling context spends virtual CPU time until d's time as
  * rtos_host_consume does (nothing if it has come): a poll that waits for the
- * end of a transfer whose end is d (armed).  Inline, with the clock read
- * here: a polled transfer's reader waits for nearly every frame. */
+ * end of a transfer whose end is d (armed).  Inline, with rtos_host_consume's
+ * quiet case outside task level (inside a register access or device event,
+ * nothing due before d's time: only the clock moves): a polled transfer's
+ * reader waits for nearly every frame. */
 static inline void rtos_host_deferred_wait(const struct rtos_host_deferred *d)
 {
-	uint64_t now = *rtos_host_deferred_state.now;
+	const struct rtos_host_deferred_state *k = &rtos_host_deferred_state;
+	uint64_t now = *k->now;
 
-	if (d->time > now)
-		rtos_host_consume(d->time - now);
+	if (d->time <= now)
+		return;
+	if (d->time < *k->quiet_until && *k->access_depth != 0) {
+		*k->now = d->time;
+		return;
+	}
+	rtos_host_consume(d->time - now);
 }
 
 /* True if d, had it been queued, would have run by now (d must be armed):
