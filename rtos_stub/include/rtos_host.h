@@ -161,11 +161,15 @@ struct rtos_host_deferred {
  * and update (the clock, the run's place in the queue order, the next
  * sequence number, the armed list); only event.c and those functions use it. */
 struct rtos_host_deferred_state {
-	const uint64_t *now;        /* the virtual clock */
+	uint64_t *now;              /* the virtual clock */
 	const uint64_t *pos_time;   /* the last event taken (or the time settled) */
 	const uint64_t *pos_seq;    /* its sequence (UINT64_MAX: the time settled) */
 	uint64_t *seq;              /* the next event's sequence number */
 	struct rtos_host_deferred **armed;
+	/* before this time nothing stops time spent but the clock (no event due,
+	 * not the run's deadline); 0 before boot */
+	const uint64_t *quiet_until;
+	const uint_t *access_depth; /* >0 inside a device event or register access */
 };
 extern const struct rtos_host_deferred_state rtos_host_deferred_state;
 
@@ -175,26 +179,71 @@ void rtos_host_defer_at_slow(struct rtos_host_deferred *d, uint64_t t_ns, rtos_h
 /* rtos_host_deferred_disarm when d is armed but not first in the armed list. */
 void rtos_host_deferred_unlink(struct rtos_host_deferred *d);
 
-/* Arms d as the event fn(arg) at t_ns (>= now), ordered as rtos_host_event_at
- * would order it now; settle(arg) is the owner's catch-up (see above).
- * Inline: a polled transfer arms one per frame, thousands per second. */
-static inline void rtos_host_defer_at(struct rtos_host_deferred *d, uint64_t t_ns, rtos_host_event_fn fn,
-				      rtos_host_event_fn settle, void *arg)
+/* Binds d to its event fn(arg) and the owner's catch-up settle(arg) (see
+ * above) for rtos_host_deferred_arm_in; d must not be armed.  Done once by an
+ * owner that arms the same event again and again. */
+static inline void rtos_host_deferred_bind(struct rtos_host_deferred *d, rtos_host_event_fn fn,
+					   rtos_host_event_fn settle, void *arg)
+{
+	d->fn = fn;
+	d->settle = settle;
+	d->arg = arg;
+}
+
+/* Arms d, bound, at t_ns (>= now), ordered as rtos_host_event_at would
+ * order it now. */
+static inline void rtos_host_deferred_arm_at(struct rtos_host_deferred *d, uint64_t t_ns)
 {
 	const struct rtos_host_deferred_state *k = &rtos_host_deferred_state;
 
 	if (d->armed || t_ns < *k->now) {
-		rtos_host_defer_at_slow(d, t_ns, fn, settle, arg);
+		rtos_host_defer_at_slow(d, t_ns, d->fn, d->settle, d->arg);
 		return;
 	}
 	d->time = t_ns;
 	d->seq = (*k->seq)++;
-	d->fn = fn;
-	d->settle = settle;
-	d->arg = arg;
 	d->armed = true;
 	d->next = *k->armed;
 	*k->armed = d;
+}
+
+/* Arms d, bound, ns from now (rtos_host_deferred_arm_at); returns its time.
+ * Inline, with the clock read here: a polled transfer arms one per frame,
+ * thousands per second. */
+static inline uint64_t rtos_host_deferred_arm_in(struct rtos_host_deferred *d, uint64_t ns)
+{
+	uint64_t t_ns = *rtos_host_deferred_state.now + ns;
+
+	rtos_host_deferred_arm_at(d, t_ns);
+	return t_ns;
+}
+
+/* Binds d to fn(arg) and settle(arg) and arms it at t_ns (>= now). */
+static inline void rtos_host_defer_at(struct rtos_host_deferred *d, uint64_t t_ns, rtos_host_event_fn fn,
+				      rtos_host_event_fn settle, void *arg)
+{
+	rtos_host_deferred_bind(d, fn, settle, arg);
+	rtos_host_deferred_arm_at(d, t_ns);
+}
+
+/* The calling context spends virtual CPU time until d's time as
+ * rtos_host_consume does (nothing if it has come): a poll that waits for the
+ * end of a transfer whose end is d (armed).  Inline, with rtos_host_consume's
+ * quiet case outside task level (inside a register access or device event,
+ * nothing due before d's time: only the clock moves): a polled transfer's
+ * reader waits for nearly every frame. */
+static inline void rtos_host_deferred_wait(const struct rtos_host_deferred *d)
+{
+	const struct rtos_host_deferred_state *k = &rtos_host_deferred_state;
+	uint64_t now = *k->now;
+
+	if (d->time <= now)
+		return;
+	if (d->time < *k->quiet_until && *k->access_depth != 0) {
+		*k->now = d->time;
+		return;
+	}
+	rtos_host_consume(d->time - now);
 }
 
 /* True if d, had it been queued, would have run by now (d must be armed):

@@ -268,9 +268,9 @@ static void frame_settle_for_kernel(void *arg)
 		s->frame_ev = rtos_host_deferred_queue(&s->frame_deferred);
 }
 
-/* Starts a frame of ns now with the slave answering (mask: the word's data
- * bits); the frame's end is left to the caller. */
-static inline void frame_begin(struct spi_module *s, uint16_t word, uint16_t mask, uint64_t ns)
+/* Starts a frame now with the slave answering (mask: the word's data bits);
+ * its end (frame_end) is left to the caller. */
+static inline void frame_begin(struct spi_module *s, uint16_t word, uint16_t mask)
 {
 	uint16_t out;
 
@@ -278,14 +278,14 @@ static inline void frame_begin(struct spi_module *s, uint16_t word, uint16_t mas
 	s->word = word;
 	out = s->slave.frame != NULL ? s->slave.frame(s->slave.ctx, word) : 0;
 	s->shift_out = out & mask;
-	s->frame_end = hs_now() + ns;
 }
 
-/* Defers the end of the frame just begun (it is private). */
-static inline void frame_defer_end(struct spi_module *s)
+/* Defers the end of the frame just begun (it is private) to ns from now;
+ * frame_deferred is bound to frame_done once (spi_create). */
+static inline void frame_defer_end(struct spi_module *s, uint64_t ns)
 {
 	s->stats.deferred_ends++;
-	rtos_host_defer_at(&s->frame_deferred, s->frame_end, frame_done, frame_settle_for_kernel, s);
+	s->frame_end = rtos_host_deferred_arm_in(&s->frame_deferred, ns);
 }
 
 /* Starts a frame now with the slave answering; its end is an event, or
@@ -295,11 +295,13 @@ static void frame_start(struct spi_module *s, uint16_t word, unsigned fmt)
 	uint16_t mask;
 	uint64_t ns = frame_ns(s, fmt, &mask);
 
-	frame_begin(s, word, mask, ns);
-	if (defer_private_ends && frame_end_private(s))
-		frame_defer_end(s);
-	else
+	frame_begin(s, word, mask);
+	if (defer_private_ends && frame_end_private(s)) {
+		frame_defer_end(s, ns);
+	} else {
+		s->frame_end = hs_now() + ns;
 		s->frame_ev = hs_event_at(s->frame_end, frame_done, s);
+	}
 }
 
 /* A word written to SPIDAT0/1: transfer now, or park it in the TX buffer. */
@@ -342,8 +344,8 @@ static void write_dat0(void *ctx, const struct hs_access *a, uint32_t old, uint3
 	*s->dat1 = (*s->dat1 & ~0xFFFFU) | word;
 	if (s->polled && !s->busy) {
 		flg_update(s, FLG_TXINT, 0);
-		frame_begin(s, word, s->timing_mask, s->timing_ns);
-		frame_defer_end(s);
+		frame_begin(s, word, s->timing_mask);
+		frame_defer_end(s, s->timing_ns);
 		return;
 	}
 	spi_send(s, word);
@@ -384,6 +386,24 @@ static inline void buf_take(struct spi_module *s, uint32_t *value)
 		spi_irq_update(s);
 }
 
+/* frame_done_private then buf_take, for a read of SPIBUF, empty, as the
+ * deferred frame ends: the answer is shifted in and taken at once (no
+ * overrun; no word waits behind a deferred frame), so SPIFLG keeps TXINT
+ * but not RXINT.  One update of SPIBUF and of SPIFLG instead of two each. */
+static inline void frame_done_private_taken(struct spi_module *s, uint32_t *value)
+{
+	uint32_t in = s->shift_out;
+
+	rtos_host_deferred_disarm(&s->frame_deferred);
+	s->busy = false;
+	s->stats.transfers++;
+	*value = in;
+	s->rx = BUF_RXEMPTY | in;
+	flg_update(s, FLG_RXINT, FLG_TXINT);
+	if (!s->polled)
+		spi_irq_update(s);
+}
+
 /* read_buf while a frame is busy: settle it, stall until its end if the poll
  * would see "not yet", then consume.  Out of line: the idle read, one of
  * d_analog's two per frame, then needs no registers saved. */
@@ -393,7 +413,17 @@ static __attribute__((noinline)) void read_buf_busy(struct spi_module *s, uint32
 	/* a poll that would see "not yet": the CPU spins until the frame ends */
 	if (s->busy && ((s->rx & BUF_RXEMPTY) || s->tx_full)) {
 		s->stats.stalls++;
-		hs_access_stall_until(s->frame_end);
+		if (!s->frame_deferred.armed) {
+			hs_access_stall_until(s->frame_end);
+		} else {
+			rtos_host_deferred_wait(&s->frame_deferred);   /* hs_access_stall_until, inline */
+			/* d_analog's every frame: still deferred (nothing looked meanwhile), and due */
+			if (s->frame_deferred.armed && (s->rx & BUF_RXEMPTY) &&
+			    rtos_host_deferred_due(&s->frame_deferred)) {
+				frame_done_private_taken(s, value);
+				return;
+			}
+		}
 		frame_settle(s);
 	}
 	buf_take(s, value);
@@ -518,6 +548,7 @@ static ER spi_create(unsigned bus, const struct hs_board_cfg *cfg, void **ctx)
 	for (unsigned i = 0; i < 4U; i++)
 		s->fmt[i] = hs_reg_value_ptr(s->r, SPIFMT0 + 4U * i);
 	s->rx = BUF_RXEMPTY;
+	rtos_host_deferred_bind(&s->frame_deferred, frame_done, frame_settle_for_kernel, s);
 	/* Linux's SPI master leaves the module out of reset (EV3RT's driver had to take SPI0 out itself) */
 	if (!cfg || !cfg->cold_reset)
 		hs_reg_set(s->r, SPIGCR0, 1);

@@ -410,7 +410,7 @@ void rtos_host_event_cancel(rtos_host_event_t handle)
 }
 
 const struct rtos_host_deferred_state rtos_host_deferred_state = {
-	&now_ns, &ev_pos_time, &ev_pos_seq, &ev_seq, &ev_deferred,
+	&now_ns, &ev_pos_time, &ev_pos_seq, &ev_seq, &ev_deferred, &quiet_until, &cpu.irq_defer,
 };
 
 /* rtos_host_defer_at's rare cases: d armed again before it completed (its

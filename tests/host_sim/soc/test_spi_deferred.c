@@ -4,7 +4,9 @@
  * a frame, flags cleared before SPIBUF is read, an interrupt enabled before
  * and during a frame, a word waiting in the TX buffer, an overrun, a reset,
  * the idle check, reads by events at the frame's end time, the format,
- * delay and format selection changed between frames) gives the same
+ * delay and format selection changed between frames, SPIBUF stalls that
+ * an event interrupts, that a device event makes across the run's end and
+ * that a model-side read makes outside any access) gives the same
  * register values at the same virtual times, the same interrupt line (VCD)
  * and the same statistics with deferral on as with every frame end an event.
  */
@@ -14,6 +16,7 @@
 #include <string.h>
 #include "devtest.h"
 #include "host_sim/intc.h"
+#include "host_sim/regs.h"
 #include "host_sim/devices/spi.h"
 #include "text_files_test.h"
 
@@ -88,6 +91,17 @@ static uint32_t polled_frame(uint16_t word)
 static void event_reads_flags(void *arg)
 {
 	note(arg, rd32(SPIFLG));
+}
+
+/* A device event polling a frame of its own (the stall inside an event). */
+static void event_polls_frame(void *arg)
+{
+	uint32_t buf;
+
+	wr32(SPIDAT0, 0x1A40);
+	while ((buf = rd32(SPIBUF)) & RXEMPTY)
+		;
+	note(arg, buf);
 }
 
 /* The frame time of the format spi_setup sets: one frame written and polled. */
@@ -212,6 +226,20 @@ static void run_sequence(bool defer, struct run *r, const char *vcd_path)
 	polled_frame(0x1840);
 	wr32(SPIGCR1, 0x01000003);                      /* written again, unchanged */
 	polled_frame(0x18C0);
+
+	/* SPIBUF stalls that do more than move the clock: an event falls due
+	 * during the stall; a device event's stall crosses the run's end; a
+	 * model-side read (hs_cpu_read: no register access in progress) stalls */
+	hs_sim_at(hs_now() + 3 * US, event_reads_flags, "event during stall");
+	wr32(SPIDAT0, 0x1940);
+	note("buf after event", rd32(SPIBUF));
+	hs_sim_at(hs_now() + 10 * US, event_polls_frame, "event's frame");
+	hs_sim_run_for(12 * US);
+	note("after run end", rd32(SPIFLG));
+	hs_sim_run_for(20 * US);
+	wr32(SPIDAT0, 0x19C0);
+	note("model-side buf", hs_cpu_read(SPIBUF, 4));
+	note("model-side after", rd32(SPIFLG));
 
 	/* a reset after an unobserved end, and the statistics */
 	wr32(SPIDAT0, 0x1E40);
