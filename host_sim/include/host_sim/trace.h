@@ -34,6 +34,8 @@ void hs_trace_set(struct hs_signal *s, uint64_t value);
 /* Sets a 1-bit signal to high impedance ('z'). */
 void hs_trace_set_z(struct hs_signal *s);
 void hs_trace_set_real(struct hs_signal *s, double value);
+/* hs_trace_set_real of a, then of b, at one instant (both real-valued signals). */
+void hs_trace_set_real_pair(struct hs_signal *a, double va, struct hs_signal *b, double vb);
 /* A 1-ns pulse on a 1-bit signal (a latched event such as an interrupt request). */
 void hs_trace_pulse(struct hs_signal *s);
 

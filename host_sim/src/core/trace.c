@@ -311,6 +311,16 @@ void hs_trace_set_z(struct hs_signal *s)
 	record(s, now);
 }
 
+/* Sets real-valued signal s to value at now, the falls due by now flushed. */
+static inline void set_real(struct hs_signal *s, double value, uint64_t now)
+{
+	if (s->known && s->real == value)
+		return;
+	s->known = true;
+	s->real = value;
+	record(s, now);
+}
+
 void hs_trace_set_real(struct hs_signal *s, double value)
 {
 	uint64_t now;
@@ -323,11 +333,23 @@ void hs_trace_set_real(struct hs_signal *s, double value)
 	}
 	now = rtos_host_now();
 	flush_falls(now);
-	if (s->known && s->real == value)
+	set_real(s, value, now);
+}
+
+/* One look at the clock and the falls for both (a motor's angle and speed at each step). */
+void hs_trace_set_real_pair(struct hs_signal *a, double va, struct hs_signal *b, double vb)
+{
+	uint64_t now;
+
+	if (!a || !b || a->width != 0U || b->width != 0U) {
+		hs_trace_set_real(a, va);
+		hs_trace_set_real(b, vb);
 		return;
-	s->known = true;
-	s->real = value;
-	record(s, now);
+	}
+	now = rtos_host_now();
+	flush_falls(now);
+	set_real(a, va, now);
+	set_real(b, vb, now);
 }
 
 /* Puts the pending fall of s into the queue written to the VCD; false if out of memory. */

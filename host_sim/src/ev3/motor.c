@@ -101,12 +101,12 @@ static double exp_memoized(struct exp_memo *memo, double x)
 
 /* dc_motor_advance with the step's exp taken from memo (NULL: computed). */
 static void motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st, double dt,
-			  struct hbridge_drive drive, double vbat, double load_nm, double extra_inertia,
-			  struct exp_memo *memo)
+			  const struct hbridge_drive *drive, double vbat, double load_nm,
+			  double extra_inertia, struct exp_memo *memo)
 {
 	double J = m->inertia + (extra_inertia > 0 ? extra_inertia : 0);
-	double k = m->k_back * (drive.fwd + drive.rev + drive.brake) + m->viscous;
-	double td = m->k_volt * (drive.fwd - drive.rev) * vbat - load_nm;
+	double k = m->k_back * (drive->fwd + drive->rev + drive->brake) + m->viscous;
+	double td = m->k_volt * (drive->fwd - drive->rev) * vbat - load_nm;
 	double w0 = st->omega, s, tn, wss, T, e, w1;
 
 	if (dt <= 0)
@@ -139,7 +139,7 @@ static void motor_advance(const struct dc_motor_model *m, struct dc_motor_state 
 void dc_motor_advance(const struct dc_motor_model *m, struct dc_motor_state *st, double dt,
 		      struct hbridge_drive drive, double vbat, double load_nm, double extra_inertia)
 {
-	motor_advance(m, st, dt, drive, vbat, load_nm, extra_inertia, NULL);
+	motor_advance(m, st, dt, &drive, vbat, load_nm, extra_inertia, NULL);
 }
 
 /* ---- the attached motor ---- */
@@ -241,10 +241,10 @@ static void show_step(struct hs_motor *m, int64_t dir)
 	}
 }
 
-/* Brings the pins to the angle at time t (emitting any missed edges in order). */
-static void catch_up(struct hs_motor *m, uint64_t t)
+/* Brings the pins to angle theta (emitting any missed edges in order). */
+static void catch_up(struct hs_motor *m, double theta)
 {
-	int64_t target = index_of(seg_theta(m, t));
+	int64_t target = index_of(theta);
 
 	if (m->stuck)
 		return;
@@ -294,7 +294,6 @@ static double battery_v(void)
 
 static void motor_new_segment(struct hs_motor *m);
 static void segment_solve_late(struct hs_motor *m);
-static double omega_now(struct hs_motor *m);
 
 static void segment_leave_to_owner(struct hs_motor *m);
 
@@ -313,22 +312,15 @@ static void step_due(void *arg)
 		motor_new_segment(m);
 }
 
-/* Exact speed now: the end speed at a step boundary, else the old
- * segment's solution re-run from its start up to now (remembered for a
- * second look at the same instant: the robot reads the speed, then sets the load). */
-static double omega_now(struct hs_motor *m)
+/* omega_now strictly inside a segment: the segment's solution re-run from its
+ * start up to now (remembered for a second look at the same instant: the robot
+ * reads the speed, then sets the load).  Out of line: most looks fall on a
+ * segment's start or end. */
+static __attribute__((noinline)) double omega_between(struct hs_motor *m, uint64_t now)
 {
-	uint64_t now = hs_now();
 	struct dc_motor_state st = { m->seg_omega0, 0 };
-	double v;
+	double v = battery_v();
 
-	if (m->seg_unsolved && now != m->seg_t0)
-		segment_solve_late(m);
-	if (now >= m->seg_t1 || m->stalled)
-		return m->stalled ? 0.0 : m->seg_omega1;
-	if (now == m->seg_t0)
-		return m->seg_omega0;
-	v = battery_v();
 	/* a segment starts at now whenever its inputs change, so within one the
 	 * solution depends on the time and the battery only */
 	if (m->mid_memo.valid && m->mid_memo.t == now && m->mid_memo.seg_t0 == m->seg_t0 &&
@@ -340,21 +332,37 @@ static double omega_now(struct hs_motor *m)
 	return st.omega;
 }
 
+/* Exact speed now: the end speed at a step boundary, the start speed at its
+ * start, else omega_between. */
+static inline double omega_now(struct hs_motor *m)
+{
+	uint64_t now = hs_now();
+
+	if (m->seg_unsolved && now != m->seg_t0)
+		segment_solve_late(m);
+	if (now >= m->seg_t1 || m->stalled)
+		return m->stalled ? 0.0 : m->seg_omega1;
+	if (now == m->seg_t0)
+		return m->seg_omega0;
+	return omega_between(m, now);
+}
+
 /* Starts a segment at now from the angle shown by the old one and speed
  * seg_omega1 (set by the caller to the speed now): the pins caught up, the
  * start published on the trace; its end is left to segment_solve. */
 static inline __attribute__((always_inline)) void segment_begin(struct hs_motor *m, uint64_t now)
 {
+	double theta = seg_theta(m, now);
+
 	m->seg_vbat = battery_v();
-	catch_up(m, now);
-	m->seg_theta0 = seg_theta(m, now);
+	catch_up(m, theta);
+	m->seg_theta0 = theta;
 	m->seg_omega0 = m->stalled ? 0.0 : m->seg_omega1;
 	m->seg_t0 = now;
 	m->seg_t1 = now + STEP_NS;
-	if (m->sig_angle) {
-		hs_trace_set_real(m->sig_angle, m->seg_theta0 / RAD_PER_DEG);
-		hs_trace_set_real(m->sig_speed, m->seg_omega0 / RAD_PER_DEG);
-	}
+	if (m->sig_angle)
+		hs_trace_set_real_pair(m->sig_angle, m->seg_theta0 / RAD_PER_DEG,
+				       m->sig_speed, m->seg_omega0 / RAD_PER_DEG);
 }
 
 /* The begun segment's physics step: its end speed, length and linear rate. */
@@ -364,7 +372,7 @@ static inline __attribute__((always_inline)) void segment_solve(struct hs_motor 
 
 	m->seg_unsolved = false;
 	if (!m->stalled) {
-		motor_advance(&m->model, &st, STEP_NS * 1e-9, m->drive, m->seg_vbat, m->load_nm,
+		motor_advance(&m->model, &st, STEP_NS * 1e-9, &m->drive, m->seg_vbat, m->load_nm,
 			      m->extra_inertia, &m->step_exp);
 		if (fabs(st.omega - m->seg_omega0) < STEADY_RAD_S && st.omega != 0.0) {
 			/* settled: a longer step loses nothing (inputs changes still cut it) */
@@ -660,7 +668,7 @@ void hs_motor_set_encoder_stuck(struct hs_motor *m, bool stuck)
 	segment_settle(m);
 	m->stuck = stuck;
 	if (!stuck)
-		catch_up(m, hs_now());
+		catch_up(m, seg_theta(m, hs_now()));
 	motor_schedule_edge(m);
 }
 

@@ -34,9 +34,19 @@ struct aq_event {
 	uint32_t pos;               /* TBCLK cycles from the period start */
 	uint8_t prio;               /* higher wins at equal positions (applied last) */
 	uint8_t action;
+	uint8_t tag;                /* index in aq_events' unsorted build */
 };
 
-/* Sorts events by position, then priority (insertion sort: at most 6). */
+/* True if event a goes before b in aq_sort's order (position, then priority, then build order). */
+static bool aq_before(const struct aq_event *a, const struct aq_event *b)
+{
+	if (a->pos != b->pos)
+		return a->pos < b->pos;
+	return a->prio != b->prio ? a->prio < b->prio : a->tag < b->tag;
+}
+
+/* Sorts events by position, then priority (insertion sort: at most 6; stable, so
+ * equal keys keep their build order). */
 static void aq_sort(struct aq_event *ev, unsigned n)
 {
 	for (unsigned i = 1; i < n; i++)
@@ -49,7 +59,15 @@ static void aq_sort(struct aq_event *ev, unsigned n)
 		}
 }
 
-/* The action events of one period, sorted; returns their count, *len the period in TBCLK cycles. */
+/* Appends an event to ev (holding *n), tagged with its index. */
+static void aq_add(struct aq_event *ev, unsigned *n, uint32_t pos, uint8_t prio, uint8_t action)
+{
+	ev[*n] = (struct aq_event){ pos, prio, action, (uint8_t)*n };
+	++*n;
+}
+
+/* The action events of one period, unsorted (tagged with their index); returns
+ * their count, *len the period in TBCLK cycles. */
 static unsigned aq_events(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uint32_t cmpb,
 			  uint32_t aqctl, struct aq_event ev[6], uint32_t *len)
 {
@@ -58,38 +76,37 @@ static unsigned aq_events(unsigned ctrmode, uint32_t prd, uint32_t cmpa, uint32_
 	/* AQCTL fields: ZRO 1:0, PRD 3:2, CAU 5:4, CAD 7:6, CBU 9:8, CBD 11:10 */
 	if (ctrmode == 0) {                 /* up: 0..PRD */
 		*len = prd + 1U;
-		ev[n++] = (struct aq_event){ 0, 0, (uint8_t)(aqctl & 3U) };
-		ev[n++] = (struct aq_event){ prd, 1, (uint8_t)((aqctl >> 2) & 3U) };
+		aq_add(ev, &n, 0, 0, (uint8_t)(aqctl & 3U));
+		aq_add(ev, &n, prd, 1, (uint8_t)((aqctl >> 2) & 3U));
 		if (cmpa <= prd)
-			ev[n++] = (struct aq_event){ cmpa, 2, (uint8_t)((aqctl >> 4) & 3U) };
+			aq_add(ev, &n, cmpa, 2, (uint8_t)((aqctl >> 4) & 3U));
 		if (cmpb <= prd)
-			ev[n++] = (struct aq_event){ cmpb, 3, (uint8_t)((aqctl >> 8) & 3U) };
+			aq_add(ev, &n, cmpb, 3, (uint8_t)((aqctl >> 8) & 3U));
 	} else if (ctrmode == 1) {          /* down: PRD..0 */
 		*len = prd + 1U;
-		ev[n++] = (struct aq_event){ 0, 1, (uint8_t)((aqctl >> 2) & 3U) };
-		ev[n++] = (struct aq_event){ prd, 0, (uint8_t)(aqctl & 3U) };
+		aq_add(ev, &n, 0, 1, (uint8_t)((aqctl >> 2) & 3U));
+		aq_add(ev, &n, prd, 0, (uint8_t)(aqctl & 3U));
 		if (cmpa <= prd)
-			ev[n++] = (struct aq_event){ prd - cmpa, 2, (uint8_t)((aqctl >> 6) & 3U) };
+			aq_add(ev, &n, prd - cmpa, 2, (uint8_t)((aqctl >> 6) & 3U));
 		if (cmpb <= prd)
-			ev[n++] = (struct aq_event){ prd - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U) };
+			aq_add(ev, &n, prd - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U));
 	} else {                            /* up-down: 0..PRD..0 */
 		uint32_t l = prd ? 2U * prd : 1U;
 
 		*len = l;
-		ev[n++] = (struct aq_event){ 0, 0, (uint8_t)(aqctl & 3U) };
-		ev[n++] = (struct aq_event){ prd, 1, (uint8_t)((aqctl >> 2) & 3U) };
+		aq_add(ev, &n, 0, 0, (uint8_t)(aqctl & 3U));
+		aq_add(ev, &n, prd, 1, (uint8_t)((aqctl >> 2) & 3U));
 		if (cmpa < prd) {
-			ev[n++] = (struct aq_event){ cmpa, 2, (uint8_t)((aqctl >> 4) & 3U) };
+			aq_add(ev, &n, cmpa, 2, (uint8_t)((aqctl >> 4) & 3U));
 			if (cmpa)
-				ev[n++] = (struct aq_event){ l - cmpa, 2, (uint8_t)((aqctl >> 6) & 3U) };
+				aq_add(ev, &n, l - cmpa, 2, (uint8_t)((aqctl >> 6) & 3U));
 		}
 		if (cmpb < prd && n < 6) {
-			ev[n++] = (struct aq_event){ cmpb, 3, (uint8_t)((aqctl >> 8) & 3U) };
+			aq_add(ev, &n, cmpb, 3, (uint8_t)((aqctl >> 8) & 3U));
 			if (cmpb && n < 6)
-				ev[n++] = (struct aq_event){ l - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U) };
+				aq_add(ev, &n, l - cmpb, 3, (uint8_t)((aqctl >> 10) & 3U));
 		}
 	}
-	aq_sort(ev, n);
 	return n;
 }
 
@@ -107,7 +124,12 @@ struct aq_steady {
 	unsigned ctrmode;
 	uint32_t prd, cmpa, cmpb, aqctl;
 	unsigned n;
+	uint32_t len;               /* TBCLK cycles of a period */
+	uint8_t tag[6];             /* the sorted events' indices in aq_events' build */
+	uint8_t action[6];          /* their actions */
 	uint32_t from[6], to[6];    /* positions where each event's level holds in a period */
+	bool period_level[2][6];    /* level after each event in one period entered at level 0, 1 */
+	bool period_end[2];         /* level such a period ends at */
 	bool level[2][6];           /* that level in a steady period, by the level before the first */
 	double low[2];              /* low fraction of the steady periods, likewise */
 };
@@ -118,42 +140,85 @@ static uint32_t aq_cmp_key(uint32_t cmp, uint32_t aqctl, uint32_t actions)
 	return aqctl & actions ? cmp : 0;
 }
 
-/* Works c out for its setting as three periods from each start level (the first settles
- * toggles, the last two are measured).  A period depends only on the level it starts at,
- * so one period from each level gives all six. */
-static void aq_steady_fill(struct aq_steady *c, const struct aq_event *ev, uint32_t len)
+/* Works out c's levels from its sorted actions: one period from each start level,
+ * then the steady ones (a period depends only on the level it starts at, so three
+ * periods, the first settling toggles, follow from these two). */
+static void aq_steady_fill_levels(struct aq_steady *c)
 {
-	bool end[2], level[2][6];
-	uint64_t low[2];
-
 	for (unsigned from = 0; from < 2; from++) {
 		bool lvl = from != 0;
 
-		low[from] = 0;
 		for (unsigned i = 0; i < c->n; i++) {
-			lvl = aq_apply(lvl, ev[i].action);
-			level[from][i] = lvl;
-			if (!lvl)
-				low[from] += c->to[i] - c->from[i];
+			lvl = aq_apply(lvl, c->action[i]);
+			c->period_level[from][i] = lvl;
 		}
-		end[from] = lvl;
+		c->period_end[from] = lvl;
 	}
 	for (unsigned start = 0; start < 2; start++) {
-		bool second = end[start], third = end[second];
+		bool third = c->period_end[c->period_end[start]];
 
 		for (unsigned i = 0; i < c->n; i++)
-			c->level[start][i] = level[third][i];
-		c->low[start] = (double)(low[second] + low[third]) / (2.0 * len);
+			c->level[start][i] = c->period_level[third][i];
 	}
 }
 
-/* aq_steady_of when c does not hold the setting: works it out into c.  Out of
- * line: a duty change misses once, the updates after it hit. */
+/* Works out c's low fractions from its levels and positions: the mean of the
+ * second and third period from each start level. */
+static void aq_steady_fill_low(struct aq_steady *c)
+{
+	uint64_t low[2] = { 0, 0 };
+	unsigned n = c->n;
+
+	for (unsigned i = 0; i < n; i++) {
+		uint32_t width = c->to[i] - c->from[i];
+
+		if (!c->period_level[0][i])
+			low[0] += width;
+		if (!c->period_level[1][i])
+			low[1] += width;
+	}
+	for (unsigned start = 0; start < 2; start++) {
+		bool second = c->period_end[start], third = c->period_end[second];
+
+		c->low[start] = (double)(low[second] + low[third]) / (2.0 * c->len);
+	}
+}
+
+/* Takes the positions of c's events from a new build ev (n events) in which only
+ * compare values moved, if the events keep their sorted order and actions (the
+ * levels then hold); false if they do not. */
+static bool aq_steady_move(struct aq_steady *c, const struct aq_event *ev, unsigned n)
+{
+	uint32_t pos[7];
+	const struct aq_event *prev = NULL;
+
+	if (n != c->n)
+		return false;
+	for (unsigned i = 0; i < n; i++) {
+		const struct aq_event *e = &ev[c->tag[i]];
+
+		if (e->action != c->action[i] || (prev != NULL && !aq_before(prev, e)))
+			return false;
+		pos[i] = e->pos;
+		prev = e;
+	}
+	pos[n] = c->len;
+	for (unsigned i = 0; i < n; i++) {
+		c->from[i] = pos[i];
+		c->to[i] = pos[i + 1];
+	}
+	return true;
+}
+
+/* aq_steady_of when c does not hold the setting: works it out into c (only the
+ * positions and fractions when just a compare value moved, as a duty change does).
+ * Out of line: a duty change misses once, the updates after it hit. */
 static __attribute__((noinline)) const struct aq_steady *aq_steady_fill_setting(
 	struct aq_steady *c, unsigned ctrmode, uint32_t prd, uint32_t cmpa, uint32_t cmpb, uint32_t aqctl)
 {
 	struct aq_event ev[6];
-	uint32_t len;
+	unsigned n = aq_events(ctrmode, prd, cmpa, cmpb, aqctl, ev, &c->len);
+	bool same_frame = c->valid && c->ctrmode == ctrmode && c->prd == prd && c->aqctl == aqctl;
 
 	c->valid = true;
 	c->ctrmode = ctrmode;
@@ -161,12 +226,18 @@ static __attribute__((noinline)) const struct aq_steady *aq_steady_fill_setting(
 	c->cmpa = aq_cmp_key(cmpa, aqctl, AQ_CMPA_ACTIONS);
 	c->cmpb = aq_cmp_key(cmpb, aqctl, AQ_CMPB_ACTIONS);
 	c->aqctl = aqctl;
-	c->n = aq_events(ctrmode, prd, cmpa, cmpb, aqctl, ev, &len);
-	for (unsigned i = 0; i < c->n; i++) {
-		c->from[i] = ev[i].pos;
-		c->to[i] = (i + 1 < c->n) ? ev[i + 1].pos : len;
+	if (!same_frame || !aq_steady_move(c, ev, n)) {
+		aq_sort(ev, n);
+		c->n = n;
+		for (unsigned i = 0; i < n; i++) {
+			c->tag[i] = ev[i].tag;
+			c->action[i] = ev[i].action;
+			c->from[i] = ev[i].pos;
+			c->to[i] = (i + 1 < n) ? ev[i + 1].pos : c->len;
+		}
+		aq_steady_fill_levels(c);
 	}
-	aq_steady_fill(c, ev, len);
+	aq_steady_fill_low(c);
 	return c;
 }
 
@@ -182,11 +253,15 @@ static inline const struct aq_steady *aq_steady_of(struct aq_steady *c, unsigned
 }
 
 /* Level at position pos of a steady period entered at level start (start
- * itself if pos lies in no event's range; the ranges do not overlap). */
+ * itself if pos lies in no event's range).  The ranges tile the period from
+ * the first event on (each starts where the one before ends; there are at
+ * least two, at zero and period), so the first range ending after pos holds it. */
 static bool aq_level_at(const struct aq_steady *c, bool start, uint32_t pos)
 {
+	if (pos < c->from[0])
+		return start;
 	for (unsigned i = 0; i < c->n; i++)
-		if (pos >= c->from[i] && pos < c->to[i])
+		if (pos < c->to[i])
 			return c->level[start][i];
 	return start;
 }

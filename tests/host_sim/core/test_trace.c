@@ -102,7 +102,7 @@ int main(void)
 	bool mono = true;
 	uint64_t last = 0;
 
-	tap_plan(13);
+	tap_plan(14);
 	for (int i = 0; i < 6; i++)
 		snprintf(p[i], sizeof(p[i]), "/tmp/ev3lx-trace-%d-%d.%s", (int)getpid(), i, i % 2 ? "csv" : "vcd");
 	ok(run(7, p[0], p[1]) && run(7, p[2], p[3]) && run(8, p[4], p[5]), "three runs (seeds 7, 7, 8)");
@@ -153,6 +153,15 @@ int main(void)
 		}
 		ok(hs_rng_next(&s1) != hs_rng_next(&s2) && sum / 10000 > -0.05 && sum / 10000 < 0.05 &&
 		   sq / 10000 > 0.95 && sq / 10000 < 1.05, "PRNG: named streams differ; gauss has mean 0, variance 1");
+	}
+	{
+		/* a pair set at one instant counts each signal's own changes */
+		struct hs_signal *pa = hs_trace_signal_real("pair", "a"), *pb = hs_trace_signal_real("pair", "b");
+
+		hs_trace_set_real_pair(pa, 1.0, pb, 2.0);
+		hs_trace_set_real_pair(pa, 1.0, pb, 3.0);
+		ok(hs_signal_real(pa) == 1.0 && hs_signal_real(pb) == 3.0 && hs_signal_changes(pa) == 1 &&
+		   hs_signal_changes(pb) == 2, "a pair of real signals: values and changes as set one by one");
 	}
 	free(a); free(b); free(c); free(ca); free(cb);
 	for (int i = 0; i < 6; i++)

@@ -2,8 +2,9 @@
  * test_ehrpwm.c — eHRPWM1's outputs as a motor sees them: the low fraction
  * of each period for the action qualifiers a driver sets (up and up-down
  * counting, set/clear and toggle actions, shadowed and immediate compare
- * loads), and that a compare value reaches only the output whose actions
- * use it, also when a setting is left and taken again.
+ * loads), that a compare value reaches only the output whose actions
+ * use it, also when a setting is left and taken again, and that a moving
+ * compare value changes the order of the actions right.
  */
 #include <math.h>
 #include "devtest.h"
@@ -49,7 +50,7 @@ int main(void)
 {
 	double l;
 
-	tap_plan(12);
+	tap_plan(17);
 	devtest_boot(1, NULL);
 	devtest_pwm_setup();
 	hs_sim_run_for(MS);
@@ -71,6 +72,21 @@ int main(void)
 	is_near(low_b(), 0.1, "B follows CMPA once its actions use it");
 	set_cmpa(3000);
 	is_near(low_b(), 0.3, "... and a change of CMPA");
+
+	/* both compare values act on A: CMPA moves past CMPB, onto it (CMPB wins, applied
+	 * last), beyond the period (no action) and back, the order of the actions changing */
+	wr16(AQCTLA, ZRO(2) | CAU(1) | CBU(2));
+	set_cmpa(2000);
+	is_near(low_a(), 0.3, "A: high at zero, low from CMPA = 2000 to CMPB = 5000");
+	set_cmpa(8000);
+	is_near(low_a(), 0.2, "A: CMPA after CMPB, low from 8000 to the period's end");
+	set_cmpa(5000);
+	is_near(low_a(), 0.0, "A: CMPA on CMPB, CMPB's set wins");
+	set_cmpa(10000);
+	is_near(low_a(), 0.0, "A: CMPA beyond the period never clears");
+	set_cmpa(1000);
+	is_near(low_a(), 0.4, "A: CMPA back inside, before CMPB");
+	wr16(AQCTLA, ZRO(1) | CAU(2));
 
 	/* immediate compare load (CMPCTL SHDWAMODE) */
 	wr16(CMPCTL, 1U << 4);
