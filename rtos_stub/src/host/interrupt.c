@@ -310,14 +310,26 @@ static bool harness_line_ok(const char *fn, INTNO intno)
 	return true;
 }
 
+/* Latches an edge on line n (in range) and delivers what the CPU accepts now. */
+static inline __attribute__((always_inline)) void edge_raise(INTNO n)
+{
+	lines[n].edge = true;
+	pend_set(n);
+	irq_dispatch_pending();
+}
+
 /* Latches an edge on the line: delivered once, when enabled and unmasked. */
 void rtos_host_irq_raise(INTNO intno)
 {
 	if (!harness_line_ok("rtos_host_irq_raise", intno))
 		return;
-	lines[intno].edge = true;
-	pend_set(intno);
-	irq_dispatch_pending();
+	edge_raise(intno);
+}
+
+/* Latches the tick line's edge (the kernel timer's expiry) and delivers what the CPU accepts now. */
+void irq_raise_tick(void)
+{
+	edge_raise(INTNO_TICK);
 }
 
 /* Sets a level-sensitive request; delivered (again) while asserted. */
