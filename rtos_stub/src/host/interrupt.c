@@ -125,9 +125,22 @@ void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exin
 	cpu.exec_id = saved_id;
 }
 
-/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order.
- * Out of line: the delivery loop around it then saves no registers of its own. */
-static __attribute__((noinline)) void irq_run(INTNO n)
+/* Runs the ISRs of line n, none or several, in isrpri order, in its ISR context.
+ * Out of line: line_run then keeps fewer registers across its calls. */
+static __attribute__((noinline)) void isrs_run_all(const struct irq_line *l, INTNO n)
+{
+	for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end;) {
+		e->isr(e->exinf);
+		cpu.locked = false;   /* TOPPERS releases a CPU lock an ISR returns with */
+		if (++e == end)
+			break;        /* line_run's restore sets kind and exec_id */
+		cpu.kind = EXEC_ISR;
+		cpu.exec_id = (ID)n;
+	}
+}
+
+/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order. */
+static inline __attribute__((always_inline)) void line_run(INTNO n)
 {
 	struct irq_line *l = &lines[n];
 	enum exec_kind saved_kind = cpu.kind;
@@ -163,13 +176,8 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 		/* most lines have one ISR (the tick, a GPIO bank, a UART): no list walk */
 		l->isrs[0].isr(l->isrs[0].exinf);
 		cpu.locked = false;
-	} else for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end;) {
-		e->isr(e->exinf);
-		cpu.locked = false;   /* TOPPERS releases a CPU lock an ISR returns with */
-		if (++e == end)
-			break;        /* the restore below sets kind and exec_id */
-		cpu.kind = EXEC_ISR;
-		cpu.exec_id = (ID)n;
+	} else {
+		isrs_run_all(l, n);
 	}
 	if (trace_on())
 		rtos_host_trace("kernel", "isr %u exit", n);
@@ -177,6 +185,19 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 	cpu.ipm = saved_ipm;
 	cpu.kind = saved_kind;
 	cpu.exec_id = saved_id;
+}
+
+/* Delivers line n (line_run).  Out of line, like irq_run_tick: the delivery
+ * loop around them then saves no registers of its own. */
+static __attribute__((noinline)) void irq_run(INTNO n)
+{
+	line_run(n);
+}
+
+/* Delivers the tick line, its number a constant (5000 times a virtual second). */
+static __attribute__((noinline)) void irq_run_tick(void)
+{
+	line_run(INTNO_TICK);
 }
 
 /* True if some line could be delivered in the current CPU state. */
@@ -193,7 +214,10 @@ void irq_deliver_pending(void)
 	if (paused_task != NULL)
 		return;
 	while (best_pri() < cpu.ipm) {
-		irq_run(irq_best_line);
+		if (irq_best_line == INTNO_TICK)
+			irq_run_tick();
+		else
+			irq_run(irq_best_line);
 		if (cpu.locked || cpu.sil_lock != 0)
 			break;
 	}
