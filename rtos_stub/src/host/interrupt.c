@@ -139,13 +139,11 @@ static __attribute__((noinline)) void isrs_run_all(const struct irq_line *l, INT
 	}
 }
 
-/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order. */
-static inline __attribute__((always_inline)) void line_run(INTNO n)
+/* Takes pending line n's request for its delivery (an edge is consumed, a
+ * level stays); false if a level line storms (then disabled, not delivered). */
+static inline __attribute__((always_inline)) bool line_take(INTNO n)
 {
 	struct irq_line *l = &lines[n];
-	enum exec_kind saved_kind = cpu.kind;
-	ID saved_id = cpu.exec_id;
-	PRI saved_ipm = cpu.ipm;
 
 	if (l->level) {
 		if (l->storm_time == now_ns && ++l->storm_count > IRQ_STORM_LIMIT) {
@@ -154,7 +152,7 @@ static inline __attribute__((always_inline)) void line_run(INTNO n)
 			rtos_host_bug("irq storm", "line %u is level-asserted and was delivered %u times at "
 				      "the same virtual time (its ISR does not clear the source); line disabled",
 				      n, IRQ_STORM_LIMIT);
-			return;
+			return false;
 		}
 		if (l->storm_time != now_ns) {
 			l->storm_time = now_ns;
@@ -164,6 +162,18 @@ static inline __attribute__((always_inline)) void line_run(INTNO n)
 	l->edge = false;
 	if (!l->level)
 		pend_clear_set_bit(n);
+	return true;
+}
+
+/* Serves line n, its request taken: the kernel tick work (INTNO_TICK), then
+ * its ISRs in isrpri order, in its ISR context. */
+static inline __attribute__((always_inline)) void line_serve(INTNO n)
+{
+	const struct irq_line *l = &lines[n];
+	enum exec_kind saved_kind = cpu.kind;
+	ID saved_id = cpu.exec_id;
+	PRI saved_ipm = cpu.ipm;
+
 	cpu.kind = EXEC_ISR;
 	cpu.exec_id = (ID)n;
 	cpu.ipm = l->pri;
@@ -187,17 +197,25 @@ static inline __attribute__((always_inline)) void line_run(INTNO n)
 	cpu.exec_id = saved_id;
 }
 
-/* Delivers line n (line_run).  Out of line, like irq_run_tick: the delivery
+/* Delivers pending line n.  Out of line, like irq_run_tick: the delivery
  * loop around them then saves no registers of its own. */
 static __attribute__((noinline)) void irq_run(INTNO n)
 {
-	line_run(n);
+	if (line_take(n))
+		line_serve(n);
 }
 
-/* Delivers the tick line, its number a constant (5000 times a virtual second). */
+/* Serves the tick line (line_serve with its number a constant: 5000 times a virtual second). */
+static __attribute__((noinline)) void irq_serve_tick(void)
+{
+	line_serve(INTNO_TICK);
+}
+
+/* Delivers the pending tick line. */
 static __attribute__((noinline)) void irq_run_tick(void)
 {
-	line_run(INTNO_TICK);
+	if (line_take(INTNO_TICK))
+		irq_serve_tick();
 }
 
 /* True if some line could be delivered in the current CPU state. */
@@ -207,22 +225,32 @@ bool irq_deliverable(void)
 	       best_pri() < cpu.ipm;
 }
 
+/* Delivers the pending lines the CPU accepts now, best first, until a lock
+ * stops it (an ISR that returned with one), then dispatches from a task's level.
+ * from_line: a line was just served, so the lock is looked at first. */
+static inline __attribute__((always_inline)) void deliver_loop(bool from_line)
+{
+	if (!from_line || (!cpu.locked && cpu.sil_lock == 0)) {
+		while (best_pri() < cpu.ipm) {
+			if (irq_best_line == INTNO_TICK)
+				irq_run_tick();
+			else
+				irq_run(irq_best_line);
+			if (cpu.locked || cpu.sil_lock != 0)
+				break;
+		}
+	}
+	if (cpu.isr_depth == 0 && (schedtsk != runtsk || kernel_exited))   /* dispatch_if_needed's first test */
+		dispatch_if_needed();
+}
+
 /* Delivers the pending interrupts the CPU accepts now, nested on the current stack
  * (irq_dispatch_pending's work once it found a line pending and no lock or deferral). */
 void irq_deliver_pending(void)
 {
 	if (paused_task != NULL)
 		return;
-	while (best_pri() < cpu.ipm) {
-		if (irq_best_line == INTNO_TICK)
-			irq_run_tick();
-		else
-			irq_run(irq_best_line);
-		if (cpu.locked || cpu.sil_lock != 0)
-			break;
-	}
-	if (cpu.isr_depth == 0 && (schedtsk != runtsk || kernel_exited))   /* dispatch_if_needed's first test */
-		dispatch_if_needed();
+	deliver_loop(false);
 }
 
 /* ---- Configuration (boot) ---- */
@@ -353,7 +381,19 @@ void rtos_host_irq_raise(INTNO intno)
 /* Latches the tick line's edge (the kernel timer's expiry) and delivers what the CPU accepts now. */
 void irq_raise_tick(void)
 {
-	edge_raise(INTNO_TICK);
+	const struct irq_line *l = &lines[INTNO_TICK];
+
+	/* Usually nothing else is pending and the CPU takes the tick at once: its
+	 * edge would be latched and taken again (no line pending is the state
+	 * before and after), so it is served directly, then the loop goes on as
+	 * after any line. */
+	if (irq_pending_lines != 0 || cpu.irq_defer != 0 || cpu.sil_lock != 0 || cpu.locked ||
+	    paused_task != NULL || !l->enabled || l->pri >= cpu.ipm) {
+		edge_raise(INTNO_TICK);
+		return;
+	}
+	irq_serve_tick();
+	deliver_loop(true);
 }
 
 /* Sets a level-sensitive request; delivered (again) while asserted. */

@@ -2,7 +2,8 @@
  * test_tick_delivery.c — the tick line with ISRs attached: it is raised on
  * every boundary, across the ends of runs; at each, the kernel's time events
  * due then are processed first, then the line's ISRs in isrpri order, in ISR
- * context at depth 1, and a task a time event released runs after them.
+ * context at depth 1, and a task a time event released runs after them.  A
+ * tick while the CPU is locked waits, latched, for unl_cpu.
  */
 #include "tap.h"
 #include "kernel.h"
@@ -20,12 +21,17 @@ static void isr_log(intptr_t name)
 	rt_log("%c%llu", (char)name, (unsigned long long)(rtos_host_now() / US));
 }
 
-/* Sleeps 1 ms from time 0 (the tick at 1000 us releases it), logs, and sleeps for good. */
+/* Sleeps 1 ms from time 0 (the tick at 1000 us releases it) and logs; then
+ * spends 300 us with the CPU locked, over the tick at 1200 us, and sleeps for good. */
 static void sleeper(intptr_t x)
 {
 	(void)x;
 	dly_tsk(1);
 	rt_log("W%llu", (unsigned long long)(rtos_host_now() / US));
+	loc_cpu();
+	rtos_host_consume(300 * US);
+	rt_log("U");
+	unl_cpu();
 	slp_tsk();
 }
 
@@ -55,8 +61,9 @@ int main(void)
 	rtos_host_run_for(150 * US);
 	rtos_host_run_for(150 * US);
 	rtos_host_run_for(300 * US);
-	is_str(rt_log_text(), "a1200 b1200 a1400 b1400 a1600 b1600",
-	       "runs ending between boundaries keep the tick on the boundaries");
+	is_str(rt_log_text(), "U a1300 b1300 a1400 b1400 a1600 b1600",
+	       "the tick at 1200 us, the CPU locked, is taken at unl_cpu; runs ending between "
+	       "boundaries keep the tick on the boundaries");
 	is_u64(rtos_host_now(), 1600 * US, "the runs end at their deadline");
 	rtos_host_shutdown();
 	return tap_done();
