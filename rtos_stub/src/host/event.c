@@ -19,7 +19,8 @@
  * sequence taken as a queued event's would be, and the head is whichever of
  * the two comes first in the same (time, sequence) order, so it runs exactly
  * where its queued event would have run without an insertion and a release
- * per tick.
+ * per tick.  Its expiry only latches the tick interrupt, so it needs no
+ * event context, and a periodic timer re-arms itself in place.
  *
  * A deferred event (rtos_host.h) holds a sequence number like a queued one
  * but no slot; it is due once the run has moved past its place in the order:
@@ -74,7 +75,7 @@ static uint64_t ev_pos_time;
 uint64_t ev_pos_seq = UINT64_MAX;
 static struct rtos_host_deferred *ev_deferred;   /* the armed deferred events */
 static struct ev_slot ev_timer = { UINT64_MAX, 0, 0, 0 };   /* the kernel timer: time UINT64_MAX when off */
-static rtos_host_event_fn ev_timer_fn;
+static uint64_t ev_timer_period;                 /* its re-arming interval, 0 for a single expiry */
 
 /* Sets the earliest event's time, and quiet_until with it. */
 static inline void ev_head_set(uint64_t t_ns)
@@ -467,13 +468,19 @@ uint_t event_user_count(void)
 	return ev_live;
 }
 
-/* Sets the kernel timer to fn(NULL) at t_ns (>= now), ordered as an event
- * scheduled now; replaces its previous setting. */
-void event_timer_set(uint64_t t_ns, rtos_host_event_fn fn)
+/* Sets the kernel timer to raise the tick at t_ns (>= now), ordered as an event
+ * scheduled now, then every period_ns if not 0; replaces its previous setting. */
+void event_timer_set(uint64_t t_ns, uint64_t period_ns)
 {
 	ev_timer = (struct ev_slot){ t_ns, ev_seq++, 0, 0 };
-	ev_timer_fn = fn;
+	ev_timer_period = period_ns;
 	ev_head_lower(t_ns);
+}
+
+/* The time the kernel timer is set to, UINT64_MAX when off. */
+uint64_t event_timer_time(void)
+{
+	return ev_timer.time;
 }
 
 /* Sets the bound quiet_until keeps below besides the next event (see kernel_impl.h). */
@@ -512,23 +519,39 @@ static __attribute__((noinline)) struct ev_call ev_take_heap_root(void)
 	return ev_take(idx);
 }
 
-/* Pops and runs the earliest event as the hardware; interrupts it raises are delivered after it. */
-void event_run_next(void)
+/* The timer's expiry (it is due now, before the queue's live head, which
+ * stays where it is): re-armed one period later with the sequence an event
+ * scheduled now would take, or off, then the tick interrupt is raised as the
+ * hardware timer would (delivered at once if the CPU accepts it). */
+static inline void ev_timer_expire(const struct ev_slot *head)
+{
+	uint64_t head_time = head != NULL ? head->time : UINT64_MAX;
+
+	ev_pos_time = ev_timer.time;
+	ev_pos_seq = ev_timer.seq;
+	if (ev_timer_period != 0) {
+		ev_timer.time += ev_timer_period;
+		ev_timer.seq = ev_seq++;
+		if (ev_timer.time < head_time)
+			head_time = ev_timer.time;
+	} else {
+		ev_timer.time = UINT64_MAX;
+	}
+	ev_head_set(head_time);
+	irq_raise_tick();
+}
+
+/* Pops and runs the queue's head event (the earliest; not the timer) as the
+ * hardware; interrupts it raises are delivered after it.  Out of line: the
+ * timer's expiry in event_run_next then saves no registers. */
+static __attribute__((noinline)) void ev_run_queued(void)
 {
 	const struct ev_slot *head = ev_queue_head();
 	struct ev_call c;
 	enum exec_kind saved_kind = cpu.kind;
 	ID saved_id = cpu.exec_id;
 
-	/* the timer, due now and before the queue's (live) head: the head stays
-	 * where it is, so only the timer leaves the earliest time */
-	if (ev_timer.time == now_ns && (head == NULL || ev_before(&ev_timer, head))) {
-		ev_pos_time = ev_timer.time;
-		ev_pos_seq = ev_timer.seq;
-		c = (struct ev_call){ ev_timer_fn, NULL };
-		ev_timer.time = UINT64_MAX;
-		ev_head_set(head != NULL ? head->time : UINT64_MAX);
-	} else if (ev_front_len > 0) {
+	if (ev_front_len > 0) {
 		uint32_t idx = head->idx;
 
 		ev_pos_time = head->time;
@@ -548,6 +571,20 @@ void event_run_next(void)
 	cpu.kind = saved_kind;
 	cpu.exec_id = saved_id;
 	irq_dispatch_pending();
+}
+
+/* Runs the earliest event (the timer's expiry or a queued event); now_ns is its time. */
+void event_run_next(void)
+{
+	if (ev_timer.time == now_ns) {
+		const struct ev_slot *head = ev_queue_head();
+
+		if (head == NULL || ev_before(&ev_timer, head)) {
+			ev_timer_expire(head);
+			return;
+		}
+	}
+	ev_run_queued();
 }
 
 /* Forgets all events (shutdown/boot); handles from before stay stale forever. */

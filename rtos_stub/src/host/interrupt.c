@@ -125,14 +125,25 @@ void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exin
 	cpu.exec_id = saved_id;
 }
 
-/* Delivers line n: the kernel tick work (INTNO_TICK), then its ISRs in isrpri order.
- * Out of line: the delivery loop around it then saves no registers of its own. */
-static __attribute__((noinline)) void irq_run(INTNO n)
+/* Runs the ISRs of line n, none or several, in isrpri order, in its ISR context.
+ * Out of line: line_run then keeps fewer registers across its calls. */
+static __attribute__((noinline)) void isrs_run_all(const struct irq_line *l, INTNO n)
+{
+	for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end;) {
+		e->isr(e->exinf);
+		cpu.locked = false;   /* TOPPERS releases a CPU lock an ISR returns with */
+		if (++e == end)
+			break;        /* line_run's restore sets kind and exec_id */
+		cpu.kind = EXEC_ISR;
+		cpu.exec_id = (ID)n;
+	}
+}
+
+/* Takes pending line n's request for its delivery (an edge is consumed, a
+ * level stays); false if a level line storms (then disabled, not delivered). */
+static inline __attribute__((always_inline)) bool line_take(INTNO n)
 {
 	struct irq_line *l = &lines[n];
-	enum exec_kind saved_kind = cpu.kind;
-	ID saved_id = cpu.exec_id;
-	PRI saved_ipm = cpu.ipm;
 
 	if (l->level) {
 		if (l->storm_time == now_ns && ++l->storm_count > IRQ_STORM_LIMIT) {
@@ -141,7 +152,7 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 			rtos_host_bug("irq storm", "line %u is level-asserted and was delivered %u times at "
 				      "the same virtual time (its ISR does not clear the source); line disabled",
 				      n, IRQ_STORM_LIMIT);
-			return;
+			return false;
 		}
 		if (l->storm_time != now_ns) {
 			l->storm_time = now_ns;
@@ -151,6 +162,18 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 	l->edge = false;
 	if (!l->level)
 		pend_clear_set_bit(n);
+	return true;
+}
+
+/* Serves line n, its request taken: the kernel tick work (INTNO_TICK), then
+ * its ISRs in isrpri order, in its ISR context. */
+static inline __attribute__((always_inline)) void line_serve(INTNO n)
+{
+	const struct irq_line *l = &lines[n];
+	enum exec_kind saved_kind = cpu.kind;
+	ID saved_id = cpu.exec_id;
+	PRI saved_ipm = cpu.ipm;
+
 	cpu.kind = EXEC_ISR;
 	cpu.exec_id = (ID)n;
 	cpu.ipm = l->pri;
@@ -163,13 +186,8 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 		/* most lines have one ISR (the tick, a GPIO bank, a UART): no list walk */
 		l->isrs[0].isr(l->isrs[0].exinf);
 		cpu.locked = false;
-	} else for (const struct isr_entry *e = l->isrs, *end = e + l->nisrs; e != end;) {
-		e->isr(e->exinf);
-		cpu.locked = false;   /* TOPPERS releases a CPU lock an ISR returns with */
-		if (++e == end)
-			break;        /* the restore below sets kind and exec_id */
-		cpu.kind = EXEC_ISR;
-		cpu.exec_id = (ID)n;
+	} else {
+		isrs_run_all(l, n);
 	}
 	if (trace_on())
 		rtos_host_trace("kernel", "isr %u exit", n);
@@ -179,11 +197,51 @@ static __attribute__((noinline)) void irq_run(INTNO n)
 	cpu.exec_id = saved_id;
 }
 
+/* Delivers pending line n.  Out of line, like irq_run_tick: the delivery
+ * loop around them then saves no registers of its own. */
+static __attribute__((noinline)) void irq_run(INTNO n)
+{
+	if (line_take(n))
+		line_serve(n);
+}
+
+/* Serves the tick line (line_serve with its number a constant: 5000 times a virtual second). */
+static __attribute__((noinline)) void irq_serve_tick(void)
+{
+	line_serve(INTNO_TICK);
+}
+
+/* Delivers the pending tick line. */
+static __attribute__((noinline)) void irq_run_tick(void)
+{
+	if (line_take(INTNO_TICK))
+		irq_serve_tick();
+}
+
 /* True if some line could be delivered in the current CPU state. */
 bool irq_deliverable(void)
 {
 	return irq_pending_lines != 0 && !cpu.locked && cpu.sil_lock == 0 && cpu.irq_defer == 0 &&
 	       best_pri() < cpu.ipm;
+}
+
+/* Delivers the pending lines the CPU accepts now, best first, until a lock
+ * stops it (an ISR that returned with one), then dispatches from a task's level.
+ * from_line: a line was just served, so the lock is looked at first. */
+static inline __attribute__((always_inline)) void deliver_loop(bool from_line)
+{
+	if (!from_line || (!cpu.locked && cpu.sil_lock == 0)) {
+		while (best_pri() < cpu.ipm) {
+			if (irq_best_line == INTNO_TICK)
+				irq_run_tick();
+			else
+				irq_run(irq_best_line);
+			if (cpu.locked || cpu.sil_lock != 0)
+				break;
+		}
+	}
+	if (cpu.isr_depth == 0 && (schedtsk != runtsk || kernel_exited))   /* dispatch_if_needed's first test */
+		dispatch_if_needed();
 }
 
 /* Delivers the pending interrupts the CPU accepts now, nested on the current stack
@@ -192,13 +250,7 @@ void irq_deliver_pending(void)
 {
 	if (paused_task != NULL)
 		return;
-	while (best_pri() < cpu.ipm) {
-		irq_run(irq_best_line);
-		if (cpu.locked || cpu.sil_lock != 0)
-			break;
-	}
-	if (cpu.isr_depth == 0 && (schedtsk != runtsk || kernel_exited))   /* dispatch_if_needed's first test */
-		dispatch_if_needed();
+	deliver_loop(false);
 }
 
 /* ---- Configuration (boot) ---- */
@@ -310,14 +362,38 @@ static bool harness_line_ok(const char *fn, INTNO intno)
 	return true;
 }
 
+/* Latches an edge on line n (in range) and delivers what the CPU accepts now. */
+static inline __attribute__((always_inline)) void edge_raise(INTNO n)
+{
+	lines[n].edge = true;
+	pend_set(n);
+	irq_dispatch_pending();
+}
+
 /* Latches an edge on the line: delivered once, when enabled and unmasked. */
 void rtos_host_irq_raise(INTNO intno)
 {
 	if (!harness_line_ok("rtos_host_irq_raise", intno))
 		return;
-	lines[intno].edge = true;
-	pend_set(intno);
-	irq_dispatch_pending();
+	edge_raise(intno);
+}
+
+/* Latches the tick line's edge (the kernel timer's expiry) and delivers what the CPU accepts now. */
+void irq_raise_tick(void)
+{
+	const struct irq_line *l = &lines[INTNO_TICK];
+
+	/* Usually nothing else is pending and the CPU takes the tick at once: its
+	 * edge would be latched and taken again (no line pending is the state
+	 * before and after), so it is served directly, then the loop goes on as
+	 * after any line. */
+	if (irq_pending_lines != 0 || cpu.irq_defer != 0 || cpu.sil_lock != 0 || cpu.locked ||
+	    paused_task != NULL || !l->enabled || l->pri >= cpu.ipm) {
+		edge_raise(INTNO_TICK);
+		return;
+	}
+	irq_serve_tick();
+	deliver_loop(true);
 }
 
 /* Sets a level-sensitive request; delivered (again) while asserted. */

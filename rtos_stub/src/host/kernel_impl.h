@@ -303,9 +303,12 @@ static inline void event_time_settled(void)
 {
 	ev_pos_seq = UINT64_MAX;
 }
-/* The kernel timer (the tick), beside the queue: fn(NULL) at t_ns (>= now),
- * ordered as an event scheduled now, replacing its previous setting; not device work. */
-void event_timer_set(uint64_t t_ns, rtos_host_event_fn fn);
+/* The kernel timer, beside the queue: raises the tick (irq_raise_tick) at t_ns (>= now),
+ * ordered as an event scheduled now, then every period_ns unless 0, replacing its
+ * previous setting; not device work. */
+void event_timer_set(uint64_t t_ns, uint64_t period_ns);
+/* The time the kernel timer is set to, UINT64_MAX when off. */
+uint64_t event_timer_time(void);
 
 /* ---- Interrupts ---- */
 void irq_reset(void);
@@ -316,6 +319,8 @@ extern uint_t irq_pending_lines;   /* lines with a latched edge or an asserted l
 extern PRI irq_best_pri;
 #define IRQ_BEST_NONE   INT_MAX
 #define IRQ_BEST_RESCAN INT_MIN
+/* Latches the tick line's edge (the kernel timer's expiry) and delivers what the CPU accepts now. */
+void irq_raise_tick(void);
 /* irq_dispatch_pending's work, once its checks passed (a line pending, no lock, no deferral). */
 void irq_deliver_pending(void);
 /* Delivers pending interrupts the CPU accepts now (nested on the current stack). */

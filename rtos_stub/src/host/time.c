@@ -26,7 +26,6 @@ static uint_t tm_cap;
 static uint64_t tm_seq;
 
 static bool tick_every;
-static uint64_t tick_event_time = UINT64_MAX;   /* the kernel timer's setting, UINT64_MAX when off */
 
 struct cyccb {
 	const struct rtos_cyc_cfg *cfg;
@@ -91,8 +90,6 @@ static void tm_sift_down(uint_t pos)
 	tm_place(pos, ev);
 }
 
-static void tick_fire(void *arg);
-
 /* Makes sure a tick interrupt happens at boundary tick (or earlier). */
 static void tick_need(uint64_t tick)
 {
@@ -102,10 +99,9 @@ static void tick_need(uint64_t tick)
 		return;
 	if (t < now_ns)
 		t = now_ns;
-	if (t >= tick_event_time)
+	if (t >= event_timer_time())
 		return;
-	event_timer_set(t, tick_fire);
-	tick_event_time = t;
+	event_timer_set(t, 0);
 }
 
 /* Queues ev to fire when the tick handler reaches tick. */
@@ -156,24 +152,10 @@ uint64_t tick_after_ms(RELTIM ms)
 
 /* ---- The tick ---- */
 
-/* Device side of the tick timer: raises INTNO_TICK at a boundary. */
-static void tick_fire(void *arg)
+/* tick_handler's work when time events are due, or the next one needs the
+ * tick (no ISR on it): processes those due by tick cur and arms the next. */
+static __attribute__((noinline)) void tick_process(uint64_t cur)
 {
-	(void)arg;
-	tick_event_time = UINT64_MAX;
-	if (tick_every) {
-		tick_event_time = (now_ns / RTOS_HOST_TICK_NS + 1) * RTOS_HOST_TICK_NS;
-		event_timer_set(tick_event_time, tick_fire);
-	}
-	rtos_host_irq_raise(INTNO_TICK);
-}
-
-/* The kernel's part of the tick interrupt: processes every time event due by now. */
-void tick_handler(void)
-{
-	uint64_t cur = now_ns / RTOS_HOST_TICK_NS;
-
-	tick_done = cur;
 	while (tm_len > 0 && tm_heap[0]->tick <= cur) {
 		struct tmevt *ev = tm_heap[0];
 
@@ -182,6 +164,17 @@ void tick_handler(void)
 	}
 	if (tm_len > 0)
 		tick_need(tm_heap[0]->tick);
+}
+
+/* The kernel's part of the tick interrupt: processes every time event due by now. */
+void tick_handler(void)
+{
+	uint64_t cur = now_ns / RTOS_HOST_TICK_NS;
+
+	tick_done = cur;
+	/* on most ticks of a tick with ISRs nothing is due: no frame, no loop */
+	if (tm_len > 0 && (tm_heap[0]->tick <= cur || !tick_every))
+		tick_process(cur);
 }
 
 /* Decides whether the tick runs on every boundary (ISRs attached to INTNO_TICK). */
@@ -198,7 +191,6 @@ void time_reset(void)
 	tm_len = 0;
 	tm_seq = 0;
 	tick_every = false;
-	tick_event_time = UINT64_MAX;
 }
 
 /* Starts the tick timer (every boundary mode) once the objects exist, and
@@ -206,10 +198,8 @@ void time_reset(void)
 void time_start(void)
 {
 	event_set_run_bound(UINT64_MAX);
-	if (tick_every) {
-		tick_event_time = RTOS_HOST_TICK_NS;
-		event_timer_set(RTOS_HOST_TICK_NS, tick_fire);
-	}
+	if (tick_every)
+		event_timer_set(RTOS_HOST_TICK_NS, RTOS_HOST_TICK_NS);
 }
 
 /* ---- Cyclic handlers ---- */
