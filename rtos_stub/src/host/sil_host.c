@@ -160,11 +160,15 @@ static inline __attribute__((always_inline)) uint32_t access_end(uint32_t ns, ui
 	/* Cases in which access_spend adds ns (no event due before the end: then
 	 * ns < event_next_time() - now_ns, its test; quiet_until is 0 before boot)
 	 * and access_done then finds no interrupt to take (none pending, or
-	 * irq_dispatch_pending held off by a lock or an enclosing access or event),
-	 * no task to switch to (none, or not from a task) and no deadline reached
-	 * (quiet_until is also the run's). */
+	 * irq_dispatch_pending held off by a lock or an enclosing access or event,
+	 * or in an ISR by the pending lines' priorities: an ISR's accesses while
+	 * its own level line or one below it is pending), no task to switch to
+	 * (none, or not from a task) and no deadline reached (quiet_until is also
+	 * the run's).  irq_best_pri's rescan mark is below every mask: the slow
+	 * path looks. */
 	if (end < quiet_until &&
-	    (irq_pending_lines == 0 || cpu.locked || cpu.sil_lock != 0 || cpu.irq_defer != 1) &&
+	    (irq_pending_lines == 0 || cpu.locked || cpu.sil_lock != 0 || cpu.irq_defer != 1 ||
+	     (irq_best_pri >= cpu.ipm && cpu.isr_depth != 0)) &&
 	    (schedtsk == runtsk || cpu.kind != EXEC_TASK || cpu.isr_depth != 0)) {
 		now_ns = end;
 		cpu.irq_defer--;

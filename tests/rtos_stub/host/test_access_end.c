@@ -4,7 +4,9 @@
  * accesses a CPU lock or SIL lock covers and is taken at the unlock, a task an
  * ISR woke runs when the ISR returns (not at the ISR's accesses), a task whose
  * access reaches the run's deadline stops in it, and an event due exactly at
- * an access's end runs before the next access.  All of it twice: through the
+ * an access's end runs before the next access, and in an ISR whose own level
+ * line and a line below it stay pending its accesses take neither, while a
+ * line above it that an access raises is taken at that access's end.  All of it twice: through the
  * timed pair alone, and with the route cache on (a repeated access calls its
  * route directly, and must end the same way).
  */
@@ -16,6 +18,14 @@
 #define US         1000ULL
 #define ACCESS_NS  100U
 #define IRQ_DEV    120U
+#define IRQ_BELOW  121U   /* below the level line */
+#define IRQ_ABOVE  122U   /* above it */
+#define IRQ_LEVEL  123U
+
+/* Registers whose writes act on the lines (the device's side, inside the access). */
+#define REG_RAISE_ABOVE 5
+#define REG_RAISE_BELOW 6
+#define REG_LEVEL       7   /* its value is the level line's */
 
 static uint32_t regs[16];   /* the fake device's registers, in the timed window */
 static uint64_t isr_at[4];
@@ -23,6 +33,11 @@ static uint_t isr_count;
 static uint64_t high_start, locked_end, sil_end, event_at_ns, read_after_event, poll_stop;
 static bool routed;                     /* the timed pair caches a route for each access */
 static unsigned timed_calls, route_calls;
+/* The ISRs of the level-line step in the order they ran ('L' level, 'l' its
+ * end, 'A' above, 'B' below), and when. */
+static char isr_order[16];
+static uint_t isr_order_len;
+static uint64_t above_raised_end, above_at, level_end, below_at;
 
 /* A register's route, either direction. */
 struct reg_route {
@@ -30,6 +45,17 @@ struct reg_route {
 	volatile uint32_t *reg;
 };
 static struct reg_route read_routes[16], write_routes[16];
+
+/* The device's side of a write to register reg. */
+static void reg_written(size_t reg, uint32_t data)
+{
+	if (reg == REG_RAISE_ABOVE)
+		rtos_host_irq_raise(IRQ_ABOVE);
+	else if (reg == REG_RAISE_BELOW)
+		rtos_host_irq_raise(IRQ_BELOW);
+	else if (reg == REG_LEVEL)
+		rtos_host_irq_set_level(IRQ_LEVEL, data != 0);
+}
 
 static uint32_t route_read(const struct rtos_host_mmio_route *rt)
 {
@@ -41,6 +67,7 @@ static void route_write(const struct rtos_host_mmio_route *rt, uint32_t data)
 {
 	route_calls++;
 	*((const struct reg_route *)rt)->reg = data;
+	reg_written((size_t)(((const struct reg_route *)rt)->reg - regs), data);
 }
 
 /* A timed read: the register's value, costing ACCESS_NS; its route cached if routed. */
@@ -63,6 +90,7 @@ static uint32_t write_timed(volatile void *addr, uint_t width, uint32_t data, vo
 		rtos_host_mmio_route_cache_fill(true, addr, width,
 						&write_routes[(volatile uint32_t *)addr - regs].base);
 	*(volatile uint32_t *)addr = data;
+	reg_written((size_t)((volatile uint32_t *)addr - regs), data);
 	return ACCESS_NS;
 }
 
@@ -114,6 +142,46 @@ static void isr_dev(intptr_t x)
 	}
 }
 
+static void isr_log(char c)
+{
+	if (isr_order_len < sizeof(isr_order) - 1)
+		isr_order[isr_order_len++] = c;
+}
+
+/* The level line's ISR: accesses with its own line and one below pending,
+ * an access that raises one above, more accesses, then the level's release. */
+static void isr_level(intptr_t x)
+{
+	(void)x;
+	isr_log('L');
+	for (int i = 0; i < 3; i++)
+		(void)sil_rew_mem(&regs[0]);
+	sil_wrw_mem(&regs[REG_RAISE_BELOW], 1);
+	for (int i = 0; i < 3; i++)
+		(void)sil_rew_mem(&regs[0]);
+	sil_wrw_mem(&regs[REG_RAISE_ABOVE], 1);
+	above_raised_end = rtos_host_now();
+	for (int i = 0; i < 3; i++)
+		(void)sil_rew_mem(&regs[0]);
+	sil_wrw_mem(&regs[REG_LEVEL], 0);
+	level_end = rtos_host_now();
+	isr_log('l');
+}
+
+static void isr_above(intptr_t x)
+{
+	(void)x;
+	isr_log('A');
+	above_at = rtos_host_now();
+}
+
+static void isr_below(intptr_t x)
+{
+	(void)x;
+	isr_log('B');
+	below_at = rtos_host_now();
+}
+
 static void high_task(intptr_t x)
 {
 	(void)x;
@@ -152,7 +220,10 @@ static void low_task(intptr_t x)
 	(void)sil_rew_mem(&regs[1]);
 	read_after_event = sil_rew_mem(&regs[1]);
 
-	/* 5: polling until the run's deadline */
+	/* 5: a level line's ISR, its accesses made with lines pending it masks */
+	sil_wrw_mem(&regs[REG_LEVEL], 1);
+
+	/* 6: polling until the run's deadline */
 	for (;;) {
 		(void)sil_rew_mem(&regs[4]);
 		poll_stop = rtos_host_now();
@@ -160,8 +231,14 @@ static void low_task(intptr_t x)
 }
 
 static const struct rtos_task_cfg tasks[] = { RT_TASK(1, low_task, 8, true), RT_TASK(2, high_task, 2, true) };
-static const struct rtos_int_cfg ints[] = { { IRQ_DEV, TA_ENAINT, -2 } };
-static const struct rtos_isr_cfg isrs[] = { { TA_NULL, 0, IRQ_DEV, isr_dev, 1 } };
+static const struct rtos_int_cfg ints[] = {
+	{ IRQ_DEV, TA_ENAINT, -2 }, { IRQ_BELOW, TA_ENAINT, -1 }, { IRQ_ABOVE, TA_ENAINT, -3 },
+	{ IRQ_LEVEL, TA_ENAINT, -2 },
+};
+static const struct rtos_isr_cfg isrs[] = {
+	{ TA_NULL, 0, IRQ_DEV, isr_dev, 1 }, { TA_NULL, 0, IRQ_BELOW, isr_below, 1 },
+	{ TA_NULL, 0, IRQ_ABOVE, isr_above, 1 }, { TA_NULL, 0, IRQ_LEVEL, isr_level, 1 },
+};
 static const struct rtos_cfg cfg = {
 	.name = "access_end", .tasks = RTOS_TABLE(tasks), .ints = RTOS_TABLE(ints), .isrs = RTOS_TABLE(isrs),
 };
@@ -174,6 +251,8 @@ static void run(bool with_routes)
 
 	routed = with_routes;
 	isr_count = 0;
+	isr_order_len = 0;
+	memset(isr_order, 0, sizeof(isr_order));
 	timed_calls = route_calls = 0;
 	regs[1] = 0;
 	is_int(rtos_host_boot(&cfg), E_OK, "boot (%s)", how);
@@ -193,11 +272,16 @@ static void run(bool with_routes)
 	   "raised under the SIL lock, the same at SIL_UNL_INT (%s)", how);
 	ok(event_at_ns == sil_end + ACCESS_NS && read_after_event == 7,
 	   "an event due at an access's end runs before the next access (%s)", how);
+	is_str(isr_order, "LAlB",
+	       "in a level line's ISR, a line above an access raised nests, its own and one below wait (%s)", how);
+	is_u64(above_at, above_raised_end, "the line above is taken at the end of the access that raised it (%s)",
+	       how);
+	is_u64(below_at, level_end, "the line below is taken when the ISR returns, the level released (%s)", how);
 	is_u64(poll_stop, 3 * US * 1000 - ACCESS_NS,
 	       "a task polling registers stops in the access that reaches the run's deadline (%s)", how);
 	is_u64(rtos_host_now(), 3 * US * 1000, "the run ends at its deadline (%s)", how);
 	if (with_routes)
-		ok(timed_calls == 5 && route_calls > 1000,
+		ok(timed_calls == 8 && route_calls > 1000,
 		   "each register's first access in each direction took the timed pair, the others its route "
 		   "(%u timed, %u routed)", timed_calls, route_calls);
 	else
@@ -208,7 +292,7 @@ static void run(bool with_routes)
 
 int main(void)
 {
-	tap_plan(18);
+	tap_plan(24);
 	for (int i = 0; i < 16; i++) {
 		read_routes[i] = (struct reg_route){ { route_read, NULL }, &regs[i] };
 		write_routes[i] = (struct reg_route){ { NULL, route_write }, &regs[i] };
