@@ -225,18 +225,21 @@ bool irq_deliverable(void)
 	       best_pri() < cpu.ipm;
 }
 
-/* Delivers the pending lines the CPU accepts now, best first, until a lock
- * stops it (an ISR that returned with one), then dispatches from a task's level.
- * from_line: a line was just served, so the lock is looked at first. */
+/* Delivers the pending lines the CPU accepts now, best first, until none is
+ * left or a lock stops it (an ISR that returned with one), then dispatches
+ * from a task's level.  from_line: a line was just served, so whether any is
+ * left and the lock are looked at first.  (With no line pending irq_best_pri
+ * is IRQ_BEST_NONE, above every mask: best_pri() would stop the loop too,
+ * only later.) */
 static inline __attribute__((always_inline)) void deliver_loop(bool from_line)
 {
-	if (!from_line || (!cpu.locked && cpu.sil_lock == 0)) {
+	if (!from_line || (irq_pending_lines != 0 && !cpu.locked && cpu.sil_lock == 0)) {
 		while (best_pri() < cpu.ipm) {
 			if (irq_best_line == INTNO_TICK)
 				irq_run_tick();
 			else
 				irq_run(irq_best_line);
-			if (cpu.locked || cpu.sil_lock != 0)
+			if (irq_pending_lines == 0 || cpu.locked || cpu.sil_lock != 0)
 				break;
 		}
 	}

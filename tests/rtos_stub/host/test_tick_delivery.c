@@ -3,13 +3,17 @@
  * every boundary, across the ends of runs; at each, the kernel's time events
  * due then are processed first, then the line's ISRs in isrpri order, in ISR
  * context at depth 1, and a task a time event released runs after them.  A
- * tick while the CPU is locked waits, latched, for unl_cpu.
+ * tick while the CPU is locked waits, latched, for unl_cpu.  Lines a tick's ISR
+ * raises below the tick's priority are delivered after its ISRs, best first,
+ * every one of them, then the task one of them woke.
  */
 #include "tap.h"
 #include "kernel.h"
 #include "rtos_test.h"
 
 #define US 1000ULL
+#define IRQ_MID 40U    /* below the tick */
+#define IRQ_LOW 41U    /* below IRQ_MID */
 
 static bool all_in_isr_context = true;
 
@@ -35,13 +39,44 @@ static void sleeper(intptr_t x)
 	slp_tsk();
 }
 
-static const struct rtos_task_cfg tasks[] = { RT_TASK(1, sleeper, 5, true) };
+/* A tick ISR: on the tick at 2000 us, raises the low line, then the middle one. */
+static void isr_raise(intptr_t x)
+{
+	(void)x;
+	if (rtos_host_now() == 2000 * US) {
+		rtos_host_irq_raise(IRQ_LOW);
+		rtos_host_irq_raise(IRQ_MID);
+	}
+}
+
+/* The low line's ISR: logs and wakes the waiter. */
+static void isr_low(intptr_t name)
+{
+	isr_log(name);
+	iwup_tsk(2);
+}
+
+/* Waits for the low line's ISR, logs when it runs. */
+static void waiter(intptr_t x)
+{
+	(void)x;
+	slp_tsk();
+	rt_log("T%llu", (unsigned long long)(rtos_host_now() / US));
+	slp_tsk();
+}
+
+static const struct rtos_task_cfg tasks[] = { RT_TASK(1, sleeper, 5, true), RT_TASK(2, waiter, 3, true) };
+static const struct rtos_int_cfg ints[] = { { IRQ_MID, TA_ENAINT, -4 }, { IRQ_LOW, TA_ENAINT, -2 } };
 static const struct rtos_isr_cfg tick_isrs[] = {
 	{ TA_NULL, 'b', INTNO_TICK, isr_log, 2 },
 	{ TA_NULL, 'a', INTNO_TICK, isr_log, 1 },   /* isrpri 1 runs before 2 */
+	{ TA_NULL, 0, INTNO_TICK, isr_raise, 3 },
+	{ TA_NULL, 'm', IRQ_MID, isr_log, 1 },
+	{ TA_NULL, 'l', IRQ_LOW, isr_low, 1 },
 };
 static const struct rtos_cfg cfg = {
-	.name = "tick_delivery", .tasks = RTOS_TABLE(tasks), .isrs = RTOS_TABLE(tick_isrs),
+	.name = "tick_delivery", .tasks = RTOS_TABLE(tasks), .ints = RTOS_TABLE(ints),
+	.isrs = RTOS_TABLE(tick_isrs),
 };
 
 int main(void)
@@ -49,7 +84,7 @@ int main(void)
 	/* no CPU time for service calls: the sleep starts at time 0 exactly */
 	static const struct rtos_host_cpu_cost free_calls = { 0, 0, false };
 
-	tap_plan(5);
+	tap_plan(6);
 	rtos_host_set_cpu_cost(&free_calls);
 	is_int(rtos_host_boot(&cfg), E_OK, "boot with two ISRs on the tick line and a sleeping task");
 	rtos_host_run_for(1000 * US);
@@ -65,6 +100,11 @@ int main(void)
 	       "the tick at 1200 us, the CPU locked, is taken at unl_cpu; runs ending between "
 	       "boundaries keep the tick on the boundaries");
 	is_u64(rtos_host_now(), 1600 * US, "the runs end at their deadline");
+
+	rt_log_reset();
+	rtos_host_run_for(400 * US);
+	is_str(rt_log_text(), "a1800 b1800 a2000 b2000 m2000 l2000 T2000",
+	       "lines a tick's ISR raised run after its ISRs, best first, then the task one woke");
 	rtos_host_shutdown();
 	return tap_done();
 }
