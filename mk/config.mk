@@ -123,9 +123,27 @@ compile = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(cal
 GCC_ONLY_FLAGS := -fno-allow-store-data-races
 cc_flags = $(if $(filter clang%,$(notdir $(CC_$(1)))),$(filter-out $(GCC_ONLY_FLAGS),$(2)),$(2))
 
-# The object rule of configuration $(1) for the objects under $(2)/obj.
+# Checks kept as stamps (kbuild, bench-quick, report, ...) are remade only when
+# an input changed.  Inputs that are files are prerequisites; what is not a
+# file's time stamp — the set of files (one removed, one added with an old
+# time), a tool's version, a setting — goes into a key file: $(1) holding the
+# text $(2), rewritten only when that text changes, and a prerequisite of the
+# stamp.  The text is computed when make considers the key (it may run tools).
+define key_file_rule
+$(1): FORCE_KEY
+	$$(if $$(shell mkdir -p $$(@D) && echo ok),,$$(error cannot create $$(@D)))
+	$$(file >$$@.tmp,$(2))
+	@cmp -s $$@.tmp $$@ && rm $$@.tmp || mv $$@.tmp $$@
+endef
+.PHONY: FORCE_KEY
+
+# The object rule of configuration $(1) for the objects under $(2)/obj.  The
+# configuration's compiler and flags are a key of their own ($(2)/compile.key)
+# that every object depends on, so a changed flag recompiles the objects that
+# an old one made (the compiler cache makes that cheap where nothing changed).
 define obj_rule
-$(2)/obj/%.o: %.c
+$(call key_file_rule,$(2)/compile.key,$(CC_$(1)) $(CFLAGS_$(1)) $(KERNEL_DEFS))
+$(2)/obj/%.o: %.c $(2)/compile.key
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(1) $$<
 	$(Q)$$(call compile,$(1),$$<) -MMD -MP -c $$< -o $$@

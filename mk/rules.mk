@@ -102,16 +102,4 @@ test-suite:
 	then echo "=== make test: all runs passed ==="; \
 	else echo "=== make test: FAILED ==="; exit 1; fi
 
-# Checks kept as stamps (kbuild, bench-quick, report, ...) are remade only when
-# an input changed.  Inputs that are files are prerequisites; what is not a
-# file's time stamp — the set of files (one removed, one added with an old
-# time), a tool's version, a setting — goes into a key file: $(1) holding the
-# text $(2), rewritten only when that text changes, and a prerequisite of the
-# stamp.  The text is computed when make considers the key (it may run tools).
-define key_file_rule
-$(1): FORCE_KEY
-	$$(if $$(shell mkdir -p $$(@D) && echo ok),,$$(error cannot create $$(@D)))
-	$$(file >$$@.tmp,$(2))
-	@cmp -s $$@.tmp $$@ && rm $$@.tmp || mv $$@.tmp $$@
-endef
-.PHONY: FORCE_KEY
+# (key_file_rule, for checks kept as stamps: mk/config.mk)
