@@ -28,6 +28,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include "t_stddef.h"
+#include "rtos_host.h"
 
 #define HS_ARRAY_SIZE(a) ((unsigned)(sizeof(a) / sizeof((a)[0])))
 
@@ -71,6 +72,29 @@ typedef void (*hs_before_read_fn)(void *ctx, const struct hs_access *a, uint32_t
 typedef void (*hs_after_write_fn)(void *ctx, const struct hs_access *a,
 				  uint32_t old, uint32_t new_value, uint32_t written);
 
+/*
+ * Direct accesses, for a register a driver polls thousands of times a second:
+ * the whole CPU access as one function that the access path calls in place of
+ * its own (no hook call in between).  Only unlogged 32-bit accesses take it (a
+ * narrower or logged one takes the hooks, so both must agree): read_direct
+ * does what before_read and then reading the stored value do, write_direct
+ * what storing data with the register's kind and then after_write do.  Their
+ * argument is a struct hs_direct's base.
+ */
+struct hs_direct {
+	struct rtos_host_mmio_route base;
+	void *ctx;                  /* the region's context */
+	uint32_t *value;            /* the register's stored value */
+};
+typedef uint32_t (*hs_read_direct_fn)(const struct rtos_host_mmio_route *rt);
+typedef void (*hs_write_direct_fn)(const struct rtos_host_mmio_route *rt, uint32_t data);
+
+/* The struct hs_direct whose base a direct access is given. */
+static inline const struct hs_direct *hs_direct_of(const struct rtos_host_mmio_route *rt)
+{
+	return (const struct hs_direct *)(const void *)rt;
+}
+
 /* One row of a declaration table.  Zero fields take the defaults noted. */
 struct hs_reg {
 	const char *name;           /* TRM name; arrays get the element index appended ("CMR3") */
@@ -88,6 +112,8 @@ struct hs_reg {
 	                             * the alias must have the same count and stride, or count 1 */
 	hs_before_read_fn before_read;
 	hs_after_write_fn after_write;
+	hs_read_direct_fn read_direct;      /* NULL: none (see struct hs_direct) */
+	hs_write_direct_fn write_direct;
 };
 
 /* PSC module a region needs enabled to respond: PSC0 or PSC1 and the LPSC number. */

@@ -68,11 +68,9 @@ struct hs_route {
 	/* First, so that the accessors' route cache calls its functions with it: for
 	 * a read route the whole read (see route_read), for a write route the whole
 	 * write (see route_write), chosen for what the route has to do. */
-	struct rtos_host_mmio_route base;
-	uint32_t *value;        /* the element's stored value */
+	struct hs_direct head;  /* head.base, the region's hook context, the element's stored value */
 	hs_before_read_fn before_read;      /* read routes */
 	hs_after_write_fn after_write;      /* write routes: the element's hook, or route_write_log; NULL: none */
-	void *ctx;              /* the region's hook context */
 	uint32_t wmask;         /* width_mask(width) */
 	uint32_t bits;          /* write: the mask bits the lanes drive; read: those a clear-on-read clears, or 0 */
 	/* A write driving lanes value turns the stored old into
@@ -394,6 +392,8 @@ static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, 
 static void route_set_logged(struct hs_route *rt, bool logged)
 {
 	bool after_read = rt->bits != 0 || logged;
+	/* the register's direct accesses serve its unlogged whole-register 32-bit accesses */
+	bool direct = !logged && rt->acc.width == 4U && rt->shift == 0U;
 
 	rt->logged = logged;
 	if (rt->acc.write) {
@@ -401,16 +401,20 @@ static void route_set_logged(struct hs_route *rt, bool logged)
 		bool store0 = rt->shift == 0U && rt->clear == 0U && rt->keep == ~rt->set;
 
 		rt->after_write = logged ? route_write_log : rt->e->after_write;
-		if (!store0)
-			rt->base.write = route_write_any;
+		if (direct && rt->e->reg->write_direct)
+			rt->head.base.write = rt->e->reg->write_direct;
+		else if (!store0)
+			rt->head.base.write = route_write_any;
 		else
-			rt->base.write = rt->after_write ? route_write_store0_hooked : route_write_store0;
-	} else if (rt->before_read && after_read)
-		rt->base.read = route_read_hooked_after;
+			rt->head.base.write = rt->after_write ? route_write_store0_hooked : route_write_store0;
+	} else if (direct && !after_read && rt->e->reg->read_direct)
+		rt->head.base.read = rt->e->reg->read_direct;
+	else if (rt->before_read && after_read)
+		rt->head.base.read = route_read_hooked_after;
 	else if (rt->before_read)
-		rt->base.read = rt->shift == 0U ? route_read_hooked0 : route_read_hooked;
+		rt->head.base.read = rt->shift == 0U ? route_read_hooked0 : route_read_hooked;
 	else
-		rt->base.read = after_read ? route_read_after : route_read_plain;
+		rt->head.base.read = after_read ? route_read_after : route_read_plain;
 }
 
 /* The masks of route_write for kind k driving bits. */
@@ -458,9 +462,8 @@ static bool region_build_routes(struct hs_region *r)
 					uint32_t lane_bits = e->mask & (width_mask(width) << (8U * lane));
 
 					*rt = (struct hs_route){
-						.value = e->value,
+						.head = { .ctx = r->cfg.ctx, .value = e->value },
 						.before_read = write ? NULL : e->before_read,
-						.ctx = r->cfg.ctx,
 						.wmask = width_mask(width),
 						.bits = write || e->kind == HS_COR ? lane_bits : 0U,
 						.shift = (uint8_t)(8U * lane),
@@ -850,7 +853,7 @@ static inline const struct hs_route *route_of(const struct rtos_host_mmio_route 
 /* What a read through route rt returns, taken after its hook ran. */
 static inline uint32_t route_value(const struct hs_route *rt)
 {
-	return (*rt->value >> rt->shift) & rt->wmask;
+	return (*rt->head.value >> rt->shift) & rt->wmask;
 }
 
 /* A read through a route with nothing before or after taking the value. */
@@ -866,7 +869,7 @@ static uint32_t route_read_after(const struct rtos_host_mmio_route *base)
 	const struct hs_route *rt = route_of(base);
 	uint32_t v = route_value(rt);
 
-	*rt->value &= ~rt->bits;
+	*rt->head.value &= ~rt->bits;
 	if (rt->logged)
 		reglog(rt->r, rt->e, rt->phys, false, rt->acc.width, v);
 	return v;
@@ -877,7 +880,7 @@ static uint32_t route_read_hooked(const struct rtos_host_mmio_route *base)
 {
 	const struct hs_route *rt = route_of(base);
 
-	rt->before_read(rt->ctx, &rt->acc, rt->value);
+	rt->before_read(rt->head.ctx, &rt->acc, rt->head.value);
 	return route_value(rt);
 }
 
@@ -887,8 +890,8 @@ static uint32_t route_read_hooked0(const struct rtos_host_mmio_route *base)
 {
 	const struct hs_route *rt = route_of(base);
 
-	rt->before_read(rt->ctx, &rt->acc, rt->value);
-	return *rt->value & rt->wmask;
+	rt->before_read(rt->head.ctx, &rt->acc, rt->head.value);
+	return *rt->head.value & rt->wmask;
 }
 
 /* A read through a route with a hook and something after. */
@@ -896,7 +899,7 @@ static uint32_t route_read_hooked_after(const struct rtos_host_mmio_route *base)
 {
 	const struct hs_route *rt = route_of(base);
 
-	rt->before_read(rt->ctx, &rt->acc, rt->value);
+	rt->before_read(rt->head.ctx, &rt->acc, rt->head.value);
 	return route_read_after(base);
 }
 
@@ -906,7 +909,7 @@ static uint32_t route_read_hooked_after(const struct rtos_host_mmio_route *base)
  * the route cache's hit tests nothing more. */
 static inline uint32_t route_read(const struct hs_route *rt)
 {
-	return rt->base.read(&rt->base);
+	return rt->head.base.read(&rt->head.base);
 }
 
 /* One CPU read of width bytes (1, 2 or 4) at offset off of r: checked, hooked,
@@ -945,13 +948,13 @@ static void route_write_log(void *ctx, const struct hs_access *a, uint32_t old, 
 static void route_write_any(const struct rtos_host_mmio_route *base, uint32_t data)
 {
 	const struct hs_route *rt = route_of(base);
-	uint32_t old = *rt->value;
+	uint32_t old = *rt->head.value;
 	uint32_t value = (data & rt->wmask) << rt->shift;     /* the byte lanes the access drives */
 	uint32_t nv = (old & rt->keep & ~(value & rt->clear)) | (value & rt->set);
 
-	*rt->value = nv;
+	*rt->head.value = nv;
 	if (rt->after_write)
-		rt->after_write(rt->ctx, &rt->acc, old, nv, value);
+		rt->after_write(rt->head.ctx, &rt->acc, old, nv, value);
 }
 
 /* route_write_any for a plain store at lane 0 without a hook: the mask bits
@@ -959,28 +962,28 @@ static void route_write_any(const struct rtos_host_mmio_route *base, uint32_t da
 static void route_write_store0(const struct rtos_host_mmio_route *base, uint32_t data)
 {
 	const struct hs_route *rt = route_of(base);
-	uint32_t old = *rt->value;
+	uint32_t old = *rt->head.value;
 
-	*rt->value = old ^ ((old ^ data) & rt->bits);
+	*rt->head.value = old ^ ((old ^ data) & rt->bits);
 }
 
 /* route_write_store0 with a hook, which is told data masked to the width. */
 static void route_write_store0_hooked(const struct rtos_host_mmio_route *base, uint32_t data)
 {
 	const struct hs_route *rt = route_of(base);
-	uint32_t old = *rt->value;
+	uint32_t old = *rt->head.value;
 	uint32_t value = data & rt->wmask;
 	uint32_t nv = old ^ ((old ^ value) & rt->bits);
 
-	*rt->value = nv;
-	rt->after_write(rt->ctx, &rt->acc, old, nv, value);
+	*rt->head.value = nv;
+	rt->after_write(rt->head.ctx, &rt->acc, old, nv, value);
 }
 
 /* A checked write of data through route rt: applied with the register's
  * kind, logged, hooked (the access time is the caller's to spend). */
 static inline void route_write(const struct hs_route *rt, uint32_t data)
 {
-	rt->base.write(&rt->base, data);
+	rt->head.base.write(&rt->head.base, data);
 }
 
 /* One CPU write of width bytes (1, 2 or 4; value already masked to it) at
@@ -1084,7 +1087,7 @@ static uint64_t mmio_read_timed(const volatile void *addr, uint_t width, void *c
 	if (e) {
 		const struct hs_route *rt = elem_route(e, false, width, lane);
 
-		rtos_host_mmio_route_cache_fill(false, addr, width, &rt->base);
+		rtos_host_mmio_route_cache_fill(false, addr, width, &rt->head.base);
 		return cost_value(space.access_ns, route_read(rt));
 	}
 	return cost_value(space.access_ns, 0);
@@ -1117,7 +1120,7 @@ static uint32_t mmio_write_timed(volatile void *addr, uint_t width, uint32_t dat
 	if (e) {
 		const struct hs_route *rt = elem_route(e, true, width, lane);
 
-		rtos_host_mmio_route_cache_fill(true, addr, width, &rt->base);
+		rtos_host_mmio_route_cache_fill(true, addr, width, &rt->head.base);
 		route_write(rt, data);
 	}
 	return space.access_ns;

@@ -39,6 +39,7 @@ enum {
 #define INT0_RXINTENA  (1U << 8)
 #define INT0_OVRNINTENA (1U << 6)
 #define FLG_WRITABLE   0x0000015FU  /* SPIFLG's write-1-to-clear bits */
+#define DAT0_MASK      0x0000FFFFU  /* SPIDAT0's data bits */
 
 /* What differs between SPI0 and SPI1 (AM1808 TRM, memory map, PSC and AINTC chapters). */
 struct spi_instance {
@@ -333,13 +334,11 @@ static void spi_send(struct spi_module *s, uint16_t word)
 	}
 }
 
-/* SPIDAT0 writes start a transfer; when polled and idle (d_analog's every
- * frame) without spi_send's checks, which polled_update made beforehand. */
-static void write_dat0(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+/* A word written to SPIDAT0 starts a transfer; when polled and idle
+ * (d_analog's every frame) without spi_send's checks, which polled_update
+ * made beforehand.  Inline in both of SPIDAT0's write paths. */
+static inline __attribute__((always_inline)) void dat0_send(struct spi_module *s, uint16_t word)
 {
-	struct spi_module *s = ctx;
-	uint16_t word = (uint16_t)(nv & 0xFFFFU);
-
 	/* SPIDAT0 and SPIDAT1 share the data half (SPIDAT1 is 32 bits wide) */
 	*s->dat1 = (*s->dat1 & ~0xFFFFU) | word;
 	if (s->polled && !s->busy) {
@@ -349,6 +348,21 @@ static void write_dat0(void *ctx, const struct hs_access *a, uint32_t old, uint3
 		return;
 	}
 	spi_send(s, word);
+}
+
+/* SPIDAT0 writes: dat0_send. */
+static void write_dat0(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
+{
+	dat0_send(ctx, (uint16_t)(nv & DAT0_MASK));
+}
+
+/* write_dat0 as SPIDAT0's direct write (regs.h): the store of the data half, then dat0_send. */
+static void write_dat0_direct(const struct rtos_host_mmio_route *rt, uint32_t data)
+{
+	const struct hs_direct *d = hs_direct_of(rt);
+
+	*d->value = (*d->value & ~DAT0_MASK) | (data & DAT0_MASK);
+	dat0_send(d->ctx, (uint16_t)data);
 }
 
 /* SPIDAT1 writes (its format select may change) start a transfer. */
@@ -374,23 +388,35 @@ static uint32_t buf_value(const struct spi_module *s)
 	return s->rx | (s->tx_full ? BUF_TXFULL : 0U);
 }
 
-/* SPIBUF read of the frame's answer: the value with TXFULL, then consumed. */
-static inline void buf_take(struct spi_module *s, uint32_t *value)
+/* The interrupt line after SPIBUF was read with the module not polled; v,
+ * the value read, back (out of line: buf_take then keeps nothing across a call). */
+static __attribute__((noinline)) uint32_t buf_taken_unpolled(struct spi_module *s, uint32_t v)
+{
+	spi_irq_update(s);
+	return v;
+}
+
+/* SPIBUF read of the frame's answer: the value with TXFULL, then consumed;
+ * the value read, also left in *value. */
+static inline uint32_t buf_take(struct spi_module *s, uint32_t *value)
 {
 	uint32_t rx = s->rx;        /* read once: *value may alias it as far as the compiler knows */
+	uint32_t v = rx | (s->tx_full ? BUF_TXFULL : 0U);
 
-	*value = rx | (s->tx_full ? BUF_TXFULL : 0U);
+	*value = v;
 	s->rx = (rx | BUF_RXEMPTY) & ~BUF_RXOVR;
 	flg_update(s, FLG_RXINT, 0);
 	if (!s->polled)             /* polled: no interrupt enabled, the line stays low */
-		spi_irq_update(s);
+		return buf_taken_unpolled(s, v);
+	return v;
 }
 
 /* frame_done_private then buf_take, for a read of SPIBUF, empty, as the
  * deferred frame ends: the answer is shifted in and taken at once (no
  * overrun; no word waits behind a deferred frame), so SPIFLG keeps TXINT
- * but not RXINT.  One update of SPIBUF and of SPIFLG instead of two each. */
-static inline void frame_done_private_taken(struct spi_module *s, uint32_t *value)
+ * but not RXINT.  One update of SPIBUF and of SPIFLG instead of two each.
+ * The value read, also left in *value. */
+static inline uint32_t frame_done_private_taken(struct spi_module *s, uint32_t *value)
 {
 	uint32_t in = s->shift_out;
 
@@ -401,13 +427,15 @@ static inline void frame_done_private_taken(struct spi_module *s, uint32_t *valu
 	s->rx = BUF_RXEMPTY | in;
 	flg_update(s, FLG_RXINT, FLG_TXINT);
 	if (!s->polled)
-		spi_irq_update(s);
+		return buf_taken_unpolled(s, in);
+	return in;
 }
 
 /* read_buf while a frame is busy: settle it, stall until its end if the poll
- * would see "not yet", then consume.  Out of line: the idle read, one of
- * d_analog's two per frame, then needs no registers saved. */
-static __attribute__((noinline)) void read_buf_busy(struct spi_module *s, uint32_t *value)
+ * would see "not yet", then consume; the value read, also left in *value.
+ * Out of line: the idle read, one of d_analog's two per frame, then needs no
+ * registers saved. */
+static __attribute__((noinline)) uint32_t read_buf_busy(struct spi_module *s, uint32_t *value)
 {
 	frame_settle(s);
 	/* a poll that would see "not yet": the CPU spins until the frame ends */
@@ -419,14 +447,12 @@ static __attribute__((noinline)) void read_buf_busy(struct spi_module *s, uint32
 			rtos_host_deferred_wait(&s->frame_deferred);   /* hs_access_stall_until, inline */
 			/* d_analog's every frame: still deferred (nothing looked meanwhile), and due */
 			if (s->frame_deferred.armed && (s->rx & BUF_RXEMPTY) &&
-			    rtos_host_deferred_due(&s->frame_deferred)) {
-				frame_done_private_taken(s, value);
-				return;
-			}
+			    rtos_host_deferred_due(&s->frame_deferred))
+				return frame_done_private_taken(s, value);
 		}
 		frame_settle(s);
 	}
-	buf_take(s, value);
+	return buf_take(s, value);
 }
 
 /* SPIBUF read: stall while in flight, then consume. */
@@ -434,11 +460,21 @@ static void read_buf(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	struct spi_module *s = ctx;
 
-	if (s->busy) {              /* an armed frame is busy */
+	if (s->busy)                /* an armed frame is busy */
 		read_buf_busy(s, value);
-		return;
-	}
-	buf_take(s, value);
+	else
+		buf_take(s, value);
+}
+
+/* read_buf as SPIBUF's direct read (regs.h): d_analog's two polls per frame. */
+static uint32_t read_buf_direct(const struct rtos_host_mmio_route *rt)
+{
+	const struct hs_direct *d = hs_direct_of(rt);
+	struct spi_module *s = d->ctx;
+
+	if (s->busy)
+		return read_buf_busy(s, d->value);
+	return buf_take(s, d->value);
 }
 
 /* SPIEMU read: SPIBUF without side effects. */
@@ -509,12 +545,12 @@ static const struct hs_reg spi_regs[] = {
 	{ .name = "SPIFLG", .offset = SPIFLG, .kind = HS_W1C, .mask = FLG_WRITABLE,
 	  .before_read = read_flg, .after_write = write_flg },
 	{ .name = "SPIPC", .offset = SPIPC0, .kind = HS_RW, .count = 6, .stride = 4, .mask = 0x01010F3F },
-	{ .name = "SPIDAT0", .offset = SPIDAT0, .widths = HS_W16 | HS_W32, .kind = HS_RW, .mask = 0xFFFF,
-	  .after_write = write_dat0 },
+	{ .name = "SPIDAT0", .offset = SPIDAT0, .widths = HS_W16 | HS_W32, .kind = HS_RW, .mask = DAT0_MASK,
+	  .after_write = write_dat0, .write_direct = write_dat0_direct },
 	{ .name = "SPIDAT1", .offset = SPIDAT1, .widths = HS_W8 | HS_W16 | HS_W32, .kind = HS_RW,
 	  .mask = 0x17FFFFFF, .after_write = write_dat1 },
 	{ .name = "SPIBUF", .offset = SPIBUF, .widths = HS_W16 | HS_W32, .kind = HS_RO,
-	  .reset = BUF_RXEMPTY, .before_read = read_buf },
+	  .reset = BUF_RXEMPTY, .before_read = read_buf, .read_direct = read_buf_direct },
 	{ .name = "SPIEMU", .offset = SPIEMU, .kind = HS_RO, .before_read = read_emu },
 	{ .name = "SPIDELAY", .offset = SPIDELAY, .kind = HS_RW, .after_write = write_setup },
 	{ .name = "SPIDEF", .offset = SPIDEF, .kind = HS_RW, .mask = 0xFF, .reset = 0xFF },

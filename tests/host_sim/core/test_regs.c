@@ -62,6 +62,40 @@ static void busy_read(void *ctx, const struct hs_access *a, uint32_t *value)
 	*value = dev.ready ? 1U : 0U;
 }
 
+/* DIRECT's hooks and direct accesses: which path each access took. */
+static struct {
+	unsigned hook_reads, hook_writes, direct_reads, direct_writes;
+} path;
+
+static void direct_hook_read(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	(void)ctx; (void)a;
+	path.hook_reads++;
+	*value += 1;        /* every read counts up, whichever path it takes */
+}
+
+static void direct_hook_written(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written)
+{
+	(void)ctx; (void)a; (void)old; (void)now; (void)written;
+	path.hook_writes++;
+}
+
+static uint32_t direct_read(const struct rtos_host_mmio_route *rt)
+{
+	const struct hs_direct *d = hs_direct_of(rt);
+
+	path.direct_reads += d->ctx == &path;
+	return ++*d->value;
+}
+
+static void direct_write(const struct rtos_host_mmio_route *rt, uint32_t data)
+{
+	const struct hs_direct *d = hs_direct_of(rt);
+
+	path.direct_writes += d->ctx == &path;
+	*d->value = data;
+}
+
 static const struct hs_reg tdev_regs[] = {
 	{ .name = "ID",     .offset = 0x00, .kind = HS_RO,  .reset = 0x1234 },
 	{ .name = "CTL",    .offset = 0x04, .kind = HS_RW,  .mask = 0x0000FFFF, .after_write = ctl_written },
@@ -78,6 +112,9 @@ static const struct hs_reg tdev_regs[] = {
 	{ .name = "NARROW", .offset = 0x48, .kind = HS_RW, .widths = HS_W8 | HS_W16 },
 	{ .name = "BUSY",   .offset = 0x4C, .kind = HS_RO, .before_read = busy_read },
 	{ .name = "GO",     .offset = 0x50, .kind = HS_WO },
+	{ .name = "DIRECT", .offset = 0x54, .kind = HS_RW, .widths = HS_W16 | HS_W32,
+	  .before_read = direct_hook_read, .after_write = direct_hook_written,
+	  .read_direct = direct_read, .write_direct = direct_write },
 };
 
 static const struct hs_reg pdev_regs[] = {
@@ -105,11 +142,11 @@ int main(void)
 	size_t loglen = 0;
 	FILE *log;
 
-	tap_plan(49);
+	tap_plan(54);
 	if (hs_sim_boot(&scn) != E_OK)
 		tap_bail_out("boot failed");
 	ok(hs_region_add(&(struct hs_region_cfg){ .name = "TDEV", .phys = TDEV_PHYS, .size = 0x1000,
-		.regs = tdev_regs, .nregs = HS_ARRAY_SIZE(tdev_regs) }) != NULL, "test region registers");
+		.regs = tdev_regs, .nregs = HS_ARRAY_SIZE(tdev_regs), .ctx = &path }) != NULL, "test region registers");
 	w = rtos_host_map_io(TDEV_PHYS, 0x100);
 	ok(w != NULL, "ioremap-style map returns a window");
 
@@ -175,6 +212,19 @@ int main(void)
 	ok(v == 1 && hs_now() == dev.ready_at + 100, "a stalled read returns the ready state at the device's time");
 	tap_diag("  read %u after %llu ns", v, (unsigned long long)(hs_now() - t0));
 
+	/* Direct accesses: unlogged 32-bit ones call them, with the region's context
+	 * and the stored value; narrower ones take the hooks */
+	sil_wrw_mem((uint32_t *)(w + 0x54), 0x10);
+	t0 = hs_now();
+	v = sil_rew_mem((uint32_t *)(w + 0x54));
+	ok(v == 0x11 && path.direct_writes == 1 && path.direct_reads == 1 && path.hook_reads + path.hook_writes == 0,
+	   "32-bit accesses of a register with direct accesses take them");
+	is_u64(hs_now() - t0, 100, "a direct access costs the configured virtual time");
+	sil_wrh_mem((uint16_t *)(w + 0x54), 0x20);
+	v = sil_reh_mem((uint16_t *)(w + 0x54));
+	ok(v == 0x21 && path.hook_writes == 1 && path.hook_reads == 1 && path.direct_reads + path.direct_writes == 2,
+	   "16-bit accesses of it take the hooks");
+
 	/* Register log */
 	log = open_memstream(&logbuf, &loglen);
 	hs_trace_reglog("TDEV", log);
@@ -190,6 +240,19 @@ int main(void)
 	   "register log filter leaves out other regions");
 	tap_diag("%s", logbuf);
 	free(logbuf);
+	/* a logged register's direct accesses give way to the hooks and the log */
+	log = open_memstream(&logbuf, &loglen);
+	hs_trace_reglog("TDEV", log);
+	sil_wrw_mem((uint32_t *)(w + 0x54), 0x30);
+	v = sil_rew_mem((uint32_t *)(w + 0x54));
+	hs_trace_reglog(NULL, NULL);
+	fclose(log);
+	ok(v == 0x31 && path.hook_writes == 2 && path.hook_reads == 2 && path.direct_reads + path.direct_writes == 2 &&
+	   strstr(logbuf, "W4 TDEV.DIRECT @0x01e00054 = 0x00000030") && strstr(logbuf, "R4 TDEV.DIRECT @0x01e00054 = 0x00000031"),
+	   "logged 32-bit accesses of it take the hooks and are logged");
+	free(logbuf);
+	(void)sil_rew_mem((uint32_t *)(w + 0x54));
+	is_int(path.direct_reads, 2, "with the log off again they take the direct accesses");
 
 	/* Loud reports */
 	rtos_host_expect_bugs(true);

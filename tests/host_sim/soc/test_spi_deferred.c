@@ -8,7 +8,9 @@
  * an event interrupts, that a device event makes across the run's end and
  * that a model-side read makes outside any access) gives the same
  * register values at the same virtual times, the same interrupt line (VCD)
- * and the same statistics with deferral on as with every frame end an event.
+ * and the same statistics with deferral on as with every frame end an event;
+ * and with SPI0's register log on (its 32-bit accesses then take the hooks
+ * instead of SPIBUF's and SPIDAT0's direct accesses) as with it off.
  */
 #define _XOPEN_SOURCE 700
 #include <stdio.h>
@@ -17,6 +19,7 @@
 #include "devtest.h"
 #include "host_sim/intc.h"
 #include "host_sim/regs.h"
+#include "host_sim/trace.h"
 #include "host_sim/devices/spi.h"
 #include "text_files_test.h"
 
@@ -49,6 +52,7 @@ struct run {
 	struct ev3_spi_stats stats;
 	char vcd[65536];
 	uint32_t deferred;
+	unsigned log_lines;         /* of the register log, if on */
 };
 
 static struct run *cur;
@@ -115,16 +119,23 @@ static uint64_t frame_length(void)
 	return hs_now() - t0;
 }
 
-/* The sequence, observed; deferral on or off. */
-static void run_sequence(bool defer, struct run *r, const char *vcd_path)
+/* The sequence, observed; deferral on or off, SPI0's register log on or off. */
+static void run_sequence(bool defer, bool logged, struct run *r, const char *vcd_path)
 {
 	uint64_t frame_ns, end;
 	uint32_t buf;
+	char *log_text = NULL;
+	size_t log_len = 0;
+	FILE *log = NULL;
 
 	cur = r;
 	r->count = 0;
 	hs_spi_defer_private_ends(defer);
 	devtest_boot(11, vcd_path);
+	if (logged) {
+		log = open_memstream(&log_text, &log_len);
+		hs_trace_reglog("SPI0", log);
+	}
 	spi_setup();
 	for (unsigned i = 0; i < 6; i++)
 		polled_frame((uint16_t)(0x1840U | (i << 7)));
@@ -253,39 +264,58 @@ static void run_sequence(bool defer, struct run *r, const char *vcd_path)
 	r->deferred = r->stats.deferred_ends;
 	r->stats.deferred_ends = 0;
 	note("stats transfers", r->stats.transfers);
+	if (log) {
+		hs_trace_reglog(NULL, NULL);
+		fclose(log);
+		r->log_lines = 0;
+		for (const char *c = log_text; *c; c++)
+			r->log_lines += *c == '\n';
+		free(log_text);
+	}
 	if (hs_sim_shutdown() != E_OK)
 		tap_bail_out("shutdown failed");
 	tf_read_text(vcd_path, r->vcd, sizeof(r->vcd));
 }
 
-int main(void)
+/* The number of observations of b the same as a's (what, value, time and
+ * interrupt line), with a diagnostic for each that differs. */
+static unsigned same_notes(const struct run *a, const struct run *b, const char *a_name, const char *b_name)
 {
-	static struct run eager, deferred;
-	char dir[] = "/tmp/test_spi_deferred.XXXXXX", eager_vcd[64], deferred_vcd[64];
 	unsigned same = 0;
 
-	tap_plan(9);
-	tf_make_scratch_dir(dir);
-	snprintf(eager_vcd, sizeof(eager_vcd), "%s/eager.vcd", dir);
-	snprintf(deferred_vcd, sizeof(deferred_vcd), "%s/deferred.vcd", dir);
-	run_sequence(false, &eager, eager_vcd);
-	run_sequence(true, &deferred, deferred_vcd);
-	tf_remove_tree(dir);
-
-	is_int(eager.deferred, 0, "with deferral off every frame end is an event");
-	ok(deferred.deferred >= 10, "with deferral on the polled frames' ends are deferred (%u)", deferred.deferred);
-	is_int(deferred.count, eager.count, "the same number of observations (%u)", eager.count);
-	for (unsigned i = 0; i < eager.count && i < deferred.count; i++) {
-		const struct note *e = &eager.notes[i], *d = &deferred.notes[i];
+	for (unsigned i = 0; i < a->count && i < b->count; i++) {
+		const struct note *e = &a->notes[i], *d = &b->notes[i];
 
 		if (strcmp(e->what, d->what) == 0 && e->value == d->value && e->at == d->at && e->irq == d->irq) {
 			same++;
 			continue;
 		}
-		tap_diag("%s: eager 0x%08x at %llu irq %d, deferred %s 0x%08x at %llu irq %d", e->what, e->value,
-			 (unsigned long long)e->at, e->irq, d->what, d->value, (unsigned long long)d->at, d->irq);
+		tap_diag("%s: %s 0x%08x at %llu irq %d, %s %s 0x%08x at %llu irq %d", e->what, a_name, e->value,
+			 (unsigned long long)e->at, e->irq, b_name, d->what, d->value, (unsigned long long)d->at, d->irq);
 	}
-	is_int(same, eager.count, "every observation has the same value, time and interrupt line");
+	return same;
+}
+
+int main(void)
+{
+	static struct run eager, deferred, logged;
+	char dir[] = "/tmp/test_spi_deferred.XXXXXX", eager_vcd[64], deferred_vcd[64], logged_vcd[64];
+
+	tap_plan(12);
+	tf_make_scratch_dir(dir);
+	snprintf(eager_vcd, sizeof(eager_vcd), "%s/eager.vcd", dir);
+	snprintf(deferred_vcd, sizeof(deferred_vcd), "%s/deferred.vcd", dir);
+	snprintf(logged_vcd, sizeof(logged_vcd), "%s/logged.vcd", dir);
+	run_sequence(false, false, &eager, eager_vcd);
+	run_sequence(true, false, &deferred, deferred_vcd);
+	run_sequence(true, true, &logged, logged_vcd);
+	tf_remove_tree(dir);
+
+	is_int(eager.deferred, 0, "with deferral off every frame end is an event");
+	ok(deferred.deferred >= 10, "with deferral on the polled frames' ends are deferred (%u)", deferred.deferred);
+	is_int(deferred.count, eager.count, "the same number of observations (%u)", eager.count);
+	is_int(same_notes(&eager, &deferred, "eager", "deferred"), eager.count,
+	       "every observation has the same value, time and interrupt line");
 	ok(memcmp(&eager.stats, &deferred.stats, sizeof(eager.stats)) == 0,
 	   "the same statistics (%u transfers, %u stalls, %u overruns)", eager.stats.transfers,
 	   eager.stats.stalls, eager.stats.rx_overruns);
@@ -294,5 +324,10 @@ int main(void)
 	   "the VCD was written");
 	is_str(deferred.vcd, eager.vcd, "the VCD (interrupt lines and every other signal) is identical");
 	ok(eager.count > 30, "the sequence was observed (%u notes)", eager.count);
+	ok(logged.count == deferred.count && same_notes(&deferred, &logged, "unlogged", "logged") == deferred.count,
+	   "with the register log on (the hooks instead of the direct accesses), the same observations");
+	ok(memcmp(&logged.stats, &deferred.stats, sizeof(logged.stats)) == 0 && logged.deferred == deferred.deferred &&
+	   strcmp(logged.vcd, deferred.vcd) == 0, "and the same statistics, deferrals and VCD");
+	ok(logged.log_lines > 2U * eager.count, "the register log was on (%u lines)", logged.log_lines);
 	return tap_done();
 }
