@@ -359,11 +359,12 @@ static uint32_t tb_counter(const struct ehrpwm *e, uint32_t pos)
 	}
 }
 
-/* Recomputes both outputs; tells the motors if anything changed. */
-static void ehrpwm_update(struct ehrpwm *e)
+/* Recomputes both outputs at period position pos (tb_position now: callers that
+ * need it too work it out once); tells the motors if anything changed. */
+static void ehrpwm_update(struct ehrpwm *e, uint32_t pos)
 {
 	uint32_t tbctl = reg(e, TBCTL), csfrc = reg(e, AQCSFRC);
-	uint32_t pos = tb_position(e), len = tb_period_cycles(e, tbctl);
+	uint32_t len = tb_period_cycles(e, tbctl);
 	static const uint32_t aq[2] = { AQCTLA, AQCTLB };
 	double freq = e->running && len ? (double)tbclk_of(e, tbctl) / len : 0;
 
@@ -396,7 +397,7 @@ static void ehrpwm_update(struct ehrpwm *e)
 	e->freq = freq;
 }
 
-static void ehrpwm_schedule_load(struct ehrpwm *e);
+static void ehrpwm_schedule_load(struct ehrpwm *e, uint32_t pos);
 
 /* Event: counter at zero or period: shadow loads as CMPCTL/TBCTL say. */
 static void ehrpwm_load(void *arg)
@@ -411,6 +412,7 @@ static void ehrpwm_load(void *arg)
 	if (e->prd_pending && at_zero) {
 		e->prd = (uint16_t)reg(e, TBPRD);
 		e->prd_pending = false;
+		pos = tb_position(e);   /* the period length the position is taken in changed */
 	}
 	if (e->cmpa_pending && ((la == 0 && at_zero) || (la == 1 && at_prd) || (la == 2 && (at_zero || at_prd)))) {
 		e->cmpa = (uint16_t)reg(e, CMPA);
@@ -421,20 +423,20 @@ static void ehrpwm_load(void *arg)
 		e->cmpb_pending = false;
 	}
 	hs_reg_update(e->r, CMPCTL, (e->cmpa_pending ? 0U : 1U << 8) | (e->cmpb_pending ? 0U : 1U << 9), 0);
-	ehrpwm_update(e);
-	ehrpwm_schedule_load(e);
+	ehrpwm_update(e, pos);
+	ehrpwm_schedule_load(e, pos);
 }
 
-/* Schedules the next counter-zero or period instant if a shadow is pending. */
-static void ehrpwm_schedule_load(struct ehrpwm *e)
+/* Schedules the next counter-zero or period instant if a shadow is pending
+ * (pos: tb_position now). */
+static void ehrpwm_schedule_load(struct ehrpwm *e, uint32_t pos)
 {
 	uint32_t tbctl = reg(e, TBCTL);
-	uint32_t len = tb_period_cycles(e, tbctl), pos, next;
+	uint32_t len = tb_period_cycles(e, tbctl), next;
 
 	hs_event_cancel(&e->load_ev);
 	if (!e->running || !len || !(e->prd_pending || e->cmpa_pending || e->cmpb_pending))
 		return;
-	pos = tb_position(e);
 	/* zero and period sit at positions 0 (= len) and PRD in every counting mode */
 	next = pos < e->prd ? e->prd : len;
 	{
@@ -449,14 +451,15 @@ static void ehrpwm_schedule_load(struct ehrpwm *e)
 /* Re-bases the counter at now and re-evaluates whether the time base runs. */
 static void ehrpwm_rebase(struct ehrpwm *e)
 {
-	uint32_t tbctl = reg(e, TBCTL);
+	uint32_t tbctl = reg(e, TBCTL), pos;
 	bool run = (tbctl & 3U) != 3U && hs_syscfg_tbclksync();
 
 	e->cnt_ref = tb_position(e);
 	e->t_ref = hs_now();
 	e->running = run;
-	ehrpwm_update(e);
-	ehrpwm_schedule_load(e);
+	pos = tb_position(e);
+	ehrpwm_update(e, pos);
+	ehrpwm_schedule_load(e, pos);
 }
 
 /* Watcher: TBCLKSYNC starts or stops the time base. */
@@ -520,7 +523,7 @@ static void ehrpwm_write_cmp(void *ctx, const struct hs_access *a, uint32_t old,
 			    uint32_t written)
 {
 	struct ehrpwm *e = ctx;
-	uint32_t cmpctl = reg(e, CMPCTL);
+	uint32_t cmpctl = reg(e, CMPCTL), pos = tb_position(e);    /* compare values do not move it */
 
 	if (a->offset == CMPA) {
 		if (cmpctl & (1U << 4)) {
@@ -537,8 +540,8 @@ static void ehrpwm_write_cmp(void *ctx, const struct hs_access *a, uint32_t old,
 			hs_reg_update(e->r, CMPCTL, 0, 1U << 9);
 		}
 	}
-	ehrpwm_update(e);
-	ehrpwm_schedule_load(e);
+	ehrpwm_update(e, pos);
+	ehrpwm_schedule_load(e, pos);
 }
 
 /* Action-qualifier writes and software forces. */
@@ -555,7 +558,7 @@ static void ehrpwm_write_aq(void *ctx, const struct hs_access *a, uint32_t old, 
 			e->level[1] = aq_apply(e->level[1], (written >> 3) & 3U);
 		hs_reg_update(e->r, AQSFRC, (1U << 2) | (1U << 5), 0);
 	}
-	ehrpwm_update(e);
+	ehrpwm_update(e, tb_position(e));
 }
 
 /* Features the model does not implement: a write other than their reset state is loud. */
