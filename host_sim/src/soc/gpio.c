@@ -37,6 +37,7 @@
 #define R_OUT_DATA        0x04U
 #define R_SET_RIS_TRIG    0x14U
 #define R_SET_FAL_TRIG    0x1CU
+#define R_IN_DATA         0x10U
 #define R_INTSTAT         0x24U
 #define PAIR_REG_SLOTS    (R_INTSTAT / 4U + 1U)
 #define GPIO_MUX_FUNC     8U
@@ -61,6 +62,7 @@ static struct {
 	uint32_t *binten;
 	struct pin pins[HS_GPIO_NPINS];
 	uint32_t in_data[GPIO_PAIRS];
+	const uint32_t *in_data_val;    /* IN_DATA[0]'s stored value; IN_DATA[n]'s follows at n */
 	bool pinmux_check;
 	int syscfg_watch;
 	struct {
@@ -313,6 +315,21 @@ static void in_data_read(void *ctx, const struct hs_access *a, uint32_t *value)
 	*value = g.in_data[a->index];
 }
 
+/* in_data_read as IN_DATA's direct read (regs.h): the pair is where the
+ * element's stored value lies in the array (checked by hs_gpio_create). */
+static uint32_t in_data_read_direct(const struct rtos_host_mmio_route *rt)
+{
+	const struct hs_direct *d = hs_direct_of(rt);
+
+	return *d->value = g.in_data[d->value - g.in_data_val];
+}
+
+/* INTSTAT's direct write (regs.h): write 1 to clear, all 32 bits, no hook. */
+static void intstat_write_direct(const struct rtos_host_mmio_route *rt, uint32_t data)
+{
+	*hs_direct_of(rt)->value &= ~data;
+}
+
 /* A PINMUX change can connect or disconnect pins from the GPIO controller. */
 static void pinmux_changed(void *ctx, uint32_t offset, uint32_t old, uint32_t now)
 {
@@ -338,12 +355,12 @@ static const struct hs_reg gpio_regs[] = {
 	PAIR_REG("OUT_DATA",     0x04, HS_RW,  .after_write = soc_side_written),
 	PAIR_REG("SET_DATA",     0x08, HS_W1S, .alias = "OUT_DATA", .after_write = soc_side_written),
 	PAIR_REG("CLR_DATA",     0x0C, HS_W1C, .alias = "OUT_DATA", .after_write = soc_side_written),
-	PAIR_REG("IN_DATA",      0x10, HS_RO,  .before_read = in_data_read),
+	PAIR_REG("IN_DATA",      0x10, HS_RO,  .before_read = in_data_read, .read_direct = in_data_read_direct),
 	PAIR_REG("SET_RIS_TRIG", 0x14, HS_W1S),
 	PAIR_REG("CLR_RIS_TRIG", 0x18, HS_W1C, .alias = "SET_RIS_TRIG"),
 	PAIR_REG("SET_FAL_TRIG", 0x1C, HS_W1S),
 	PAIR_REG("CLR_FAL_TRIG", 0x20, HS_W1C, .alias = "SET_FAL_TRIG"),
-	PAIR_REG("INTSTAT",      0x24, HS_W1C),
+	PAIR_REG("INTSTAT",      0x24, HS_W1C, .write_direct = intstat_write_direct),
 };
 
 /* EV3 pins Linux muxes to GPIO at boot (the port pin tables of LEGO's d_pwm.c/d_analog.c). */
@@ -375,6 +392,13 @@ ER hs_gpio_create(bool cold, bool pinmux_check)
 
 		for (unsigned i = 0; i < HS_ARRAY_SIZE(used); i++)
 			g.pair_val[pair][used[i] / 4U] = hs_reg_value_ptr(g.region, PAIR_BASE(pair) + used[i]);
+	}
+	g.in_data_val = hs_reg_value_ptr(g.region, PAIR_BASE(0) + R_IN_DATA);
+	for (unsigned pair = 1; pair < GPIO_PAIRS; pair++) {
+		if (hs_reg_value_ptr(g.region, PAIR_BASE(pair) + R_IN_DATA) != g.in_data_val + pair) {
+			rtos_host_bug("host_sim", "GPIO.IN_DATA[%u]'s stored value does not follow IN_DATA[0]'s", pair);
+			return E_SYS;
+		}
 	}
 	g.binten = hs_reg_value_ptr(g.region, GPIO_BINTEN);
 	sys0 = hs_region_by_name("SYSCFG0");

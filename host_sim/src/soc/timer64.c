@@ -214,6 +214,22 @@ static void tim_read(void *ctx, const struct hs_access *a, uint32_t *value)
 	*value = timer_value(ctx, a->offset != T_TIM12);
 }
 
+/* tim_read as TIM12's direct read (regs.h). */
+static uint32_t tim12_read_direct(const struct rtos_host_mmio_route *rt)
+{
+	const struct hs_direct *d = hs_direct_of(rt);
+
+	return *d->value = timer_value(d->ctx, false);
+}
+
+/* tim_read as TIM34's direct read (regs.h). */
+static uint32_t tim34_read_direct(const struct rtos_host_mmio_route *rt)
+{
+	const struct hs_direct *d = hs_direct_of(rt);
+
+	return *d->value = timer_value(d->ctx, true);
+}
+
 static void tim_written(void *ctx, const struct hs_access *a, uint32_t old, uint32_t now, uint32_t written)
 {
 	struct timer64 *tm = ctx;
@@ -277,8 +293,10 @@ static const struct hs_reg timer_regs[] = {
 	{ .name = "EMUMGT",     .offset = 0x04, .kind = HS_RW, .mask = 0x3 },
 	{ .name = "GPINTGPEN",  .offset = 0x08, .kind = HS_RW, .mask = 0x00030003 },
 	{ .name = "GPDATGPDIR", .offset = 0x0C, .kind = HS_RW, .mask = 0x00030003 },
-	{ .name = "TIM12",      .offset = T_TIM12, .kind = HS_RW, .before_read = tim_read, .after_write = tim_written },
-	{ .name = "TIM34",      .offset = T_TIM34, .kind = HS_RW, .before_read = tim_read, .after_write = tim_written },
+	{ .name = "TIM12",      .offset = T_TIM12, .kind = HS_RW, .before_read = tim_read, .after_write = tim_written,
+	  .read_direct = tim12_read_direct },
+	{ .name = "TIM34",      .offset = T_TIM34, .kind = HS_RW, .before_read = tim_read, .after_write = tim_written,
+	  .read_direct = tim34_read_direct },
 	{ .name = "PRD12",      .offset = T_PRD12, .kind = HS_RW, .after_write = setting_written },
 	{ .name = "PRD34",      .offset = T_PRD34, .kind = HS_RW, .after_write = setting_written },
 	{ .name = "TCR",        .offset = T_TCR, .kind = HS_RW, .mask = 0x03C003C3, .after_write = setting_written },

@@ -342,24 +342,36 @@ static void tx_start(struct hs_uart *u)
 
 /* ---- register hooks ---- */
 
-static void read_rbr(void *ctx, const struct hs_access *a, uint32_t *value)
+/* RBR read (DLL with DLAB): the FIFO's head byte, taken; 0 when empty.
+ * The value read, also left in *value. */
+static inline uint32_t rbr_take(struct hs_uart *u, uint32_t *value)
 {
-	struct hs_uart *u = ctx;
+	uint32_t v;
 
-	if (u->lcr & LCR_DLAB) {
-		*value = u->dll;
-		return;
-	}
-	if (!u->rx_count) {
-		*value = 0;
-		return;
-	}
-	*value = u->rx[u->rx_head];
+	if (u->lcr & LCR_DLAB)
+		return *value = u->dll;
+	if (!u->rx_count)
+		return *value = 0;
+	*value = v = u->rx[u->rx_head];
 	u->rx_errs -= u->rx_err[u->rx_head] != 0;
 	u->rx_head = (u->rx_head + 1U) % FIFO_SIZE;
 	u->rx_count--;
 	rx_activity(u);
 	irq_update(u);
+	return v;
+}
+
+static void read_rbr(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	rbr_take(ctx, value);
+}
+
+/* read_rbr as RBR's direct read (regs.h). */
+static uint32_t read_rbr_direct(const struct rtos_host_mmio_route *rt)
+{
+	const struct hs_direct *d = hs_direct_of(rt);
+
+	return rbr_take(d->ctx, d->value);
 }
 
 /* THR write: queue a byte (DLL with DLAB). */
@@ -422,17 +434,40 @@ static void write_ier(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	irq_update(u);
 }
 
-/* IIR read; clears a THRE interrupt it reports. */
+/* The interrupt line after an IIR read reported THRE, which the read
+ * clears; v, the value read, back (out of line: iir_take then keeps nothing
+ * across a call). */
+static __attribute__((noinline)) uint32_t iir_taken_thre(struct hs_uart *u, uint32_t v)
+{
+	u->thre_int = false;
+	irq_update(u);
+	return v;
+}
+
+/* IIR read: the identification; clears a THRE interrupt it reports.  The
+ * value read, also left in *value. */
+static inline uint32_t iir_take(struct hs_uart *u, uint32_t *value)
+{
+	unsigned id = u->irq_stale ? iir_id(u) : u->iir;
+	uint32_t v = id | (fifo_mode(u) ? HS_UART_IIR_FIFOS_ON : 0U);
+
+	*value = v;
+	if (id == HS_UART_IIR_THR_EMPTY)
+		return iir_taken_thre(u, v);
+	return v;
+}
+
 static void read_iir(void *ctx, const struct hs_access *a, uint32_t *value)
 {
-	struct hs_uart *u = ctx;
-	unsigned id = u->irq_stale ? iir_id(u) : u->iir;
+	iir_take(ctx, value);
+}
 
-	*value = id | (fifo_mode(u) ? HS_UART_IIR_FIFOS_ON : 0U);
-	if (id == HS_UART_IIR_THR_EMPTY) {   /* reading IIR clears a THRE interrupt */
-		u->thre_int = false;
-		irq_update(u);
-	}
+/* read_iir as IIR's direct read (regs.h). */
+static uint32_t read_iir_direct(const struct rtos_host_mmio_route *rt)
+{
+	const struct hs_direct *d = hs_direct_of(rt);
+
+	return iir_take(d->ctx, d->value);
 }
 
 /* FCR write: FIFO enable, clears, trigger. */
@@ -469,12 +504,22 @@ static void write_lcr(void *ctx, const struct hs_access *a, uint32_t old, uint32
 	}
 }
 
+/* The interrupt line after an LSR read cleared an error or found a source
+ * stale; v, the value read, back (out of line: lsr_take then keeps nothing
+ * across a call). */
+static __attribute__((noinline)) uint32_t lsr_taken_update(struct hs_uart *u, uint32_t v)
+{
+	u->overrun = false;
+	irq_update(u);
+	return v;
+}
+
 /* LSR read: status now; error bits clear.  Only clearing an error (or a
  * source left stale) can move the interrupt line, so a clean read, the
- * drivers' per-byte poll, leaves it alone. */
-static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
+ * drivers' per-byte poll, leaves it alone.  The value read, also left in
+ * *value. */
+static inline uint32_t lsr_take(struct hs_uart *u, uint32_t *value)
 {
-	struct hs_uart *u = ctx;
 	uint32_t v = 0;
 	uint8_t head_err = 0;
 
@@ -495,10 +540,22 @@ static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
 	if (!u->tx_count && !u->tsr_busy)
 		v |= LSR_TEMT;
 	*value = v;
-	if (u->overrun || head_err || u->irq_stale) {
-		u->overrun = false;
-		irq_update(u);
-	}
+	if (u->overrun || head_err || u->irq_stale)
+		return lsr_taken_update(u, v);
+	return v;
+}
+
+static void read_lsr(void *ctx, const struct hs_access *a, uint32_t *value)
+{
+	lsr_take(ctx, value);
+}
+
+/* read_lsr as LSR's direct read (regs.h). */
+static uint32_t read_lsr_direct(const struct rtos_host_mmio_route *rt)
+{
+	const struct hs_direct *d = hs_direct_of(rt);
+
+	return lsr_take(d->ctx, d->value);
 }
 
 /* DLL/DLH write: new baud. */
@@ -552,13 +609,14 @@ static void write_pwremu(void *ctx, const struct hs_access *a, uint32_t old, uin
 }
 
 static const struct hs_reg uart_regs[] = {
-	{ .name = "RBR", .offset = RBR, .widths = HS_W8 | HS_W32, .kind = HS_RO, .before_read = read_rbr },
+	{ .name = "RBR", .offset = RBR, .widths = HS_W8 | HS_W32, .kind = HS_RO, .before_read = read_rbr,
+	  .read_direct = read_rbr_direct },
 	{ .name = "THR", .offset = RBR, .widths = HS_W8 | HS_W32, .kind = HS_WO, .mask = 0xFF,
 	  .after_write = write_thr },
 	{ .name = "IER", .offset = IER, .widths = HS_W8 | HS_W32, .kind = HS_RW, .mask = 0x0F,
 	  .before_read = read_ier, .after_write = write_ier },
 	{ .name = "IIR", .offset = IIR, .widths = HS_W8 | HS_W32, .kind = HS_RO, .reset = 0x01,
-	  .before_read = read_iir },
+	  .before_read = read_iir, .read_direct = read_iir_direct },
 	{ .name = "FCR", .offset = IIR, .widths = HS_W8 | HS_W32, .kind = HS_WO, .mask = 0xFF,
 	  .after_write = write_fcr },
 	{ .name = "LCR", .offset = LCR, .widths = HS_W8 | HS_W32, .kind = HS_RW, .mask = 0xFF,
@@ -566,7 +624,7 @@ static const struct hs_reg uart_regs[] = {
 	{ .name = "MCR", .offset = MCR, .widths = HS_W8 | HS_W32, .kind = HS_RW, .mask = 0x3F,
 	  .after_write = write_mcr_mdr },
 	{ .name = "LSR", .offset = LSR, .widths = HS_W8 | HS_W32, .kind = HS_RO, .reset = 0x60,
-	  .before_read = read_lsr },
+	  .before_read = read_lsr, .read_direct = read_lsr_direct },
 	{ .name = "MSR", .offset = MSR, .widths = HS_W8 | HS_W32, .kind = HS_RO },
 	{ .name = "SCR", .offset = SCR, .widths = HS_W8 | HS_W32, .kind = HS_RW, .mask = 0xFF },
 	{ .name = "DLL", .offset = DLL, .widths = HS_W8 | HS_W32, .kind = HS_RW, .mask = 0xFF,
