@@ -387,13 +387,25 @@ static inline __attribute__((always_inline)) void segment_solve(struct hs_motor 
 	m->seg_omega1 = st.omega;
 }
 
-/* Queues the solved segment's next tacho edge and its end. */
+/* Whether the load's owner promised its next call inside the current segment,
+ * before its end: that call cuts the segment and schedules the next step. */
+static inline bool owner_cuts_segment(const struct hs_motor *m)
+{
+	return m->owner_next > m->seg_t0 && m->owner_next < m->seg_t1;
+}
+
+/* Queues the solved segment's next tacho edge and its end.  The end is not
+ * queued when the owner's call cuts the segment first (an input change between
+ * the owner's calls, or a settled segment's long step): the event would only
+ * be cancelled again. */
 static inline __attribute__((always_inline)) void segment_schedule(struct hs_motor *m)
 {
 	motor_schedule_edge(m);
 	hs_event_cancel(&m->step_ev);
 	/* at rest and held there (friction, stall or no drive): sleep until an input changes */
 	if (m->seg_rate == 0.0 && m->seg_omega1 == 0.0)
+		return;
+	if (owner_cuts_segment(m))
 		return;
 	m->step_ev = hs_event_at(m->seg_t1, step_due, m);
 }
@@ -647,10 +659,17 @@ void hs_motor_set_load_until(struct hs_motor *m, double load_nm, double extra_in
 /* Withdraws the promise of hs_motor_set_load_until: the motor steps on its own. */
 void hs_motor_end_load_promise(struct hs_motor *m)
 {
+	bool end_unqueued = !m->seg_unsolved && m->step_ev == 0 && owner_cuts_segment(m) &&
+			    !(m->seg_rate == 0.0 && m->seg_omega1 == 0.0);
+
 	m->owner_next = 0;
 	if (m->seg_unsolved) {
 		segment_solve(m);
 		segment_schedule(m);
+	} else if (end_unqueued) {
+		/* the segment's end, left to the owner's call (segment_schedule), is
+		 * queued now: it runs after any event queued meanwhile for the same instant */
+		m->step_ev = hs_event_at(m->seg_t1, step_due, m);
 	}
 }
 

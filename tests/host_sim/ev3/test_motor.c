@@ -72,6 +72,9 @@ static struct owner_snap owner_snap(void)
 				    hs_motor_speed_dps(owner.m), hs_motor_tacho_counts(owner.m) };
 }
 
+/* The owner's run; the duty changes between its calls (the segment an input
+ * change starts ends at the owner's next call), the last time just before it
+ * withdraws its promise. */
 static void owner_run(bool promise, struct owner_snap snap[3])
 {
 	devtest_boot(1, NULL);
@@ -82,13 +85,18 @@ static void owner_run(bool promise, struct owner_snap snap[3])
 	devtest_duty(3, 10000);
 	devtest_bridge(3, 1);
 	owner.ev = hs_event_at(hs_now() + MS / 4, owner_step, NULL);
-	hs_sim_run_for(150 * MS);
+	for (unsigned i = 0; i < 10; i++) {
+		hs_sim_run_for(15 * MS);
+		devtest_duty(3, (uint16_t)(6000 + 400 * i));
+	}
 	snap[0] = owner_snap();
 	hs_sim_run_for(250 * MS);
 	snap[1] = owner_snap();
 	owner.left = 40;
 	owner_step(NULL);
-	hs_sim_run_for(20 * MS + MS / 2);
+	hs_sim_run_for(20 * MS + MS / 4);
+	devtest_duty(3, 8000);
+	hs_sim_run_for(MS / 4);
 	hs_event_cancel(&owner.ev);
 	if (promise)
 		hs_motor_end_load_promise(owner.m);
