@@ -41,26 +41,46 @@ const struct hs_motor_params *hs_motor_params_of(enum hs_motor_kind kind)
 	return (unsigned)kind <= HS_MOTOR_MEDIUM ? &motor_params[kind] : NULL;
 }
 
-/* Time split of the bridge for its two inputs. */
-struct hbridge_drive hbridge_resolve(enum hbridge_input in0, enum hbridge_input in1, double pwm_low)
+/* Where one phase of a PWM period sends the bridge: the hbridge_drive field
+ * its fraction adds to, or none (coasting). */
+enum bridge_way { WAY_FWD, WAY_REV, WAY_BRAKE, WAY_COAST };
+
+/* The ways of the two phases of a PWM period (signal low, then high) for a
+ * pair of bridge inputs: they change with the inputs only, not with the duty. */
+struct bridge_split {
+	uint8_t way[2];
+};
+
+/* The bridge's split for inputs in0 and in1. */
+static struct bridge_split bridge_split_of(enum hbridge_input in0, enum hbridge_input in1)
 {
-	struct hbridge_drive d = { 0, 0, 0 };
-	double lo = pwm_low < 0 ? 0 : pwm_low > 1 ? 1 : pwm_low;
-	/* the two phases of a PWM period: signal low (fraction lo), then high */
-	double frac[2] = { lo, 1.0 - lo };
+	struct bridge_split sp;
 
 	for (int ph = 0; ph < 2; ph++) {
 		bool a = in0 == HBRIDGE_HIGH || (in0 == HBRIDGE_PWM && ph == 1);
 		bool b = in1 == HBRIDGE_HIGH || (in1 == HBRIDGE_PWM && ph == 1);
 
-		if (a && b)
-			d.brake += frac[ph];
-		else if (a)
-			d.fwd += frac[ph];
-		else if (b)
-			d.rev += frac[ph];
+		sp.way[ph] = a && b ? WAY_BRAKE : a ? WAY_FWD : b ? WAY_REV : WAY_COAST;
 	}
-	return d;
+	return sp;
+}
+
+/* The drive of split sp with the PWM signal low for pwm_low of each period: each
+ * field the sum, from 0, of its phases' fractions in phase order. */
+static inline struct hbridge_drive bridge_split_drive(struct bridge_split sp, double pwm_low)
+{
+	double lo = pwm_low < 0 ? 0 : pwm_low > 1 ? 1 : pwm_low;
+	double sum[4] = { 0, 0, 0, 0 };
+
+	sum[sp.way[0]] += lo;
+	sum[sp.way[1]] += 1.0 - lo;
+	return (struct hbridge_drive){ .fwd = sum[WAY_FWD], .rev = sum[WAY_REV], .brake = sum[WAY_BRAKE] };
+}
+
+/* Time split of the bridge for its two inputs. */
+struct hbridge_drive hbridge_resolve(enum hbridge_input in0, enum hbridge_input in1, double pwm_low)
+{
+	return bridge_split_drive(bridge_split_of(in0, in1), pwm_low);
 }
 
 /* Derived constants: the ideal no-load speed is chosen so that, with the
@@ -176,6 +196,7 @@ struct hs_motor {
 	double seg_vbat;            /* battery voltage the segment is solved with */
 	bool seg_unsolved;          /* begun by step_due, left to the load's owner */
 	uint64_t owner_next;        /* when the load's owner re-applies it (0: no promise) */
+	struct bridge_split split;  /* of the bridge GPIOs, as hs_motor_inputs_changed last read them */
 };
 
 static struct hs_motor *port_motor[EV3_OUTPUT_PORTS];
@@ -387,13 +408,25 @@ static inline __attribute__((always_inline)) void segment_solve(struct hs_motor 
 	m->seg_omega1 = st.omega;
 }
 
-/* Queues the solved segment's next tacho edge and its end. */
+/* Whether the load's owner promised its next call inside the current segment,
+ * before its end: that call cuts the segment and schedules the next step. */
+static inline bool owner_cuts_segment(const struct hs_motor *m)
+{
+	return m->owner_next > m->seg_t0 && m->owner_next < m->seg_t1;
+}
+
+/* Queues the solved segment's next tacho edge and its end.  The end is not
+ * queued when the owner's call cuts the segment first (an input change between
+ * the owner's calls, or a settled segment's long step): the event would only
+ * be cancelled again. */
 static inline __attribute__((always_inline)) void segment_schedule(struct hs_motor *m)
 {
 	motor_schedule_edge(m);
 	hs_event_cancel(&m->step_ev);
 	/* at rest and held there (friction, stall or no drive): sleep until an input changes */
 	if (m->seg_rate == 0.0 && m->seg_omega1 == 0.0)
+		return;
+	if (owner_cuts_segment(m))
 		return;
 	m->step_ev = hs_event_at(m->seg_t1, step_due, m);
 }
@@ -438,18 +471,23 @@ static enum hbridge_input bridge_input(unsigned pin)
 	return level ? HBRIDGE_HIGH : HBRIDGE_LOW;
 }
 
-/* Inputs changed: finish the segment up to now, then restart with them. */
-void hs_motor_inputs_changed(struct hs_motor *m)
+/* Drive d from now on: the segment finished up to now and restarted with it,
+ * unless it is the drive in effect. */
+static void drive_apply(struct hs_motor *m, struct hbridge_drive d)
 {
-	struct hbridge_drive d = hbridge_resolve(bridge_input(m->pins->dir0),
-						 bridge_input(m->pins->dir1),
-						 hs_pwm_low_fraction(m->pwm));
-
 	if (d.fwd == m->drive.fwd && d.rev == m->drive.rev && d.brake == m->drive.brake)
 		return;
 	m->seg_omega1 = omega_now(m);
 	m->drive = d;
 	motor_new_segment(m);
+}
+
+/* Inputs changed: the bridge GPIOs read again (their watch calls this on every
+ * change of their direction or output bit), the drive applied. */
+void hs_motor_inputs_changed(struct hs_motor *m)
+{
+	m->split = bridge_split_of(bridge_input(m->pins->dir0), bridge_input(m->pins->dir1));
+	drive_apply(m, bridge_split_drive(m->split, hs_pwm_low_fraction(m->pwm)));
 }
 
 /* Watcher: a bridge GPIO changed. */
@@ -504,8 +542,10 @@ static void glitch_schedule(struct hs_motor *m)
 /* The motor's PWM peer (hs_pwm_connect): the duty of its H-bridge changed. */
 static void pwm_changed(void *ctx, enum hs_pwm_output out)
 {
-	(void)out;
-	hs_motor_inputs_changed(ctx);
+	struct hs_motor *m = ctx;
+
+	/* only the duty moved: the bridge GPIOs are as last read */
+	drive_apply(m, bridge_split_drive(m->split, hs_pwm_low_fraction(out)));
 }
 
 /* Creates the motor on a port and starts driving its tacho pins. */
@@ -647,10 +687,17 @@ void hs_motor_set_load_until(struct hs_motor *m, double load_nm, double extra_in
 /* Withdraws the promise of hs_motor_set_load_until: the motor steps on its own. */
 void hs_motor_end_load_promise(struct hs_motor *m)
 {
+	bool end_unqueued = !m->seg_unsolved && m->step_ev == 0 && owner_cuts_segment(m) &&
+			    !(m->seg_rate == 0.0 && m->seg_omega1 == 0.0);
+
 	m->owner_next = 0;
 	if (m->seg_unsolved) {
 		segment_solve(m);
 		segment_schedule(m);
+	} else if (end_unqueued) {
+		/* the segment's end, left to the owner's call (segment_schedule), is
+		 * queued now: it runs after any event queued meanwhile for the same instant */
+		m->step_ev = hs_event_at(m->seg_t1, step_due, m);
 	}
 }
 

@@ -3,9 +3,11 @@
  * against duty and direction (eHRPWM1 and eCAP), brake against coast, the
  * tacho edges counted with LEGO's d_pwm.c direction rule against the shaft
  * angle both ways, the sleep when nothing moves, and the stall/encoder
- * faults.
+ * faults; the H-bridge split against its definition, and a duty change
+ * after the bridge GPIOs moved.
  */
 #include <math.h>
+#include <string.h>
 #include "devtest.h"
 #include "host_sim/trace.h"
 
@@ -72,6 +74,9 @@ static struct owner_snap owner_snap(void)
 				    hs_motor_speed_dps(owner.m), hs_motor_tacho_counts(owner.m) };
 }
 
+/* The owner's run; the duty changes between its calls (the segment an input
+ * change starts ends at the owner's next call), the last time just before it
+ * withdraws its promise. */
 static void owner_run(bool promise, struct owner_snap snap[3])
 {
 	devtest_boot(1, NULL);
@@ -82,19 +87,64 @@ static void owner_run(bool promise, struct owner_snap snap[3])
 	devtest_duty(3, 10000);
 	devtest_bridge(3, 1);
 	owner.ev = hs_event_at(hs_now() + MS / 4, owner_step, NULL);
-	hs_sim_run_for(150 * MS);
+	for (unsigned i = 0; i < 10; i++) {
+		hs_sim_run_for(15 * MS);
+		devtest_duty(3, (uint16_t)(6000 + 400 * i));
+	}
 	snap[0] = owner_snap();
 	hs_sim_run_for(250 * MS);
 	snap[1] = owner_snap();
 	owner.left = 40;
 	owner_step(NULL);
-	hs_sim_run_for(20 * MS + MS / 2);
+	hs_sim_run_for(20 * MS + MS / 4);
+	devtest_duty(3, 8000);
+	hs_sim_run_for(MS / 4);
 	hs_event_cancel(&owner.ev);
 	if (promise)
 		hs_motor_end_load_promise(owner.m);
 	hs_sim_run_for(100 * MS);
 	snap[2] = owner_snap();
 	hs_sim_shutdown();
+}
+
+/* The bridge's split as its definition reads (d_pwm.c's pins): each phase of
+ * a PWM period, signal low then high, adds its fraction to the field it drives. */
+static struct hbridge_drive bridge_reference(enum hbridge_input in0, enum hbridge_input in1, double pwm_low)
+{
+	struct hbridge_drive d = { 0, 0, 0 };
+	double lo = pwm_low < 0 ? 0 : pwm_low > 1 ? 1 : pwm_low;
+	double frac[2] = { lo, 1.0 - lo };
+
+	for (int ph = 0; ph < 2; ph++) {
+		bool a = in0 == HBRIDGE_HIGH || (in0 == HBRIDGE_PWM && ph == 1);
+		bool b = in1 == HBRIDGE_HIGH || (in1 == HBRIDGE_PWM && ph == 1);
+
+		if (a && b)
+			d.brake += frac[ph];
+		else if (a)
+			d.fwd += frac[ph];
+		else if (b)
+			d.rev += frac[ph];
+	}
+	return d;
+}
+
+/* hbridge_resolve equals the reference bit for bit (signs of zero included)
+ * for every input pair and duties in and out of range. */
+static bool bridge_matches_reference(void)
+{
+	static const double lows[] = { -0.5, -0.0, 0.0, 0.1, 1.0 / 3.0, 0.5, 0.7, 0.999, 1.0, 1.5 };
+
+	for (int in0 = HBRIDGE_LOW; in0 <= HBRIDGE_PWM; in0++)
+		for (int in1 = HBRIDGE_LOW; in1 <= HBRIDGE_PWM; in1++)
+			for (unsigned i = 0; i < sizeof(lows) / sizeof(lows[0]); i++) {
+				struct hbridge_drive got = hbridge_resolve(in0, in1, lows[i]);
+				struct hbridge_drive want = bridge_reference(in0, in1, lows[i]);
+
+				if (memcmp(&got, &want, sizeof(got)) != 0)
+					return false;
+			}
+	return true;
 }
 
 static double speed_after(unsigned port, int mode, uint16_t duty, uint64_t ns)
@@ -111,7 +161,8 @@ int main(void)
 	double s25, s50, s75, s100, rev, a0, brake_speed, coast_speed;
 	int64_t counted;
 
-	tap_plan(32);
+	tap_plan(34);
+	ok(bridge_matches_reference(), "the bridge split of every input pair is its definition's, bit for bit");
 	devtest_boot(1, NULL);
 	devtest_pwm_setup();
 
@@ -177,6 +228,22 @@ int main(void)
 		in_range(med, 1520, 1600, "medium at full duty ~1560 deg/s (%.0f)", med);
 		ok(med_half < 0 && med_half > -med / 2, "medium reverse at half duty, below half speed (%.0f)",
 		   med_half);
+	}
+
+	/* a duty change after the bridge GPIOs moved drives with their new levels */
+	{
+		struct hbridge_drive d, want;
+
+		devtest_bridge(0, -1);
+		devtest_duty(0, 2500);
+		hs_sim_run_for(MS);
+		d = hs_motor_drive(m);
+		want = hbridge_resolve(HBRIDGE_PWM, HBRIDGE_HIGH, hs_pwm_low_fraction(ev3_output_pwm[0]));
+		ok(memcmp(&d, &want, sizeof(d)) == 0 && d.rev > 0 && d.fwd == 0,
+		   "duty after a bridge change: the reverse split (fwd %.3f rev %.3f brake %.3f)", d.fwd, d.rev,
+		   d.brake);
+		devtest_bridge(0, 1);
+		devtest_duty(0, 10000);
 	}
 
 	/* load slows it; a stall fault locks it and stops the edges */
