@@ -129,12 +129,18 @@ cc_flags = $(if $(filter clang%,$(notdir $(CC_$(1)))),$(filter-out $(GCC_ONLY_FL
 # time), a tool's version, a setting — goes into a key file: $(1) holding the
 # text $(2), rewritten only when that text changes, and a prerequisite of the
 # stamp.  The text is computed when make considers the key (it may run tools).
+# Make compares and writes it itself, with no file in between: two makes may
+# consider one key at once (a check's own make beside the suite's, both
+# needing a configuration's compile key), and a key that is the same is only
+# read.
 define key_file_rule
+key_text_$(1) = $(2)
 $(1): FORCE_KEY
 	$$(if $$(shell mkdir -p $$(@D) && echo ok),,$$(error cannot create $$(@D)))
-	$$(file >$$@.tmp,$(2))
-	@cmp -s $$@.tmp $$@ && rm $$@.tmp || mv $$@.tmp $$@
+	$$(if $$(call same_text,$$(file <$$@),$$(key_text_$$@)),,$$(file >$$@,$$(key_text_$$@)))
 endef
+# Non-empty if texts $(1) and $(2) are equal (each within the other, framed).
+same_text = $(and $(findstring x$(1)x,x$(2)x),$(findstring x$(2)x,x$(1)x))
 .PHONY: FORCE_KEY
 
 # The object rule of configuration $(1) for the objects under $(2)/obj.  The
