@@ -212,6 +212,8 @@ function row(sec, name, v, unit, paper, target, status) {
 	printf "%s,%s,%s,%s,%s,%s,%s\n", sec, name, v, unit, paper, target, status
 }
 function verdict(ok) { return ok ? "met" : "missed" }
+# a target measurement shows cannot be met: the floor and why (docs/bench.md has the breakdown)
+function floor_verdict(ok, why) { return ok ? "met" : "missed; " why " (docs/bench.md)" }
 FILENAME ~ /host.txt$/ && $1 == "call" { havg[$2] = $4; hmax[$2] = $6; hn[$2] = $3; hslow[$2] = $7; herr[$2] = $8; hmed[$2] = $9; hp99[$2] = $10 }
 FILENAME ~ /host.txt$/ && $1 == "speed" { spd[$2] = $6; cspd[$2] = $7; vs[$2] = $3; ws[$2] = $4 }
 # arm.txt: the host-checked build (rows "<f> ..."); arm_prod.txt: the production build ("<f> production ...")
@@ -249,6 +251,10 @@ END {
 	row("host", "slow-path calls", hslow[s] + hslow[r], "calls", "", "", "")
 	split("ev3lx_motor_set_speed:300 ev3lx_uart_sensor_get_raw:90 lx_tick_isr:300", t, " ")
 	paper_cycles["ev3lx_motor_set_speed"] = 1362; paper_cycles["ev3lx_uart_sensor_get_raw"] = 1665
+	# the floors of the production build, whose counts the targets are for
+	floor_avg[r " production"] = "floor ~135: the checks the API promises"
+	floor_avg["lx_tick_isr production"] = "floor above 300: the drivers\x27 own callbacks"
+	floor_max["lx_tick_isr production"] = "cannot hold: the drivers\x27 periods put several callbacks on one tick"
 	for (pass = 1; pass <= 2; pass++) {
 		b = pass == 1 ? "" : " production"; sec = pass == 1 ? "arm" : "arm-prod"
 		for (i = 1; i <= 3; i++) {
@@ -256,9 +262,10 @@ END {
 			name = (kv[1] == "lx_tick_isr" ? "tick" : kv[1]) b
 			pc = kv[1] in paper_cycles ? paper_cycles[kv[1]] : ""
 			row(sec, name " calls", an[f], "calls", "", "", "")
-			row(sec, name " target-equivalent avg", aeq[f], "instructions", pc, "<=" lim, verdict(aeq[f] <= lim))
+			row(sec, name " target-equivalent avg", aeq[f], "instructions", pc, "<=" lim,
+			    f in floor_avg ? floor_verdict(aeq[f] <= lim, floor_avg[f]) : verdict(aeq[f] <= lim))
 			row(sec, name " target-equivalent max", aeqmax[f], "instructions", "", "<=2*avg",
-			    verdict(aeqmax[f] <= 2 * aeq[f]))
+			    f in floor_max ? floor_verdict(aeqmax[f] <= 2 * aeq[f], floor_max[f]) : verdict(aeqmax[f] <= 2 * aeq[f]))
 			row(sec, name " target-equivalent median", p50[f], "instructions", "", "", "")
 			row(sec, name " target-equivalent p90", p90[f], "instructions", "", "", "")
 			row(sec, name " target-equivalent p99", p99[f], "instructions", "", "", "")
@@ -287,9 +294,9 @@ END {
 		k = i == 1 ? 1 : 256
 		row("timers", "idle tick linux_compat with " k " armed", due[k " idle"], "instructions", "", "", "")
 		row("timers", "due hrtimer linux_compat with " k " armed", due[k " hrtimer"], "instructions", "", "<=80",
-		    verdict(due[k " hrtimer"] <= 80))
+		    floor_verdict(due[k " hrtimer"] <= 80, "floor ~200: 64-bit expiry and an O(log n) re-queue"))
 		row("timers", "due timer_list linux_compat with " k " armed", due[k " timer_list"], "instructions", "", "<=60",
-		    verdict(due[k " timer_list"] <= 60))
+		    floor_verdict(due[k " timer_list"] <= 60, "floor ~200: 64-bit expiry and an O(log n) re-queue"))
 	}
 	row("sim", "host_sim devices (ev3_bench_full_brick)", spd["host_sim_devices"], "x real time", "", "",  "")
 	row("sim", "host_sim devices per CPU second", cspd["host_sim_devices"], "x real time", "", ">=1500",
@@ -304,7 +311,7 @@ END {
 	row("sim", "full stack per CPU second (-O2 build)", cspd["full_stack_o2"], "x real time", "", "", "")
 	row("sim", "ev3sim balance per CPU second (-O2 build)", cspd["ev3sim_balance_o2"], "x real time", "", "", "")
 	row("image", "linux_compat + RTOS glue text in the AM1808 image", image["linux_compat_glue"], "bytes", "",
-	    "<=8192", verdict(image["linux_compat_glue"] <= 8192))
+	    "<=8192", floor_verdict(image["linux_compat_glue"] <= 8192, "floor ~30 KiB: the Linux API the eight drivers call"))
 }' "$out/host.txt" "$out/arm.txt" "$out/arm_prod.txt" "$out/timers.txt" "$out/timer_costs.txt" "$out/image.txt" "$out/traps.txt" > "$out/bench.csv"
 grep -E '^(class|fn|libc),' "$out/arm.txt" > "$out/breakdown.csv"
 grep -E '^(class|fn|libc),' "$out/arm_prod.txt" > "$out/breakdown_prod.csv"
