@@ -18,6 +18,7 @@
 #include "host_sim/regs.h"
 #include "host_sim/trace.h"
 #include "host_sim/devices/uart16550.h"
+#include "devtest_compare.h"
 #include "text_files_test.h"
 
 #define U0        HS_UART0_BASE
@@ -38,19 +39,11 @@
 #define PIN_B     HS_GPIO(4, 9)
 #define PIN_C     HS_GPIO(8, 12)
 #define US        1000ULL
-#define MAX_NOTES 512
-
-/* One observation: what was seen, when, and the interrupt lines then. */
-struct note {
-	const char *what;
-	uint32_t value;
-	uint64_t at;
-	bool uart_irq, gpio_irq;
-};
+#define LINE_UART 1U        /* the interrupt lines an observation records */
+#define LINE_GPIO 2U
 
 struct run {
-	struct note notes[MAX_NOTES];
-	unsigned count;
+	struct devtest_notes notes;
 	struct hs_uart_stats stats;
 	char vcd[65536];
 	unsigned log_lines;         /* of the register log, if on */
@@ -61,9 +54,8 @@ static struct run *cur;
 /* Records an observation in the current run. */
 static void note(const char *what, uint32_t value)
 {
-	if (cur->count < MAX_NOTES)
-		cur->notes[cur->count++] = (struct note){ what, value, hs_now(), hs_intc_pending(EV3_UART0_INTNO),
-							  hs_intc_pending(HS_GPIO_BANK_INTNO(4)) };
+	devtest_note(&cur->notes, what, value, (hs_intc_pending(EV3_UART0_INTNO) ? LINE_UART : 0U) |
+					       (hs_intc_pending(HS_GPIO_BANK_INTNO(4)) ? LINE_GPIO : 0U));
 }
 
 /* UART0 at 115200 baud from 150 MHz, FIFO on with trigger fcr, as d_uart sets it up. */
@@ -208,18 +200,14 @@ static void timer_sequence(void)
 /* The sequence, observed; with the polled regions' register log on or off. */
 static void run_sequence(bool logged, struct run *r, const char *vcd_path)
 {
-	char *log_text = NULL;
-	size_t log_len = 0;
-	FILE *log = NULL;
+	struct devtest_reglog log = { NULL, NULL, 0 };
 	struct hs_uart *u;
 
 	cur = r;
-	r->count = 0;
+	r->notes.count = 0;
 	devtest_boot(5, vcd_path);
-	if (logged) {
-		log = open_memstream(&log_text, &log_len);
-		hs_trace_reglog("UART0,GPIO,TIMER64P3", log);
-	}
+	if (logged)
+		devtest_reglog_begin(&log, "UART0,GPIO,TIMER64P3");
 	u = ev3_input_uart(1);
 	if (!u)
 		tap_bail_out("no UART0");
@@ -227,54 +215,18 @@ static void run_sequence(bool logged, struct run *r, const char *vcd_path)
 	gpio_sequence();
 	timer_sequence();
 	r->stats = *hs_uart_get_stats(u);
-	if (log) {
-		hs_trace_reglog(NULL, NULL);
-		fclose(log);
-		r->log_lines = 0;
-		for (const char *c = log_text; *c; c++)
-			r->log_lines += *c == '\n';
-		free(log_text);
-	}
+	if (logged)
+		r->log_lines = devtest_reglog_end(&log);
 	if (hs_sim_shutdown() != E_OK)
 		tap_bail_out("shutdown failed");
 	tf_read_text(vcd_path, r->vcd, sizeof(r->vcd));
-}
-
-/* The number of observations of b the same as a's (what, value, time and
- * interrupt lines), with a diagnostic for each that differs. */
-static unsigned same_notes(const struct run *a, const struct run *b)
-{
-	unsigned same = 0;
-
-	for (unsigned i = 0; i < a->count && i < b->count; i++) {
-		const struct note *e = &a->notes[i], *d = &b->notes[i];
-
-		if (strcmp(e->what, d->what) == 0 && e->value == d->value && e->at == d->at &&
-		    e->uart_irq == d->uart_irq && e->gpio_irq == d->gpio_irq) {
-			same++;
-			continue;
-		}
-		tap_diag("%s: direct 0x%08x at %llu irq %d/%d, hooked %s 0x%08x at %llu irq %d/%d", e->what, e->value,
-			 (unsigned long long)e->at, e->uart_irq, e->gpio_irq, d->what, d->value,
-			 (unsigned long long)d->at, d->uart_irq, d->gpio_irq);
-	}
-	return same;
-}
-
-/* The first note named what in r, or NULL. */
-static const struct note *find(const struct run *r, const char *what)
-{
-	for (unsigned i = 0; i < r->count; i++)
-		if (strcmp(r->notes[i].what, what) == 0)
-			return &r->notes[i];
-	return NULL;
 }
 
 int main(void)
 {
 	static struct run direct, hooked;
 	char dir[] = "/tmp/test_direct_polls.XXXXXX", direct_vcd[64], hooked_vcd[64];
-	const struct note *n;
+	const struct devtest_note *n;
 
 	tap_plan(9);
 	tf_make_scratch_dir(dir);
@@ -284,20 +236,21 @@ int main(void)
 	run_sequence(true, &hooked, hooked_vcd);
 	tf_remove_tree(dir);
 
-	ok(direct.count > 60 && direct.count < MAX_NOTES, "the sequence was observed (%u notes)", direct.count);
-	n = find(&direct, "lsr overrun");
+	ok(direct.notes.count > 60 && direct.notes.count < DEVTEST_MAX_NOTES, "the sequence was observed (%u notes)",
+	   direct.notes.count);
+	n = devtest_find_note(&direct.notes, "lsr overrun");
 	ok(n && (n->value & 0x03U) == 0x03U, "it has an overrun (LSR 0x%02x)", n ? n->value : 0U);
-	n = find(&direct, "lsr error");
+	n = devtest_find_note(&direct.notes, "lsr error");
 	ok(n && (n->value & 0x88U) == 0x88U, "a framing error with RXFIFOE (LSR 0x%02x)", n ? n->value : 0U);
-	n = find(&direct, "intstat");
-	ok(n && n->value != 0U && n->gpio_irq, "a GPIO edge interrupt (INTSTAT 0x%08x)", n ? n->value : 0U);
-	n = find(&direct, "tim34");
+	n = devtest_find_note(&direct.notes, "intstat");
+	ok(n && n->value != 0U && (n->lines & LINE_GPIO), "a GPIO edge interrupt (INTSTAT 0x%08x)", n ? n->value : 0U);
+	n = devtest_find_note(&direct.notes, "tim34");
 	ok(n && n->value != 0U, "the timer counts (TIM34 %u)", n ? n->value : 0U);
-	is_int(hooked.count, direct.count, "the same number of observations with the register log on");
-	is_int(same_notes(&direct, &hooked), direct.count,
+	is_int(hooked.notes.count, direct.notes.count, "the same number of observations with the register log on");
+	is_int(devtest_same_notes(&direct.notes, &hooked.notes, "direct", "hooked"), direct.notes.count,
 	       "every observation has the same value, time and interrupt lines (direct accesses and hooks)");
 	ok(memcmp(&direct.stats, &hooked.stats, sizeof(direct.stats)) == 0 && strcmp(direct.vcd, hooked.vcd) == 0,
 	   "the same UART statistics and VCD");
-	ok(hooked.log_lines > direct.count, "the register log was on (%u lines)", hooked.log_lines);
+	ok(hooked.log_lines > direct.notes.count, "the register log was on (%u lines)", hooked.log_lines);
 	return tap_done();
 }

@@ -21,6 +21,7 @@
 #include "host_sim/regs.h"
 #include "host_sim/trace.h"
 #include "host_sim/devices/spi.h"
+#include "devtest_compare.h"
 #include "text_files_test.h"
 
 #define SPI       HS_SPI0_BASE
@@ -36,19 +37,9 @@
 #define TXFULL    (1U << 29)
 #define RXEMPTY   (1U << 31)
 #define US        1000ULL
-#define MAX_NOTES 256
-
-/* One observation: what was seen, when, and the SPI0 interrupt line then. */
-struct note {
-	const char *what;
-	uint32_t value;
-	uint64_t at;
-	bool irq;
-};
 
 struct run {
-	struct note notes[MAX_NOTES];
-	unsigned count;
+	struct devtest_notes notes;
 	struct ev3_spi_stats stats;
 	char vcd[65536];
 	uint32_t deferred;
@@ -60,8 +51,7 @@ static struct run *cur;
 /* Records an observation in the current run. */
 static void note(const char *what, uint32_t value)
 {
-	if (cur->count < MAX_NOTES)
-		cur->notes[cur->count++] = (struct note){ what, value, hs_now(), hs_intc_pending(EV3_SPI0_INTNO) };
+	devtest_note(&cur->notes, what, value, hs_intc_pending(EV3_SPI0_INTNO) ? 1U : 0U);
 }
 
 /* Configures SPI0 as d_analog does: 16-bit 2 MHz master, interrupts off. */
@@ -124,18 +114,14 @@ static void run_sequence(bool defer, bool logged, struct run *r, const char *vcd
 {
 	uint64_t frame_ns, end;
 	uint32_t buf;
-	char *log_text = NULL;
-	size_t log_len = 0;
-	FILE *log = NULL;
+	struct devtest_reglog log = { NULL, NULL, 0 };
 
 	cur = r;
-	r->count = 0;
+	r->notes.count = 0;
 	hs_spi_defer_private_ends(defer);
 	devtest_boot(11, vcd_path);
-	if (logged) {
-		log = open_memstream(&log_text, &log_len);
-		hs_trace_reglog("SPI0", log);
-	}
+	if (logged)
+		devtest_reglog_begin(&log, "SPI0");
 	spi_setup();
 	for (unsigned i = 0; i < 6; i++)
 		polled_frame((uint16_t)(0x1840U | (i << 7)));
@@ -264,36 +250,11 @@ static void run_sequence(bool defer, bool logged, struct run *r, const char *vcd
 	r->deferred = r->stats.deferred_ends;
 	r->stats.deferred_ends = 0;
 	note("stats transfers", r->stats.transfers);
-	if (log) {
-		hs_trace_reglog(NULL, NULL);
-		fclose(log);
-		r->log_lines = 0;
-		for (const char *c = log_text; *c; c++)
-			r->log_lines += *c == '\n';
-		free(log_text);
-	}
+	if (logged)
+		r->log_lines = devtest_reglog_end(&log);
 	if (hs_sim_shutdown() != E_OK)
 		tap_bail_out("shutdown failed");
 	tf_read_text(vcd_path, r->vcd, sizeof(r->vcd));
-}
-
-/* The number of observations of b the same as a's (what, value, time and
- * interrupt line), with a diagnostic for each that differs. */
-static unsigned same_notes(const struct run *a, const struct run *b, const char *a_name, const char *b_name)
-{
-	unsigned same = 0;
-
-	for (unsigned i = 0; i < a->count && i < b->count; i++) {
-		const struct note *e = &a->notes[i], *d = &b->notes[i];
-
-		if (strcmp(e->what, d->what) == 0 && e->value == d->value && e->at == d->at && e->irq == d->irq) {
-			same++;
-			continue;
-		}
-		tap_diag("%s: %s 0x%08x at %llu irq %d, %s %s 0x%08x at %llu irq %d", e->what, a_name, e->value,
-			 (unsigned long long)e->at, e->irq, b_name, d->what, d->value, (unsigned long long)d->at, d->irq);
-	}
-	return same;
 }
 
 int main(void)
@@ -313,8 +274,8 @@ int main(void)
 
 	is_int(eager.deferred, 0, "with deferral off every frame end is an event");
 	ok(deferred.deferred >= 10, "with deferral on the polled frames' ends are deferred (%u)", deferred.deferred);
-	is_int(deferred.count, eager.count, "the same number of observations (%u)", eager.count);
-	is_int(same_notes(&eager, &deferred, "eager", "deferred"), eager.count,
+	is_int(deferred.notes.count, eager.notes.count, "the same number of observations (%u)", eager.notes.count);
+	is_int(devtest_same_notes(&eager.notes, &deferred.notes, "eager", "deferred"), eager.notes.count,
 	       "every observation has the same value, time and interrupt line");
 	ok(memcmp(&eager.stats, &deferred.stats, sizeof(eager.stats)) == 0,
 	   "the same statistics (%u transfers, %u stalls, %u overruns)", eager.stats.transfers,
@@ -323,11 +284,12 @@ int main(void)
 	ok(strstr(eager.vcd, "spi0") != NULL || strstr(eager.vcd, "SPI0") != NULL || eager.vcd[0] != '\0',
 	   "the VCD was written");
 	is_str(deferred.vcd, eager.vcd, "the VCD (interrupt lines and every other signal) is identical");
-	ok(eager.count > 30, "the sequence was observed (%u notes)", eager.count);
-	ok(logged.count == deferred.count && same_notes(&deferred, &logged, "unlogged", "logged") == deferred.count,
+	ok(eager.notes.count > 30, "the sequence was observed (%u notes)", eager.notes.count);
+	ok(logged.notes.count == deferred.notes.count &&
+	   devtest_same_notes(&deferred.notes, &logged.notes, "unlogged", "logged") == deferred.notes.count,
 	   "with the register log on (the hooks instead of the direct accesses), the same observations");
 	ok(memcmp(&logged.stats, &deferred.stats, sizeof(logged.stats)) == 0 && logged.deferred == deferred.deferred &&
 	   strcmp(logged.vcd, deferred.vcd) == 0, "and the same statistics, deferrals and VCD");
-	ok(logged.log_lines > 2U * eager.count, "the register log was on (%u lines)", logged.log_lines);
+	ok(logged.log_lines > 2U * eager.notes.count, "the register log was on (%u lines)", logged.log_lines);
 	return tap_done();
 }
