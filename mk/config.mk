@@ -145,8 +145,10 @@ same_text = $(and $(findstring x$(1)x,x$(2)x),$(findstring x$(2)x,x$(1)x))
 
 # The object rule of configuration $(1) for the objects under $(2)/obj.  The
 # configuration's compiler and flags are a key of their own ($(2)/compile.key)
-# that every object depends on, so a changed flag recompiles the objects that
-# an old one made (the compiler cache makes that cheap where nothing changed).
+# that every object depends on — this rule's, and those the configuration's
+# other compile rules make (EV3RT apps, legacy modules, the configurator's
+# test) — so a changed flag recompiles the objects that an old one made (the
+# compiler cache makes that cheap where nothing changed).
 define obj_rule
 $(call key_file_rule,$(2)/compile.key,$(CC_$(1)) $(CFLAGS_$(1)) $(KERNEL_DEFS))
 $(2)/obj/%.o: %.c $(2)/compile.key

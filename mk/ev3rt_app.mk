@@ -37,13 +37,13 @@ $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg $$
 
 $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c ;
 
-$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.c $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h
+$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.c $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h $(BUILD)/$(2)/compile.key
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(2) $$<
 	$(Q)$$(CC_$(2)) -std=gnu11 $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
 		-MMD -MP -c $$< -o $$@
 
-$(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c
+$(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c $(BUILD)/$(2)/compile.key
 	$$(quiet) CC $(2) $$<
 	$(Q)$$(CC_$(2)) -std=gnu11 $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
 		-MMD -MP -c $$< -o $$@
@@ -88,7 +88,8 @@ $(foreach c,$(HOST_CONFIGS),$(eval $(call ev3rt_cfg_test,$(c))))
 
 # The configurator's pass 1 tested in-process: the test object includes cfg_gen.
 define ev3rt_cfg_unit_test
-$(BUILD)/$(1)/obj/tests/cfg/test_cfg_errors.o: tests/cfg/test_cfg_errors.c cfg/cfg_gen.c cfg/cfg_gen.h
+$(BUILD)/$(1)/obj/tests/cfg/test_cfg_errors.o: tests/cfg/test_cfg_errors.c cfg/cfg_gen.c cfg/cfg_gen.h \
+		$(BUILD)/$(1)/compile.key
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(1) $$<
 	$(Q)$$(CC_$(1)) $$(call src_flags,$$<) -Icfg $$(WARN) $$(CFLAGS_$(1)) -MMD -MP -c $$< -o $$@.main.o

@@ -20,7 +20,7 @@ KBUILD_WARN := -Wall -Wundef -Werror=strict-prototypes -Wno-trigraphs \
 
 # $(1) = config
 define legacy_module_rules
-$(BUILD)/$(1)/legacy/%.mod.o: tests/legacy/%_hack.c
+$(BUILD)/$(1)/legacy/%.mod.o: tests/legacy/%_hack.c $(BUILD)/$(1)/compile.key
 	@mkdir -p $$(@D)
 	$$(quiet) MOD $(1) $$@
 	$(Q)$$(CC_$(1)) $$(call nostdinc_flags,$(1),$$<) -std=gnu11 $(LINUX_INC) $(LINUX_CODEGEN) -Itests/legacy $(KBUILD_WARN) \
