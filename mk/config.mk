@@ -139,8 +139,12 @@ $(1): FORCE_KEY
 	$$(if $$(shell mkdir -p $$(@D) && echo ok),,$$(error cannot create $$(@D)))
 	$$(if $$(call same_text,$$(file <$$@),$$(key_text_$$@)),,$$(file >$$@,$$(key_text_$$@)))
 endef
-# Non-empty if texts $(1) and $(2) are equal (each within the other, framed).
-same_text = $(and $(findstring x$(1)x,x$(2)x),$(findstring x$(2)x,x$(1)x))
+# Non-empty if texts $(1) and $(2) are equal as words (each within the other,
+# framed).  Both are stripped: $(file <) of GNU make 4.3 keeps the file's final
+# newline when the file is longer than its 200-byte read buffer, so a long key
+# read back would never equal its text and would be rewritten on every make,
+# recompiling its whole configuration.
+same_text = $(and $(findstring x$(strip $(1))x,x$(strip $(2))x),$(findstring x$(strip $(2))x,x$(strip $(1))x))
 .PHONY: FORCE_KEY
 
 # The object rule of configuration $(1) for the objects under $(2)/obj.  The
