@@ -7,7 +7,7 @@
  * service calls (the provider beside it) and to produce a loadable uImage.
  */
 #include "kernel.h"
-#include "ev3api.h"
+#include "ev3api_cfg.h"
 
 void fw_main(void);
 

@@ -28,6 +28,16 @@
  * EV3API_NOT_YET (ev3api_not_yet.h): an app using it compiles, and its link fails naming the
  * missing call (never a stub that silently does nothing).
  *
+ * As EV3RT's ev3api.h does (public source: ev3rt-git/ev3rt-hrp2-sdk,
+ * common/ev3api/include/ev3api.h), it gives an app the kernel's, the system
+ * log's and the TOPPERS library's headers and <stdio.h>, declares the API
+ * with C linkage for C++ apps, and brings in the configuration's object IDs
+ * (kernel_cfg.h, or module_cfg.h for a loadable module, BUILD_MODULE) —
+ * except in the configurator's own pass over app.cfg (TOPPERS_CFG1_OUT),
+ * when they do not exist yet.  Apps never include kernel_cfg.h themselves.
+ * ev3lx's own code (the API's sources, ev3sim, tests) includes the group
+ * headers it uses instead, and no app configuration.
+ *
  * docs/api.md has every function and its errors; docs/ev3rt-apps.md how an
  * EV3RT app is built and what differs.
  */
@@ -37,9 +47,10 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include "kernel.h"
 #include "t_syslog.h"
-#include "rtos_cfg.h"
+#include "t_stdlib.h"
 
 #include "ev3api_motor.h"
 #include "ev3api_sensor.h"
@@ -50,12 +61,13 @@
 #include "ev3api_speaker.h"
 #include "ev3api_battery.h"
 
-#include "ev3api_battery.h"
-
-/* ---- Configuration ---- */
-
-/* What an application INCLUDEs: linux_compat, the four drivers' service calls,
- * the API's button task, and the memory regions the API reads. */
-extern const struct rtos_cfg ev3api_cfg;
+#if !defined(TOPPERS_CFG1_OUT)
+#include "ev3api_cfg.h"
+#if defined(BUILD_MODULE)
+#include "module_cfg.h"
+#else
+#include "kernel_cfg.h"
+#endif
+#endif
 
 #endif /* EV3API_H */

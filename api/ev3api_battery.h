@@ -13,9 +13,17 @@
 #ifndef EV3API_BATTERY_H
 #define EV3API_BATTERY_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Current drawn from the battery (brick and motors), mA. */
 int ev3_battery_current_mA(void);
 /* Battery terminal voltage, mV. */
 int ev3_battery_voltage_mV(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* EV3API_BATTERY_H */

@@ -5,6 +5,10 @@
 #ifndef EV3API_BRICK_H
 #define EV3API_BRICK_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stdbool.h>
 #include <stdint.h>
 #include "kernel.h"
@@ -62,6 +66,10 @@ ER ev3lx_button_set_on_clicked(button_t button, ISR handler, intptr_t exinf);
 #endif
 #ifndef EV3_BUTTON_TASK_STACK
 #define EV3_BUTTON_TASK_STACK     (16 * 1024)
+#endif
+
+#ifdef __cplusplus
+}
 #endif
 
 #endif /* EV3API_BRICK_H */

@@ -13,6 +13,10 @@
 #ifndef EV3API_BRICK_IO_H
 #define EV3API_BRICK_IO_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stdint.h>
 #include "kernel.h"
 #include "ev3api_fs.h"
@@ -72,5 +76,9 @@ static inline ER_UINT brick_io_serial_read(serial_port_t port, void *buf, uint_t
 {
 	return cal_svc(BRICK_IO_FN_SERIAL_READ, (intptr_t)port, (intptr_t)buf, (intptr_t)len, 0, 0);
 }
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* EV3API_BRICK_IO_H */

@@ -10,6 +10,10 @@
 #ifndef EV3API_CYC_H
 #define EV3API_CYC_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "kernel.h"
 
 /* Starts the EV3 cyclic handler ID (its first call one period from now,
@@ -17,5 +21,9 @@
 ER ev3_sta_cyc(ID ev3cycid);
 /* Stops it; a call in progress finishes.  E_ID, E_NOEXS, E_OACV, E_CTX. */
 ER ev3_stp_cyc(ID ev3cycid);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* EV3API_CYC_H */

@@ -8,6 +8,10 @@
 #ifndef EV3API_FS_H
 #define EV3API_FS_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stdint.h>
 #include <stdio.h>
 #include "kernel.h"
@@ -41,5 +45,9 @@ ER ev3_sdcard_closedir(ID dirid);
 FILE *ev3_serial_open_file(serial_port_t port);
 bool_t ev3_bluetooth_is_connected(void);
 bool_t ev3_usb_cdc_is_connected(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* EV3API_FS_H */

@@ -6,6 +6,10 @@
 #ifndef EV3API_LCD_H
 #define EV3API_LCD_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stdint.h>
 #include "kernel.h"
 #include "ev3api_fs.h"
@@ -42,5 +46,9 @@ ER ev3_lcd_fill_rect(int32_t x, int32_t y, int32_t w, int32_t h, lcdcolor_t colo
 ER ev3_lcd_draw_image(const image_t *image, int32_t x, int32_t y);
 ER ev3_image_load(const memfile_t *file, image_t *image);
 ER ev3_image_free(image_t *image);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* EV3API_LCD_H */

@@ -5,6 +5,10 @@
 #ifndef EV3API_MOTOR_H
 #define EV3API_MOTOR_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stdbool.h>
 #include <stdint.h>
 #include "kernel.h"
@@ -74,5 +78,9 @@ ER ev3lx_motor_is_busy(motor_port_t port, bool *p_busy);
 ER ev3lx_motor_steer(motor_port_t left, motor_port_t right, int speed, int turn);
 /* The same, stopping both (braked) after the first motor has turned by degrees (> 0). */
 ER ev3lx_motor_sync(motor_port_t left, motor_port_t right, int speed, int turn, int degrees);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* EV3API_MOTOR_H */

@@ -10,6 +10,14 @@
 #ifndef EV3API_NOT_YET_H
 #define EV3API_NOT_YET_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define EV3API_NOT_YET(group, name) __asm__("ev3lx_not_yet_supported__" #group "__" #name)
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* EV3API_NOT_YET_H */

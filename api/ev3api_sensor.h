@@ -5,6 +5,10 @@
 #ifndef EV3API_SENSOR_H
 #define EV3API_SENSOR_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stdbool.h>
 #include <stdint.h>
 #include "kernel.h"
@@ -138,5 +142,9 @@ ER ev3lx_nxt_temp_sensor_measure(sensor_port_t port, float *p_temp);
 
 /* Any UART sensor: the newest raw sample of its current mode (at most 32 bytes). */
 ER ev3lx_uart_sensor_get_raw(sensor_port_t port, void *buf, uint_t size);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* EV3API_SENSOR_H */

@@ -9,6 +9,10 @@
 #ifndef EV3API_SPEAKER_H
 #define EV3API_SPEAKER_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stdint.h>
 #include "kernel.h"
 #include "ev3api_fs.h"
@@ -69,5 +73,9 @@ ER ev3_speaker_play_tone(uint16_t frequency, int32_t duration);
 ER ev3_speaker_play_file(const memfile_t *file, int32_t duration);
 /* Stops what plays. */
 ER ev3_speaker_stop(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* EV3API_SPEAKER_H */

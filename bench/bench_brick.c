@@ -5,6 +5,7 @@
 #include "lms_pwm.h"
 #include "lms_uart.h"
 #include "rtos_host.h"
+#include "ev3api_cfg.h"
 #include "host_sim/scenario.h"
 #include "host_sim/devices/ev3_brick.h"
 

@@ -11,7 +11,8 @@
 
 #include <stdbool.h>
 #include <stdint.h>
-#include "ev3api.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
 
 /* The motor and the sensor whose calls are measured. */
 #define BENCH_MOTOR_PORT   EV3_PORT_A

@@ -6,7 +6,9 @@
  *          [--object path.o]... app.cfg
  *
  * app.cfg is run through the C preprocessor (CMD, default "cpp", with
- * -DTOPPERS_MACRO_ONLY -DTOPPERS_CFG1 and the -I/-D options), then its static
+ * -DTOPPERS_MACRO_ONLY -DTOPPERS_CFG1 -DTOPPERS_CFG1_OUT and the -I/-D options:
+ * TOPPERS_CFG1_OUT keeps ev3api.h from including the kernel_cfg.h this pass
+ * writes, as in TOPPERS's configurator), then its static
  * APIs are read: INCLUDE, DOMAIN, CRE_TSK, CRE_SEM, CRE_FLG, CRE_DTQ, CRE_PDQ,
  * CRE_MTX, CRE_CYC, CRE_ALM, EV3_CRE_CYC, ATT_MOD, ATT_INI, ATT_TER, DEF_SVC,
  * CFG_INT, ATT_ISR, and ev3lx's EV3LX_INCLUDE_TABLE(symbol) (an existing
@@ -148,7 +150,7 @@ static int process_file(struct cfg_ctx *ctx, struct tool *tool, const char *path
 		return 1;
 	collect_c_includes(ctx, raw);
 	free(raw);
-	snprintf(cmd, sizeof(cmd), "%s -x c -DTOPPERS_MACRO_ONLY -DTOPPERS_CFG1 ", tool->cpp);
+	snprintf(cmd, sizeof(cmd), "%s -x c -DTOPPERS_MACRO_ONLY -DTOPPERS_CFG1 -DTOPPERS_CFG1_OUT ", tool->cpp);
 	for (int i = 0; i < tool->nincdirs; i++) {
 		strncat(cmd, "-I", sizeof(cmd) - strlen(cmd) - 1);
 		append_quoted(cmd, sizeof(cmd), tool->incdirs[i]);

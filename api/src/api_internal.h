@@ -63,6 +63,7 @@ void api_brick_boot(void);
 void api_battery_boot(void);
 void api_speaker_boot(void);
 void api_lcd_boot(void);
+void api_serial_boot(void);
 /* The frame of the LCD calls (lcd.c), in the format of lcd_draw.h: 7680 bytes. */
 extern uint8_t api_lcd_frame[60 * 128];
 

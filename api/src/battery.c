@@ -3,7 +3,7 @@
  * d_analog's shared ANALOG area (ev3api_battery.h).
  */
 #include <stddef.h>
-#include "ev3api.h"
+#include "ev3api_battery.h"
 #include "api_internal.h"
 #include "analog_hack.h"
 #include "t_syslog.h"

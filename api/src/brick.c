@@ -10,7 +10,7 @@
  * the rights of its protection domain, not privileged.
  */
 #include <string.h>
-#include "ev3api.h"
+#include "ev3api_brick.h"
 #include "api_internal.h"
 #include "ui_hack.h"
 

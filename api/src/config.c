@@ -1,7 +1,7 @@
 /*
  * config.c — ev3api_cfg: what an application using the API INCLUDEs.
  */
-#include "ev3api.h"
+#include "ev3api_brick.h"
 #include "ev3_drivers_cfg.h"
 #include "api_internal.h"
 
@@ -15,6 +15,7 @@ static void api_boot(intptr_t exinf)
 	api_battery_boot();
 	api_speaker_boot();
 	api_lcd_boot();
+	api_serial_boot();
 }
 
 static const struct rtos_ini_cfg api_inis[] = { { api_boot, 0 } };

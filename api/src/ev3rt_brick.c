@@ -2,7 +2,8 @@
  * ev3rt_brick.c — EV3RT's button, LED and EV3 cyclic handler calls
  * (ev3api_brick.h, ev3api_cyc.h) as thin wrappers over the checked forms.
  */
-#include "ev3api.h"
+#include "ev3api_brick.h"
+#include "ev3api_cyc.h"
 #include "api_internal.h"
 
 ER ev3_led_set_color(ledcolor_t color)

@@ -11,7 +11,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "ev3api.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
+#include "ev3api_fs.h"
 #include "ev3api_brick_io.h"
 #include "api_internal.h"
 
@@ -177,8 +179,10 @@ static ssize_t serial_read(void *cookie, char *buf, size_t len)
 
 static FILE *serial_files[EV3_SERIAL_USB_CDC + 1];
 
-/* Open once, the same stream ever after (as EV3RT does); unbuffered, so
- * every fprintf reaches the port when it returns. */
+/* Open once, the same stream ever after; unbuffered, so every fprintf
+ * reaches the port when it returns.  Every port gives a stream, connected
+ * or not, as EV3RT's does (its sample apps assert it): what is written to a
+ * port with no far end is lost, and a read waits for the far end. */
 FILE *ev3_serial_open_file(serial_port_t port)
 {
 	static const cookie_io_functions_t io = { .read = serial_read, .write = serial_write };
@@ -186,17 +190,6 @@ FILE *ev3_serial_open_file(serial_port_t port)
 
 	if ((unsigned)port > EV3_SERIAL_USB_CDC) {
 		api_warn("ev3_serial_open_file", (int)port, E_ID);
-		return NULL;
-	}
-	if (port == EV3_SERIAL_BT || port == EV3_SERIAL_USB_CDC) {
-		syslog(LOG_WARNING, "ev3_serial_open_file: %s is not provided by ev3lx (no %s stack)",
-		       port == EV3_SERIAL_BT ? "Bluetooth SPP" : "USB CDC",
-		       port == EV3_SERIAL_BT ? "Bluetooth" : "USB device");
-		return NULL;
-	}
-	/* a zero-length write asks whether the platform provides the port */
-	if (brick_io_serial_write(port, NULL, 0) < 0) {
-		syslog(LOG_WARNING, "ev3_serial_open_file: port %d is not connected", (int)port);
 		return NULL;
 	}
 	if (serial_files[port] != NULL) {

@@ -1,7 +1,6 @@
 /*
  * ev3rt_log.c — the warning EV3RT's calls log where they cannot return an error.
  */
-#include "ev3api.h"
 #include "api_internal.h"
 
 static const char *error_name(ER ercd)

@@ -4,7 +4,8 @@
  * power is clamped, and set_power means a regulated speed on large and
  * medium motors as it does in EV3RT.
  */
-#include "ev3api.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
 #include "api_internal.h"
 
 #define POWER_MAX 100

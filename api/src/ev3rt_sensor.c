@@ -4,7 +4,8 @@
  * of another type a warning is logged and 0 / false returned.
  */
 #include <string.h>
-#include "ev3api.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
 #include "api_internal.h"
 
 ER ev3_sensor_config(sensor_port_t port, sensor_type_t type)

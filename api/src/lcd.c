@@ -7,7 +7,9 @@
  */
 #include <stdlib.h>
 #include <string.h>
-#include "ev3api.h"
+#include "ev3api_fs.h"
+#include "ev3api_lcd.h"
+#include "ev3api_speaker.h"
 #include "api_internal.h"
 #include "lcd_draw.h"
 #include "lcd_hack.h"

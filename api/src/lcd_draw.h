@@ -19,7 +19,7 @@
 
 #include <stdbool.h>
 #include <stdint.h>
-#include "ev3api.h"
+#include "ev3api_lcd.h"
 
 #define LCD_ROW_BYTES   60      /* (178 + 2) / 3 */
 #define LCD_FRAME_BYTES (LCD_ROW_BYTES * EV3_LCD_HEIGHT)

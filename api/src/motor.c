@@ -9,7 +9,8 @@
  * driver refreshes every 2 ms.
  */
 #include <string.h>
-#include "ev3api.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
 #include "api_internal.h"
 #include "pwm_hack.h"
 

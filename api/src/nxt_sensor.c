@@ -18,7 +18,8 @@
  * of 1/16 degree steps.  Answers are kept in bus order (negative read length).
  */
 #include <string.h>
-#include "ev3api.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
 #include "api_internal.h"
 #include "iic_hack.h"
 

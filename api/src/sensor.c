@@ -10,7 +10,8 @@
  * (E_TMOUT), so an unplugged sensor never blocks a task for good.
  */
 #include <string.h>
-#include "ev3api.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
 #include "api_internal.h"
 #include "analog_hack.h"
 #include "uart_hack.h"

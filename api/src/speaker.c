@@ -4,7 +4,9 @@
  * file's samples go to sound_hack's PCM feeder.
  */
 #include <string.h>
-#include "ev3api.h"
+#include "ev3api_fs.h"
+#include "ev3api_lcd.h"
+#include "ev3api_speaker.h"
 #include "api_internal.h"
 #include "sound_hack.h"
 

@@ -15,7 +15,7 @@
 #include "ev3sim/balance_run.h"
 #include "ev3sim/brick_io.h"
 #include "ev3sim/serial_log.h"
-#include "../../examples/gyroboy/app.h"
+#include "../../examples/gyroboy/gyroboy.h"
 
 #define LEFT_PORT   0U      /* A */
 #define RIGHT_PORT  3U      /* D */

@@ -304,17 +304,23 @@ static ER_UINT svc_dir_close(intptr_t dirid, intptr_t p2, intptr_t p3, intptr_t 
 	return E_OK;
 }
 
+/* Whether port has a far end: the sensor-port UART when --serial gave one or
+ * serial_log models it; Bluetooth and USB never (no host peer yet). */
+static bool serial_connected(intptr_t port)
+{
+	return (port == EV3_SERIAL_DEFAULT || port == EV3_SERIAL_UART) &&
+	       (io.serial_fd >= 0 || io.serial_is_uart);
+}
+
 /* The head of both directions: context, port, length and buffer. */
 static ER serial_check(intptr_t port, intptr_t p_buf, intptr_t p_len, MODE access)
 {
 	if (sns_ctx())
 		return E_CTX;
-	if (port != EV3_SERIAL_DEFAULT && port != EV3_SERIAL_UART)
+	if ((uintptr_t)port > EV3_SERIAL_USB_CDC)
 		return E_ID;
 	if (p_len < 0 || p_len > (intptr_t)BRICK_IO_MAX_XFER)
 		return E_PAR;
-	if (io.serial_fd < 0 && !io.serial_is_uart)
-		return E_OBJ;
 	if (p_len > 0 && ((void *)p_buf == NULL || prb_mem((void *)p_buf, (SIZE)p_len, TSK_SELF, access) != E_OK))
 		return E_MACV;
 	return E_OK;
@@ -327,8 +333,12 @@ static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, i
 	ER ercd;
 
 	(void)p4; (void)p5; (void)cdmid;
-	if ((ercd = serial_check(port, p_buf, p_len, TPM_READ)) != E_OK || p_len == 0)
+	if ((ercd = serial_check(port, p_buf, p_len, TPM_READ)) != E_OK)
 		return ercd;
+	if (!serial_connected(port))
+		return p_len == 0 ? E_OBJ : p_len;    /* nothing listens: the bytes are lost, as on the wire */
+	if (p_len == 0)
+		return E_OK;
 	if (io.serial_is_uart)
 		return serial_log_send((const char *)p_buf, (uint_t)p_len);
 	put = write(io.serial_fd, (const void *)p_buf, (size_t)p_len);
@@ -346,6 +356,8 @@ static ER_UINT svc_serial_read(intptr_t port, intptr_t p_buf, intptr_t p_len, in
 	(void)p4; (void)p5; (void)cdmid;
 	if ((ercd = serial_check(port, p_buf, p_len, TPM_WRITE)) != E_OK || p_len == 0)
 		return ercd;
+	if (!serial_connected(port))
+		return 0;           /* nothing arrives from no far end: the reader waits */
 	if (io.serial_is_file || io.serial_is_uart)
 		return E_OBJ;       /* output only: the far end says nothing */
 	got = read(io.serial_fd, (void *)p_buf, (size_t)p_len);

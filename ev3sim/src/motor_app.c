@@ -3,8 +3,10 @@
  */
 #include <stdlib.h>
 #include <string.h>
-#include "ev3api.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
 #include "rtos_host.h"
+#include "ev3api_cfg.h"
 #include "t_syslog.h"
 #include "host_sim/scenario.h"
 #include "ev3sim/apps.h"

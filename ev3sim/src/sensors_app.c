@@ -3,9 +3,11 @@
  * then live values through the EV3 API (apps.h).
  */
 #include <string.h>
-#include "ev3api.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
 #include "analog_hack.h"
 #include "rtos_host.h"
+#include "ev3api_cfg.h"
 #include "host_sim/scenario.h"
 #include "host_sim/devices/nxt_iic.h"
 #include "ev3sim/apps.h"

@@ -9,7 +9,6 @@
  */
 #include "ev3api.h"
 #include "app.h"
-#include "kernel_cfg.h"
 
 static volatile int ticks;          /* blink periods run */
 static volatile int enter_clicks;

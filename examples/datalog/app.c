@@ -12,7 +12,6 @@
 #include <string.h>
 #include "ev3api.h"
 #include "app.h"
-#include "kernel_cfg.h"
 
 #define SETTINGS "/ev3rt/res/datalog.txt"
 

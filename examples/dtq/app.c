@@ -11,7 +11,6 @@
  */
 #include "ev3api.h"
 #include "app.h"
-#include "kernel_cfg.h"
 
 #define BURST        5
 #define BURST_PAUSE  35

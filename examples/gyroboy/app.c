@@ -22,7 +22,6 @@
 #include <string.h>
 #include "ev3api.h"
 #include "app.h"
-#include "kernel_cfg.h"
 
 #define LEFT_MOTOR   EV3_PORT_A
 #define RIGHT_MOTOR  EV3_PORT_D

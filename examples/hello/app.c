@@ -9,7 +9,6 @@
 #include <stdio.h>
 #include "ev3api.h"
 #include "app.h"
-#include "kernel_cfg.h"
 
 #define GREETING "/ev3rt/res/hello.txt"
 

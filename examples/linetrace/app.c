@@ -11,7 +11,6 @@
  */
 #include "ev3api.h"
 #include "app.h"
-#include "kernel_cfg.h"
 
 #define LEFT_MOTOR   EV3_PORT_B
 #define RIGHT_MOTOR  EV3_PORT_C

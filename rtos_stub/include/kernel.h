@@ -14,6 +14,10 @@
 #ifndef TOPPERS_KERNEL_H
 #define TOPPERS_KERNEL_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "t_stddef.h"
 #include "t_syslog.h"
 
@@ -216,5 +220,12 @@ ER_UINT cal_svc(FN fncd, intptr_t par1, intptr_t par2, intptr_t par3,
 		intptr_t par4, intptr_t par5);
 /* E_OK if the task's protection domain may access [base, base+size) with pmmode, else E_MACV. */
 ER      prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode);
+
+#ifdef __cplusplus
+}
+#endif
+
+/* The target's part of the interface (the EV3), as HRP2's kernel.h includes it. */
+#include "target_kernel.h"
 
 #endif /* TOPPERS_KERNEL_H */

@@ -16,6 +16,10 @@
 #ifndef RTOS_CFG_H
 #define RTOS_CFG_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "kernel.h"
 
 #define TNUM_TSKID   32
@@ -34,10 +38,6 @@
 #endif
 #define TNUM_DOMID   4      /* user protection domains 1..TNUM_DOMID */
 #define TMAX_INTNO   127U   /* interrupt numbers 0..TMAX_INTNO (AINTC system interrupts) */
-
-/* The highest priority an application task may use: the levels above belong
- * to the platform (linux_compat's workers, the API's button task). */
-#define TMIN_APP_TPRI 6
 
 /* The host tick is an interrupt line too, as on the AM1808 (TIMER64P0 TINT12). */
 #define INTNO_TICK   21U
@@ -173,5 +173,9 @@ struct rtos_cfg {
 	/* INCLUDE(): other configurations merged in, e.g. linux_compat's. NULL-terminated. */
 	const struct rtos_cfg *const *includes;
 };
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* RTOS_CFG_H */

@@ -11,6 +11,10 @@
 #ifndef TOPPERS_SIL_H
 #define TOPPERS_SIL_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "t_stddef.h"
 
 #if defined(EV3LX_AM1808)
@@ -64,6 +68,10 @@ static inline void     sil_wrw_mem(uint32_t *mem, uint32_t data) { sil_host_writ
 /* Host: the calling context spends dlytim ns of virtual CPU time (events fire meanwhile). */
 void sil_dly_nse(ulong_t dlytim);
 
+#endif
+
+#ifdef __cplusplus
+}
 #endif
 
 #endif /* TOPPERS_SIL_H */

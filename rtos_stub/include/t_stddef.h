@@ -106,4 +106,49 @@ typedef struct acvct {
 #define TMO_FEVR (-1)
 #define TMO_NBLK (-2)
 
+/* Integer constants of a TOPPERS type, as apps write them (ULONG_C(1000)). */
+#ifndef INT_C
+#define INT_C(val)   (val)
+#endif
+#ifndef UINT_C
+#define UINT_C(val)  (val ## U)
+#endif
+#ifndef ULONG_C
+#define ULONG_C(val) (val ## UL)
+#endif
+
+/* TOPPERS's headers declare their C functions `throw()` for C++ callers;
+ * in C the specification is empty. */
+#if !defined(__cplusplus) && !defined(__KERNEL__) && !defined(throw)
+#define throw()
+#endif
+
+/*
+ * assert as TOPPERS's t_stddef.h defines it: a failed assertion is logged
+ * at LOG_EMERG with its expression, file and line (TOPPERS_assert_fail),
+ * then TOPPERS_assert_abort runs, which on EV3RT's AM1808 target does
+ * nothing, so the program goes on (public source: ev3rt-git/ev3rt-hrp2,
+ * include/t_stddef.h and arch/arm_gcc/am1808/chip_stddef.h).  Without
+ * NDEBUG only; Linux code never sees it (kbuild has no assert).
+ */
+#ifndef __KERNEL__
+#ifdef __cplusplus
+extern "C" {
+#endif
+/* Logs a failed assertion: its expression, file and line. */
+void TOPPERS_assert_fail(const char *expr, const char *file, int line);
+/* What follows a failed assertion on the target: nothing on EV3RT's AM1808. */
+void TOPPERS_assert_abort(void);
+#ifdef __cplusplus
+}
+#endif
+#undef assert
+#ifndef NDEBUG
+#define assert(exp) ((void)((exp) ? 0 : (TOPPERS_assert_fail(#exp, __FILE__, __LINE__), \
+	TOPPERS_assert_abort(), 0)))
+#else
+#define assert(exp) ((void)0)
+#endif
+#endif /* !__KERNEL__ */
+
 #endif /* TOPPERS_T_STDDEF_H */

@@ -4,6 +4,10 @@
 #ifndef TOPPERS_T_SYSLOG_H
 #define TOPPERS_T_SYSLOG_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "t_stddef.h"
 
 #define LOG_EMERG    0U
@@ -24,5 +28,9 @@ void syslog(uint_t prio, const char *format, ...)
 
 /* Sets which priorities reach the log (logmask) and the console (lowmask). */
 ER syslog_msk_log(uint_t logmask, uint_t lowmask);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* TOPPERS_T_SYSLOG_H */

@@ -161,7 +161,13 @@ static void serial_file_body(void)
 	fputs("done\n", ev3_serial_open_file(EV3_SERIAL_UART));
 	fflush(uart);   /* stdio's rule between writing and reading a stream */
 	ok(fgets(line, sizeof(line), uart) == NULL, "reading a file port finds its end");
-	ok(ev3_serial_open_file(EV3_SERIAL_BT) == NULL, "Bluetooth: NULL");
+	{
+		FILE *bt = ev3_serial_open_file(EV3_SERIAL_BT);
+
+		ok(bt != NULL, "Bluetooth: a stream, as EV3RT always gives");
+		ok(bt != NULL && fprintf(bt, "lost\n") == 5, "writing to Bluetooth without a peer takes the bytes");
+		ok(ev3_serial_open_file(EV3_SERIAL_USB_CDC) != NULL, "USB CDC: a stream");
+	}
 	ok(!ev3_bluetooth_is_connected(), "Bluetooth is never connected");
 	ok(ev3_serial_open_file((serial_port_t)7) == NULL, "a bad port: NULL");
 }
@@ -190,7 +196,12 @@ static void no_card_body(void)
 	memfile_t memfile;
 
 	is_int(ev3_memfile_load("/a.txt", &memfile), E_OBJ, "without a card: E_OBJ");
-	ok(ev3_serial_open_file(EV3_SERIAL_DEFAULT) == NULL, "without a port: NULL");
+	{
+		FILE *uart = ev3_serial_open_file(EV3_SERIAL_DEFAULT);
+
+		ok(uart != NULL, "without a far end: still a stream");
+		ok(uart != NULL && fputs("lost\n", uart) >= 0, "what is written to it is lost, not an error");
+	}
 }
 
 int main(void)

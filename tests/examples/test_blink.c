@@ -3,7 +3,7 @@
  * paused and resumed by ENTER clicks, ended by BACK.
  */
 #include <stdlib.h>
-#include "ev3api.h"
+#include "ev3api_brick.h"
 #include "example_test.h"
 
 static struct ev3sim_action click(unsigned button, uint64_t t_ms)

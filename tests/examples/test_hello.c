@@ -13,7 +13,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "ev3api.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
+#include "ev3api_lcd.h"
+#include "ev3api_speaker.h"
 #include "example_test.h"
 #include "text_files_test.h"
 #include "host_sim/devices/ev3_speaker.h"

@@ -9,8 +9,16 @@
 #define EV3LX_TESTS_API_TEST_H
 
 #include "tap.h"
-#include "ev3api.h"
 #include "rtos_host.h"
+#include "ev3api_motor.h"
+#include "ev3api_sensor.h"
+#include "ev3api_brick.h"
+#include "ev3api_cyc.h"
+#include "ev3api_fs.h"
+#include "ev3api_lcd.h"
+#include "ev3api_speaker.h"
+#include "ev3api_battery.h"
+#include "ev3api_cfg.h"
 #include "host_sim/scenario.h"
 #include "host_sim/devices/ev3_brick.h"
 

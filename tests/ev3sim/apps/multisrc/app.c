@@ -4,7 +4,6 @@
  */
 #include "ev3api.h"
 #include "app.h"
-#include "kernel_cfg.h"
 #include "speed.h"
 
 void main_task(intptr_t exinf)

@@ -1,0 +1,60 @@
+/*
+ * t_stdlib.c — TOPPERS's library functions on the host: error names, the
+ * log line of a failed service call (t_perror, EV3RT's svc_perror) and a
+ * failed assertion.  On the AM1808 the kernel's library and EV3RT's
+ * platform define them.
+ */
+#include "kernel_impl.h"
+#include "t_stdlib.h"
+
+struct error_name {
+	ER mercd;
+	const char *name;
+};
+
+static const struct error_name error_names[] = {
+	{ E_OK, "E_OK" },         { E_SYS, "E_SYS" },       { E_NOSPT, "E_NOSPT" },
+	{ E_RSFN, "E_RSFN" },     { E_RSATR, "E_RSATR" },   { E_PAR, "E_PAR" },
+	{ E_ID, "E_ID" },         { E_CTX, "E_CTX" },       { E_MACV, "E_MACV" },
+	{ E_OACV, "E_OACV" },     { E_ILUSE, "E_ILUSE" },   { E_NOMEM, "E_NOMEM" },
+	{ E_NOID, "E_NOID" },     { E_NORES, "E_NORES" },   { E_OBJ, "E_OBJ" },
+	{ E_NOEXS, "E_NOEXS" },   { E_QOVR, "E_QOVR" },     { E_RLWAI, "E_RLWAI" },
+	{ E_TMOUT, "E_TMOUT" },   { E_DLT, "E_DLT" },       { E_CLS, "E_CLS" },
+	{ E_WBLK, "E_WBLK" },     { E_BOVR, "E_BOVR" },
+};
+
+/* The name of ercd's main error code, or "unknown error". */
+const char *itron_strerror(ER ercd)
+{
+	ER mercd = MERCD(ercd);
+
+	for (size_t i = 0; i < sizeof(error_names) / sizeof(error_names[0]); i++)
+		if (error_names[i].mercd == mercd)
+			return error_names[i].name;
+	return "unknown error";
+}
+
+/* Logs at prio that expr, at file:line, returned ercd. */
+void t_perror(uint_t prio, const char *file, int_t line, const char *expr, ER ercd)
+{
+	syslog(prio, "%s (%d) reported by `%s' in line %d of `%s'.",
+	       itron_strerror(ercd), (int)SERCD(ercd), expr, (int)line, file);
+}
+
+/* Logs a failed service call (ercd < 0) at LOG_ERROR, as EV3RT's platform does. */
+void svc_perror(const char *file, int_t line, const char *expr, ER ercd)
+{
+	if (ercd < 0)
+		t_perror(LOG_ERROR, file, line, expr, ercd);
+}
+
+/* Logs a failed assertion at LOG_EMERG, with its expression, file and line. */
+void TOPPERS_assert_fail(const char *expr, const char *file, int line)
+{
+	syslog(LOG_EMERG, "%s:%d: Assertion `%s' failed.", file, line, expr);
+}
+
+/* EV3RT's AM1808 target does nothing after a failed assertion; neither does the host. */
+void TOPPERS_assert_abort(void)
+{
+}
