@@ -68,6 +68,17 @@ ER ev3lx_button_set_on_clicked(button_t button, ISR handler, intptr_t exinf);
 #define EV3_BUTTON_TASK_STACK     (16 * 1024)
 #endif
 
+/*
+ * The LCD task, which starts the panel at boot (as EV3RT's platform does
+ * before the app runs) and ends: at the button task's priority and domain.
+ */
+#ifndef EV3_LCD_TSKID
+#define EV3_LCD_TSKID             (TNUM_TSKID - 3)
+#endif
+#ifndef EV3_LCD_TASK_STACK
+#define EV3_LCD_TASK_STACK        (8 * 1024)
+#endif
+
 #ifdef __cplusplus
 }
 #endif

@@ -46,17 +46,20 @@ export CCACHE_NOHASHDIR := 1
 DEBUG_PREFIX_MAP := -fdebug-prefix-map=$(CURDIR)=.
 
 CC_host        := $(CCACHE) gcc
+CXX_host       := $(CCACHE) g++
 CFLAGS_host    := -O2 -g $(DEBUG_PREFIX_MAP) -DEV3LX_HOST=1
 LDFLAGS_host   :=
 RUN_host       :=
 
 CC_host-san     := $(CCACHE) gcc
+CXX_host-san    := $(CCACHE) g++
 CFLAGS_host-san := -O1 -g $(DEBUG_PREFIX_MAP) -DEV3LX_HOST=1 -fsanitize=address,undefined \
 	-fno-omit-frame-pointer -fno-sanitize-recover=all
 LDFLAGS_host-san := -fsanitize=address,undefined
 RUN_host-san    :=
 
 CC_arm926-test     := $(CCACHE) arm-linux-gnueabi-gcc
+CXX_arm926-test    := $(CCACHE) arm-linux-gnueabi-g++
 CFLAGS_arm926-test := -O2 -g $(DEBUG_PREFIX_MAP) -DEV3LX_HOST=1 -mcpu=arm926ej-s -marm
 LDFLAGS_arm926-test := -static
 RUN_arm926-test    := qemu-arm -cpu arm926 -L /usr/arm-linux-gnueabi

@@ -8,12 +8,21 @@
 #   CFG     the app's configuration file (app.cfg); its directory is on the
 #           include path of everything below, then cfg/ (app_common.cfg)
 #           and the platform's headers
-#   SRCS    the app's C sources
+#   SRCS    the app's sources: C (.c) and C++ (.cpp, compiled with g++;
+#           the program is then linked with g++, so libstdc++ is linked and
+#           every static constructor runs before main(), before the kernel
+#           boots and the first task runs)
 #   RUNNER  optional: objects with main() (booting ev3rt_app_cfg); the app is
 #           then also linked as the program $(BUILD)/CONFIG/ev3rt/NAME/NAME
 #
 # EV3RT_SYMBOL_NAME (optional, set before the call) names the configuration
-# symbol instead of ev3rt_app_cfg.
+# symbol instead of ev3rt_app_cfg.  EV3RT_LIBS_NAME_CONFIG (optional): static
+# libraries the program links after the app (an EV3RT SDK library's archive,
+# Makefile.inc's APPL_LIBS).
+#
+# An app's `main` is an ordinary function on EV3RT (the platform boots the
+# kernel, the app's tasks call main() if they like): NAME.o renames it
+# ev3rt_app_main, so it never meets the runner's main().
 #
 # It produces gen/kernel_cfg.h and gen/kernel_cfg.c (the ID macros, and the
 # tables as `const struct rtos_cfg ev3rt_app_cfg`), and NAME.o: one
@@ -22,10 +31,25 @@
 # libev3lx.a.  App sources get EV3RT_APP_WARN (no -Werror: apps build
 # unchanged); configuration errors stop the build with "app.cfg:LINE: ...".
 EV3RT_APP_WARN ?= -Wall -Wno-unused-parameter
+# The languages EV3RT's app build compiles in (public source:
+# ev3rt-git/ev3rt-hrp2-sdk, common/Makefile.img: gcc -std=gnu99, g++
+# -std=gnu++11).  A plain `inline` function gets an external definition
+# too (GNU89's rule): EV3RT's older gcc inlined every call of such a
+# function in its sample apps (hwbrickbench), where today's may not and the
+# call would have no definition to link against.
+EV3RT_APP_CSTD   ?= -std=gnu99 -fgnu89-inline
+EV3RT_APP_CXXSTD ?= -std=gnu++11
+
+# The app compile flags above are a key of each configuration's
+# ($(BUILD)/CONFIG/ev3rt/app.key) that every app object depends on, made once.
+ev3rt_app_key = $(if $(EV3RT_APP_KEY_$(1)),,$(eval EV3RT_APP_KEY_$(1) := $(BUILD)/$(1)/ev3rt/app.key)$(eval \
+	$(call key_file_rule,$(BUILD)/$(1)/ev3rt/app.key,$$(EV3RT_APP_CSTD) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_WARN))))
 
 define ev3rt_app
+$(call ev3rt_app_key,$(2))
 EV3RT_DIR_$(1)_$(2)  := $(BUILD)/$(2)/ev3rt/$(1)
-EV3RT_OBJS_$(1)_$(2) := $$(patsubst %.c,$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o,$(4))
+EV3RT_OBJS_$(1)_$(2) := $$(patsubst %,$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o,$$(basename $(4)))
+EV3RT_LINK_$(1)_$(2) := $$(if $$(filter %.cpp,$(4)),$$(CXX_$(2)),$$(CC_$(2)))
 EV3RT_INC_$(1)_$(2)  := -I$(BUILD)/$(2)/ev3rt/$(1)/gen -I$(patsubst %/,%,$(dir $(3))) -Icfg $(call layer_inc,api)
 
 $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg $$(wildcard $(dir $(3))*.h $(dir $(3))*.cfg)
@@ -37,10 +61,18 @@ $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg $$
 
 $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c ;
 
-$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.c $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h $(BUILD)/$(2)/compile.key
+$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.c $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h $(BUILD)/$(2)/compile.key \
+		$(BUILD)/$(2)/ev3rt/app.key
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(2) $$<
-	$(Q)$$(CC_$(2)) -std=gnu11 $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+	$(Q)$$(CC_$(2)) $$(EV3RT_APP_CSTD) $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+		-MMD -MP -c $$< -o $$@
+
+$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.cpp $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h $(BUILD)/$(2)/compile.key \
+		$(BUILD)/$(2)/ev3rt/app.key
+	@mkdir -p $$(@D)
+	$$(quiet) CXX $(2) $$<
+	$(Q)$$(CXX_$(2)) $$(EV3RT_APP_CXXSTD) $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
 		-MMD -MP -c $$< -o $$@
 
 $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c $(BUILD)/$(2)/compile.key
@@ -48,25 +80,40 @@ $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c
 	$(Q)$$(CC_$(2)) -std=gnu11 $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
 		-MMD -MP -c $$< -o $$@
 
-$(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o
+# Each ATT_MOD object is relinked into its domain's sections; C++'s section
+# groups (an inline function's static, a template's code) are placed like
+# any section (--force-group-allocation), or they would stay outside the
+# domain.  The app's SDK libraries (EV3RT_DOMLIBS_NAME_CONFIG) are linked
+# into the domain of the app's first module, as EV3RT links them into the
+# app's module: a library's buffers are the app's.
+$(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o \
+		$$(EV3RT_DOMLIBS_$(1)_$(2))
 	$$(quiet) LD $(2) $$@
 	$(Q)set -e; objs=; \
 	for o in $$(EV3RT_OBJS_$(1)_$(2)); do \
 		script=$$$$(awk -v o="$$$$o" '$$$$1 == o { print $$$$2 }' $(BUILD)/$(2)/ev3rt/$(1)/gen/modules.txt); \
 		if [ -n "$$$$script" ]; then \
-			$$(CC_$(2)) -r -nostdlib -o "$$$$o.dom.o" -Wl,-T,"$$$$script" "$$$$o"; \
+			$$(CC_$(2)) -r -nostdlib -Wl,--force-group-allocation -o "$$$$o.dom.o" -Wl,-T,"$$$$script" "$$$$o"; \
 			objs="$$$$objs $$$$o.dom.o"; \
 		else \
 			objs="$$$$objs $$$$o"; \
 		fi; \
 	done; \
-	$$(CC_$(2)) -r -nostdlib -o $$@ $$$$objs $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o
+	if [ -n "$$(strip $$(EV3RT_DOMLIBS_$(1)_$(2)))" ]; then \
+		script=$$$$(awk 'NR == 1 { print $$$$2 }' $(BUILD)/$(2)/ev3rt/$(1)/gen/modules.txt); \
+		$$(CC_$(2)) -r -nostdlib -Wl,--force-group-allocation -o $$@.libs.o \
+			$$$${script:+-Wl,-T,"$$$$script"} -Wl,--whole-archive $$(EV3RT_DOMLIBS_$(1)_$(2)) -Wl,--no-whole-archive; \
+		objs="$$$$objs $$@.libs.o"; \
+	fi; \
+	$$(CC_$(2)) -r -nostdlib -o $$@ $$$$objs $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o; \
+	$$(OBJCOPY_$(2)) --redefine-sym main=ev3rt_app_main $$@
 
 ifneq ($(strip $(5)),)
-$(BUILD)/$(2)/ev3rt/$(1)/$(1): $(BUILD)/$(2)/ev3rt/$(1)/$(1).o $(5) $(BUILD)/$(2)/libev3lx.a
+$(BUILD)/$(2)/ev3rt/$(1)/$(1): $(BUILD)/$(2)/ev3rt/$(1)/$(1).o $(5) $(BUILD)/$(2)/libev3lx.a $$(EV3RT_LIBS_$(1)_$(2))
 	$$(quiet) LD $(2) $$@
-	$(Q)$$(CC_$(2)) $$(CFLAGS_$(2)) $$(LDFLAGS_$(2)) -o $$@ $$< $(5) \
-		-Wl,--start-group $(BUILD)/$(2)/libev3lx.a -Wl,--end-group -lm $$(EV3RT_LDLIBS_$(1)_$(2))
+	$(Q)$$(EV3RT_LINK_$(1)_$(2)) $$(CFLAGS_$(2)) $$(LDFLAGS_$(2)) -o $$@ $$< $(5) \
+		-Wl,--start-group $$(EV3RT_LIBS_$(1)_$(2)) $(BUILD)/$(2)/libev3lx.a -Wl,--end-group -lm \
+		$$(EV3RT_LDLIBS_$(1)_$(2))
 endif
 
 -include $$(EV3RT_OBJS_$(1)_$(2):.o=.d) $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.d

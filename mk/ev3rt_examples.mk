@@ -4,12 +4,20 @@
 #                    linked into its test, tests/examples/test_NAME.c, which
 #                    runs it in ev3sim's robots (ev3sim/run.h) and asserts what
 #                    it does.
-#   ev3rt-app        `make ev3rt-app APP=/abs/dir` builds the runner of any app
-#                    directory, $(BUILD)/host/ev3rt/run_NAME/run_NAME: what
-#                    `ev3sim run APP_DIR` does before executing it.  The app's
-#                    sources are app.c and the .c of every object its
-#                    Makefile.inc lists in APPL_COBJS (in the app directory or
-#                    its APPL_DIRS); its INCLUDES are added to the compile.
+#   ev3rt-app        `make ev3rt-app APP=/abs/dir [EV3RT_LIB_DIR=/abs/dir]`
+#                    builds the runner of any app directory,
+#                    $(BUILD)/host/ev3rt/run_NAME/run_NAME: what `ev3sim run
+#                    APP_DIR [--lib-dir DIR]` does before executing it.  The
+#                    app's Makefile.inc is read as EV3RT's app build reads it
+#                    (public source: ev3rt-git/ev3rt-hrp2-sdk, common/Makefile.app
+#                    and Makefile.prj.common): SRCLANG (c, or c++: the app is
+#                    app.cpp), APPL_COBJS (C), APPL_CXXOBJS (C++), APPL_DIRS,
+#                    INCLUDES, APPL_LIBS and LIBS (linked), mkfile_path; every
+#                    `include` directory under the app is on the include path
+#                    and every `src` directory is searched for sources; under
+#                    CONFIG_EV3RT_APPLICATION it may include an SDK library's
+#                    Makefile from $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile (see
+#                    mk/ev3rt/Makefile.slib).
 
 EXAMPLES := $(patsubst examples/%/app.cfg,%,$(wildcard examples/*/app.cfg))
 
@@ -26,19 +34,58 @@ $(BUILD)/$(2)/obj/tests/examples/test_$(1).o: tests/examples/test_$(1).c $(BUILD
 endef
 $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_rules,$(e),$(c)))))
 
+# SDK library $(1) of app $(2) in configuration $(3): its objects compiled as
+# the app's are (the app's include path, its pattern rules), in one archive.
+define ev3rt_slib_rules
+EV3RT_SLIB_OBJS_$(1) := $$(patsubst %,$(BUILD)/$(3)/ev3rt/$(2)/obj/%.o,$$(basename $$(EV3RT_SLIB_SRCS_$(1))))
+$(BUILD)/$(3)/ev3rt/$(2)/lib/$(1).a: $$(EV3RT_SLIB_OBJS_$(1))
+	@mkdir -p $$(@D)
+	$$(quiet) AR $(3) $$@
+	$(Q)rm -f $$@ && ar rcs $$@ $$^
+-include $$(EV3RT_SLIB_OBJS_$(1):.o=.d)
+endef
+
 ifneq ($(APP),)
 EV3RT_RUN_NAME := run_$(notdir $(APP))
 EV3RT_RUN_DIR  := $(BUILD)/host/ev3rt/$(EV3RT_RUN_NAME)
-# What EV3RT's build gives a Makefile.inc: mkfile_path (the app's directory,
-# unless the file sets it), APPL_COBJS, APPL_DIRS, INCLUDES (-I flags).
+# What EV3RT's build gives a Makefile.inc before reading it.
 mkfile_path := $(APP)/
+SRCLANG := c
 APPL_COBJS :=
+APPL_CXXOBJS :=
 APPL_DIRS :=
+APPL_LIBS :=
+LIBS :=
 INCLUDES :=
+CONFIG_EV3RT_APPLICATION := 1
+# SDK libraries: their Makefiles include $(EV3RT_SDK_LIB_DIR)/../Makefile.slib,
+# so the libraries are seen through a directory of links in the build, beside
+# ev3lx's Makefile.slib (mk/ev3rt/Makefile.slib), made before Makefile.inc is read.
+EV3RT_LIB_DIR ?=
+EV3RT_SDK_LIB_DIR := $(EV3RT_RUN_DIR)/sdk/library
+EV3RT_SDK_LIBS :=
+EV3RT_SDK_ARCHIVES :=
+$(if $(shell set -e; rm -rf '$(EV3RT_RUN_DIR)/sdk'; mkdir -p '$(EV3RT_SDK_LIB_DIR)'; \
+	cp mk/ev3rt/Makefile.slib '$(EV3RT_RUN_DIR)/sdk/Makefile.slib'; \
+	$(if $(EV3RT_LIB_DIR),for d in '$(EV3RT_LIB_DIR)'/*/; do ln -s "$$d" '$(EV3RT_SDK_LIB_DIR)'/; done;) \
+	echo ok),,$(error cannot prepare $(EV3RT_RUN_DIR)/sdk))
+# the SDK libraries Makefile.inc includes, each needed in EV3RT_LIB_DIR
+EV3RT_WANTED_LIBS := $(shell sed -n 's|.*$$(EV3RT_SDK_LIB_DIR)/\([^/]*\)/Makefile.*|\1|p' '$(APP)/Makefile.inc' 2>/dev/null)
+$(foreach l,$(EV3RT_WANTED_LIBS),$(if $(wildcard $(EV3RT_SDK_LIB_DIR)/$(l)/Makefile),,$(error \
+	$(APP)/Makefile.inc includes EV3RT SDK library '$(l)': give the directory holding $(l)/ \
+	with ev3sim run APP_DIR --lib-dir DIR$(if $(EV3RT_LIB_DIR), ($(EV3RT_LIB_DIR) has no $(l)/Makefile)))))
 -include $(APP)/Makefile.inc
-EV3RT_RUN_DIRS := $(APP) $(foreach d,$(APPL_DIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d)))
-EV3RT_RUN_SRCS := $(APP)/app.c $(foreach o,$(APPL_COBJS),$(firstword \
-	$(wildcard $(addsuffix /$(o:.o=.c),$(EV3RT_RUN_DIRS))) $(APP)/$(o:.o=.c)))
+ifeq ($(SRCLANG),c++)
+EV3RT_RUN_MAIN := $(APP)/app.cpp
+else
+EV3RT_RUN_MAIN := $(APP)/app.c
+endif
+EV3RT_RUN_DIRS := $(APP) $(foreach d,$(APPL_DIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d))) \
+	$(shell find '$(APP)' -type d -name src)
+# the source of object $(1) with extension $(2): the first directory that has it
+ev3rt_run_src = $(firstword $(wildcard $(addsuffix /$(basename $(1))$(2),$(EV3RT_RUN_DIRS))) $(APP)/$(basename $(1))$(2))
+EV3RT_RUN_SRCS := $(EV3RT_RUN_MAIN) $(foreach o,$(APPL_COBJS),$(call ev3rt_run_src,$(o),.c)) \
+	$(foreach o,$(APPL_CXXOBJS),$(call ev3rt_run_src,$(o),.cpp))
 
 $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 	@mkdir -p $(@D)
@@ -46,11 +93,14 @@ $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 	$(Q)$(CC_host) $(call src_flags,$<) $(WARN) $(CFLAGS_host) $(KERNEL_DEFS) \
 		-DEV3SIM_APP_NAME='"$(notdir $(APP))"' -c $< -o $@
 
+EV3RT_LIBS_$(EV3RT_RUN_NAME)_host := $(APPL_LIBS)
+EV3RT_DOMLIBS_$(EV3RT_RUN_NAME)_host := $(EV3RT_SDK_ARCHIVES)
 # the runner is ev3sim's command line: it writes --lcd's PNG with libpng and --lcd-video's GIF
 # with giflib, as the ev3sim program does
 $(eval $(call ev3rt_app,$(EV3RT_RUN_NAME),host,$(APP)/app.cfg,$(EV3RT_RUN_SRCS),$(EV3RT_RUN_DIR)/runner.o $(BUILD)/host/obj/ev3sim/lcd_png.o $(BUILD)/host/obj/ev3sim/lcd_gif.o))
-EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_host := -lpng -lgif
-EV3RT_INC_$(EV3RT_RUN_NAME)_host += $(INCLUDES)
+EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_host := -lpng -lgif $(filter-out -lc,$(LIBS))
+EV3RT_INC_$(EV3RT_RUN_NAME)_host += $(INCLUDES) $(patsubst %,-I%,$(shell find '$(APP)' -type d -name include))
+$(foreach l,$(EV3RT_SDK_LIBS),$(eval $(call ev3rt_slib_rules,$(l),$(EV3RT_RUN_NAME),host)))
 # the objects ATT_MOD names come from Makefile.inc too
 $(EV3RT_RUN_DIR)/gen/kernel_cfg.c: $(wildcard $(APP)/Makefile.inc)
 

@@ -42,8 +42,10 @@ pgo_dumpbase = -dumpbase $(PGO_DATA)/$(patsubst $(BUILD)/host-prof/%,%,$(patsubs
 # their code as compiled.
 pgo_lto = $(if $(filter $(BUILD)/host-pgo/ev3rt/%,$@),,$(if $(call is_module_src,$<),,-flto=auto))
 CC_host-prof       := gcc
+CXX_host-prof      := g++
 CFLAGS_host-prof    = $(CFLAGS_host) -fprofile-generate $(pgo_dumpbase)
 CC_host-pgo        := gcc
+CXX_host-pgo       := g++
 CFLAGS_host-pgo     = $(CFLAGS_host) -fprofile-use -fprofile-partial-training -Wno-missing-profile \
 	$(pgo_dumpbase) $(pgo_lto)
 $(foreach c,$(PGO_CONFIGS),$(eval LD_$(c) := $(LD_host))$(eval OBJCOPY_$(c) := $(OBJCOPY_host)))

@@ -64,6 +64,8 @@ void api_battery_boot(void);
 void api_speaker_boot(void);
 void api_lcd_boot(void);
 void api_serial_boot(void);
+/* The LCD task's body (CRE_TSK EV3_LCD_TSKID in config.c): starts the panel at boot. */
+void api_lcd_task(intptr_t exinf);
 /* The frame of the LCD calls (lcd.c), in the format of lcd_draw.h: 7680 bytes. */
 extern uint8_t api_lcd_frame[60 * 128];
 

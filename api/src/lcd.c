@@ -2,8 +2,9 @@
  * lcd.c — EV3RT's LCD calls (ev3api_lcd.h) over st7586fb: the API draws into
  * its frame in the driver's format (lcd_draw.c), and each call that changed
  * it hands the frame to the driver through lcd_hack (a write() of /dev/fb0,
- * on the panel within FB_ST7586_REFRESH_MS).  The first call initialises
- * the display as LEGO's user space does (INIT, then START).
+ * on the panel within FB_ST7586_REFRESH_MS).  The display is started at
+ * boot, as EV3RT's platform starts it before the app runs (api_lcd_task): a drawing call never waits for the panel's
+ * start-up, and what an app draws before the panel is up is shown when it is.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -37,23 +38,38 @@ static bool font_valid(lcdfont_t font)
 	return font == EV3_FONT_SMALL || font == EV3_FONT_MEDIUM;
 }
 
-/* A drawing call may start: task context, the display initialised (once). */
+/* A drawing call may start: task context. */
 static ER lcd_begin(void)
 {
-	ER ercd = api_may_wait();
-
-	if (ercd != E_OK || lcd_ready)
-		return ercd;
-	ercd = lcd_svc_init();
-	if (ercd == E_OK)
-		lcd_ready = true;
-	return ercd;
+	return api_may_wait();
 }
 
-/* The frame to the driver after a change. */
+/* The frame to the driver after a change; until the panel is up, the frame
+ * is kept and api_lcd_task shows it. */
 static ER lcd_show(void)
 {
-	return lcd_svc_update(lcd_frame, sizeof(lcd_frame));
+	return lcd_ready ? lcd_svc_update(lcd_frame, sizeof(lcd_frame)) : E_OK;
+}
+
+/* The LCD task (CRE_TSK EV3_LCD_TSKID in config.c), at boot: starts the
+ * panel (LEGO's INIT, then START: ~310 ms of the st7586's start-up), then
+ * shows what was drawn meanwhile, and ends. */
+void api_lcd_task(intptr_t exinf)
+{
+	ER ercd;
+
+	(void)exinf;
+	if (lcd_ready)
+		return;
+	ercd = lcd_svc_init();
+	if (ercd == E_RSFN)
+		return;         /* a configuration without the LCD's driver */
+	if (ercd != E_OK) {
+		syslog(LOG_WARNING, "ev3api: the LCD did not start (%d)", (int)ercd);
+		return;
+	}
+	lcd_ready = true;
+	lcd_show();
 }
 
 ER ev3_lcd_set_font(lcdfont_t font)
@@ -149,10 +165,14 @@ ER ev3_image_load(const memfile_t *file, image_t *image)
 {
 	ER ercd;
 
-	if (file == NULL || file->buffer == NULL)
-		return E_PAR;
 	if ((ercd = API_CHECK_OUT(image)) != E_OK)
 		return ercd;
+	/* as EV3RT's: a failed load leaves an empty image, which draws nothing
+	 * (E_PAR), never the caller's stale bytes */
+	image->data = NULL;
+	image->width = image->height = 0;
+	if (file == NULL || file->buffer == NULL)
+		return E_PAR;
 	if (!sns_ctx() && prb_mem(file->buffer, file->filesz, TSK_SELF, TPM_READ) != E_OK)
 		return E_MACV;
 	return lcd_bmp_decode(file->buffer, file->filesz, image);

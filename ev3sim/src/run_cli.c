@@ -23,11 +23,14 @@
 static const char run_usage[] =
 	"usage: ev3sim run APP_DIR [options]\n"
 	"\n"
-	"Builds the EV3RT-style application in APP_DIR (app.c, app.h, app.cfg and an\n"
-	"optional Makefile.inc whose APPL_COBJS lists more sources) against ev3lx and\n"
+	"Builds the EV3RT application in APP_DIR (app.c or app.cpp, app.h, app.cfg and\n"
+	"an optional Makefile.inc, read as EV3RT's build reads it) against ev3lx and\n"
 	"runs it on the simulated brick in a robot, then prints one key=value summary.\n"
 	"Times count from power-on.\n"
 	"\n"
+	"  --lib-dir DIR        EV3RT SDK libraries the app's Makefile.inc includes from\n"
+	"                       $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile (e.g. the SDK's\n"
+	"                       common/library, with libcpp-ev3); first option only\n"
 	"  --robot R            bare, gyroboy or tribot (default bare):\n"
 	"                         gyroboy: large motors A (left), D (right), gyro on 2; held\n"
 	"                                  upright until --release, then falls unless balanced\n"
@@ -313,7 +316,7 @@ static int run_program(char *const argv[])
 int ev3sim_run_command(int argc, char **argv)
 {
 	char root[PATH_MAX], app[PATH_MAX], runner[2 * PATH_MAX + 64], app_arg[PATH_MAX + 16];
-	char cfg_path[PATH_MAX + 16];
+	char cfg_path[PATH_MAX + 16], lib_dir[PATH_MAX], lib_arg[PATH_MAX + 16] = "EV3RT_LIB_DIR=";
 	const char *base;
 	struct stat st;
 	char **args;
@@ -331,13 +334,21 @@ int ev3sim_run_command(int argc, char **argv)
 		fprintf(stderr, "ev3sim run: cannot find the ev3lx source tree\n");
 		return EV3SIM_EXIT_FAIL;
 	}
+	if (argc >= 3 && strcmp(argv[1], "--lib-dir") == 0) {
+		if (realpath(argv[2], lib_dir) == NULL || stat(lib_dir, &st) != 0 || !S_ISDIR(st.st_mode))
+			return usage("--lib-dir '%s' is not a directory", argv[2]);
+		snprintf(lib_arg, sizeof(lib_arg), "EV3RT_LIB_DIR=%s", lib_dir);
+		argv[2] = argv[0];      /* the runner gets APP_DIR's options only */
+		argv += 2;
+		argc -= 2;
+	}
 	base = strrchr(app, '/');
 	base = base && base[1] ? base + 1 : "app";
 	snprintf(runner, sizeof(runner), "%s/build/host/ev3rt/run_%s/run_%s", root, base, base);
 	snprintf(app_arg, sizeof(app_arg), "APP=%s", app);
 	{
 		char *make_argv[] = { "make", "-s", "--no-print-directory", "-C", root, app_arg,
-				      "ev3rt-app", NULL };
+				      lib_arg, "ev3rt-app", NULL };
 
 		if (run_program(make_argv) != 0) {
 			fprintf(stderr, "ev3sim run: building %s failed\n", app);

@@ -34,6 +34,7 @@ typedef uint_t   FLGPTN;  /* eventflag bit pattern */
 typedef uint_t   INTNO;   /* interrupt number */
 typedef uint_t   INHNO;   /* interrupt handler number */
 typedef uint_t   EXCNO;   /* CPU exception handler number */
+typedef uint_t   TEXPTN;  /* task exception pattern (HRP2's type; ev3lx has no task exceptions) */
 
 typedef void (*TASK)(intptr_t exinf);
 typedef void (*ISR)(intptr_t exinf);
@@ -41,6 +42,7 @@ typedef void (*CYCHDR)(intptr_t exinf);
 typedef void (*ALMHDR)(intptr_t exinf);
 typedef void (*INIRTN)(intptr_t exinf);
 typedef void (*TERRTN)(intptr_t exinf);
+typedef void (*TEXRTN)(TEXPTN texptn, intptr_t exinf);  /* task exception routine */
 /* An extended service routine (HRP2 DEF_SVC): five parameters and the caller's domain. */
 typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 			  intptr_t par4, intptr_t par5, ID cdmid);
