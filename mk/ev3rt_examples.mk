@@ -19,11 +19,49 @@
 #                    Makefile from $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile (see
 #                    mk/ev3rt/Makefile.slib).
 
+# Reads the Makefile.inc of app directory $(1) (mk/ev3rt/appinfo.mk) into
+# the variables $(2)_*, its SDK libraries from directory $(3), through the
+# build directory $(4).
+ev3rt_read_app = $(if $(shell env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL $(MAKE) -s --no-print-directory \
+	-f mk/ev3rt/appinfo.mk APP='$(1)' PREFIX='$(2)' EV3RT_LIB_DIR='$(3)' SDKDIR='$(4)' info >&2 && echo ok),\
+	$(eval include $(4)/appinfo.mk),$(error $(1)/Makefile.inc: the app could not be read))
+
+# SDK library $(1) of app $(2) in configuration $(3), its sources in
+# $(4)_SLIB_SRCS_$(1): compiled as the app's are (the app's include path, its
+# pattern rules), in one archive.
+define ev3rt_slib_rules
+EV3RT_SLIB_OBJS_$(2)_$(1)_$(3) := $$(patsubst %,$(BUILD)/$(3)/ev3rt/$(2)/obj/%.o,$$(basename $$($(4)_SLIB_SRCS_$(1))))
+$(BUILD)/$(3)/ev3rt/$(2)/lib/$(1).a: $$(EV3RT_SLIB_OBJS_$(2)_$(1)_$(3))
+	@mkdir -p $$(@D)
+	$$(quiet) AR $(3) $$@
+	$(Q)rm -f $$@ && ar rcs $$@ $$^
+-include $$(EV3RT_SLIB_OBJS_$(2)_$(1)_$(3):.o=.d)
+endef
+
+# App $(1) in configuration $(2) from app directory $(3), as read into $(4)_*
+# (ev3rt_read_app): its sources, SDK libraries (linked into its domain),
+# other libraries and include path; $(5): a runner's objects (ev3rt_app).
+define ev3rt_dir_app
+EV3RT_LIBS_$(1)_$(2) := $$(filter-out -l%,$$($(4)_LDLIBS))
+EV3RT_LDLIBS_$(1)_$(2) := $$(filter -l%,$$($(4)_LDLIBS))
+EV3RT_DOMLIBS_$(1)_$(2) := $$(patsubst %,$(BUILD)/$(2)/ev3rt/$(1)/lib/%.a,$$($(4)_SLIBS))
+$(call ev3rt_app,$(1),$(2),$(3)/app.cfg,$$($(4)_SRCS),$(5))
+EV3RT_INC_$(1)_$(2) += $$($(4)_INCLUDES)
+$$(foreach l,$$($(4)_SLIBS),$$(eval $$(call ev3rt_slib_rules,$$(l),$(1),$(2),$(4))))
+# the objects ATT_MOD names come from Makefile.inc too
+$(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $$(wildcard $(3)/Makefile.inc)
+endef
+
 EXAMPLES := $(patsubst examples/%/app.cfg,%,$(wildcard examples/*/app.cfg))
+
+# Each example's Makefile.inc, read once; its SDK libraries are in examples/library.
+$(foreach e,$(EXAMPLES),$(call ev3rt_read_app,examples/$(e),EXAMPLE_$(e),$(CURDIR)/examples/library,$(BUILD)/ev3rt-info/$(e)))
 
 # $(1) = example, $(2) = config
 define ev3rt_example_rules
-$(call ev3rt_app,$(1),$(2),examples/$(1)/app.cfg,examples/$(1)/app.c)
+$(call ev3rt_dir_app,$(1),$(2),examples/$(1),EXAMPLE_$(1))
+# a C++ example's test links libstdc++, as the app's program would
+TEST_LDLIBS_examples/test_$(1) := $$(if $$(filter %.cpp,$$(EXAMPLE_$(1)_SRCS)),-lstdc++)
 
 $(BUILD)/$(2)/obj/tests/examples/test_$(1).o: tests/examples/test_$(1).c $(BUILD)/$(2)/ev3rt/$(1)/$(1).o
 	@mkdir -p $$(@D)
@@ -34,58 +72,11 @@ $(BUILD)/$(2)/obj/tests/examples/test_$(1).o: tests/examples/test_$(1).c $(BUILD
 endef
 $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_rules,$(e),$(c)))))
 
-# SDK library $(1) of app $(2) in configuration $(3): its objects compiled as
-# the app's are (the app's include path, its pattern rules), in one archive.
-define ev3rt_slib_rules
-EV3RT_SLIB_OBJS_$(1) := $$(patsubst %,$(BUILD)/$(3)/ev3rt/$(2)/obj/%.o,$$(basename $$(EV3RT_SLIB_SRCS_$(1))))
-$(BUILD)/$(3)/ev3rt/$(2)/lib/$(1).a: $$(EV3RT_SLIB_OBJS_$(1))
-	@mkdir -p $$(@D)
-	$$(quiet) AR $(3) $$@
-	$(Q)rm -f $$@ && ar rcs $$@ $$^
--include $$(EV3RT_SLIB_OBJS_$(1):.o=.d)
-endef
-
 ifneq ($(APP),)
 EV3RT_RUN_NAME := run_$(notdir $(APP))
 EV3RT_RUN_DIR  := $(BUILD)/host/ev3rt/$(EV3RT_RUN_NAME)
-# What EV3RT's build gives a Makefile.inc before reading it.
-mkfile_path := $(APP)/
-SRCLANG := c
-APPL_COBJS :=
-APPL_CXXOBJS :=
-APPL_DIRS :=
-APPL_LIBS :=
-LIBS :=
-INCLUDES :=
-CONFIG_EV3RT_APPLICATION := 1
-# SDK libraries: their Makefiles include $(EV3RT_SDK_LIB_DIR)/../Makefile.slib,
-# so the libraries are seen through a directory of links in the build, beside
-# ev3lx's Makefile.slib (mk/ev3rt/Makefile.slib), made before Makefile.inc is read.
 EV3RT_LIB_DIR ?=
-EV3RT_SDK_LIB_DIR := $(EV3RT_RUN_DIR)/sdk/library
-EV3RT_SDK_LIBS :=
-EV3RT_SDK_ARCHIVES :=
-$(if $(shell set -e; rm -rf '$(EV3RT_RUN_DIR)/sdk'; mkdir -p '$(EV3RT_SDK_LIB_DIR)'; \
-	cp mk/ev3rt/Makefile.slib '$(EV3RT_RUN_DIR)/sdk/Makefile.slib'; \
-	$(if $(EV3RT_LIB_DIR),for d in '$(EV3RT_LIB_DIR)'/*/; do ln -s "$$d" '$(EV3RT_SDK_LIB_DIR)'/; done;) \
-	echo ok),,$(error cannot prepare $(EV3RT_RUN_DIR)/sdk))
-# the SDK libraries Makefile.inc includes, each needed in EV3RT_LIB_DIR
-EV3RT_WANTED_LIBS := $(shell sed -n 's|.*$$(EV3RT_SDK_LIB_DIR)/\([^/]*\)/Makefile.*|\1|p' '$(APP)/Makefile.inc' 2>/dev/null)
-$(foreach l,$(EV3RT_WANTED_LIBS),$(if $(wildcard $(EV3RT_SDK_LIB_DIR)/$(l)/Makefile),,$(error \
-	$(APP)/Makefile.inc includes EV3RT SDK library '$(l)': give the directory holding $(l)/ \
-	with ev3sim run APP_DIR --lib-dir DIR$(if $(EV3RT_LIB_DIR), ($(EV3RT_LIB_DIR) has no $(l)/Makefile)))))
--include $(APP)/Makefile.inc
-ifeq ($(SRCLANG),c++)
-EV3RT_RUN_MAIN := $(APP)/app.cpp
-else
-EV3RT_RUN_MAIN := $(APP)/app.c
-endif
-EV3RT_RUN_DIRS := $(APP) $(foreach d,$(APPL_DIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d))) \
-	$(shell find '$(APP)' -type d -name src)
-# the source of object $(1) with extension $(2): the first directory that has it
-ev3rt_run_src = $(firstword $(wildcard $(addsuffix /$(basename $(1))$(2),$(EV3RT_RUN_DIRS))) $(APP)/$(basename $(1))$(2))
-EV3RT_RUN_SRCS := $(EV3RT_RUN_MAIN) $(foreach o,$(APPL_COBJS),$(call ev3rt_run_src,$(o),.c)) \
-	$(foreach o,$(APPL_CXXOBJS),$(call ev3rt_run_src,$(o),.cpp))
+$(call ev3rt_read_app,$(APP),EV3RT_RUN,$(EV3RT_LIB_DIR),$(EV3RT_RUN_DIR)/sdk)
 
 $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 	@mkdir -p $(@D)
@@ -93,16 +84,10 @@ $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 	$(Q)$(CC_host) $(call src_flags,$<) $(WARN) $(CFLAGS_host) $(KERNEL_DEFS) \
 		-DEV3SIM_APP_NAME='"$(notdir $(APP))"' -c $< -o $@
 
-EV3RT_LIBS_$(EV3RT_RUN_NAME)_host := $(APPL_LIBS)
-EV3RT_DOMLIBS_$(EV3RT_RUN_NAME)_host := $(EV3RT_SDK_ARCHIVES)
 # the runner is ev3sim's command line: it writes --lcd's PNG with libpng and --lcd-video's GIF
 # with giflib, as the ev3sim program does
-$(eval $(call ev3rt_app,$(EV3RT_RUN_NAME),host,$(APP)/app.cfg,$(EV3RT_RUN_SRCS),$(EV3RT_RUN_DIR)/runner.o $(BUILD)/host/obj/ev3sim/lcd_png.o $(BUILD)/host/obj/ev3sim/lcd_gif.o))
-EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_host := -lpng -lgif $(filter-out -lc,$(LIBS))
-EV3RT_INC_$(EV3RT_RUN_NAME)_host += $(INCLUDES) $(patsubst %,-I%,$(shell find '$(APP)' -type d -name include))
-$(foreach l,$(EV3RT_SDK_LIBS),$(eval $(call ev3rt_slib_rules,$(l),$(EV3RT_RUN_NAME),host)))
-# the objects ATT_MOD names come from Makefile.inc too
-$(EV3RT_RUN_DIR)/gen/kernel_cfg.c: $(wildcard $(APP)/Makefile.inc)
+$(eval $(call ev3rt_dir_app,$(EV3RT_RUN_NAME),host,$(APP),EV3RT_RUN,$(EV3RT_RUN_DIR)/runner.o $(BUILD)/host/obj/ev3sim/lcd_png.o $(BUILD)/host/obj/ev3sim/lcd_gif.o))
+EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_host += -lpng -lgif
 
 .PHONY: ev3rt-app
 ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)

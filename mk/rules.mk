@@ -51,7 +51,7 @@ $(BUILD)/$(1)/tests/%.t: $(BUILD)/$(1)/obj/tests/%.o $$(SUPPORT_OBJS_$(1)) $$(LI
 	@mkdir -p $$(@D)
 	$$(quiet) LD $(1) $$@
 	$(Q)$$(CC_$(1)) $$(CFLAGS_$(1)) $$(LDFLAGS_$(1)) -o $$@ $$< $$(SUPPORT_OBJS_$(1)) \
-		-Wl,--start-group $$(LIB_$(1)) -Wl,--end-group -lm
+		-Wl,--start-group $$(LIB_$(1)) -Wl,--end-group -lm $$(TEST_LDLIBS_$$*)
 
 .PHONY: tests-$(1) prove-$(1)
 tests-$(1): $$(TESTS_$(1))

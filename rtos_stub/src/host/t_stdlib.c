@@ -37,8 +37,10 @@ const char *itron_strerror(ER ercd)
 /* Logs at prio that expr, at file:line, returned ercd. */
 void t_perror(uint_t prio, const char *file, int_t line, const char *expr, ER ercd)
 {
-	syslog(prio, "%s (%d) reported by `%s' in line %d of `%s'.",
-	       itron_strerror(ercd), (int)SERCD(ercd), expr, (int)line, file);
+	/* the sub code: what lies above the main code's byte (SERCD, without shifting a negative) */
+	int sub = (int)((ercd - (ercd & 0xff)) / 256);
+
+	syslog(prio, "%s (%d) reported by `%s' in line %d of `%s'.", itron_strerror(ercd), sub, expr, (int)line, file);
 }
 
 /* Logs a failed service call (ercd < 0) at LOG_ERROR, as EV3RT's platform does. */

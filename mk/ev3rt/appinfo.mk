@@ -1,0 +1,68 @@
+# appinfo.mk — an EV3RT app's Makefile.inc read as EV3RT's app build reads
+# it (public source: ev3rt-git/ev3rt-hrp2-sdk, common/Makefile.app and
+# Makefile.prj.common), in a make of its own so that nothing it sets meets
+# ev3lx's build, and what it says written as assignments for that build:
+#
+#   make -s -f mk/ev3rt/appinfo.mk APP=/abs/app PREFIX=P SDKDIR=dir \
+#        [EV3RT_LIB_DIR=/abs/libs] info
+#
+# writes SDKDIR/appinfo.mk defining
+#   P_SRCS      the app's sources: app.c (app.cpp if SRCLANG is c++), each
+#               APPL_COBJS as .c and APPL_CXXOBJS as .cpp, looked for in the
+#               app's directory, its APPL_DIRS and every src/ below it
+#   P_INCLUDES  INCLUDES, with every include/ below the app and the SDK
+#               libraries' include/
+#   P_LDLIBS    APPL_LIBS and LIBS (but -lc, always linked)
+#   P_SLIBS     the SDK libraries it included, and P_SLIB_SRCS_<lib> each.
+# An SDK library is included from $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile and
+# includes $(EV3RT_SDK_LIB_DIR)/../Makefile.slib in turn: SDKDIR/library
+# holds a link to each library of EV3RT_LIB_DIR, SDKDIR/Makefile.slib is
+# ev3lx's (mk/ev3rt/Makefile.slib).  A library the app includes that
+# EV3RT_LIB_DIR lacks is an error naming it.
+.SUFFIXES:
+MAKEFLAGS += --no-builtin-rules
+
+$(if $(APP),,$(error appinfo.mk: APP is not set))
+$(if $(and $(PREFIX),$(SDKDIR)),,$(error appinfo.mk: PREFIX and SDKDIR must be set))
+
+# What EV3RT's build gives a Makefile.inc before reading it.
+mkfile_path := $(APP)/
+SRCLANG := c
+APPL_COBJS :=
+APPL_CXXOBJS :=
+APPL_DIRS :=
+APPL_LIBS :=
+LIBS :=
+INCLUDES :=
+CONFIG_EV3RT_APPLICATION := 1
+EV3RT_SDK_LIB_DIR := $(SDKDIR)/library
+EV3RT_SDK_LIBS :=
+
+$(if $(shell set -e; rm -rf '$(SDKDIR)'; mkdir -p '$(EV3RT_SDK_LIB_DIR)'; \
+	cp '$(dir $(lastword $(MAKEFILE_LIST)))Makefile.slib' '$(SDKDIR)/Makefile.slib'; \
+	$(if $(EV3RT_LIB_DIR),for d in '$(EV3RT_LIB_DIR)'/*/; do ln -s "$$d" '$(EV3RT_SDK_LIB_DIR)'/; done;) \
+	echo ok),,$(error cannot prepare $(SDKDIR)))
+wanted_libs := $(shell sed -n 's|.*$$(EV3RT_SDK_LIB_DIR)/\([^/]*\)/Makefile.*|\1|p' '$(APP)/Makefile.inc' 2>/dev/null)
+$(foreach l,$(wanted_libs),$(if $(wildcard $(EV3RT_SDK_LIB_DIR)/$(l)/Makefile),,$(error \
+	$(APP)/Makefile.inc includes EV3RT SDK library '$(l)': give the directory holding $(l)/ \
+	with ev3sim run APP_DIR --lib-dir DIR$(if $(EV3RT_LIB_DIR), ($(EV3RT_LIB_DIR) has no $(l)/Makefile)))))
+
+-include $(APP)/Makefile.inc
+
+main_src := $(APP)/$(if $(filter c++,$(SRCLANG)),app.cpp,app.c)
+src_dirs := $(APP) $(foreach d,$(APPL_DIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d))) \
+	$(shell find '$(APP)' -type d -name src)
+# the source of object $(1) with extension $(2): the first directory that has it
+src_of = $(firstword $(wildcard $(addsuffix /$(basename $(1))$(2),$(src_dirs))) $(APP)/$(basename $(1))$(2))
+srcs := $(main_src) $(foreach o,$(APPL_COBJS),$(call src_of,$(o),.c)) \
+	$(foreach o,$(APPL_CXXOBJS),$(call src_of,$(o),.cpp))
+
+.PHONY: info
+info:
+	$(file >$(SDKDIR)/appinfo.mk,# $(APP)/Makefile.inc as read by mk/ev3rt/appinfo.mk)
+	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_SRCS := $(srcs))
+	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_INCLUDES := $(INCLUDES) $(patsubst %,-I%,$(shell find '$(APP)' -type d -name include)))
+	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_LDLIBS := $(APPL_LIBS) $(filter-out -lc,$(LIBS)))
+	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_SLIBS := $(EV3RT_SDK_LIBS))
+	$(foreach l,$(EV3RT_SDK_LIBS),$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_SLIB_SRCS_$(l) := $(EV3RT_SLIB_SRCS_$(l))))
+	@:
