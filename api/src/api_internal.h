@@ -64,8 +64,20 @@ void api_battery_boot(void);
 void api_speaker_boot(void);
 void api_lcd_boot(void);
 void api_serial_boot(void);
+void api_app_heap_boot(void);
 /* The LCD task's body (CRE_TSK EV3_LCD_TSKID in config.c): starts the panel at boot. */
 void api_lcd_task(intptr_t exinf);
+/* The apps' heap (app_heap.c): EV3LX_APP_HEAP_SIZE bytes in every user
+ * domain's memory, as EV3RT's app heap is in the app's domain. */
+#ifndef EV3LX_APP_HEAP_SIZE
+#define EV3LX_APP_HEAP_SIZE (1024U * 1024U)
+#endif
+extern uint8_t api_app_heap[EV3LX_APP_HEAP_SIZE];
+/* size bytes, 16-aligned, or NULL if the heap has no room (or size is 0). */
+void *api_app_heap_alloc(SIZE size);
+/* Frees what api_app_heap_alloc gave; E_PAR for anything else or a second free. */
+ER api_app_heap_free(void *p);
+
 /* The frame of the LCD calls (lcd.c), in the format of lcd_draw.h: 7680 bytes. */
 extern uint8_t api_lcd_frame[60 * 128];
 

@@ -16,6 +16,7 @@ static void api_boot(intptr_t exinf)
 	api_speaker_boot();
 	api_lcd_boot();
 	api_serial_boot();
+	api_app_heap_boot();
 }
 
 static const struct rtos_ini_cfg api_inis[] = { { api_boot, 0 } };
@@ -38,10 +39,15 @@ static const struct rtos_sem_cfg api_sems[] = {
 #define LCD_FRAME_ROW(dom) \
 	{ (dom), api_lcd_frame, sizeof(api_lcd_frame), TPM_READ | TPM_WRITE, "ev3api LCD frame" }
 
+/* The apps' heap: every user domain's, as EV3RT's app heap is the app's. */
+#define APP_HEAP_ROW(dom) \
+	{ (dom), api_app_heap, sizeof(api_app_heap), TPM_READ | TPM_WRITE, "ev3api app heap" }
+
 static const struct rtos_mem_cfg api_mems[] = {
 	LCD_FRAME_ROW(1), LCD_FRAME_ROW(2), LCD_FRAME_ROW(3), LCD_FRAME_ROW(4),
+	APP_HEAP_ROW(1), APP_HEAP_ROW(2), APP_HEAP_ROW(3), APP_HEAP_ROW(4),
 };
-_Static_assert(TNUM_DOMID == 4, "one LCD frame row per user domain");
+_Static_assert(TNUM_DOMID == 4, "one LCD frame row and one heap row per user domain");
 
 static const struct rtos_cfg *const api_includes[] = { &ev3_drivers_cfg, NULL };
 

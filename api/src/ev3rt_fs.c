@@ -65,8 +65,8 @@ ER ev3_memfile_load(const char *path, memfile_t *p_memfile)
 		syslog(LOG_ERROR, "ev3_memfile_load: cannot open '%s' (%d)", name, (int)provided((ER)size));
 		return provided((ER)size);
 	}
-	/* malloc(0) may return NULL: an empty file still gets a buffer */
-	if ((buffer = malloc(size > 0 ? (size_t)size : 1U)) == NULL) {
+	/* from the apps' heap, in the app's domain; an empty file still gets a buffer */
+	if ((buffer = api_app_heap_alloc(size > 0 ? (SIZE)size : 1U)) == NULL) {
 		syslog(LOG_ERROR, "ev3_memfile_load: out of memory for '%s' (%u bytes)", name, (unsigned)size);
 		return E_NOMEM;
 	}
@@ -75,7 +75,7 @@ ER ev3_memfile_load(const char *path, memfile_t *p_memfile)
 
 		got = brick_io_file_read(name, at, chunk, want);
 		if (got <= 0) {     /* the file shrank or vanished under us */
-			free(buffer);
+			api_app_heap_free(buffer);
 			syslog(LOG_ERROR, "ev3_memfile_load: reading '%s' failed at %u", name, at);
 			return got < 0 ? provided((ER)got) : E_OBJ;
 		}
@@ -92,7 +92,9 @@ ER ev3_memfile_free(memfile_t *p_memfile)
 
 	if ((ercd = API_CHECK_OUT(p_memfile)) != E_OK)
 		return ercd;
-	free(p_memfile->buffer);
+	/* only what ev3_memfile_load gave out is freed (EV3RT frees any pointer: a crash) */
+	if (p_memfile->buffer != NULL && (ercd = api_app_heap_free(p_memfile->buffer)) != E_OK)
+		return ercd;
 	p_memfile->buffer = NULL;
 	p_memfile->filesz = p_memfile->buffersz = 0;
 	return E_OK;
