@@ -16,7 +16,8 @@
 #           then also linked as the program $(BUILD)/CONFIG/ev3rt/NAME/NAME
 #
 # EV3RT_SYMBOL_NAME (optional, set before the call) names the configuration
-# symbol instead of ev3rt_app_cfg.  EV3RT_LIBS_NAME_CONFIG (optional): static
+# symbol instead of ev3rt_app_cfg.  EV3RT_PLATFORM_NAME_CONFIG (optional):
+# what the program links the app against instead of libev3lx.a.  EV3RT_LIBS_NAME_CONFIG (optional): static
 # libraries the program links after the app (an EV3RT SDK library's archive,
 # Makefile.inc's APPL_LIBS).
 #
@@ -109,10 +110,11 @@ $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(
 	$$(OBJCOPY_$(2)) --redefine-sym main=ev3rt_app_main $$@
 
 ifneq ($(strip $(5)),)
-$(BUILD)/$(2)/ev3rt/$(1)/$(1): $(BUILD)/$(2)/ev3rt/$(1)/$(1).o $(5) $(BUILD)/$(2)/libev3lx.a $$(EV3RT_LIBS_$(1)_$(2))
+EV3RT_PLATFORM_$(1)_$(2) ?= $(BUILD)/$(2)/libev3lx.a
+$(BUILD)/$(2)/ev3rt/$(1)/$(1): $(BUILD)/$(2)/ev3rt/$(1)/$(1).o $(5) $$(EV3RT_PLATFORM_$(1)_$(2)) $$(EV3RT_LIBS_$(1)_$(2))
 	$$(quiet) LD $(2) $$@
 	$(Q)$$(EV3RT_LINK_$(1)_$(2)) $$(CFLAGS_$(2)) $$(LDFLAGS_$(2)) -o $$@ $$< $(5) \
-		-Wl,--start-group $$(EV3RT_LIBS_$(1)_$(2)) $(BUILD)/$(2)/libev3lx.a -Wl,--end-group -lm \
+		-Wl,--start-group $$(EV3RT_LIBS_$(1)_$(2)) $$(EV3RT_PLATFORM_$(1)_$(2)) -Wl,--end-group -lm \
 		$$(EV3RT_LDLIBS_$(1)_$(2))
 endif
 

@@ -72,6 +72,21 @@ $(BUILD)/$(2)/obj/tests/examples/test_$(1).o: tests/examples/test_$(1).c $(BUILD
 endef
 $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_rules,$(e),$(c)))))
 
+# The platform `ev3sim run` links an app against: the library and the
+# runner's image writers as one object in which the only global names are
+# those the app's headers declare and the runner's entry (ev3sim_run_main),
+# so an app's own global names (a tick_handler, a jiffies) never meet
+# ev3lx's, as on EV3RT, whose kernel and app are separate images.
+EV3RT_PLATFORM := $(BUILD)/host/ev3rt/platform.o
+EV3RT_PLATFORM_OBJS := $(BUILD)/host/obj/ev3sim/lcd_png.o $(BUILD)/host/obj/ev3sim/lcd_gif.o
+$(EV3RT_PLATFORM): $(LIB_host) $(EV3RT_PLATFORM_OBJS) mk/ev3rt/platform_syms.sh $(wildcard api/*.h api/syssvc/*.h rtos_stub/include/*.h rtos_stub/include/syssvc/*.h)
+	@mkdir -p $(@D)
+	$(quiet) LD host $@
+	$(Q)ld -r -o $@.r.o --whole-archive $(LIB_host) --no-whole-archive $(EV3RT_PLATFORM_OBJS)
+	$(Q)PLATFORM_KEEP=ev3sim_run_main bash mk/ev3rt/platform_syms.sh $@.r.o $(CC_host) $(call layer_inc,api) \
+		$(CFLAGS_host) $(KERNEL_DEFS) > $@.syms
+	$(Q)objcopy --keep-global-symbols=$@.syms $@.r.o $@
+
 ifneq ($(APP),)
 EV3RT_RUN_NAME := run_$(notdir $(APP))
 EV3RT_RUN_DIR  := $(BUILD)/host/ev3rt/$(EV3RT_RUN_NAME)
@@ -86,7 +101,8 @@ $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 
 # the runner is ev3sim's command line: it writes --lcd's PNG with libpng and --lcd-video's GIF
 # with giflib, as the ev3sim program does
-$(eval $(call ev3rt_dir_app,$(EV3RT_RUN_NAME),host,$(APP),EV3RT_RUN,$(EV3RT_RUN_DIR)/runner.o $(BUILD)/host/obj/ev3sim/lcd_png.o $(BUILD)/host/obj/ev3sim/lcd_gif.o))
+EV3RT_PLATFORM_$(EV3RT_RUN_NAME)_host := $(EV3RT_PLATFORM)
+$(eval $(call ev3rt_dir_app,$(EV3RT_RUN_NAME),host,$(APP),EV3RT_RUN,$(EV3RT_RUN_DIR)/runner.o))
 EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_host += -lpng -lgif
 
 .PHONY: ev3rt-app
@@ -104,9 +120,10 @@ ev3sim-runner-hello: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	+$(Q)$(MAKE) -s --no-print-directory APP=$(realpath examples/hello) ev3rt-app
 
 # `make ev3sim-run-check` (in make test): `ev3sim run` builds an app directory
-# and runs it, ending with its summary line: examples/blink, and an app whose
+# and runs it, ending with its summary line: examples/blink, an app whose
 # Makefile.inc adds a source from another directory (APPL_COBJS, APPL_DIRS,
-# INCLUDES, mkfile_path) with its own ATT_MOD.
+# INCLUDES, mkfile_path) with its own ATT_MOD, and an app with a main() and
+# global names ev3lx uses inside (tests/ev3sim/apps/namespace).
 .PHONY: ev3sim-run-check
 ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	+$(Q)out=$$($(BUILD)/host/ev3sim run examples/blink --seconds 3 --click back:1500ms --quiet) || \
@@ -121,6 +138,13 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/multisrc exited $$?"; exit 1; }; \
 	printf '%s\n' "$$out" | grep -q "NOTICE: multisrc: A turned [1-9][0-9]* degrees, 1 speed lookups" && \
 	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=multisrc .* warnings=0 errors=0 bugs=0 " || \
+		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
+	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
+	+$(Q)out=$$($(BUILD)/host/ev3sim run tests/ev3sim/apps/namespace --seconds 1) || \
+		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/namespace exited $$?"; exit 1; }; \
+	printf '%s\n' "$$out" | grep -q "NOTICE: namespace: main() says 22" && \
+	printf '%s\n' "$$out" | grep -q "NOTICE: namespace: ran 0.5 s" && \
+	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=namespace .* warnings=0 errors=0 bugs=0 " || \
 		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
 	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
 
