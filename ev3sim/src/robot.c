@@ -41,6 +41,7 @@ const struct ev3sim_robot_params ev3sim_gyro_boy = {
 
 static struct robot {
 	bool running;
+	bool driven;                /* a wheel motor has had a non-zero duty */
 	struct ev3sim_robot_cfg cfg;
 	const struct ev3sim_robot_params *p;
 	struct hs_motor *motor[2];
@@ -140,8 +141,13 @@ static void robot_step(void *arg)
 	const struct ev3sim_robot_params *p = rb.p;
 	const double dt = EV3SIM_ROBOT_STEP_NS * 1e-9;
 	uint64_t t = hs_now();
-	bool held = t < rb.cfg.release_ns;
+	bool held;
 	double omega, phi, theta, a, b, c, h, roll;
+
+	/* the hand waits for the app to drive the wheels, where asked to */
+	if (!rb.driven && (duty_of(rb.motor[0]) != 0.0 || duty_of(rb.motor[1]) != 0.0))
+		rb.driven = true;
+	held = t < rb.cfg.release_ns || (rb.cfg.release_on_drive && !rb.driven);
 
 	(void)arg;
 	rb.step_ev = 0;

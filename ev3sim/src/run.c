@@ -22,7 +22,6 @@ const struct ev3sim_lcd_video *ev3sim_lcd_video;
 
 #define CHUNK_NS        10000000ULL     /* run in 10 ms slices: the CSV's row period */
 #define DRAIN_NS        20000000ULL
-#define GYROBOY_RELEASE_NS 4000000000ULL
 #define TOUCH_PRESS_NS  3000000000ULL
 #define TOUCH_HOLD_NS   300000000ULL
 
@@ -102,7 +101,10 @@ void ev3sim_run_defaults(struct ev3sim_run_opts *o, enum ev3sim_robot_kind robot
 	o->robot = robot;
 	o->seconds = 10.0;
 	o->seed = 1;
-	o->release_ns = GYROBOY_RELEASE_NS;
+	/* the hand lets go when the app starts driving the wheels: a balancer
+	 * that calibrates first (EV3RT's gyroboy sample) is let go when ready */
+	o->release_ns = 0;
+	o->release_on_drive = true;
 	switch (robot) {
 	case EV3SIM_ROBOT_GYROBOY:
 		o->out[0] = EV3SIM_OUT_LARGE;
@@ -325,7 +327,7 @@ static ER start_world(const struct ev3sim_run_opts *o)
 	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
 		struct ev3sim_robot_cfg cfg = {
 			.left_port = left, .right_port = right, .gyro_port = 1, .release_ns = o->release_ns,
-			.start_tilt_deg = o->start_tilt_deg, .pushes = o->pushes, .npushes = o->npushes,
+			.release_on_drive = o->release_on_drive, .start_tilt_deg = o->start_tilt_deg, .pushes = o->pushes, .npushes = o->npushes,
 		};
 
 		return ev3sim_robot_start(&cfg);

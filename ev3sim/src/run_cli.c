@@ -33,7 +33,8 @@ static const char run_usage[] =
 	"                       common/library, with libcpp-ev3); first option only\n"
 	"  --robot R            bare, gyroboy or tribot (default bare):\n"
 	"                         gyroboy: large motors A (left), D (right), gyro on 2; held\n"
-	"                                  upright until --release, then falls unless balanced\n"
+	"                                  upright until --release (when the app drives\n"
+	"                                  the wheels), then falls unless balanced\n"
 	"                         tribot:  large motors B (left), C (right), touch on 1, colour on 3\n"
 	"                                  looking down at a line-following mat, ultrasonic on 4;\n"
 	"                                  the touch sensor is pressed at 3 s (unless --touch)\n"
@@ -43,7 +44,9 @@ static const char run_usage[] =
 	"  --seed S             seed of every random stream (default 1)\n"
 	"  --touch T[:HOLD]     press the touch sensor at T for HOLD (default 300ms); may repeat\n"
 	"  --click BUTTON:T     click left|right|up|down|enter|back at T (held 100 ms); may repeat\n"
-	"  --release T          gyroboy: when the hand lets go (default 4s)\n"
+	"  --release WHEN       gyroboy: when the hand lets go: drive (default: when the app\n"
+	"                       first drives a wheel motor, so a balancer calibrates first)\n"
+	"                       or a time T (let go at T, driven or not)\n"
 	"  --tilt DEG           gyroboy: tilt when let go (default 0.5)\n"
 	"  --push T:NM          gyroboy: pitch torque NM (N m) for 100 ms at T; may repeat\n"
 	"  --fault SPEC         inject a fault (as ev3sim balance --help lists; uart faults go to\n"
@@ -149,8 +152,14 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 			return usage("--click: bad value '%s' (BUTTON:T, e.g. enter:2s)", v);
 		o->actions[o->nactions++] = a;
 	} else if (strcmp(name, "--release") == 0) {
-		if (!ev3sim_parse_time(v, &o->release_ns))
-			return usage("--release: bad value '%s' (a time, e.g. 4s)", v);
+		if (strcmp(v, "drive") == 0) {
+			o->release_ns = 0;
+			o->release_on_drive = true;
+		} else if (ev3sim_parse_time(v, &o->release_ns)) {
+			o->release_on_drive = false;
+		} else {
+			return usage("--release: bad value '%s' (drive, or a time, e.g. 4s)", v);
+		}
 	} else if (strcmp(name, "--tilt") == 0) {
 		if (!ev3sim_parse_double(v, &o->start_tilt_deg) || fabs(o->start_tilt_deg) >= 30.0)
 			return usage("--tilt: bad value '%s' (|DEG| < 30)", v);

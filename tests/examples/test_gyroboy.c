@@ -1,15 +1,44 @@
 /*
  * test_gyroboy.c — examples/gyroboy in the gyro boy robot: it calibrates
  * while held, balances with EV3RT's regulated set_power through pushes and
- * a drifting gyro, and falls when let go too early to have calibrated.
+ * a drifting gyro, and falls when let go too early to have calibrated.  The
+ * hand lets go when the app first drives the wheels (--release drive, the
+ * default), so a balancer that calibrates first is let go when ready; or at
+ * a time given, driven or not.
  */
 #include "example_test.h"
+
+/* The time of the first CSV row (every 10 ms) in which the robot is not held, or -1. */
+static double first_unheld_s(bool on_drive, uint64_t release_ns)
+{
+	struct ev3sim_run_opts o;
+	struct ev3sim_run_result r;
+	char line[128];
+	double t = -1.0, tilt, rate, wheel;
+	int held;
+
+	ev3sim_run_defaults(&o, EV3SIM_ROBOT_GYROBOY);
+	o.app_name = "gyroboy";
+	o.seconds = 5;
+	o.release_on_drive = on_drive;
+	o.release_ns = release_ns;
+	o.csv = tmpfile();
+	if (o.csv == NULL || !ex_run(&o, &r))
+		return -1.0;
+	rewind(o.csv);
+	while (t < 0.0 && fgets(line, sizeof(line), o.csv) != NULL)
+		if (sscanf(line, "%lf,%lf,%lf,%lf,%d", &t, &tilt, &rate, &wheel, &held) != 5 || held)
+			t = -1.0;
+	fclose(o.csv);
+	return t;
+}
 
 int main(void)
 {
 	struct ev3sim_run_opts o;
 	struct ev3sim_run_result r;
 	const char *line;
+	double on_drive_s, at_4s_s;
 
 	ev3sim_run_defaults(&o, EV3SIM_ROBOT_GYROBOY);
 	o.app_name = "gyroboy";
@@ -38,8 +67,17 @@ int main(void)
 	o.app_name = "gyroboy";
 	o.seconds = 8;
 	o.release_ns = 1000000000ULL;   /* before the gyro has answered */
+	o.release_on_drive = false;
 	if (ex_run(&o, &r))
-		ok(r.fell, "let go before it could balance: it falls (at %.2f s)", r.fell_at_s);
+		ok(r.fell, "let go at 1 s, before it could balance: it falls (at %.2f s)", r.fell_at_s);
 	ok(ex_logged("gyroboy: fell over") != NULL, "and the app noticed");
+
+	/* when the hand lets go: the first row of the robot's state with held = 0 */
+	on_drive_s = first_unheld_s(true, 0);
+	at_4s_s = first_unheld_s(false, 4000000000ULL);
+	in_range(on_drive_s, 2.55, 2.75,
+		 "--release drive: let go when the balancer first drives the wheels, after calibrating (%.2f s)",
+		 on_drive_s);
+	in_range(at_4s_s, 3.99, 4.01, "--release 4s: let go at 4 s (%.2f s)", at_4s_s);
 	return tap_done();
 }

@@ -62,6 +62,7 @@ struct ev3sim_robot_cfg {
 	unsigned left_port, right_port;             /* output ports 0..3 of the wheel motors */
 	unsigned gyro_port;                         /* input port 0..3 of the gyro */
 	uint64_t release_ns;                        /* held upright until then (absolute) */
+	bool release_on_drive;                      /* and until a wheel motor is driven */
 	double start_tilt_deg;                      /* tilt while held and at release */
 	const struct ev3sim_push *pushes;
 	unsigned npushes;

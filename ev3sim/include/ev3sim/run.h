@@ -51,7 +51,8 @@ struct ev3sim_run_opts {
 	unsigned nfaults;
 	struct ev3sim_action actions[EV3SIM_RUN_MAX_ACTIONS];
 	unsigned nactions;
-	uint64_t release_ns;        /* gyroboy: the hand lets go */
+	uint64_t release_ns;        /* gyroboy: the hand lets go, not before */
+	bool release_on_drive;      /* gyroboy: nor before the app drives a wheel (its balancer starts) */
 	double start_tilt_deg;      /* gyroboy: tilt when let go */
 	double gyro_noise_dps;      /* the gyro's sample noise (a gyro-noise fault overrides it) */
 	struct ev3sim_push pushes[EV3SIM_MAX_PUSHES];              /* gyroboy, t_ns from boot */
