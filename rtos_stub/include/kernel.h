@@ -88,8 +88,9 @@ typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 /* ---- Modes ---- */
 #define TWF_ORW      0x01U
 #define TWF_ANDW     0x02U
-#define TPM_READ     0x01U
-#define TPM_WRITE    0x02U
+/* memory access modes (prb_mem, ATT_MEM), HRP2's values: write 0x01, read 0x02 */
+#define TPM_WRITE    0x01U
+#define TPM_READ     0x02U
 #define TPM_EXEC     0x04U
 
 /* ---- Task states (ref_tsk) ---- */
@@ -122,7 +123,7 @@ typedef struct t_rmtx {    /* ref_mtx */
 ER      act_tsk(ID tskid);                 /* activate (queue one activation if not dormant) */
 ER      iact_tsk(ID tskid);                /* act_tsk from non-task context */
 ER_UINT can_act(ID tskid);                 /* cancel queued activations, return their count */
-void    ext_tsk(void);                     /* end the calling task (from non-task context: reported, returns) */
+ER      ext_tsk(void);                     /* end the calling task; returns only on error (E_CTX: not a task) */
 ER      chg_pri(ID tskid, PRI tskpri);     /* change base priority */
 ER      get_pri(ID tskid, PRI *p_tskpri);  /* read current priority */
 ER      get_tid(ID *p_tskid);              /* ID of the running task */

@@ -425,16 +425,17 @@ ER_UINT can_act(ID tskid)
 	return (ER_UINT)n;
 }
 
-/* Ends the calling task; from non-task context it is a reported bug and returns. */
-void ext_tsk(void)
+/* Ends the calling task; from non-task context it is a reported bug and returns E_CTX. */
+ER ext_tsk(void)
 {
 	svc_charge();
 	if (cpu.kind != EXEC_TASK || cpu.isr_depth != 0) {
 		svc_result("ext_tsk", E_CTX);
 		rtos_host_bug("ext_tsk", "called from non-task context (E_CTX)");
-		return;
+		return E_CTX;
 	}
 	task_exit_running();
+	return E_SYS;           /* not reached: the task has ended */
 }
 
 /* Changes a task's base priority; a ready task goes to the tail of its new priority. */
