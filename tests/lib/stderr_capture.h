@@ -17,10 +17,6 @@
 #ifndef EV3LX_TESTS_STDERR_CAPTURE_H
 #define EV3LX_TESTS_STDERR_CAPTURE_H
 
-#if !defined(_POSIX_C_SOURCE) || _POSIX_C_SOURCE < 200809L
-#error "stderr_capture.h: define _POSIX_C_SOURCE 200809L before the first include"
-#endif
-
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
