@@ -421,9 +421,10 @@ echo "bench ($mode): $out/bench.csv, $out/breakdown.csv, $out/breakdown_prod.csv
 # integers: the count of the path nearly every call takes, the same in the
 # quick run's 200 calls on the light brick as in the full run's 10 000.  An
 # average is not: the rare call an interrupt lengthens or splits moves it by
-# a fraction (the full run's production set_speed averages 276.97 with one
-# call of 4), so a rounded average could differ by one between the two runs
-# of one tree (137 against 138).  A change of the path by one instruction
+# a fraction, and which call it hits varies from run to run (one full run
+# counted one production set_speed of 4, another one host-checked set_speed
+# of 506 among 513s), so a rounded average could differ by one between two
+# runs of one tree (137 against 138).  A change of the path by one instruction
 # moves the median by one and fails. ----
 if [ "$mode" = quick ]; then
 	stamp=$(grep -m1 '^<!-- bench medians: ' README.md || true)
