@@ -23,11 +23,26 @@ include mk/deps.mk
 include mk/config.mk
 include $(sort $(wildcard */module.mk))
 include mk/rules.mk
-include $(filter-out mk/deps.mk mk/config.mk mk/layers.mk mk/rules.mk,$(sort $(wildcard mk/*.mk)))
+include $(filter-out mk/deps.mk mk/config.mk mk/layers.mk mk/rules.mk mk/suite.mk,$(sort $(wildcard mk/*.mk)))
+# the suite's runs are every mk/*.mk's: read last
+include mk/suite.mk
 
-.PHONY: all test clean main-job
-all: deps-check host-all am1808 pgo
+# `make` builds everything, then runs the main job.  Quietly (make V=1 shows
+# every command and all output): the builds' output goes to build/logs/build.log,
+# summed up in one line per configuration, or with its tail if it failed
+# (mk/quiet.sh); the main job prints its result last.
+.PHONY: all test clean main-job build-all
+BUILD_ALL_CONFIGS := host am1808 host-prof host-pgo
+build-all: host-all am1808 pgo
+
+ifeq ($(V),1)
+all: deps-check build-all
 	@$(MAKE) --no-print-directory main-job
+else
+all: deps-check
+	@bash mk/quiet.sh build $(BUILD)/logs/build.log "$(BUILD_ALL_CONFIGS)" $(MAKE) --no-print-directory build-all
+	@$(MAKE) --no-print-directory main-job
+endif
 
 test: deps-check
 	@$(MAKE) --no-print-directory test-suite

@@ -14,10 +14,10 @@ main-job: $(BUILD)/host-pgo/ev3sim
 	@mkdir -p $(EV3SIM_OUT)
 	@echo "=== ev3sim $(EV3SIM_MAIN_ARGS)"
 	@$(BUILD)/host-pgo/ev3sim $(EV3SIM_MAIN_ARGS) | tee $(EV3SIM_OUT)/summary.txt
-	@echo "=== make report"
-	@$(MAKE) --no-print-directory report
+	@$(if $(filter 1,$(V)),echo "=== make report")
+	@$(if $(filter 1,$(V)),$(MAKE) --no-print-directory report,bash mk/quiet.sh step report $(BUILD)/logs/report.log $(MAKE) --no-print-directory report)
 	@echo "=== summary"
 	@echo "ev3sim balance: $$(tail -n 1 $(EV3SIM_OUT)/summary.txt)"
 	@echo "plot: $(EV3SIM_OUT)/balance.png  series: $(EV3SIM_OUT)/balance.csv  serial log: $(EV3SIM_OUT)/gyro.log"
-	@echo "reuse report: $(BUILD)/report/reuse.md"
+	@echo "reuse report: $(BUILD)/report/reuse.md: $$(sed -n 's/^- Without the shared shim: //p' $(BUILD)/report/reuse.md)"
 	@grep -q '^result=upright' $(EV3SIM_OUT)/summary.txt || { echo "main job: the robot fell"; exit 1; }

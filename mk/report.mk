@@ -11,12 +11,17 @@ export HACK_DIRS = $(EV3LX_HACK_DIRS)
 export DRIVER_DIRS
 export BUILD_CONFIGS = $(REPORT_CONFIGS)
 
-# Objects of test files that act as a driver's hack file (in DRIVER_DIRS), per configuration.
-driver_test_objs = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(filter $(addsuffix /%,$(DRIVER_DIRS)),$(TEST_SRCS)))
+# The sources whose objects record driver hashes: those in the hack and
+# driver directories (the hack files, and the tests that act as one).
+is_hash_recording_src = $(filter $(addsuffix /%,$(EV3LX_HACK_DIRS) $(DRIVER_DIRS)),$(1))
 
 # The compile rule's hook: after compiling a hack file, record the sha256 of
 # every driver its compiler read (from the dependency file just written).
-record_driver_hashes = $(if $(filter $(addsuffix /%,$(EV3LX_HACK_DIRS) $(DRIVER_DIRS)),$(2)),$(Q)bash cloc_report/record_driver_hashes.sh $(1))
+record_driver_hashes = $(if $(call is_hash_recording_src,$(2)),$(Q)bash cloc_report/record_driver_hashes.sh $(1))
+
+# The objects of configuration $(1) that record driver hashes, among its
+# sources $(2): what the report reads of that build (OBJ.drivers beside each).
+hash_recording_objs = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(call is_hash_recording_src,$(2)))
 
 # The report of the tree's drivers is kept (REPORT_STAMP beside it) and
 # redone only when one of its inputs changed: the files it counts (every C
@@ -24,16 +29,19 @@ record_driver_hashes = $(if $(filter $(addsuffix /%,$(EV3LX_HACK_DIRS) $(DRIVER_
 # directories; their set is in the key, as are the settings and cloc's
 # version), the scripts, and the builds whose compile-time driver hashes it
 # checks (each compiled hack file records them beside its object, so the
-# libraries and objects below are remade whenever a record is; kbuild's are
-# in its kept summary's directory).  `make report` still writes the report
+# objects below are remade whenever a record is; kbuild's are in its kept
+# summary's directory).  Only those objects: the report reads nothing else of
+# a build, so it compiles a few hack files per configuration where their
+# objects are missing, never a whole library (the sanitizer build's is not
+# part of `make`, whose main job runs the report).  `make report` still writes the report
 # when a build fails (then with the missing hashes); report-check, in `make
 # test`, takes the stamp as a prerequisite, so the suite's one make builds
 # each input once (kbuild-check's included), in parallel with the other runs.
 # `make report REUSED=...` writes another report in the same place, and
 # removes the stamp.
 REPORT_STAMP := $(REPORT_DIR)/reuse.stamp
-REPORT_BUILDS = $(foreach c,$(HOST_CONFIGS),$(LIB_$(c)) $(call driver_test_objs,$(c))) \
-	$(AM1808_LIB) $(KBUILD_OUT)/summary.txt
+REPORT_BUILDS = $(foreach c,$(HOST_CONFIGS),$(call hash_recording_objs,$(c),$(HOST_SRCS) $(TEST_SRCS))) \
+	$(call hash_recording_objs,am1808,$(AM1808_SRCS)) $(KBUILD_OUT)/summary.txt
 REPORT_SRC_DIRS := linux_compat rtos_stub tests
 REPORT_SRCS = $(sort $(shell find $(REPORT_SRC_DIRS) $(EV3LX_HACK_DIRS) $(DRIVER_DIRS) -type f \
 	\( -name '*.c' -o -name '*.h' -o -name '*.S' \) 2>/dev/null))

@@ -18,9 +18,13 @@ PROVE_JOBS ?= $(shell echo $$(( $(NPROC) * 2 )))
 # long test: prove keeps each test's time in build/<config>/.prove and orders
 # the next run by it (--state=slow,save; tests added since run too, removed ones
 # are dropped); a first run takes the directories of whole-robot simulations,
-# the longest tests, before the others (each directory's tests as -r finds them).
+# the longest tests, before the others (each directory's tests as -r finds them),
+# and only saves the times: prove's "slow" without a state file would say "No
+# saved state, selection will be empty" (and then run every test anyway).
 PROVE_FIRST := examples ev3sim
 TEST_TOP_DIRS := $(sort $(foreach t,$(TEST_SRCS),$(word 2,$(subst /, ,$(t)))))
+# prove's --state for state file $(1) (relative to where prove runs).
+prove_state = $$(test -f $(1) && echo slow,save || echo save)
 PROVE_DIRS := $(addprefix tests/,$(filter $(PROVE_FIRST),$(TEST_TOP_DIRS)) \
 	$(filter-out $(PROVE_FIRST),$(TEST_TOP_DIRS)))
 
@@ -58,7 +62,7 @@ tests-$(1): $$(TESTS_$(1))
 
 prove-$(1): tests-$(1)
 	@echo "=== prove: $(1) ==="
-	@cd $(BUILD)/$(1) && prove -j$(PROVE_JOBS) --state=slow,save --exec '$$(RUN_$(1))' -r $(PROVE_DIRS)
+	@cd $(BUILD)/$(1) && prove -j$(PROVE_JOBS) --state=$$(call prove_state,.prove) --exec '$$(RUN_$(1))' -r $(PROVE_DIRS)
 
 -include $$(SUPPORT_OBJS_$(1):.o=.d) $$(patsubst %.c,$(BUILD)/$(1)/obj/%.d,$$(TEST_SRCS))
 endef
@@ -76,30 +80,8 @@ $(BUILD)/$(2)/$(1): $$(patsubst %.c,$(BUILD)/$(2)/obj/%.o,$$($(1)_SRCS)) $$(LIB_
 endef
 $(foreach p,$(HOST_PROGRAMS),$(eval $(call host_program_rules,$(p),host)))
 
-.PHONY: host-all test-suite
+.PHONY: host-all
 host-all: $(LIB_host) $(addprefix $(BUILD)/host/,$(HOST_PROGRAMS)) tests-host
 
-# The suite: three prove runs and the checks (TEST_SUITE_EXTRA, appended by
-# the other mk/*.mk, hence read in the recipe: the prerequisite lists of this
-# file are expanded before those files are read).  All of them are the goals
-# of one make, so the builds, the prove runs and the checks share the job
-# slots instead of queueing behind each other, and the kbuild, lint and report
-# checks fill the slots the prove runs leave.  -k: any failure fails the whole
-# target, but every run is still made and shown; -Otarget: each run's output
-# comes out in one piece, in order of completion.
-#
-# The ARMv5 tests are built first, by a make of their own: make queues every
-# job it can start in the order it finds them, so in the one make a test whose
-# last prerequisite is done late (the examples' apps, linked into their tests)
-# waits behind every compile of the other configurations, and the qemu-arm
-# prove run, the longest, would start last and end the suite alone.  A failure
-# there is made and reported again by the second make.
-TEST_SUITE_RUNS = prove-arm926-test prove-host-san prove-host $(TEST_SUITE_EXTRA)
-
-test-suite:
-	@$(MAKE) --no-print-directory -k tests-arm926-test || true
-	@if $(MAKE) --no-print-directory -k -Otarget $(TEST_SUITE_RUNS) $(TEST_SUITE_EXTRA_DEPS); \
-	then echo "=== make test: all runs passed ==="; \
-	else echo "=== make test: FAILED ==="; exit 1; fi
-
+# (the suite, `make test`: mk/suite.mk)
 # (key_file_rule, for checks kept as stamps: mk/config.mk)

@@ -199,6 +199,25 @@ void lx_gpio_irq_unmask(unsigned int pin, unsigned int type)
 		(void)ena_int((INTNO)(IRQ_DA8XX_GPIO0 + bank));
 }
 
+/*
+ * Acknowledges the edges latched in a bank whose line was just disabled and
+ * records each as pending for its pin's IRQ (enable_irq replays it).  Linux
+ * never disables the bank's chained interrupt, so such an edge reaches the
+ * bank handler, which finds the pin disabled and marks it pending; an edge
+ * waiting in INTSTAT behind the disabled line meets the same fate here.
+ */
+static void drain_bank(struct gpio_controller __iomem *g, unsigned int bank)
+{
+	unsigned int shift = (bank & 1U) * 16U;
+	u32 latched = __raw_readl(&g->intstat) & (0xffffU << shift);
+
+	if (!latched)
+		return;
+	__raw_writel(latched, &g->intstat);
+	for (latched >>= shift; latched; latched &= latched - 1U)
+		lx_irq_set_pending(DAVINCI_N_AINTC_IRQ + bank * 16U + (unsigned int)__builtin_ctz(latched));
+}
+
 void lx_gpio_irq_mask(unsigned int pin)
 {
 	struct gpio_controller __iomem *g = controller(pin, "gpio irq disable");
@@ -223,8 +242,10 @@ void lx_gpio_irq_mask(unsigned int pin)
 		__raw_writel(__raw_readl(binten) & ~(1U << bank), binten);
 	}
 	SIL_UNL_INT();
-	if (last)
+	if (last) {
 		(void)dis_int((INTNO)(IRQ_DA8XX_GPIO0 + bank));
+		drain_bank(g, bank);
+	}
 }
 
 void lx_gpio_bank_isr(intptr_t exinf)

@@ -11,7 +11,16 @@
  * disable depth is 0.  List changes happen with interrupts locked, the
  * chip's operations (which may make RTOS service calls) outside that lock,
  * as TOPPERS requires.
+ *
+ * An interrupt that comes while its IRQ is disabled (an edge latched just
+ * before disable_irq) is recorded as pending and, for an IRQ not triggered
+ * by a level, replayed once when enable_irq enables it again: Linux's
+ * IRQS_PENDING and check_irq_resend (kernel/irq/resend.c).  Like Linux's
+ * software resend (a tasklet), the replay runs soon after, not inside
+ * enable_irq: from an hrtimer due at once, in the tick's interrupt.
  */
+#include <linux/bitops.h>
+#include <linux/hrtimer.h>
 #include <linux/interrupt.h>
 #include <linux/irq.h>
 #include <linux/kernel.h>
@@ -32,6 +41,7 @@ struct lx_irq_desc {
 	unsigned int depth;         /* disable_irq nesting */
 	unsigned int type;          /* IRQ_TYPE_* as last set */
 	bool in_handler;            /* its handlers are running */
+	bool pending;               /* an interrupt came while disabled (IRQS_PENDING) */
 	unsigned long count;        /* dispatches */
 	unsigned long unhandled;    /* dispatches nobody answered */
 	unsigned int unanswered_run;
@@ -39,6 +49,10 @@ struct lx_irq_desc {
 
 static struct lx_irq_desc irq_descs[NR_IRQS];
 static struct irqaction action_pool[LX_NR_IRQ_ACTIONS];
+
+/* The IRQs enable_irq queued for a replay, and the timer that replays them. */
+static unsigned long resend_queued[BITS_TO_LONGS(NR_IRQS)];
+static struct hrtimer resend_timer;
 
 bool lx_irq_valid(unsigned int irq)
 {
@@ -64,7 +78,9 @@ bool lx_handle_irq(unsigned int irq)
 	unsigned int ret = IRQ_NONE;
 
 	if (unlikely(!action || desc->depth)) {
-		/* An edge latched just before the line was masked: nobody to tell. */
+		/* An edge latched just before the line was masked: enable_irq replays it. */
+		if (action)
+			desc->pending = true;
 		desc->unhandled++;
 		return false;
 	}
@@ -96,6 +112,30 @@ bool lx_handle_irq(unsigned int irq)
 void lx_irq_dispatch(intptr_t exinf)
 {
 	lx_handle_irq((unsigned int)exinf);
+}
+
+void lx_irq_set_pending(unsigned int irq)
+{
+	SIL_PRE_LOC;
+
+	if (irq >= NR_IRQS)
+		return;
+	SIL_LOC_INT();
+	if (irq_descs[irq].action)
+		irq_descs[irq].pending = true;
+	SIL_UNL_INT();
+}
+
+/* The resend timer's callback: runs the handlers of every queued IRQ once, in interrupt context. */
+static enum hrtimer_restart resend_queued_irqs(struct hrtimer *timer)
+{
+	unsigned long irq;
+
+	for (irq = find_first_bit(resend_queued, NR_IRQS); irq < NR_IRQS;
+	     irq = find_next_bit(resend_queued, NR_IRQS, irq + 1))
+		if (test_and_clear_bit(irq, resend_queued))
+			lx_handle_irq((unsigned int)irq);
+	return HRTIMER_NORESTART;
 }
 
 /* A free handler record, or NULL.  Interrupts locked. */
@@ -161,6 +201,7 @@ int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
 		if (first) {
 			desc->depth = (flags & IRQF_NO_AUTOEN) ? 1U : 0U;
 			desc->unanswered_run = 0;
+			desc->pending = false;
 			if (type)
 				desc->type = type;
 		}
@@ -236,6 +277,10 @@ const void *free_irq(unsigned int irq, void *dev_id)
 	*link = action->next;
 	name = action->name;
 	memset(action, 0, sizeof(*action));
+	if (!desc->action) {
+		desc->pending = false;
+		__clear_bit(irq, resend_queued);
+	}
 	SIL_UNL_INT();
 	return name;
 }
@@ -275,7 +320,7 @@ void disable_irq(unsigned int irq)
 void enable_irq(unsigned int irq)
 {
 	struct lx_irq_desc *desc;
-	bool unmask = false, unbalanced = false;
+	bool unmask = false, unbalanced = false, resend = false;
 	SIL_PRE_LOC;
 
 	if (irq >= NR_IRQS)
@@ -286,13 +331,21 @@ void enable_irq(unsigned int irq)
 		unbalanced = true;
 	else
 		unmask = --desc->depth == 0 && desc->action;
-	if (unmask)
+	if (unmask) {
 		desc->unanswered_run = 0;
+		/* Linux drops a pending level interrupt: the level, if still there, fires again. */
+		resend = desc->pending && !(desc->type & IRQ_TYPE_LEVEL_MASK);
+		desc->pending = false;
+		if (resend)
+			__set_bit(irq, resend_queued);
+	}
 	SIL_UNL_INT();
 	if (unbalanced)
 		WARN(1, "Unbalanced enable for IRQ %u", irq);
 	else if (unmask)
 		(void)line_unmask(irq);
+	if (resend)
+		hrtimer_start(&resend_timer, 0, HRTIMER_MODE_REL);
 }
 
 int irq_set_irq_type(unsigned int irq, unsigned int type)
@@ -341,6 +394,10 @@ static void irq_boot(void)
 {
 	memset(irq_descs, 0, sizeof(irq_descs));
 	memset(action_pool, 0, sizeof(action_pool));
+	memset(resend_queued, 0, sizeof(resend_queued));
+	/* a previous boot's timer belongs to a queue the tick's boot empties */
+	memset(&resend_timer, 0, sizeof(resend_timer));
+	hrtimer_setup(&resend_timer, resend_queued_irqs, CLOCK_MONOTONIC, HRTIMER_MODE_REL);
 }
 
 void lx_io_boot(intptr_t exinf)

@@ -1,15 +1,33 @@
 /*
  * test_blink.c — examples/blink: EV3 cyclic handlers in task context,
- * paused and resumed by ENTER clicks, ended by BACK.
+ * paused and resumed by ENTER clicks, ended by BACK; the runner's command
+ * line and its errors.
  */
+#define _POSIX_C_SOURCE 200809L
 #include <stdlib.h>
 #include "ev3api_brick.h"
 #include "example_test.h"
+#include "stderr_capture.h"
 
 static struct ev3sim_action click(unsigned button, uint64_t t_ms)
 {
 	return (struct ev3sim_action){ .button = button, .t_ns = t_ms * 1000000ULL,
 				       .hold_ns = 100000000ULL };
+}
+
+/* The runner refuses command line argv (argc words) with status 2 and a message containing why. */
+static void bad_command_line(int argc, char **argv, const char *why, const char *what)
+{
+	struct stderr_capture cap;
+	const char *msg;
+	int status;
+
+	stderr_capture_begin(&cap);
+	status = ev3sim_run_main(argc, argv, "blink", &ev3rt_app_cfg);
+	msg = stderr_capture_end(&cap);
+	is_int(status, 2, "%s: status 2", what);
+	if (!ok(strstr(msg, why) != NULL, "%s: the message says so", what))
+		tap_diag("  stderr: %s", msg);
 }
 
 int main(void)
@@ -50,11 +68,11 @@ int main(void)
 		char *bad_fault[] = { "run_blink", "--fault", "gyro-noise", NULL };
 
 		is_int(ev3sim_run_main(6, good, "blink", &ev3rt_app_cfg), 0, "a run from the command line: status 0");
-		is_int(ev3sim_run_main(3, bad_robot, "blink", &ev3rt_app_cfg), 2, "--robot segway: status 2");
-		is_int(ev3sim_run_main(3, bad_click, "blink", &ev3rt_app_cfg), 2, "--click middle:1s: status 2");
-		is_int(ev3sim_run_main(3, bad_port, "blink", &ev3rt_app_cfg), 2, "--in5: status 2");
-		is_int(ev3sim_run_main(2, no_value, "blink", &ev3rt_app_cfg), 2, "--seconds without a value: status 2");
-		is_int(ev3sim_run_main(3, bad_fault, "blink", &ev3rt_app_cfg), 2, "--fault gyro-noise (no value): status 2");
+		bad_command_line(3, bad_robot, "--robot: bad value 'segway'", "--robot segway");
+		bad_command_line(3, bad_click, "--click: bad value 'middle:1s'", "--click middle:1s");
+		bad_command_line(3, bad_port, "unknown option --in5", "--in5");
+		bad_command_line(2, no_value, "--seconds needs a value", "--seconds without a value");
+		bad_command_line(3, bad_fault, "--fault: 'gyro-noise': missing or bad value", "--fault gyro-noise (no value)");
 	}
 	return tap_done();
 }

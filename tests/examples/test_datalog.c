@@ -13,6 +13,7 @@
 #include "ev3api_speaker.h"
 #include "example_test.h"
 #include "text_files_test.h"
+#include "stderr_capture.h"
 
 static char dir[64], card[96], serial[96];
 
@@ -75,15 +76,28 @@ int main(void)
 		char *bad_sd[] = { "run_datalog", "--sd", "/nonexistent/card", NULL };
 		char bad_path[128];
 		char *bad_serial[] = { "run_datalog", "--serial", bad_path, "--seconds", "1", NULL };
+		struct stderr_capture cap;
+		const char *msg;
+		int status;
 
 		remove(serial);
 		is_int(ev3sim_run_main(8, good, "datalog", &ev3rt_app_cfg), 0, "--sd DIR --serial FILE: status 0");
 		ok(tf_read_text(serial, csv, sizeof(csv)) > 18 && strstr(csv, "\n3,") != NULL,
 		   "the command-line run wrote its CSV");
-		is_int(ev3sim_run_main(3, bad_sd, "datalog", &ev3rt_app_cfg), 2, "--sd of no directory: status 2");
+		stderr_capture_begin(&cap);
+		status = ev3sim_run_main(3, bad_sd, "datalog", &ev3rt_app_cfg);
+		msg = stderr_capture_end(&cap);
+		is_int(status, 2, "--sd of no directory: status 2");
+		if (!ok(strstr(msg, "--sd: '/nonexistent/card' is not a directory") != NULL, "...and the message says so"))
+			tap_diag("  stderr: %s", msg);
 		snprintf(bad_path, sizeof(bad_path), "%s/no/such/dir/serial", dir);
-		is_int(ev3sim_run_main(5, bad_serial, "datalog", &ev3rt_app_cfg), 1,
-		       "--serial that cannot be opened: status 1");
+		stderr_capture_begin(&cap);
+		status = ev3sim_run_main(5, bad_serial, "datalog", &ev3rt_app_cfg);
+		msg = stderr_capture_end(&cap);
+		is_int(status, 1, "--serial that cannot be opened: status 1");
+		if (!ok(strstr(msg, bad_path) != NULL && strstr(msg, "No such file or directory") != NULL,
+			"...and the message names the file and why"))
+			tap_diag("  stderr: %s", msg);
 	}
 	tf_remove_tree(dir);
 	return tap_done();

@@ -101,21 +101,26 @@ static unsigned oversampling(const struct hs_uart *u)
 	return (u->mdr & 1U) ? 13U : 16U;
 }
 
-/* Bits per character: start, data, parity, stop. */
-static unsigned char_bits(const struct hs_uart *u)
+/*
+ * Half bit times per character: start, data, parity, stop.  LCR.STB asks for
+ * 2 stop bits, 1.5 with 5-bit words (AM1808 TRM, UART Line Control Register,
+ * STB: "WLS = 0: 1.5 STOP bits; WLS = 1h-3h: 2 STOP bits"), hence halves.
+ */
+static unsigned char_half_bits(const struct hs_uart *u)
 {
 	uint32_t lcr = u->lcr;
 	unsigned data = 5U + (lcr & 3U);
+	unsigned stop_halves = !(lcr & 0x04U) ? 2U : data == 5U ? 3U : 4U;
 
-	return 1U + data + ((lcr & 0x08U) ? 1U : 0U) + ((lcr & 0x04U) ? 2U : 1U);
+	return 2U * (1U + data + ((lcr & 0x08U) ? 1U : 0U)) + stop_halves;
 }
 
-/* Nanoseconds of n bit times at the current divisor (0 if no clock). */
-static uint64_t bits_ns(const struct hs_uart *u, unsigned n)
+/* Nanoseconds of n half bit times at the current divisor (0 if no clock). */
+static uint64_t half_bits_ns(const struct hs_uart *u, unsigned n)
 {
 	uint32_t div = divisor(u);
 
-	return div ? hs_cycles_to_ns((uint64_t)n * oversampling(u) * div, u->cfg->clock_hz) : 0;
+	return div ? hs_cycles_to_ns((uint64_t)n * oversampling(u) * div, 2U * (uint64_t)u->cfg->clock_hz) : 0;
 }
 
 /* Current baud. */
@@ -133,8 +138,8 @@ static void timing_update(struct hs_uart *u)
 				   ((uint64_t)oversampling(u) * div)) : 0U;
 	u->baud_lo = u->baud - u->baud / 25U;
 	u->baud_hi = u->baud + u->baud / 25U;
-	u->char_ns = bits_ns(u, char_bits(u));
-	u->timeout_ns = bits_ns(u, 4U * char_bits(u));
+	u->char_ns = half_bits_ns(u, char_half_bits(u));
+	u->timeout_ns = half_bits_ns(u, 4U * char_half_bits(u));
 }
 
 /* Receiver out of reset. */

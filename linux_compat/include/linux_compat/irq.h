@@ -58,8 +58,13 @@ extern const struct rtos_cfg linux_irq_cfg;
 /* ISR of a line that carries one Linux IRQ: runs the Linux handlers of IRQ exinf. */
 void lx_irq_dispatch(intptr_t exinf);
 
-/* Runs the Linux handlers of irq in interrupt context; returns true if one handled it. */
+/* Runs the Linux handlers of irq in interrupt context; returns true if one handled it.
+ * While irq is disabled it runs none and records the interrupt as pending. */
 bool lx_handle_irq(unsigned int irq);
+
+/* Records that an interrupt of irq came while it was disabled (a chip found
+ * it latched when masking its line): enable_irq replays it (Linux's IRQS_PENDING). */
+void lx_irq_set_pending(unsigned int irq);
 
 /* True if drivers may request irq (the machine has a chip for it). */
 bool lx_irq_valid(unsigned int irq);

@@ -1,6 +1,7 @@
 /*
  * test_uart16550.c — the port UARTs' register semantics: baud from the
- * divisor and module clock, 10 bit-times per byte, FIFO and trigger level,
+ * divisor and module clock, 10 bit-times per byte (11 and 12 with 2 stop
+ * bits and parity, 7.5 with 5 data bits and 1.5 stop bits), FIFO and trigger level,
  * LSR bits and clear-on-read errors, overrun, IIR priorities and the THRE
  * clear on IIR read, the level on the AINTC line, DLAB, PWREMU_MGMT reset,
  * break, and the stand-in UARTs of ports 3 and 4.
@@ -10,6 +11,21 @@
 #include "host_sim/devices/uart16550.h"
 
 #define U0 HS_UART0_BASE
+
+/* Virtual ns from a THR write to the looped-back byte's arrival in RBR, with LCR lcr (1 us steps). */
+static uint64_t loopback_char_ns(uint32_t lcr)
+{
+	uint64_t t0;
+
+	wr32(U0 + 0x0C, lcr);
+	t0 = hs_now();
+	wr32(U0 + 0x00, 0x15);
+	while (!(rd32(U0 + 0x14) & 0x01))
+		hs_sim_run_for(1000);
+	(void)rd32(U0 + 0x00);
+	wr32(U0 + 0x0C, 0x03);
+	return hs_now() - t0;
+}
 
 static void setup(uint32_t base, uint32_t clock, uint32_t baud, uint32_t fcr)
 {
@@ -28,7 +44,7 @@ int main(void)
 	uint64_t t0;
 	uint32_t lsr, iir;
 
-	tap_plan(24);
+	tap_plan(27);
 	devtest_boot(2, NULL);
 	u = ev3_input_uart(1);
 	ok(u != NULL, "UART0 serves input port 2");
@@ -48,6 +64,13 @@ int main(void)
 	is_int(rd32(U0 + 0x00), 0x5A, "looped back into RBR");
 	lsr = rd32(U0 + 0x14);
 	ok((lsr & 0x61) == 0x60, "LSR: THRE and TEMT, no data");
+	/* LCR.STB (AM1808 TRM, UART LCR): 2 stop bits, 1.5 with 5-bit words; one bit is 8.64 us */
+	t0 = loopback_char_ns(0x07);
+	in_range(t0, 95000, 96500, "8 data bits, 2 stop bits: 11 bit times (%llu ns)", (unsigned long long)t0);
+	t0 = loopback_char_ns(0x0F);
+	in_range(t0, 103600, 105100, "8 data bits, parity, 2 stop bits: 12 bit times (%llu ns)", (unsigned long long)t0);
+	t0 = loopback_char_ns(0x04);
+	in_range(t0, 64800, 66300, "5 data bits, STB: 1.5 stop bits, 7.5 bit times (%llu ns)", (unsigned long long)t0);
 
 	/* 17 bytes into a 16-byte FIFO: overrun, OE cleared by reading LSR */
 	for (int i = 0; i < 17; i++) {

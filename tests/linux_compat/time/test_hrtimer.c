@@ -337,6 +337,14 @@ static void test_forward_math(void)
 	is_int(hrtimer_get_expires(&t), 11 * r, "...expiry moved one interval");
 	is_u64(hrtimer_forward(&t, 14 * r + r / 2, r), 4, "forward 3.5 intervals late: 4 intervals");
 	is_int(hrtimer_get_expires(&t), 15 * r, "...expiry after now, on the grid");
+	/* Linux (kernel/time/hrtimer.c): whole intervals until the expiry is after
+	 * now, so now on the grid, whole intervals late, takes one more. */
+	hrtimer_set_expires(&t, 10 * r);
+	is_u64(hrtimer_forward(&t, 11 * r, r), 2, "forward exactly 1 interval late: 2 intervals");
+	is_int(hrtimer_get_expires(&t), 12 * r, "...expiry one interval after now, not at now");
+	is_u64(hrtimer_forward(&t, 15 * r, r), 4, "forward exactly 3 intervals late: 4 intervals");
+	is_int(hrtimer_get_expires(&t), 16 * r, "...expiry one interval after now");
+	hrtimer_set_expires(&t, 15 * r);
 	/* Linux clamps an interval below hrtimer_resolution to it. */
 	is_u64(hrtimer_forward(&t, 15 * r, 100), 1, "a 100 ns interval at the expiry: 1 overrun, not 1 per 100 ns");
 	is_int(hrtimer_get_expires(&t), 16 * r, "...the expiry moved by hrtimer_resolution");
@@ -350,7 +358,7 @@ static void test_forward_math(void)
 
 int main(void)
 {
-	tap_plan(40);
+	tap_plan(44);
 	test_forward_math();
 	test_zero_drift();
 	test_never_early();

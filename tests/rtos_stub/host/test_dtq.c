@@ -7,9 +7,11 @@
  * E_PAR outside 1..maxdpri), ini_* releasing waiters with E_DLT, ref_*,
  * bad IDs, E_CTX from non-task context and E_MACV for a bad pointer.
  */
+#define _POSIX_C_SOURCE 200809L
 #include "tap.h"
 #include "kernel.h"
 #include "rtos_test.h"
+#include "boot_refusal_test.h"
 
 #define MS 1000000ULL
 
@@ -168,8 +170,9 @@ static const struct rtos_cfg bad_pdq_cfg = { .name = "bad", .pdqs = RTOS_TABLE(b
 int main(void)
 {
 	intptr_t d;
+	bool said_so = true;
 
-	tap_plan(26);
+	tap_plan(27);
 	rt_log_reset();
 	rtos_host_expect_bugs(true);
 	is_int(rtos_host_boot(&cfg), E_OK, "boot");
@@ -203,8 +206,9 @@ int main(void)
 	is_int(snd_dtq(DTQ_FIFO, 1), E_CTX, "snd_dtq from the harness: E_CTX");
 	(void)d;
 	rtos_host_shutdown();
-	ok(rtos_host_boot(&bad_cfg) == E_RSATR && rtos_host_boot(&bad_pdq_cfg) == E_PAR,
+	ok(rt_boot_refused(&bad_cfg, &said_so) == E_RSATR && rt_boot_refused(&bad_pdq_cfg, &said_so) == E_PAR,
 	   "boot refuses unknown dtqatr (E_RSATR) and maxdpri beyond TMAX_DPRI (E_PAR)");
+	ok(said_so, "each refusal printed its boot error on stderr");
 	rtos_host_shutdown();
 	return tap_done();
 }

@@ -8,9 +8,11 @@
  * first waiter, release when the holder ends (ext_tsk, ter_tsk), ini_mtx
  * (E_DLT), ref_mtx, and E_CTX/E_ID.
  */
+#define _POSIX_C_SOURCE 200809L
 #include "tap.h"
 #include "kernel.h"
 #include "rtos_test.h"
+#include "boot_refusal_test.h"
 
 #define MS 1000000ULL
 
@@ -207,7 +209,9 @@ static const struct rtos_cfg bad_cfg = { .name = "bad", .mtxs = RTOS_TABLE(bad_m
 
 int main(void)
 {
-	tap_plan(19);
+	bool said_so = true;
+
+	tap_plan(20);
 	rt_log_reset();
 	is_int(rtos_host_boot(&cfg), E_OK, "boot");
 	rtos_host_run_for(100 * MS);
@@ -231,7 +235,8 @@ int main(void)
 	ok(r_ctx == E_CTX && r_id[0] == E_ID && r_id[1] == E_ID, "ploc_mtx from a handler: E_CTX; bad IDs: E_ID");
 	is_int(rtos_host_bug_count(), 0, "no bug reports");
 	rtos_host_shutdown();
-	is_int(rtos_host_boot(&bad_cfg), E_PAR, "boot refuses TA_CEILING with ceilpri 0");
+	is_int(rt_boot_refused(&bad_cfg, &said_so), E_PAR, "boot refuses TA_CEILING with ceilpri 0");
+	ok(said_so, "...printing its boot error on stderr");
 	rtos_host_shutdown();
 	return tap_done();
 }

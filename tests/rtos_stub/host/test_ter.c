@@ -6,9 +6,11 @@
  * is a boot error, none run after a failed boot or twice, and boot/shutdown
  * from inside a routine are reported.
  */
+#define _POSIX_C_SOURCE 200809L
 #include "tap.h"
 #include "kernel.h"
 #include "rtos_test.h"
+#include "boot_refusal_test.h"
 
 #define MS 1000000ULL
 
@@ -86,7 +88,9 @@ static const struct rtos_cfg bad_cfg = { .name = "bad", .ters = RTOS_TABLE(bad_t
 
 int main(void)
 {
-	tap_plan(19);
+	bool said_so = true;
+
+	tap_plan(20);
 
 	rt_log_reset();
 	is_int(rtos_host_boot(&app_cfg), E_OK, "boot with termination routines");
@@ -107,7 +111,8 @@ int main(void)
 	rtos_host_shutdown();
 	is_str(rt_log_text(), "", "a second shutdown runs no termination routine");
 
-	is_int(rtos_host_boot(&null_cfg), E_PAR, "a NULL termination routine is a boot error");
+	is_int(rt_boot_refused(&null_cfg, &said_so), E_PAR, "a NULL termination routine is a boot error");
+	ok(said_so, "...printed on stderr");
 	ok(strstr(rtos_host_boot_error(), "ATT_TER[0]") != NULL, "naming the row: %s",
 	   rtos_host_boot_error());
 	rt_log_reset();
