@@ -139,6 +139,7 @@ static ER plug_in(const struct ev3sim_balance_opts *o, char *err, size_t errlen)
 	struct uart_sensor_options gyro = { .name = "in2.gyro" };
 	ER ercd;
 
+	gyro.gyro_noise_dps = o->gyro_noise_dps;
 	for (unsigned i = 0; i < o->nfaults; i++) {
 		if (o->faults[i].target == EV3SIM_FAULT_GYRO_NOISE)
 			gyro.gyro_noise_dps = o->faults[i].value;
@@ -186,7 +187,7 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 
 	memset(res, 0, sizeof(*res));
 	if (!(o->seconds > 0 && o->seconds <= EV3SIM_MAX_SECONDS) || o->npushes > EV3SIM_MAX_PUSHES ||
-	    o->nfaults > EV3SIM_MAX_FAULTS || fabs(o->start_tilt_deg) >= 45.0) {
+	    o->nfaults > EV3SIM_MAX_FAULTS || fabs(o->start_tilt_deg) >= 45.0 || !(o->gyro_noise_dps >= 0)) {
 		snprintf(err, errlen, "bad run options");
 		return E_PAR;
 	}

@@ -242,7 +242,6 @@ static bool close_out(const char *cmd, FILE *f, const char *path)
 struct balance_cli {
 	struct ev3sim_balance_opts o;
 	const char *csv, *plot, *log_path;
-	double gyro_noise;
 };
 
 /* One option of `balance`: its name, whether it takes a value, and what it
@@ -330,7 +329,8 @@ static int opt_tilt(struct args *a, const char *v, struct balance_cli *c)
 
 static int opt_gyro_noise(struct args *a, const char *v, struct balance_cli *c)
 {
-	if (!ev3sim_parse_double(v, &c->gyro_noise) || c->gyro_noise < 0 || c->gyro_noise > MAX_GYRO_NOISE_DPS)
+	if (!ev3sim_parse_double(v, &c->o.gyro_noise_dps) || c->o.gyro_noise_dps < 0 ||
+	    c->o.gyro_noise_dps > MAX_GYRO_NOISE_DPS)
 		return usage_error(a, "--gyro-noise: bad value '%s' (0..1000 deg/s)", v);
 	return EV3SIM_EXIT_OK;
 }
@@ -339,9 +339,8 @@ static int opt_fault(struct args *a, const char *v, struct balance_cli *c)
 {
 	char err[256];
 
-	/* one slot stays free for the default gyro noise */
-	if (c->o.nfaults == EV3SIM_MAX_FAULTS - 1)
-		return usage_error(a, "--fault: more than %s faults", "15");
+	if (c->o.nfaults == EV3SIM_MAX_FAULTS)
+		return usage_error(a, "--fault: more than %s faults", "16");
 	if (!ev3sim_fault_parse(v, 1, &c->o.faults[c->o.nfaults], err, sizeof(err)))
 		return usage_error(a, "--fault: %s", err);
 	c->o.nfaults++;
@@ -393,8 +392,7 @@ static int cmd_balance(struct args *a)
 {
 	struct balance_cli c = {
 		.o = { .seconds = 10.0, .seed = 1, .app = { .balancer = true, .logger_hz = 1000 },
-		       .start_tilt_deg = 0.5, .progress = true },
-		.gyro_noise = 0.3,
+		       .start_tilt_deg = 0.5, .gyro_noise_dps = 0.3, .progress = true },
 	};
 	struct ev3sim_balance_opts o;
 	struct ev3sim_balance_result r;
@@ -426,10 +424,6 @@ static int cmd_balance(struct args *a)
 	csv = c.csv;
 	plot = c.plot;
 	log_path = c.log_path;
-	/* the default gyro noise goes first: a gyro-noise fault overrides it */
-	memmove(&o.faults[1], &o.faults[0], o.nfaults * sizeof(o.faults[0]));
-	o.faults[0] = (struct ev3sim_fault_spec){ .target = EV3SIM_FAULT_GYRO_NOISE, .value = c.gyro_noise };
-	o.nfaults++;
 	if (plot && !ev3sim_have_gnuplot()) {
 		fprintf(stderr, "ev3sim balance: --plot needs gnuplot, which is not installed "
 			"(install gnuplot-nox: make deps)\n");

@@ -5,6 +5,7 @@
  * log, VCD, PNG when gnuplot is installed).
  */
 #include "ev3sim_test.h"
+#include "ev3sim/balance_run.h"
 #include "ev3sim/plot.h"
 
 static struct et_run run;
@@ -239,9 +240,33 @@ static void test_output_errors(void)
 	}
 }
 
+/* --fault as often as the help says ("up to 16"), and once more refused. */
+static void test_fault_limit(void)
+{
+	const char *help[] = { "balance", "--help", NULL };
+	const char *args[64] = { "balance", "--seconds", "0.01", "--logger-hz", "0", "--no-progress" };
+	unsigned n = 6;
+
+	et_run(&run, help);
+	ok(strstr(run.out, "may repeat (up to 16)") != NULL, "balance --help: --fault may repeat up to 16 times");
+	for (unsigned i = 0; i < EV3SIM_MAX_FAULTS; i++) {
+		args[n++] = "--fault";
+		args[n++] = "gyro-drift:0.1";
+	}
+	args[n] = NULL;
+	ok(et_run(&run, args) && run.status == 0, "16 faults are accepted");
+	if (run.status != 0)
+		tap_diag("status %d, stderr: %s", run.status, run.err);
+	args[n++] = "--fault";
+	args[n++] = "gyro-drift:0.1";
+	args[n] = NULL;
+	ok(et_run(&run, args) && run.status == 2 && strstr(run.err, "--fault: more than 16 faults"),
+	   "the 17th is refused, naming the limit");
+}
+
 int main(void)
 {
-	tap_plan(5 + 29 * 2 + 9 + 10 + 5 + 8 + 4 * 4 + 2);
+	tap_plan(5 + 29 * 2 + 9 + 10 + 5 + 8 + 4 * 4 + 2 + 3);
 	test_help();
 	test_bad_input();
 	test_motor();
@@ -249,5 +274,6 @@ int main(void)
 	test_nxt_iic_sensors();
 	test_files();
 	test_output_errors();
+	test_fault_limit();
 	return tap_done();
 }

@@ -53,6 +53,7 @@ struct ev3sim_balance_opts {
 	struct ev3sim_balance_cfg app;
 	uint32_t log_baud;          /* 0: SERIAL_LOG_DEFAULT_BAUD */
 	double start_tilt_deg;
+	double gyro_noise_dps;      /* the gyro's sample noise (a gyro-noise fault overrides it) */
 	struct ev3sim_push pushes[EV3SIM_MAX_PUSHES];   /* t_ns from the release */
 	unsigned npushes;
 	struct ev3sim_fault_spec faults[EV3SIM_MAX_FAULTS];
