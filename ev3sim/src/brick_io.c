@@ -27,6 +27,7 @@ static struct {
 	int serial_fd;                      /* -1: not connected */
 	bool serial_is_uart;                /* the port is serial_log's polled UART model */
 	bool serial_is_file;                /* a regular file: output only */
+	int serial_write_errno;             /* the first failed write's errno since the setup, 0: none */
 } io = { .serial_fd = -1 };
 
 void brick_io_teardown(void)
@@ -54,11 +55,17 @@ void brick_io_serial_to_uart(void)
 	io.serial_is_uart = true;
 }
 
+int brick_io_serial_write_errno(void)
+{
+	return io.serial_write_errno;
+}
+
 ER brick_io_setup(const char *sd_dir, const char *serial_path, char *err, size_t errlen)
 {
 	struct stat st;
 
 	brick_io_teardown();
+	io.serial_write_errno = 0;
 	if (sd_dir != NULL) {
 		io.root = realpath(sd_dir, NULL);
 		if (io.root == NULL || stat(io.root, &st) != 0 || !S_ISDIR(st.st_mode)) {
@@ -342,8 +349,13 @@ static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, i
 	if (io.serial_is_uart)
 		return serial_log_send((const char *)p_buf, (uint_t)p_len);
 	put = write(io.serial_fd, (const void *)p_buf, (size_t)p_len);
-	if (put < 0)
-		return errno == EAGAIN || errno == EWOULDBLOCK ? 0 : E_OBJ;
+	if (put < 0 && (errno == EAGAIN || errno == EWOULDBLOCK))
+		return 0;
+	if (put < 0) {
+		if (io.serial_write_errno == 0)
+			io.serial_write_errno = errno;
+		return E_OBJ;
+	}
 	return (ER_UINT)put;
 }
 

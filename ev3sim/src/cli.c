@@ -15,6 +15,7 @@
 #include "ev3sim/apps.h"
 #include "ev3sim/balance_run.h"
 #include "ev3sim/cli.h"
+#include "ev3sim/output.h"
 #include "ev3sim/parse.h"
 #include "ev3sim/plot.h"
 #include "ev3sim/run.h"
@@ -217,27 +218,6 @@ static bool plain_path(const char *s)
 	return s && *s && strchr(s, '\'') == NULL && strchr(s, '\n') == NULL;
 }
 
-static FILE *open_out(const char *cmd, const char *path)
-{
-	FILE *f = fopen(path, "w");
-
-	if (f == NULL)
-		fprintf(stderr, "ev3sim %s: cannot write %s: %s\n", cmd, path, strerror(errno));
-	return f;
-}
-
-/* Closes an output; false (and says so) if any of it could not be written. */
-static bool close_out(const char *cmd, FILE *f, const char *path)
-{
-	bool ok = !ferror(f);
-
-	if (fclose(f) != 0)
-		ok = false;
-	if (!ok)
-		fprintf(stderr, "ev3sim %s: cannot write %s completely\n", cmd, path);
-	return ok;
-}
-
 /* What `balance`'s options set: the run's options and the outputs asked for. */
 struct balance_cli {
 	struct ev3sim_balance_opts o;
@@ -434,7 +414,7 @@ static int cmd_balance(struct args *a)
 	if (plot && !ev3sim_can_create(a->cmd, plot))
 		return EV3SIM_EXIT_FAIL;
 	series_path = csv;
-	if (csv && (o.series_out = open_out(a->cmd, csv)) == NULL)
+	if (csv && (o.series_out = ev3sim_open_output(a->cmd, csv)) == NULL)
 		return EV3SIM_EXIT_FAIL;
 	if (!csv && plot) {
 		fd = mkstemp(series_tmp);
@@ -446,7 +426,7 @@ static int cmd_balance(struct args *a)
 		}
 		series_path = series_tmp;
 	}
-	if (log_path && (o.log_out = open_out(a->cmd, log_path)) == NULL) {
+	if (log_path && (o.log_out = ev3sim_open_output(a->cmd, log_path)) == NULL) {
 		if (o.series_out)
 			fclose(o.series_out);
 		return EV3SIM_EXIT_FAIL;
@@ -461,9 +441,9 @@ static int cmd_balance(struct args *a)
 			unlink(series_tmp);
 		return EV3SIM_EXIT_FAIL;
 	}
-	if (o.log_out && !close_out(a->cmd, o.log_out, log_path))
+	if (o.log_out && !ev3sim_close_output(a->cmd, o.log_out, log_path))
 		status = EV3SIM_EXIT_FAIL;
-	if (o.series_out && !close_out(a->cmd, o.series_out, series_path))
+	if (o.series_out && !ev3sim_close_output(a->cmd, o.series_out, series_path))
 		status = EV3SIM_EXIT_FAIL;
 	if (r.trace_failed) {
 		fprintf(stderr, "ev3sim balance: cannot write %s completely\n", o.trace_path);
@@ -484,8 +464,6 @@ static int cmd_balance(struct args *a)
 		unlink(series_tmp);
 	ev3sim_balance_summary(&o, &r, line, sizeof(line));
 	printf("%s\n", line);
-	if (fflush(stdout) != 0 || ferror(stdout))
-		status = EV3SIM_EXIT_FAIL;
 	return status;
 }
 
@@ -604,12 +582,12 @@ int ev3sim_main(int argc, char **argv)
 	}
 	if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
 		fputs(main_usage, stdout);
-		return EV3SIM_EXIT_OK;
+		return ev3sim_finish_stdout(NULL, EV3SIM_EXIT_OK);
 	}
 	for (size_t i = 0; i < sizeof(cmds) / sizeof(cmds[0]); i++) {
 		if (strcmp(argv[1], cmds[i].name) == 0) {
 			a.cmd = cmds[i].name;
-			return cmds[i].run(&a);
+			return ev3sim_finish_stdout(a.cmd, cmds[i].run(&a));
 		}
 	}
 	fprintf(stderr, "ev3sim: unknown command '%s'\n\n%s", argv[1], main_usage);

@@ -30,6 +30,11 @@ ER brick_io_setup(const char *sd_dir, const char *serial_path, char *err, size_t
  * port's time as on the brick. */
 void brick_io_serial_to_uart(void);
 
+/* The errno of the first write to the serial port's host file that failed
+ * since brick_io_setup (the app saw E_OBJ), 0 if none did; kept after the
+ * teardown, so that the command line can report it. */
+int brick_io_serial_write_errno(void);
+
 /* Closes what brick_io_setup opened (directories the app left open too). */
 void brick_io_teardown(void);
 
