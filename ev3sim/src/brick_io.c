@@ -167,6 +167,64 @@ static ER resolve(const char *path, char **out)
 	return E_OK;
 }
 
+/*
+ * The host path of a card entry that need not exist (the last component is
+ * not followed): the card's path of its directory resolved, then its name.
+ * E_PAR for a name that is empty, "." or "..", else as resolve.
+ */
+static ER resolve_entry(const char *path, char **out)
+{
+	size_t len = strlen(path), name_at;
+	char *dir, *host_dir;
+	ER ercd;
+
+	while (len > 0 && path[len - 1] == '/')
+		len--;
+	name_at = len;
+	while (name_at > 0 && path[name_at - 1] != '/')
+		name_at--;
+	if (name_at == len || (len - name_at == 1 && path[name_at] == '.') ||
+	    (len - name_at == 2 && path[name_at] == '.' && path[name_at + 1] == '.'))
+		return E_PAR;
+	if ((dir = strndup(path, name_at)) == NULL)
+		return E_NOMEM;
+	ercd = resolve(dir, &host_dir);
+	free(dir);
+	if (ercd != E_OK)
+		return ercd;
+	*out = malloc(strlen(host_dir) + (len - name_at) + 2);
+	if (*out == NULL) {
+		free(host_dir);
+		return E_NOMEM;
+	}
+	sprintf(*out, "%s/%.*s", host_dir, (int)(len - name_at), path + name_at);
+	free(host_dir);
+	return E_OK;
+}
+
+ER brick_io_card_path(const char *path, enum brick_io_card_use use, char **host)
+{
+	struct stat st;
+	ER ercd;
+
+	if (io.root == NULL)
+		return E_OBJ;
+	if (path == NULL || *path == '\0' || strlen(path) >= BRICK_IO_MAX_PATH)
+		return E_PAR;
+	if (use == BRICK_IO_CARD_ENTRY)
+		return resolve_entry(path, host);
+	ercd = resolve(path, host);
+	if (ercd != E_NOEXS || use != BRICK_IO_CARD_CREATE)
+		return ercd;
+	ercd = resolve_entry(path, host);
+	/* a name that is there but leads nowhere is a symbolic link: it could create a file off the card */
+	if (ercd == E_OK && lstat(*host, &st) == 0) {
+		free(*host);
+		return E_PAR;
+	}
+	return ercd;
+}
+
 /* The caller's path, resolved; the common head of the file and directory calls. */
 static ER caller_path(intptr_t p_path, char **host)
 {
