@@ -174,6 +174,7 @@ static bool empty_dir(const char *dir)
 	struct dirent *e;
 	unsigned n = 0;
 
+	/* cppcheck-suppress readdirCalled ; one thread, and readdir_r is deprecated in glibc */
 	while (d && (e = readdir(d)) != NULL)
 		n += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
 	if (d)
