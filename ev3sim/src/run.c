@@ -394,7 +394,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	uint64_t end;
 	double wall0;
 	ER ercd, shutdown;
-	bool lcd_failed = false;
+	bool lcd_failed = false;    /* the video */
+	bool png_failed = false;
 	char audio_err[256];
 
 	memset(r, 0, sizeof(*r));
@@ -485,7 +486,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 			for (unsigned x = 0; x < EV3_LCD_PANEL_WIDTH; x++)
 				r->lcd_dark += px[y][x];
 		if (!ev3sim_lcd_png_writer || ev3sim_lcd_png_writer(o->lcd_path) != E_OK)
-			lcd_failed = true;
+			png_failed = true;
 	}
 	(void)iact_tsk(POWER_OFF_TSKID);
 	hs_sim_run_for(DRAIN_NS);
@@ -500,8 +501,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		snprintf(err, errlen, "%s", audio_err);
 		return E_SYS;
 	}
-	if (lcd_failed) {
-		snprintf(err, errlen, "cannot write %s", o->lcd_path ? o->lcd_path : o->lcd_video_path);
+	if (png_failed || lcd_failed) {
+		snprintf(err, errlen, "cannot write %s", png_failed ? o->lcd_path : o->lcd_video_path);
 		return E_SYS;
 	}
 	return E_OK;
