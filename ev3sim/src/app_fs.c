@@ -45,6 +45,7 @@ int ev3rt_fs_lstat(const char *path, struct stat *st);
 int ev3rt_fs_lstat64(const char *path, struct stat64 *st);
 int ev3rt_fs_access(const char *path, int how);
 DIR *ev3rt_fs_opendir(const char *path);
+struct dirent *ev3rt_fs_readdir(DIR *dir);
 
 /* The host path of path for use (malloc'd), or NULL with errno set as FatFs's errors map to it. */
 static char *host_path(const char *path, enum brick_io_card_use use)
@@ -286,4 +287,27 @@ DIR *ev3rt_fs_opendir(const char *path)
 
 	done(host);
 	return d;
+}
+
+/*
+ * readdir for an app built without 64-bit file offsets (a 32-bit host: the
+ * ARMv5 tests under qemu-arm): the host's directories give 64-bit entry
+ * offsets, which the C library's 32-bit readdir refuses with EOVERFLOW.  The
+ * entry is read with readdir64 and handed over in a struct dirent of the
+ * app's size; like readdir's, it is valid until the next call.
+ */
+struct dirent *ev3rt_fs_readdir(DIR *dir)
+{
+	static struct dirent entry;
+	struct dirent64 *e;
+
+	/* cppcheck-suppress readdirCalled ; one simulation thread, and readdir64_r is deprecated in glibc */
+	if ((e = readdir64(dir)) == NULL)
+		return NULL;
+	entry.d_ino = (ino_t)e->d_ino;
+	entry.d_off = (off_t)e->d_off;
+	entry.d_reclen = (unsigned short)sizeof(entry);
+	entry.d_type = e->d_type;
+	snprintf(entry.d_name, sizeof(entry.d_name), "%s", e->d_name);
+	return &entry;
 }
