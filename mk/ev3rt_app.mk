@@ -23,7 +23,8 @@
 #
 # An app's `main` is an ordinary function on EV3RT (the platform boots the
 # kernel, the app's tasks call main() if they like): NAME.o renames it
-# ev3rt_app_main, so it never meets the runner's main().
+# ev3rt_app_main, so it never meets the runner's main(); its file calls go to
+# the simulated SD card (EV3RT_APP_FS_SYMS).
 #
 # It produces gen/kernel_cfg.h and gen/kernel_cfg.c (the ID macros, and the
 # tables as `const struct rtos_cfg ev3rt_app_cfg`), and NAME.o: one
@@ -32,6 +33,12 @@
 # libev3lx.a.  App sources get EV3RT_APP_WARN (no -Werror: apps build
 # unchanged); configuration errors stop the build with "app.cfg:LINE: ...".
 EV3RT_APP_WARN ?= -Wall -Wno-unused-parameter
+
+# The app's C library file calls (fopen, open, mkdir, rename, remove, stat,
+# opendir...), its libraries' too, are renamed in its object to ev3sim's,
+# which work on the simulated SD card as newlib over FatFs does on the brick
+# (ev3sim/src/app_fs.c): the app itself is unchanged.
+EV3RT_APP_FS_SYMS := mk/ev3rt_app_fs.syms
 # The languages EV3RT's app build compiles in (public source:
 # ev3rt-git/ev3rt-hrp2-sdk, common/Makefile.img: gcc -std=gnu99, g++
 # -std=gnu++11).  A plain `inline` function gets an external definition
@@ -88,7 +95,7 @@ $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c
 # into the domain of the app's first module, as EV3RT links them into the
 # app's module: a library's buffers are the app's.
 $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o \
-		$$(EV3RT_DOMLIBS_$(1)_$(2))
+		$$(EV3RT_DOMLIBS_$(1)_$(2)) $(EV3RT_APP_FS_SYMS)
 	$$(quiet) LD $(2) $$@
 	$(Q)set -e; objs=; \
 	for o in $$(EV3RT_OBJS_$(1)_$(2)); do \
@@ -107,7 +114,7 @@ $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(
 		objs="$$$$objs $$@.libs.o"; \
 	fi; \
 	$$(CC_$(2)) -r -nostdlib -o $$@ $$$$objs $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o; \
-	$$(OBJCOPY_$(2)) --redefine-sym main=ev3rt_app_main $$@
+	$$(OBJCOPY_$(2)) --redefine-sym main=ev3rt_app_main --redefine-syms=$(EV3RT_APP_FS_SYMS) $$@
 
 ifneq ($(strip $(5)),)
 EV3RT_PLATFORM_$(1)_$(2) ?= $(BUILD)/$(2)/libev3lx.a

@@ -4,6 +4,8 @@
 #                    linked into its test, tests/examples/test_NAME.c, which
 #                    runs it in ev3sim's robots (ev3sim/run.h) and asserts what
 #                    it does.
+#   tests/ev3sim/apps/NAME/  ev3sim's own test apps, each linked into
+#                    tests/ev3sim/test_app_NAME.c the same way.
 #   ev3rt-app        `make ev3rt-app APP=/abs/dir [EV3RT_LIB_DIR=/abs/dir]`
 #                    builds the runner of any app directory,
 #                    $(BUILD)/host/ev3rt/run_NAME/run_NAME: what `ev3sim run
@@ -76,16 +78,37 @@ $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_
 # runner's image writers as one object in which the only global names are
 # those the app's headers declare and the runner's entry (ev3sim_run_main),
 # so an app's own global names (a tick_handler, a jiffies) never meet
-# ev3lx's, as on EV3RT, whose kernel and app are separate images.
+# ev3lx's, as on EV3RT, whose kernel and app are separate images.  The app's
+# file calls, renamed (mk/ev3rt_app.mk), are ev3sim's: those names stay too.
+EV3RT_APP_FS_CALLS := $(sort $(shell awk '{ print $$2 }' $(EV3RT_APP_FS_SYMS)))
 EV3RT_PLATFORM := $(BUILD)/host/ev3rt/platform.o
 EV3RT_PLATFORM_OBJS := $(BUILD)/host/obj/ev3sim/lcd_png.o $(BUILD)/host/obj/ev3sim/lcd_gif.o
-$(EV3RT_PLATFORM): $(LIB_host) $(EV3RT_PLATFORM_OBJS) mk/ev3rt/platform_syms.sh $(wildcard api/*.h api/syssvc/*.h rtos_stub/include/*.h rtos_stub/include/syssvc/*.h)
+$(EV3RT_PLATFORM): $(LIB_host) $(EV3RT_PLATFORM_OBJS) mk/ev3rt/platform_syms.sh $(EV3RT_APP_FS_SYMS) $(wildcard api/*.h api/syssvc/*.h rtos_stub/include/*.h rtos_stub/include/syssvc/*.h)
 	@mkdir -p $(@D)
 	$(quiet) LD host $@
 	$(Q)ld -r -o $@.r.o --whole-archive $(LIB_host) --no-whole-archive $(EV3RT_PLATFORM_OBJS)
-	$(Q)PLATFORM_KEEP=ev3sim_run_main bash mk/ev3rt/platform_syms.sh $@.r.o $(CC_host) $(call layer_inc,api) \
+	$(Q)PLATFORM_KEEP='ev3sim_run_main $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $@.r.o $(CC_host) $(call layer_inc,api) \
 		$(CFLAGS_host) $(KERNEL_DEFS) > $@.syms
 	$(Q)objcopy --keep-global-symbols=$@.syms $@.r.o $@
+
+# ev3sim's own test apps, tests/ev3sim/apps/NAME (app.c alone): each linked
+# into tests/ev3sim/test_app_NAME.c as an example is into its test, as
+# ev3sim_test_NAME (no example's name).
+EV3SIM_TEST_APPS := $(patsubst tests/ev3sim/test_app_%.c,%,$(wildcard tests/ev3sim/test_app_*.c))
+
+# $(1) = test app, $(2) = config
+define ev3sim_test_app_rules
+$(call ev3rt_app,ev3sim_test_$(1),$(2),tests/ev3sim/apps/$(1)/app.cfg,tests/ev3sim/apps/$(1)/app.c)
+
+$(BUILD)/$(2)/obj/tests/ev3sim/test_app_$(1).o: tests/ev3sim/test_app_$(1).c \
+		$(BUILD)/$(2)/ev3rt/ev3sim_test_$(1)/ev3sim_test_$(1).o
+	@mkdir -p $$(@D)
+	$$(quiet) CC $(2) $$<
+	$(Q)$$(CC_$(2)) $$(call src_flags,$$<) $$(WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+		-MMD -MP -MF $$(@:.o=.d) -MT $$@ -c $$< -o $$@.main.o
+	$(Q)$$(CC_$(2)) -r -nostdlib -o $$@ $$@.main.o $(BUILD)/$(2)/ev3rt/ev3sim_test_$(1)/ev3sim_test_$(1).o
+endef
+$(foreach c,$(HOST_CONFIGS),$(foreach a,$(EV3SIM_TEST_APPS),$(eval $(call ev3sim_test_app_rules,$(a),$(c)))))
 
 ifneq ($(APP),)
 EV3RT_RUN_NAME := run_$(notdir $(APP))

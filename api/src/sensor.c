@@ -58,6 +58,13 @@ static const uint8_t remote_buttons_of[] = {
 };
 
 static sensor_type_t sensor_type[TNUM_SENSOR_PORT];
+/*
+ * Ports whose sensor never answered within a read's wait (START_TIMEOUT_MS):
+ * nothing is plugged in, or what is does not speak.  Their reads fail at once
+ * (E_TMOUT) while d_uart still hears nothing, instead of each waiting the
+ * whole bound again; a sensor that starts its handshake is waited for anew.
+ */
+static bool silent[TNUM_SENSOR_PORT];
 static const struct lms_uart_shm *uart_shm;
 static const struct lms_analog *analog_shm;
 
@@ -98,6 +105,7 @@ static ER map_shared_memory(void)
 void api_sensor_boot(void)
 {
 	memset(sensor_type, 0, sizeof(sensor_type));
+	memset(silent, 0, sizeof(silent));
 	uart_shm = NULL;
 	analog_shm = NULL;
 	api_iic_boot();
@@ -134,6 +142,7 @@ ER ev3lx_sensor_config(sensor_port_t port, sensor_type_t type)
 			return ercd;
 	}
 	sensor_type[port] = type;
+	silent[port] = false;
 	return E_OK;
 }
 
@@ -172,6 +181,13 @@ ER api_sensor_check(unsigned port, int type, ER out_check)
 	return out_check;
 }
 
+/* Whether d_uart hears no sensor on a port in state: nothing started a handshake
+ * (IDLE, SYNC), or the handshakes failed and the port fell back to raw bytes (TERMINAL). */
+static bool hears_nothing(uint8_t state)
+{
+	return state <= LMS_UART_STATE_SYNC || state == LMS_UART_STATE_TERMINAL;
+}
+
 /*
  * The slow path of a UART read: brings the port to valid data of mode and
  * returns the sample, selecting the mode and accepting a new description as
@@ -182,15 +198,23 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 	const struct lms_uart_port_ext *ext = &uart_shm->ext.port[port];
 	int expected = lms_type_of(sensor_type[port]);
 	RELTIM waited = 0, limit = START_TIMEOUT_MS;
+	SYSTIM since, now;          /* the wait's bounds are virtual time, polls and calls included */
 	bool in_data = false;
 	ER ercd = api_may_wait();
 
 	if (ercd != E_OK)
 		return ercd;
+	get_tim(&since);
+	now = since;
 	for (;;) {
 		uint8_t state = *(const volatile uint8_t *)&ext->state;
 		int8_t status = *(const volatile int8_t *)&uart_shm->lms.status[port];
 		const int8_t *sample;
+
+		/* still nothing from a port that was waited for once: no second wait */
+		if (silent[port] && hears_nothing(state))
+			return E_TMOUT;
+		silent[port] = false;
 
 		/* the description is published when the host's ACK goes out (state SPEED) */
 		if (state >= LMS_UART_STATE_SPEED && state != LMS_UART_STATE_TERMINAL &&
@@ -201,11 +225,13 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 		if (state == LMS_UART_STATE_DATA && !in_data) {
 			/* the handshake is done: from now on, the wait for a mode's data */
 			in_data = true;
+			since = now;
 			waited = 0;
 			limit = MODE_TIMEOUT_MS;
 		} else if (state != LMS_UART_STATE_DATA && in_data) {
 			/* the sensor reconnects: a whole handshake's bound again */
 			in_data = false;
+			since = now;
 			waited = 0;
 			limit = START_TIMEOUT_MS;
 		}
@@ -220,10 +246,15 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 			*p_sample = sample;
 			return E_OK;
 		}
-		if (waited >= limit)
+		if (waited >= limit) {
+			/* nothing heard for a whole handshake's bound: the port is silent */
+			if (!in_data && hears_nothing(state))
+				silent[port] = true;
 			return E_TMOUT;
+		}
 		dly_tsk(POLL_MS);
-		waited += POLL_MS;
+		get_tim(&now);
+		waited = (RELTIM)(now - since);
 	}
 }
 

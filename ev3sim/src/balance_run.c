@@ -69,9 +69,18 @@ static struct ev3sim_balance_stats app_stats(void)
 		.tilt_est_deg = a->tilt_est_deg, .power = a->power, .releases = a->releases, .runs = a->runs,
 		.deadline_misses = a->deadline_misses, .overlaps = a->overlaps, .late_starts = a->late_starts,
 		.max_start_delay_ns = (uint64_t)a->max_start_delay_us * 1000U, .api_errors = a->api_errors,
-		.api_blocked = a->api_blocked, .logger_lines = a->logger_lines, .logger_skipped = a->logger_skipped,
+		.api_blocked = a->api_blocked, .max_api_call_us = a->max_api_call_us, .logger_lines = a->logger_lines, .logger_skipped = a->logger_skipped,
 	};
 
+	/* a call still waiting when the run ends is a blocked call too (it may never return) */
+	for (unsigned t = 0; t < GYROBOY_TASKS; t++) {
+		uint64_t waited = a->call_since_us[t] ? rtos_host_now() / 1000U - a->call_since_us[t] : 0;
+
+		if (waited > GYROBOY_BLOCKED_US)
+			s.api_blocked++;
+		if (waited > s.max_api_call_us)
+			s.max_api_call_us = waited > UINT32_MAX ? UINT32_MAX : (uint32_t)waited;
+	}
 	if (uart_link) {
 		const struct lms_uart_port_ext *x = &uart_link->ext.port[GYRO_PORT];
 
@@ -139,6 +148,7 @@ static ER plug_in(const struct ev3sim_balance_opts *o, char *err, size_t errlen)
 	struct uart_sensor_options gyro = { .name = "in2.gyro" };
 	ER ercd;
 
+	gyro.gyro_noise_dps = o->gyro_noise_dps;
 	for (unsigned i = 0; i < o->nfaults; i++) {
 		if (o->faults[i].target == EV3SIM_FAULT_GYRO_NOISE)
 			gyro.gyro_noise_dps = o->faults[i].value;
@@ -186,7 +196,7 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 
 	memset(res, 0, sizeof(*res));
 	if (!(o->seconds > 0 && o->seconds <= EV3SIM_MAX_SECONDS) || o->npushes > EV3SIM_MAX_PUSHES ||
-	    o->nfaults > EV3SIM_MAX_FAULTS || fabs(o->start_tilt_deg) >= 45.0) {
+	    o->nfaults > EV3SIM_MAX_FAULTS || fabs(o->start_tilt_deg) >= 45.0 || !(o->gyro_noise_dps >= 0)) {
 		snprintf(err, errlen, "bad run options");
 		return E_PAR;
 	}
@@ -285,7 +295,7 @@ void ev3sim_balance_summary(const struct ev3sim_balance_opts *o,
 		 "deadline_misses=%u balance_runs=%u max_start_delay_us=%llu "
 		 "logger_lines=%u logger_skipped=%u log_bytes=%llu logger_spin_ms=%llu "
 		 "gyro_frames=%u gyro_check_errors=%u gyro_size_errors=%u gyro_resyncs=%u "
-		 "gyro_reconnects=%u api_errors=%u api_blocked=%u bugs=%u sim_speed=%.0fx",
+		 "gyro_reconnects=%u api_errors=%u api_blocked=%u max_api_call_us=%u bugs=%u sim_speed=%.0fx",
 		 r->fell ? "fell" : "upright", r->seconds, (unsigned long long)o->seed,
 		 o->app.balancer ? "on" : "off", o->app.logger_hz,
 		 o->app.logger_above ? "above" : "below", fell_at, r->max_tilt_deg, r->rms_tilt_deg,
@@ -294,6 +304,6 @@ void ev3sim_balance_summary(const struct ev3sim_balance_opts *o,
 		 r->app.logger_skipped, (unsigned long long)r->log_bytes,
 		 (unsigned long long)r->log_spin_ms, r->app.gyro_frames, r->app.gyro_check_errors,
 		 r->app.gyro_size_errors, r->app.gyro_resyncs, r->app.gyro_reconnects,
-		 r->app.api_errors, r->app.api_blocked, r->bugs,
+		 r->app.api_errors, r->app.api_blocked, r->app.max_api_call_us, r->bugs,
 		 r->wall_s > 0 ? r->sim_virtual_s / r->wall_s : 0.0);
 }

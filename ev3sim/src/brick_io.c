@@ -27,6 +27,7 @@ static struct {
 	int serial_fd;                      /* -1: not connected */
 	bool serial_is_uart;                /* the port is serial_log's polled UART model */
 	bool serial_is_file;                /* a regular file: output only */
+	int serial_write_errno;             /* the first failed write's errno since the setup, 0: none */
 } io = { .serial_fd = -1 };
 
 void brick_io_teardown(void)
@@ -54,11 +55,17 @@ void brick_io_serial_to_uart(void)
 	io.serial_is_uart = true;
 }
 
+int brick_io_serial_write_errno(void)
+{
+	return io.serial_write_errno;
+}
+
 ER brick_io_setup(const char *sd_dir, const char *serial_path, char *err, size_t errlen)
 {
 	struct stat st;
 
 	brick_io_teardown();
+	io.serial_write_errno = 0;
 	if (sd_dir != NULL) {
 		io.root = realpath(sd_dir, NULL);
 		if (io.root == NULL || stat(io.root, &st) != 0 || !S_ISDIR(st.st_mode)) {
@@ -158,6 +165,64 @@ static ER resolve(const char *path, char **out)
 	}
 	*out = real;
 	return E_OK;
+}
+
+/*
+ * The host path of a card entry that need not exist (the last component is
+ * not followed): the card's path of its directory resolved, then its name.
+ * E_PAR for a name that is empty, "." or "..", else as resolve.
+ */
+static ER resolve_entry(const char *path, char **out)
+{
+	size_t len = strlen(path), name_at;
+	char *dir, *host_dir;
+	ER ercd;
+
+	while (len > 0 && path[len - 1] == '/')
+		len--;
+	name_at = len;
+	while (name_at > 0 && path[name_at - 1] != '/')
+		name_at--;
+	if (name_at == len || (len - name_at == 1 && path[name_at] == '.') ||
+	    (len - name_at == 2 && path[name_at] == '.' && path[name_at + 1] == '.'))
+		return E_PAR;
+	if ((dir = strndup(path, name_at)) == NULL)
+		return E_NOMEM;
+	ercd = resolve(dir, &host_dir);
+	free(dir);
+	if (ercd != E_OK)
+		return ercd;
+	*out = malloc(strlen(host_dir) + (len - name_at) + 2);
+	if (*out == NULL) {
+		free(host_dir);
+		return E_NOMEM;
+	}
+	sprintf(*out, "%s/%.*s", host_dir, (int)(len - name_at), path + name_at);
+	free(host_dir);
+	return E_OK;
+}
+
+ER brick_io_card_path(const char *path, enum brick_io_card_use use, char **host)
+{
+	struct stat st;
+	ER ercd;
+
+	if (io.root == NULL)
+		return E_OBJ;
+	if (path == NULL || *path == '\0' || strlen(path) >= BRICK_IO_MAX_PATH)
+		return E_PAR;
+	if (use == BRICK_IO_CARD_ENTRY)
+		return resolve_entry(path, host);
+	ercd = resolve(path, host);
+	if (ercd != E_NOEXS || use != BRICK_IO_CARD_CREATE)
+		return ercd;
+	ercd = resolve_entry(path, host);
+	/* a name that is there but leads nowhere is a symbolic link: it could create a file off the card */
+	if (ercd == E_OK && lstat(*host, &st) == 0) {
+		free(*host);
+		return E_PAR;
+	}
+	return ercd;
 }
 
 /* The caller's path, resolved; the common head of the file and directory calls. */
@@ -342,8 +407,13 @@ static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, i
 	if (io.serial_is_uart)
 		return serial_log_send((const char *)p_buf, (uint_t)p_len);
 	put = write(io.serial_fd, (const void *)p_buf, (size_t)p_len);
-	if (put < 0)
-		return errno == EAGAIN || errno == EWOULDBLOCK ? 0 : E_OBJ;
+	if (put < 0 && (errno == EAGAIN || errno == EWOULDBLOCK))
+		return 0;
+	if (put < 0) {
+		if (io.serial_write_errno == 0)
+			io.serial_write_errno = errno;
+		return E_OBJ;
+	}
 	return (ER_UINT)put;
 }
 

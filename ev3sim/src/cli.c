@@ -15,6 +15,7 @@
 #include "ev3sim/apps.h"
 #include "ev3sim/balance_run.h"
 #include "ev3sim/cli.h"
+#include "ev3sim/output.h"
 #include "ev3sim/parse.h"
 #include "ev3sim/plot.h"
 #include "ev3sim/run.h"
@@ -217,32 +218,10 @@ static bool plain_path(const char *s)
 	return s && *s && strchr(s, '\'') == NULL && strchr(s, '\n') == NULL;
 }
 
-static FILE *open_out(const char *cmd, const char *path)
-{
-	FILE *f = fopen(path, "w");
-
-	if (f == NULL)
-		fprintf(stderr, "ev3sim %s: cannot write %s: %s\n", cmd, path, strerror(errno));
-	return f;
-}
-
-/* Closes an output; false (and says so) if any of it could not be written. */
-static bool close_out(const char *cmd, FILE *f, const char *path)
-{
-	bool ok = !ferror(f);
-
-	if (fclose(f) != 0)
-		ok = false;
-	if (!ok)
-		fprintf(stderr, "ev3sim %s: cannot write %s completely\n", cmd, path);
-	return ok;
-}
-
 /* What `balance`'s options set: the run's options and the outputs asked for. */
 struct balance_cli {
 	struct ev3sim_balance_opts o;
 	const char *csv, *plot, *log_path;
-	double gyro_noise;
 };
 
 /* One option of `balance`: its name, whether it takes a value, and what it
@@ -330,7 +309,8 @@ static int opt_tilt(struct args *a, const char *v, struct balance_cli *c)
 
 static int opt_gyro_noise(struct args *a, const char *v, struct balance_cli *c)
 {
-	if (!ev3sim_parse_double(v, &c->gyro_noise) || c->gyro_noise < 0 || c->gyro_noise > MAX_GYRO_NOISE_DPS)
+	if (!ev3sim_parse_double(v, &c->o.gyro_noise_dps) || c->o.gyro_noise_dps < 0 ||
+	    c->o.gyro_noise_dps > MAX_GYRO_NOISE_DPS)
 		return usage_error(a, "--gyro-noise: bad value '%s' (0..1000 deg/s)", v);
 	return EV3SIM_EXIT_OK;
 }
@@ -339,9 +319,8 @@ static int opt_fault(struct args *a, const char *v, struct balance_cli *c)
 {
 	char err[256];
 
-	/* one slot stays free for the default gyro noise */
-	if (c->o.nfaults == EV3SIM_MAX_FAULTS - 1)
-		return usage_error(a, "--fault: more than %s faults", "15");
+	if (c->o.nfaults == EV3SIM_MAX_FAULTS)
+		return usage_error(a, "--fault: more than %s faults", "16");
 	if (!ev3sim_fault_parse(v, 1, &c->o.faults[c->o.nfaults], err, sizeof(err)))
 		return usage_error(a, "--fault: %s", err);
 	c->o.nfaults++;
@@ -393,8 +372,7 @@ static int cmd_balance(struct args *a)
 {
 	struct balance_cli c = {
 		.o = { .seconds = 10.0, .seed = 1, .app = { .balancer = true, .logger_hz = 1000 },
-		       .start_tilt_deg = 0.5, .progress = true },
-		.gyro_noise = 0.3,
+		       .start_tilt_deg = 0.5, .gyro_noise_dps = 0.3, .progress = true },
 	};
 	struct ev3sim_balance_opts o;
 	struct ev3sim_balance_result r;
@@ -426,10 +404,6 @@ static int cmd_balance(struct args *a)
 	csv = c.csv;
 	plot = c.plot;
 	log_path = c.log_path;
-	/* the default gyro noise goes first: a gyro-noise fault overrides it */
-	memmove(&o.faults[1], &o.faults[0], o.nfaults * sizeof(o.faults[0]));
-	o.faults[0] = (struct ev3sim_fault_spec){ .target = EV3SIM_FAULT_GYRO_NOISE, .value = c.gyro_noise };
-	o.nfaults++;
 	if (plot && !ev3sim_have_gnuplot()) {
 		fprintf(stderr, "ev3sim balance: --plot needs gnuplot, which is not installed "
 			"(install gnuplot-nox: make deps)\n");
@@ -440,7 +414,7 @@ static int cmd_balance(struct args *a)
 	if (plot && !ev3sim_can_create(a->cmd, plot))
 		return EV3SIM_EXIT_FAIL;
 	series_path = csv;
-	if (csv && (o.series_out = open_out(a->cmd, csv)) == NULL)
+	if (csv && (o.series_out = ev3sim_open_output(a->cmd, csv)) == NULL)
 		return EV3SIM_EXIT_FAIL;
 	if (!csv && plot) {
 		fd = mkstemp(series_tmp);
@@ -452,7 +426,7 @@ static int cmd_balance(struct args *a)
 		}
 		series_path = series_tmp;
 	}
-	if (log_path && (o.log_out = open_out(a->cmd, log_path)) == NULL) {
+	if (log_path && (o.log_out = ev3sim_open_output(a->cmd, log_path)) == NULL) {
 		if (o.series_out)
 			fclose(o.series_out);
 		return EV3SIM_EXIT_FAIL;
@@ -467,9 +441,9 @@ static int cmd_balance(struct args *a)
 			unlink(series_tmp);
 		return EV3SIM_EXIT_FAIL;
 	}
-	if (o.log_out && !close_out(a->cmd, o.log_out, log_path))
+	if (o.log_out && !ev3sim_close_output(a->cmd, o.log_out, log_path))
 		status = EV3SIM_EXIT_FAIL;
-	if (o.series_out && !close_out(a->cmd, o.series_out, series_path))
+	if (o.series_out && !ev3sim_close_output(a->cmd, o.series_out, series_path))
 		status = EV3SIM_EXIT_FAIL;
 	if (r.trace_failed) {
 		fprintf(stderr, "ev3sim balance: cannot write %s completely\n", o.trace_path);
@@ -490,8 +464,6 @@ static int cmd_balance(struct args *a)
 		unlink(series_tmp);
 	ev3sim_balance_summary(&o, &r, line, sizeof(line));
 	printf("%s\n", line);
-	if (fflush(stdout) != 0 || ferror(stdout))
-		status = EV3SIM_EXIT_FAIL;
 	return status;
 }
 
@@ -610,12 +582,12 @@ int ev3sim_main(int argc, char **argv)
 	}
 	if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
 		fputs(main_usage, stdout);
-		return EV3SIM_EXIT_OK;
+		return ev3sim_finish_stdout(NULL, EV3SIM_EXIT_OK);
 	}
 	for (size_t i = 0; i < sizeof(cmds) / sizeof(cmds[0]); i++) {
 		if (strcmp(argv[1], cmds[i].name) == 0) {
 			a.cmd = cmds[i].name;
-			return cmds[i].run(&a);
+			return ev3sim_finish_stdout(a.cmd, cmds[i].run(&a));
 		}
 	}
 	fprintf(stderr, "ev3sim: unknown command '%s'\n\n%s", argv[1], main_usage);

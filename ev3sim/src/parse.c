@@ -1,5 +1,5 @@
 /*
- * parse.c — strict value parsers for the command line, and the output check (parse.h).
+ * parse.c — strict value parsers for the command line (parse.h).
  */
 #include <errno.h>
 #include <math.h>
@@ -86,17 +86,5 @@ bool ev3sim_parse_input_port(const char *s, unsigned *port)
 	if (s == NULL || s[0] < '1' || s[0] > '4' || s[1] != '\0')
 		return false;
 	*port = (unsigned)(s[0] - '1');
-	return true;
-}
-
-bool ev3sim_can_create(const char *cmd, const char *path)
-{
-	FILE *f = path && *path ? fopen(path, "w") : NULL;
-
-	if (f == NULL || fclose(f) != 0) {
-		fprintf(stderr, "ev3sim %s: cannot write %s: %s\n", cmd, path ? path : "(null)",
-			path && *path ? strerror(errno) : "empty path");
-		return false;
-	}
 	return true;
 }

@@ -8,7 +8,6 @@
 #include "rtos_host.h"
 #include "host_sim/scenario.h"
 #include "host_sim/devices/ev3_brick.h"
-#include "host_sim/devices/ev3_speaker.h"
 #include "host_sim/devices/ev3_lcd.h"
 #include "host_sim/devices/ev3_ui.h"
 #include "host_sim/devices/uart_sensor.h"
@@ -16,6 +15,7 @@
 #include "ev3sim/balance_run.h"
 #include "ev3sim/run.h"
 #include "ev3sim/tribot.h"
+#include "ev3sim/wav_out.h"
 
 ER (*ev3sim_lcd_png_writer)(const char *path);
 const struct ev3sim_lcd_video *ev3sim_lcd_video;
@@ -394,7 +394,9 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	uint64_t end;
 	double wall0;
 	ER ercd, shutdown;
-	bool lcd_failed = false;
+	bool lcd_failed = false;    /* the video */
+	bool png_failed = false;
+	char audio_err[256];
 
 	memset(r, 0, sizeof(*r));
 	if (app == NULL || !(o->seconds > 0 && o->seconds <= EV3SIM_MAX_SECONDS) ||
@@ -426,12 +428,10 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		return E_SYS;
 	}
 	rtos_host_trace_set_source_sink("syslog", trace_sink, NULL);
-	if (o->audio_path)
-		(void)ev3_speaker_record();
 	if (o->quiet)
 		ev3sim_quiet_console();
-	ercd = plug_in(o);
-	if (ercd != E_OK)
+	ercd = o->audio_path ? ev3sim_wav_begin(o->audio_path, err, errlen) : E_OK;
+	if (ercd == E_OK && (ercd = plug_in(o)) != E_OK)
 		snprintf(err, errlen, "cannot plug the devices in (%d)", (int)ercd);
 	if (ercd == E_OK)
 		ercd = schedule(o, err, errlen);
@@ -439,6 +439,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		snprintf(err, errlen, "the %s's devices are not all plugged in (%d)",
 			 ev3sim_robot_name(o->robot), (int)ercd);
 	if (ercd != E_OK) {
+		(void)ev3sim_wav_end(audio_err, sizeof(audio_err));
 		(void)iact_tsk(POWER_OFF_TSKID);
 		hs_sim_run_for(DRAIN_NS);
 		rtos_host_trace_set_sink(NULL, NULL);
@@ -474,7 +475,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	r->seconds = rtos_host_now() * 1e-9;
 	r->bugs = rtos_host_bug_count();
 	r->wall_s = ev3sim_wall_seconds() - wall0;
-	if (o->audio_path && ev3_speaker_write_wav(o->audio_path) != E_OK)
+	if (ev3sim_wav_end(audio_err, sizeof(audio_err)) != E_OK)
 		ercd = E_SYS;
 	if (o->lcd_path) {
 		static uint8_t px[EV3_LCD_PANEL_HEIGHT][EV3_LCD_PANEL_WIDTH];
@@ -485,7 +486,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 			for (unsigned x = 0; x < EV3_LCD_PANEL_WIDTH; x++)
 				r->lcd_dark += px[y][x];
 		if (!ev3sim_lcd_png_writer || ev3sim_lcd_png_writer(o->lcd_path) != E_OK)
-			lcd_failed = true;
+			png_failed = true;
 	}
 	(void)iact_tsk(POWER_OFF_TSKID);
 	hs_sim_run_for(DRAIN_NS);
@@ -497,11 +498,11 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		return E_SYS;
 	}
 	if (ercd != E_OK) {
-		snprintf(err, errlen, "cannot write %s completely", o->audio_path);
+		snprintf(err, errlen, "%s", audio_err);
 		return E_SYS;
 	}
-	if (lcd_failed) {
-		snprintf(err, errlen, "cannot write %s", o->lcd_path ? o->lcd_path : o->lcd_video_path);
+	if (png_failed || lcd_failed) {
+		snprintf(err, errlen, "cannot write %s", png_failed ? o->lcd_path : o->lcd_video_path);
 		return E_SYS;
 	}
 	return E_OK;

@@ -13,7 +13,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "t_syslog.h"
+#include "ev3sim/brick_io.h"
 #include "ev3sim/cli.h"
+#include "ev3sim/output.h"
 #include "ev3sim/parse.h"
 #include "ev3sim/balance_run.h"
 #include "ev3sim/run.h"
@@ -184,9 +186,7 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 			return EV3SIM_EXIT_FAIL;
 		o->trace_path = v;
 	} else if (strcmp(name, "--audio") == 0) {
-		if (!ev3sim_can_create("run", v))
-			return EV3SIM_EXIT_FAIL;
-		o->audio_path = v;
+		o->audio_path = v;     /* streamed: opened at the boot (wav_out.h) */
 	} else if (strcmp(name, "--lcd") == 0) {
 		if (!ev3sim_lcd_png_writer)
 			return usage("%s: this program has no PNG writer", "--lcd");
@@ -229,7 +229,7 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 	for (int i = 1; i < argc; i++) {
 		if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
 			fputs(run_usage, stdout);
-			return EV3SIM_EXIT_OK;
+			return ev3sim_finish_stdout("run", EV3SIM_EXIT_OK);
 		}
 		if (strcmp(argv[i], "--robot") == 0 && i + 1 < argc && !ev3sim_robot_parse(argv[i + 1], &robot))
 			return usage("--robot: bad value '%s' (bare, gyroboy or tribot)", argv[i + 1]);
@@ -263,10 +263,8 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 		if (st != EV3SIM_EXIT_OK)
 			return st;
 	}
-	if (csv_path && (o.csv = fopen(csv_path, "w")) == NULL) {
-		fprintf(stderr, "ev3sim run: cannot write %s\n", csv_path);
+	if (csv_path && (o.csv = ev3sim_open_output("run", csv_path)) == NULL)
 		return EV3SIM_EXIT_FAIL;
-	}
 	o.quiet = quiet;
 	if (ev3sim_run(&o, app, &r, err, sizeof(err)) != E_OK) {
 		fprintf(stderr, "ev3sim run: %s\n", err);
@@ -275,12 +273,14 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 		ev3sim_run_summary(&o, &r, line, sizeof(line));
 		printf("%s\n", line);
 	}
-	if (o.csv && fclose(o.csv) != 0) {
-		fprintf(stderr, "ev3sim run: cannot write %s\n", csv_path);
+	if (o.serial_path && brick_io_serial_write_errno() != 0) {
+		fprintf(stderr, "ev3sim run: cannot write --serial %s: %s\n", o.serial_path,
+			strerror(brick_io_serial_write_errno()));
 		status = EV3SIM_EXIT_FAIL;
 	}
-	fflush(stdout);
-	return status;
+	if (o.csv && !ev3sim_close_output("run", o.csv, csv_path))
+		status = EV3SIM_EXIT_FAIL;
+	return ev3sim_finish_stdout("run", status);
 }
 
 /* The source tree: ev3sim is build/host/ev3sim in it. */
@@ -305,7 +305,7 @@ static bool source_root(char *root, size_t len)
 	return true;
 }
 
-/* Runs argv to its end; its exit status, or -1. */
+/* Runs argv to its end, its output on stderr (stdout is the run's); its exit status, or -1. */
 static int run_program(char *const argv[])
 {
 	int wstatus;
@@ -314,6 +314,8 @@ static int run_program(char *const argv[])
 	if (pid < 0)
 		return -1;
 	if (pid == 0) {
+		if (dup2(STDERR_FILENO, STDOUT_FILENO) < 0)
+			_exit(127);
 		execvp(argv[0], argv);
 		_exit(127);
 	}
@@ -332,7 +334,7 @@ int ev3sim_run_command(int argc, char **argv)
 
 	if (argc < 1 || strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0) {
 		fputs(run_usage, argc < 1 ? stderr : stdout);
-		return argc < 1 ? EV3SIM_EXIT_USAGE : EV3SIM_EXIT_OK;
+		return argc < 1 ? EV3SIM_EXIT_USAGE : ev3sim_finish_stdout("run", EV3SIM_EXIT_OK);
 	}
 	if (realpath(argv[0], app) == NULL || stat(app, &st) != 0 || !S_ISDIR(st.st_mode))
 		return usage("'%s' is not an application directory", argv[0]);

@@ -38,7 +38,6 @@
 #define OFFSET_TRACKING     0.0005f   /* per period: a time constant of 8 s */
 #define WHEEL_RATE_WINDOW   5         /* periods the wheel rate is averaged over */
 #define FALLEN_DEG          40.0f
-#define BLOCKED_US          200U      /* an API call longer than this waited somewhere */
 
 struct gyroboy_params gyroboy_params = { true, 0, false };
 struct gyroboy_stats gyroboy_stats;
@@ -53,16 +52,73 @@ static uint32_t step_release;       /* the release the pending step answers (0 =
 static uint32_t logger_phase;       /* logger rate accumulator, in Hz-milliseconds */
 static FILE *serial;
 
-/* Counts a failed call of the control step, and one that took longer than BLOCKED_US. */
-static void count_call(ER ercd, SYSUTM since)
+/*
+ * The timing of every API call while balancing, in every task: a call
+ * longer than GYROBOY_BLOCKED_US (a sensor waiting for its data, a driver's lock)
+ * can make the 4 ms control step late.  A call's start is kept in the
+ * counters until it returns, so a launcher can see one that never does.
+ */
+static SYSUTM call_begin(unsigned task)
+{
+	SYSUTM t0;
+
+	get_utm(&t0);
+	gyroboy_stats.call_since_us[task] = t0;
+	return t0;
+}
+
+/* The end of task's call begun at since: counts a failure (ercd) and a block. */
+static void call_end(unsigned task, ER ercd, SYSUTM since)
 {
 	SYSUTM now;
 
 	get_utm(&now);
+	gyroboy_stats.call_since_us[task] = 0;
 	if (ercd != E_OK)
 		gyroboy_stats.api_errors++;
-	if (now - since > BLOCKED_US)
+	if (now - since > GYROBOY_BLOCKED_US)
 		gyroboy_stats.api_blocked++;
+	if (now - since > gyroboy_stats.max_api_call_us)
+		gyroboy_stats.max_api_call_us = (uint32_t)(now - since);
+}
+
+/* The gyro's rate, read by task. */
+static int16_t gyro_rate(unsigned task)
+{
+	SYSUTM t0 = call_begin(task);
+	int16_t rate = ev3_gyro_sensor_get_rate(GYRO);
+
+	call_end(task, E_OK, t0);
+	return rate;
+}
+
+/* A motor's counts, read by the balance task. */
+static int32_t motor_counts(motor_port_t port)
+{
+	SYSUTM t0 = call_begin(GYROBOY_IN_BALANCE);
+	int32_t counts = ev3_motor_get_counts(port);
+
+	call_end(GYROBOY_IN_BALANCE, E_OK, t0);
+	return counts;
+}
+
+/* A power for a motor, set by the balance task. */
+static void set_power(motor_port_t port, int power)
+{
+	SYSUTM t0 = call_begin(GYROBOY_IN_BALANCE);
+	ER ercd = ev3_motor_set_power(port, power);
+
+	call_end(GYROBOY_IN_BALANCE, ercd, t0);
+}
+
+/* Whether BACK is pressed, asked by the main task. */
+static bool_t back_pressed(void)
+{
+	SYSUTM t0 = call_begin(GYROBOY_IN_MAIN);
+	bool_t pressed = ev3_button_is_pressed(BACK_BUTTON);
+
+	call_end(GYROBOY_IN_MAIN, E_OK, t0);
+	return pressed;
 }
 
 void main_task(intptr_t exinf)
@@ -107,7 +163,7 @@ void main_task(intptr_t exinf)
 	if (gyroboy_params.balancer)
 		ev3_sta_cyc(BALANCE_CYC);
 
-	while (!fallen && !ev3_button_is_pressed(BACK_BUTTON))
+	while (!fallen && !back_pressed())
 		tslp_tsk(10);
 	ev3_stp_cyc(BALANCE_CYC);
 	ev3_stp_cyc(LOGGER_CYC);
@@ -144,7 +200,7 @@ void balance_task(intptr_t exinf)
 	const float dt = BALANCE_PERIOD_MS / 1000.0f;
 	/* the nominal release of this step: the cyclic's period from the first one */
 	SYSUTM release = first_release_us + step_release * BALANCE_PERIOD_MS * 1000U;
-	SYSUTM start, t0;
+	SYSUTM start;
 	float rate, wheel, wheel_rate, u;
 	int power;
 
@@ -155,8 +211,8 @@ void balance_task(intptr_t exinf)
 		gyroboy_stats.late_starts++;
 		gyroboy_stats.deadline_misses++;
 	}
-	rate = ev3_gyro_sensor_get_rate(GYRO);
-	wheel = (ev3_motor_get_counts(LEFT_MOTOR) + ev3_motor_get_counts(RIGHT_MOTOR)) / 2.0f;
+	rate = gyro_rate(GYROBOY_IN_BALANCE);
+	wheel = (motor_counts(LEFT_MOTOR) + motor_counts(RIGHT_MOTOR)) / 2.0f;
 
 	gyro_offset += OFFSET_TRACKING * (rate - gyro_offset);
 	rate -= gyro_offset;
@@ -177,10 +233,8 @@ void balance_task(intptr_t exinf)
 	else if (u < -100.0f)
 		u = -100.0f;
 	power = (int)(u + (u < 0 ? -0.5f : 0.5f));
-	get_utm(&t0);
-	count_call(ev3_motor_set_power(LEFT_MOTOR, power), t0);
-	get_utm(&t0);
-	count_call(ev3_motor_set_power(RIGHT_MOTOR, power), t0);
+	set_power(LEFT_MOTOR, power);
+	set_power(RIGHT_MOTOR, power);
 	if (tilt > FALLEN_DEG || tilt < -FALLEN_DEG)
 		fallen = true;
 	gyroboy_stats.power = power;
@@ -205,12 +259,15 @@ void logger_cyc(intptr_t exinf)
 void logger_task(intptr_t exinf)
 {
 	SYSTIM now;
+	int16_t rate;
 
 	for (;;) {
 		if (slp_tsk() != E_OK)
 			continue;
 		get_tim(&now);
-		if (fprintf(serial, "%lu,%d,%ld\r\n", (unsigned long)now, ev3_gyro_sensor_get_rate(GYRO),
+		rate = gyro_rate(GYROBOY_IN_LOGGER);
+		/* the serial port's own wait (a polled UART, ~1 ms a line) is the logger's CPU time, not a block */
+		if (fprintf(serial, "%lu,%d,%ld\r\n", (unsigned long)now, rate,
 			    (long)(gyroboy_stats.tilt_est_deg * 100.0f)) > 0 && fflush(serial) == 0)
 			gyroboy_stats.logger_lines++;
 	}

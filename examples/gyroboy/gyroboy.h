@@ -19,7 +19,13 @@ extern "C" {
 /* A control step that starts later than this after its release misses its deadline. */
 #define START_BOUND_US    1000U
 
+/* An API call longer than this waited somewhere: it is counted as blocked. */
+#define GYROBOY_BLOCKED_US 200U
+
 #ifndef TOPPERS_MACRO_ONLY
+
+/* The app's tasks, as its call timing counts them. */
+enum { GYROBOY_IN_MAIN, GYROBOY_IN_BALANCE, GYROBOY_IN_LOGGER, GYROBOY_TASKS };
 
 /* What the app does: its defaults, which a launcher may set before it starts. */
 struct gyroboy_params {
@@ -40,8 +46,11 @@ struct gyroboy_stats {
 	uint32_t overlaps;          /* released while the previous step was unfinished */
 	uint32_t late_starts;       /* started more than START_BOUND_US after the release */
 	uint32_t max_start_delay_us;
-	uint32_t api_errors;        /* API calls of the control step that failed */
-	uint32_t api_blocked;       /* API calls of the control step that took over 200 us */
+	uint32_t api_errors;        /* API calls while balancing that failed (motor commands: the
+	                             * EV3RT reads return 0 on an error, which the app cannot tell) */
+	uint32_t api_blocked;       /* API calls while balancing, in any task, that took over 200 us */
+	uint32_t max_api_call_us;   /* the longest of those calls */
+	uint64_t call_since_us[GYROBOY_TASKS];  /* start of the call each task is in (get_utm), 0: none */
 	uint32_t logger_lines;      /* lines written to the serial port */
 	uint32_t logger_skipped;    /* logger periods lost because it was still busy */
 };

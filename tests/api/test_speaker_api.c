@@ -149,10 +149,54 @@ static void play_file(void)
 	is_int(ev3_speaker_play_file(NULL, 10), E_PAR, "no file: E_PAR");
 }
 
+/* What a streamed recording's sink was handed. */
+static struct {
+	uint64_t samples, high;     /* samples, and the sum of their levels */
+	size_t largest;             /* the largest block */
+} streamed;
+
+static void count_sink(const int16_t *s, size_t n, void *ctx)
+{
+	(void)ctx;
+	streamed.samples += n;
+	if (n > streamed.largest)
+		streamed.largest = n;
+	for (size_t i = 0; i < n; i++)
+		streamed.high += (uint64_t)s[i];
+}
+
+/* A streamed recording: a second at a time to the sink while the tone plays, a second at most held. */
+static void stream(void)
+{
+	const int16_t *s;
+	size_t held;
+
+	memset(&streamed, 0, sizeof(streamed));
+	is_int(ev3_speaker_record_to(count_sink, NULL), E_OK, "a streamed recording");
+	is_int(ev3_speaker_set_volume(60), E_OK, "volume 60");
+	is_int(ev3_speaker_play_tone(1000, SOUND_MANUAL_STOP), E_OK, "1 kHz until stopped");
+	dly_tsk(3500);
+	held = ev3_speaker_samples(&s);
+	ok(streamed.samples >= 3 * EV3_SPEAKER_RATE && streamed.largest <= EV3_SPEAKER_RATE,
+	   "after 3.5 s the sink had 3 s in blocks of at most a second (%llu samples, largest block %zu)",
+	   (unsigned long long)streamed.samples, streamed.largest);
+	ok(held < EV3_SPEAKER_RATE, "and only the unfinished second is held (%zu samples)", held);
+	is_int(ev3_speaker_stop(), E_OK, "stopped");
+	ev3_speaker_flush();
+	in_range((double)streamed.samples, 3.5 * EV3_SPEAKER_RATE, 3.5 * EV3_SPEAKER_RATE + 32,
+		 "the flush hands over the rest: 3.5 s (%llu samples)", (unsigned long long)streamed.samples);
+	/* volume 60: 30 % duty over the 3.5 s the tone played */
+	in_range((double)streamed.high / EV3_SPEAKER_FULL / EV3_SPEAKER_RATE, 0.3 * 3.5 * 0.99, 0.3 * 3.5 * 1.01,
+		 "the levels: 30 %% high for 3.5 s");
+	is_int(ev3_speaker_samples(&s), 0, "nothing held after the flush");
+	(void)ev3_speaker_record();
+}
+
 int main(void)
 {
-	tap_plan(27);
+	tap_plan(27 + 10);
 	ok(at_run(NULL, body, 17, 10), "the application finished");
 	ok(at_run(NULL, play_file, 18, 10), "the play_file application finished");
+	ok(at_run(NULL, stream, 9, 10), "the streaming application finished");
 	return tap_done();
 }

@@ -46,7 +46,9 @@ static void test_upright(void)
 	ok(et_number(line, "max_tilt_deg") < 3.0, "it stays near vertical (max %g deg)",
 	   et_number(line, "max_tilt_deg"));
 	is_int(et_number(line, "api_errors"), 0, "no API call failed");
-	is_int(et_number(line, "api_blocked"), 0, "no API call of the balance task blocked");
+	is_int(et_number(line, "api_blocked"), 0, "no API call blocked while balancing");
+	ok(et_number(line, "max_api_call_us") >= 0 && et_number(line, "max_api_call_us") < 200,
+	   "the longest took %g us", et_number(line, "max_api_call_us"));
 	is_int(et_number(line, "bugs"), 0, "no bug reports from the stack");
 	ok(strstr(line, " sim_speed=") != NULL && line[strlen(line) - 1] == 'x', "sim_speed comes last");
 }
@@ -159,15 +161,32 @@ static void test_wheel_unplug(void)
 	   "an empty output port may be unplugged: %s", line);
 }
 
+/* The gyro unplugged for 100 ms while balancing: its reads wait for the reconnection (the
+ * 2.4 s handshake at 2400 baud) in the balance and logger tasks, and the summary says so. */
+static void test_blocked_sensor(void)
+{
+	const char *args[] = { "balance", "--seconds", "5", "--fault", "unplug:2:1s:100ms", "--no-progress", NULL };
+	char line[1024];
+
+	ok(et_run(&run, args) && run.status == 0, "balance with the gyro unplugged for 100 ms");
+	et_last_line(&run, line, sizeof(line));
+	tap_diag("%s", line);
+	ok(et_number(line, "api_blocked") >= 1, "the blocked gyro reads are counted (api_blocked=%g)",
+	   et_number(line, "api_blocked"));
+	ok(et_number(line, "max_api_call_us") > 100000, "the longest wait (still waiting when the robot fell) is in the summary (%g us)",
+	   et_number(line, "max_api_call_us"));
+}
+
 int main(void)
 {
-	tap_plan(44);
+	tap_plan(44 + 1 + 3);
 	test_upright();
 	test_push();
 	test_negative_control();
 	test_ablation();
 	test_drift_and_faults();
 	test_determinism();
+	test_blocked_sensor();
 	test_wheel_unplug();
 	return tap_done();
 }

@@ -5,6 +5,8 @@
  * log, VCD, PNG when gnuplot is installed).
  */
 #include "ev3sim_test.h"
+#include <sys/stat.h>
+#include "ev3sim/balance_run.h"
 #include "ev3sim/plot.h"
 
 static struct et_run run;
@@ -239,9 +241,127 @@ static void test_output_errors(void)
 	}
 }
 
+/* Standard output on a full disk: every command reports it and fails, with or without a run. */
+static void test_stdout_full(void)
+{
+	static const char *const cmds[][8] = {
+		{ "--help", NULL },
+		{ "balance", "--help", NULL },
+		{ "motor", "--seconds", "0.2", NULL },
+		{ "sensors", "--seconds", "0.2", NULL },
+		{ "balance", "--seconds", "0.2", "--no-progress", NULL },
+	};
+
+	for (unsigned i = 0; i < sizeof(cmds) / sizeof(cmds[0]); i++) {
+		ok(et_run_main(&run, cmds[i], ev3sim_main, "/dev/full") && run.status == 1 &&
+		   strstr(run.err, "cannot write the standard output: No space left on device"),
+		   "ev3sim %s %s > /dev/full: status 1, the lost output named", cmds[i][0], cmds[i][1]);
+		if (run.status != 1)
+			tap_diag("status %d, stderr: %s", run.status, run.err);
+		ok(strstr(run.err, "standard output") == strrchr(run.err, '\n') - strlen("standard output: No space left "
+		   "on device"), "reported once");
+	}
+}
+
+/* A FIFO nobody reads is refused at once (it would block the open for ever); one with a reader
+ * takes the CSV as it streams; an output written later by name refuses a FIFO before the run. */
+static void test_fifo_outputs(void)
+{
+	static const char *const streamed[] = { "--csv", "--log" };
+	static const char *const by_name[] = { "--trace", "--plot" };
+	char dir[] = "/tmp/ev3sim-fifo-XXXXXX", fifo[64];
+	int fds[2];
+
+	if (!mkdtemp(dir)) {
+		tap_skip(2 * 2 + 2 * 2 + 3, "no temporary directory");
+		return;
+	}
+	snprintf(fifo, sizeof(fifo), "%s/fifo", dir);
+	if (mkfifo(fifo, 0600) != 0) {
+		tap_skip(2 * 2 + 2 * 2 + 3, "cannot make a FIFO");
+		rmdir(dir);
+		return;
+	}
+	for (unsigned i = 0; i < 2; i++) {
+		const char *args[] = { "balance", "--seconds", "0.2", streamed[i], fifo, NULL };
+
+		ok(et_run(&run, args) && run.status == 1 && strstr(run.err, "a FIFO no process is reading"),
+		   "%s to a FIFO without a reader: refused at once, status 1", streamed[i]);
+		if (run.status != 1)
+			tap_diag("status %d, stderr: %s", run.status, run.err);
+		ok(strstr(run.err, fifo) != NULL && run.out[0] == '\0', "%s: the message names the FIFO", streamed[i]);
+	}
+	for (unsigned i = 0; i < 2; i++) {
+		const char *args[] = { "balance", "--seconds", "0.2", by_name[i], fifo, NULL };
+
+		if (!strcmp(by_name[i], "--plot") && !ev3sim_have_gnuplot()) {
+			tap_skip(2, "gnuplot is not installed");
+			continue;
+		}
+		ok(et_run(&run, args) && run.status == 1 && strstr(run.err, "cannot write") &&
+		   strstr(run.err, ": a FIFO ("), "%s to a FIFO: refused before the run, status 1", by_name[i]);
+		ok(strstr(run.err, fifo) != NULL && run.out[0] == '\0', "%s: the message names the FIFO", by_name[i]);
+	}
+	/* a reader: a child counting the CSV's lines */
+	if (pipe(fds) == 0) {
+		const char *args[] = { "balance", "--seconds", "0.2", "--csv", fifo, "--no-progress", NULL };
+		pid_t reader = fork();
+
+		if (reader == 0) {
+			FILE *in = fopen(fifo, "r");
+			unsigned lines = 0;
+			int c;
+
+			while (in && (c = getc(in)) != EOF)
+				lines += c == '\n';
+			if (write(fds[1], &lines, sizeof(lines)) != sizeof(lines))
+				_exit(1);
+			_exit(0);
+		}
+		{
+			unsigned lines = 0;
+
+			ok(et_run(&run, args) && run.status == 0, "--csv to a FIFO with a reader: the run is done");
+			ok(read(fds[0], &lines, sizeof(lines)) == sizeof(lines) && lines == 1 + 201,
+			   "the reader got the header and 201 rows (%u lines)", lines);
+			ok(waitpid(reader, NULL, 0) == reader, "the reader saw the end");
+		}
+		close(fds[0]);
+		close(fds[1]);
+	} else {
+		tap_skip(3, "no pipe");
+	}
+	unlink(fifo);
+	rmdir(dir);
+}
+
+/* --fault as often as the help says ("up to 16"), and once more refused. */
+static void test_fault_limit(void)
+{
+	const char *help[] = { "balance", "--help", NULL };
+	const char *args[64] = { "balance", "--seconds", "0.01", "--logger-hz", "0", "--no-progress" };
+	unsigned n = 6;
+
+	et_run(&run, help);
+	ok(strstr(run.out, "may repeat (up to 16)") != NULL, "balance --help: --fault may repeat up to 16 times");
+	for (unsigned i = 0; i < EV3SIM_MAX_FAULTS; i++) {
+		args[n++] = "--fault";
+		args[n++] = "gyro-drift:0.1";
+	}
+	args[n] = NULL;
+	ok(et_run(&run, args) && run.status == 0, "16 faults are accepted");
+	if (run.status != 0)
+		tap_diag("status %d, stderr: %s", run.status, run.err);
+	args[n++] = "--fault";
+	args[n++] = "gyro-drift:0.1";
+	args[n] = NULL;
+	ok(et_run(&run, args) && run.status == 2 && strstr(run.err, "--fault: more than 16 faults"),
+	   "the 17th is refused, naming the limit");
+}
+
 int main(void)
 {
-	tap_plan(5 + 29 * 2 + 9 + 10 + 5 + 8 + 4 * 4 + 2);
+	tap_plan(5 + 29 * 2 + 9 + 10 + 5 + 8 + 4 * 4 + 2 + 3 + 5 * 2 + 2 * 2 + 2 * 2 + 3);
 	test_help();
 	test_bad_input();
 	test_motor();
@@ -249,5 +369,8 @@ int main(void)
 	test_nxt_iic_sensors();
 	test_files();
 	test_output_errors();
+	test_fault_limit();
+	test_stdout_full();
+	test_fifo_outputs();
 	return tap_done();
 }

@@ -36,9 +36,14 @@ static inline void et_slurp(FILE *f, char *buf, size_t len)
 	buf[n] = '\0';
 }
 
-/* Runs `ev3sim argv...` (argv NULL-terminated, without the program name) in
- * a child process; false if the child could not be run. */
-static inline bool et_run(struct et_run *r, const char *const *args)
+/* A hung child is killed after this long (the test then fails instead of hanging). */
+#define ET_HANG_S 300
+
+/* Runs main_fn(argc, argv) with args (NULL-terminated, without the program
+ * name) in a child process, its stdout to stdout_path (NULL: captured in
+ * r->out); false if the child could not be run. */
+static inline bool et_run_main(struct et_run *r, const char *const *args, int (*main_fn)(int, char **),
+			       const char *stdout_path)
 {
 	char *argv[64];
 	int argc = 0, wstatus = 0;
@@ -58,11 +63,15 @@ static inline bool et_run(struct et_run *r, const char *const *args)
 	if (pid < 0)
 		return false;
 	if (pid == 0) {
+		FILE *to = stdout_path ? fopen(stdout_path, "w") : out;
 		int status;
 
-		dup2(fileno(out), STDOUT_FILENO);
+		if (to == NULL)
+			_exit(126);
+		alarm(ET_HANG_S);
+		dup2(fileno(to), STDOUT_FILENO);
 		dup2(fileno(err), STDERR_FILENO);
-		status = ev3sim_main(argc, argv);
+		status = main_fn(argc, argv);
 		fflush(NULL);
 		_exit(status);
 	}
@@ -75,6 +84,13 @@ static inline bool et_run(struct et_run *r, const char *const *args)
 	fclose(out);
 	fclose(err);
 	return true;
+}
+
+/* Runs `ev3sim argv...` (argv NULL-terminated, without the program name) in
+ * a child process; false if the child could not be run. */
+static inline bool et_run(struct et_run *r, const char *const *args)
+{
+	return et_run_main(r, args, ev3sim_main, NULL);
 }
 
 /* The last line of the output (the summary), without its newline. */

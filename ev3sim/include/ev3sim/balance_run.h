@@ -38,6 +38,7 @@ struct ev3sim_balance_stats {
 	uint32_t releases, runs, deadline_misses, overlaps, late_starts;
 	uint64_t max_start_delay_ns;
 	uint32_t api_errors, api_blocked, logger_lines, logger_skipped;
+	uint32_t max_api_call_us;   /* the longest API call while balancing, any task */
 	uint32_t gyro_frames;       /* valid DATA frames */
 	uint32_t gyro_check_errors; /* losses of sync on a bad check byte */
 	uint32_t gyro_size_errors;  /* losses of sync on a header of impossible length */
@@ -53,6 +54,7 @@ struct ev3sim_balance_opts {
 	struct ev3sim_balance_cfg app;
 	uint32_t log_baud;          /* 0: SERIAL_LOG_DEFAULT_BAUD */
 	double start_tilt_deg;
+	double gyro_noise_dps;      /* the gyro's sample noise (a gyro-noise fault overrides it) */
 	struct ev3sim_push pushes[EV3SIM_MAX_PUSHES];   /* t_ns from the release */
 	unsigned npushes;
 	struct ev3sim_fault_spec faults[EV3SIM_MAX_FAULTS];

@@ -30,6 +30,25 @@ ER brick_io_setup(const char *sd_dir, const char *serial_path, char *err, size_t
  * port's time as on the brick. */
 void brick_io_serial_to_uart(void);
 
+/* The errno of the first write to the serial port's host file that failed
+ * since brick_io_setup (the app saw E_OBJ), 0 if none did; kept after the
+ * teardown, so that the command line can report it. */
+int brick_io_serial_write_errno(void);
+
+/* How brick_io_card_path treats the path's last component. */
+enum brick_io_card_use {
+	BRICK_IO_CARD_EXISTING,     /* followed, and must exist (stat, opendir, reading) */
+	BRICK_IO_CARD_CREATE,       /* followed if it exists, else a new name in an existing directory */
+	BRICK_IO_CARD_ENTRY,        /* the entry itself, not followed (mkdir, remove, rename) */
+};
+
+/* The host path (malloc'd) of an app's card path, absolute or relative to
+ * the card's root as EV3RT's FatFs sees both: E_OK; E_OBJ without a card;
+ * E_PAR for an empty or too long path, a ".." above the root or a symbolic
+ * link out of the card; E_NOEXS if it (or its directory) is not there;
+ * E_NOMEM. */
+ER brick_io_card_path(const char *path, enum brick_io_card_use use, char **host);
+
 /* Closes what brick_io_setup opened (directories the app left open too). */
 void brick_io_teardown(void);
 

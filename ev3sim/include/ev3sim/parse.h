@@ -20,9 +20,5 @@ bool ev3sim_parse_time(const char *s, uint64_t *ns);
 bool ev3sim_parse_output_port(const char *s, unsigned *port);
 /* An input port "1".."4" as 0..3. */
 bool ev3sim_parse_input_port(const char *s, unsigned *port);
-/* Whether an output file can be created at path (it is created, empty); if not,
- * says so on stderr as "ev3sim CMD: cannot write PATH: reason".  Outputs are
- * checked before a run, so that an hour of simulation is not lost at its end. */
-bool ev3sim_can_create(const char *cmd, const char *path);
 
 #endif /* EV3SIM_PARSE_H */

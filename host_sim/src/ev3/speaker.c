@@ -9,7 +9,6 @@
  * exactly over each sample period, so nothing is sampled between changes.
  */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "host_sim/clock.h"
@@ -31,8 +30,11 @@ static struct {
 	uint64_t rec_t0;            /* start of sample 0, ns */
 	uint64_t done_ns;           /* rendered up to here */
 	double acc;                 /* high time in the open sample, ns */
-	int16_t *buf;
+	uint64_t total;             /* samples rendered since the start */
+	int16_t *buf;               /* the samples not handed to the sink */
 	size_t n, cap;
+	ev3_speaker_sink_t sink;    /* NULL: the whole recording stays in buf */
+	void *sink_ctx;
 } spk;
 
 /* High time of the current piece between a and b (ns from its phase origin). */
@@ -54,8 +56,19 @@ static double high_ns(double a, double b)
 	}
 }
 
+/* Hands the held samples to the sink. */
+static void drain(void)
+{
+	if (spk.sink && spk.n > 0)
+		spk.sink(spk.buf, spk.n, spk.sink_ctx);
+	spk.n = 0;
+}
+
+/* Appends one sample of high ns; false if out of memory. */
 static bool push(double high)
 {
+	if (spk.sink && spk.n == EV3_SPEAKER_RATE)
+		drain();
 	if (spk.n == spk.cap) {
 		size_t cap = spk.cap ? 2 * spk.cap : EV3_SPEAKER_RATE;
 		int16_t *b = realloc(spk.buf, cap * sizeof(*b));
@@ -66,6 +79,7 @@ static bool push(double high)
 		spk.cap = cap;
 	}
 	spk.buf[spk.n++] = (int16_t)lround(fmin(fmax(high / SAMPLE_NS, 0), 1) * EV3_SPEAKER_FULL);
+	spk.total++;
 	return true;
 }
 
@@ -75,7 +89,7 @@ static void render(void)
 	uint64_t now = hs_now();
 
 	while (spk.recording && spk.done_ns < now) {
-		uint64_t end = spk.rec_t0 + (uint64_t)llround((double)(spk.n + 1) * SAMPLE_NS);
+		uint64_t end = spk.rec_t0 + (uint64_t)llround((double)(spk.total + 1) * SAMPLE_NS);
 		uint64_t stop = end < now ? end : now;
 
 		spk.acc += high_ns((double)(spk.done_ns - spk.t0), (double)(stop - spk.t0));
@@ -112,16 +126,31 @@ static void amp_changed(void *ctx, unsigned pin, const struct hs_pin_state *st)
 	piece_changed();
 }
 
-ER ev3_speaker_record(void)
+ER ev3_speaker_record_to(ev3_speaker_sink_t sink, void *ctx)
 {
 	if (!spk.ready)
 		return E_OBJ;
 	render();
+	drain();
 	spk.n = 0;
+	spk.total = 0;
 	spk.acc = 0;
+	spk.sink = sink;
+	spk.sink_ctx = ctx;
 	spk.rec_t0 = spk.done_ns = hs_now();
 	spk.recording = true;
 	return E_OK;
+}
+
+ER ev3_speaker_record(void)
+{
+	return ev3_speaker_record_to(NULL, NULL);
+}
+
+void ev3_speaker_flush(void)
+{
+	render();
+	drain();
 }
 
 size_t ev3_speaker_samples(const int16_t **samples)
@@ -134,45 +163,6 @@ size_t ev3_speaker_samples(const int16_t **samples)
 bool ev3_speaker_amp_on(void)
 {
 	return spk.amp;
-}
-
-static void put_le(FILE *f, uint32_t v, unsigned bytes)
-{
-	for (unsigned i = 0; i < bytes; i++)
-		fputc((int)((v >> (8 * i)) & 0xFFU), f);
-}
-
-ER ev3_speaker_write_wav(const char *path)
-{
-	const int16_t *s;
-	size_t n;
-	uint32_t data;
-	FILE *f;
-	bool ok;
-
-	if (!spk.ready)
-		return E_OBJ;
-	n = ev3_speaker_samples(&s);
-	data = (uint32_t)(n * 2U);
-	f = fopen(path, "wb");
-	if (!f)
-		return E_SYS;
-	fputs("RIFF", f);
-	put_le(f, 36U + data, 4);
-	fputs("WAVEfmt ", f);
-	put_le(f, 16, 4);
-	put_le(f, 1, 2);                        /* PCM */
-	put_le(f, 1, 2);                        /* mono */
-	put_le(f, EV3_SPEAKER_RATE, 4);
-	put_le(f, EV3_SPEAKER_RATE * 2U, 4);
-	put_le(f, 2, 2);
-	put_le(f, 16, 2);
-	fputs("data", f);
-	put_le(f, data, 4);
-	for (size_t i = 0; i < n; i++)
-		put_le(f, (uint16_t)s[i], 2);
-	ok = !ferror(f);
-	return fclose(f) == 0 && ok ? E_OK : E_SYS;
 }
 
 static ER speaker_create(const struct hs_board_cfg *cfg, void **ctx)
@@ -196,6 +186,7 @@ static void speaker_destroy(void *ctx)
 	hs_gpio_unwatch(spk.watch);
 	hs_pwm_connect(SPEAKER_OUT, NULL);
 	spk.ready = spk.recording = false;
+	spk.sink = NULL;
 }
 
 const struct hs_device ev3_speaker_device = { "EV3_SPEAKER", speaker_create, NULL, speaker_destroy };

@@ -32,8 +32,17 @@ ER ev3_speaker_record(void);
 /* The recording up to now: *samples (valid until the next call; after the
  * board shuts down, until the next boot), returns their number. */
 size_t ev3_speaker_samples(const int16_t **samples);
-/* Writes the recording up to now as a 16-bit mono WAV file: E_OK, E_OBJ, E_SYS on an I/O error. */
-ER ev3_speaker_write_wav(const char *path);
+/* A recording's consumer: takes n samples in order (a block of at most
+ * EV3_SPEAKER_RATE, valid during the call). */
+typedef void (*ev3_speaker_sink_t)(const int16_t *samples, size_t n, void *ctx);
+/* Starts recording from now, as ev3_speaker_record, but streamed: every
+ * second's samples go to sink as soon as they are rendered and only the
+ * second being filled is held (an hour's recording is never in memory);
+ * ev3_speaker_samples gives that unfinished second.  E_OK, E_OBJ without a
+ * board. */
+ER ev3_speaker_record_to(ev3_speaker_sink_t sink, void *ctx);
+/* Renders up to now and hands the samples the sink has not had to it. */
+void ev3_speaker_flush(void);
 /* Whether the amplifier is on now. */
 bool ev3_speaker_amp_on(void);
 
