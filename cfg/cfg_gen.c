@@ -153,7 +153,7 @@ struct cfg_ctx {
 	int nnames;
 	/* parse state */
 	struct tok *toks;
-	int ntoks, pos;
+	int ntoks, captoks, pos;
 	int dom_stack[16];
 	int dom_depth;
 };
@@ -296,7 +296,10 @@ static void push_tok(struct cfg_ctx *ctx, enum tok_kind kind, const char *s, siz
 {
 	struct tok *t;
 
-	ctx->toks = xrealloc(ctx->toks, (size_t)(ctx->ntoks + 1) * sizeof(*ctx->toks));
+	if (ctx->ntoks == ctx->captoks) {
+		ctx->captoks = ctx->captoks ? 2 * ctx->captoks : 256;
+		ctx->toks = xrealloc(ctx->toks, (size_t)ctx->captoks * sizeof(*ctx->toks));
+	}
 	t = &ctx->toks[ctx->ntoks++];
 	*t = *where;
 	t->kind = kind;
@@ -455,6 +458,7 @@ static void free_toks(struct cfg_ctx *ctx)
 	free(ctx->toks);
 	ctx->toks = NULL;
 	ctx->ntoks = 0;
+	ctx->captoks = 0;
 	ctx->pos = 0;
 }
 
@@ -1041,12 +1045,13 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 {
 	int errors = ctx->nerrors;
 	struct tok *saved_toks = ctx->toks;
-	int saved_n = ctx->ntoks, saved_pos = ctx->pos, saved_depth = ctx->dom_depth;
+	int saved_n = ctx->ntoks, saved_cap = ctx->captoks, saved_pos = ctx->pos, saved_depth = ctx->dom_depth;
 
 	if (ctx->root == NULL)
 		ctx->root = intern(ctx, name, strlen(name));
 	ctx->toks = NULL;
 	ctx->ntoks = 0;
+	ctx->captoks = 0;
 	ctx->pos = 0;
 	ctx->dom_depth = 0;
 	tokenize(ctx, text, name);
@@ -1112,6 +1117,7 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 	free_toks(ctx);
 	ctx->toks = saved_toks;
 	ctx->ntoks = saved_n;
+	ctx->captoks = saved_cap;
 	ctx->pos = saved_pos;
 	ctx->dom_depth = saved_depth;
 	return ctx->nerrors - errors;

@@ -135,17 +135,19 @@ $(BUILD)/$(1)/obj/tests/cfg/test_app_cfg.o: tests/cfg/test_app_cfg.c $(BUILD)/$(
 endef
 $(foreach c,$(HOST_CONFIGS),$(eval $(call ev3rt_cfg_test,$(c))))
 
-# The configurator's pass 1 tested in-process: the test object includes cfg_gen.
+# The configurator's pass 1 tested in-process: the test object of $(2)
+# (tests/cfg/test_cfg_errors, the fuzz harness tests/cfg/test_fuzz_cfg) in
+# configuration $(1) includes cfg_gen.
 define ev3rt_cfg_unit_test
-$(BUILD)/$(1)/obj/tests/cfg/test_cfg_errors.o: tests/cfg/test_cfg_errors.c cfg/cfg_gen.c cfg/cfg_gen.h \
-		$(BUILD)/$(1)/compile.key
+$(BUILD)/$(1)/obj/$(2).o: $(2).c cfg/cfg_gen.c cfg/cfg_gen.h $(BUILD)/$(1)/compile.key
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(1) $$<
 	$(Q)$$(CC_$(1)) $$(call src_flags,$$<) -Icfg $$(WARN) $$(CFLAGS_$(1)) -MMD -MP -c $$< -o $$@.main.o
 	$(Q)$$(CC_$(1)) -std=c11 $$(WARN) $$(CFLAGS_$(1)) -c cfg/cfg_gen.c -o $$@.gen.o
 	$(Q)$$(CC_$(1)) -r -nostdlib -o $$@ $$@.main.o $$@.gen.o
 endef
-$(foreach c,$(HOST_CONFIGS),$(eval $(call ev3rt_cfg_unit_test,$(c))))
+EV3CFG_UNIT_TESTS := tests/cfg/test_cfg_errors tests/cfg/test_fuzz_cfg
+$(foreach c,$(HOST_CONFIGS),$(foreach t,$(EV3CFG_UNIT_TESTS),$(eval $(call ev3rt_cfg_unit_test,$(c),$(t)))))
 
 # `make cfg-error-check` (in `make test`): every configuration in tests/cfg/bad
 # fails — in ev3cfg or when kernel_cfg.c is compiled — with the messages its
