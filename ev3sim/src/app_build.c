@@ -182,7 +182,7 @@ int ev3sim_app_build(const char *root, const char *app, const char *lib_dir, cha
 	if (lib_dir != NULL)
 		snprintf(lib_arg, sizeof(lib_arg), "EV3RT_LIB_DIR=%s/libdir", dir);
 	snprintf(name_arg, sizeof(name_arg), "EV3RT_APP_NAME=%s", name);
-	snprintf(key_arg, sizeof(key_arg), "EV3RT_APP_KEY=%s", key);
+	snprintf(key_arg, sizeof(key_arg), "EV3RT_RUN_KEY=%s", key);
 	if (make_dirs(dir) != 0) {
 		snprintf(err, err_len, "cannot create %s: %s", dir, strerror(errno));
 		return -1;

@@ -51,7 +51,7 @@ $(foreach l,$(wanted_libs),$(if $(wildcard $(EV3RT_SDK_LIB_DIR)/$(l)/Makefile),,
 
 main_src := $(APP)/$(if $(filter c++,$(SRCLANG)),app.cpp,app.c)
 src_dirs := $(APP) $(foreach d,$(APPL_DIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d))) \
-	$(shell find '$(APP)' -type d -name src)
+	$(shell find -H '$(APP)' -type d -name src)
 # the source of object $(1) with extension $(2): the first directory that has it
 src_of = $(firstword $(wildcard $(addsuffix /$(basename $(1))$(2),$(src_dirs))) $(APP)/$(basename $(1))$(2))
 srcs := $(main_src) $(foreach o,$(APPL_COBJS),$(call src_of,$(o),.c)) \
@@ -61,7 +61,7 @@ srcs := $(main_src) $(foreach o,$(APPL_COBJS),$(call src_of,$(o),.c)) \
 info:
 	$(file >$(SDKDIR)/appinfo.mk,# $(APP)/Makefile.inc as read by mk/ev3rt/appinfo.mk)
 	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_SRCS := $(srcs))
-	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_INCLUDES := $(INCLUDES) $(patsubst %,-I%,$(shell find '$(APP)' -type d -name include)))
+	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_INCLUDES := $(INCLUDES) $(patsubst %,-I%,$(shell find -H '$(APP)' -type d -name include)))
 	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_LDLIBS := $(APPL_LIBS) $(filter-out -lc,$(LIBS)))
 	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_SLIBS := $(EV3RT_SDK_LIBS))
 	$(foreach l,$(EV3RT_SDK_LIBS),$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_SLIB_SRCS_$(l) := $(EV3RT_SLIB_SRCS_$(l))))

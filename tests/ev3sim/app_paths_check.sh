@@ -41,10 +41,10 @@ said() {
 		tail -n 1 "$WORK/out.txt" | grep -q " warnings=0 errors=0 bugs=0 "
 }
 
-echo "1..12"
+echo "1..13"
 root=$(dirname "$(dirname "$(dirname "$EV3SIM")")")
 rm -rf "$WORK" "$root"/build/host/ev3rt/run_x__info_INJECTED_y-* "$root"/build/host/ev3rt/run_it_s_my_app___really_-* \
-	"$root"/build/host/ev3rt/run_pathcheck_*
+	"$root"/build/host/ev3rt/run_pathcheck_* "$root"/build/host/ev3rt/run_uses_lib-*
 mkdir -p "$WORK"
 
 dir="$WORK/x\$(info INJECTED)y"
@@ -60,6 +60,20 @@ dir="$WORK/it's my app; (really)"
 copy_say "$dir" "spaces"
 run "$dir" && said spaces
 ok $? "a path with spaces, a quote, a semicolon and parentheses builds and runs"
+
+# an SDK library, greet, in a directory whose path make cannot hold either
+lib="$WORK/sdk \$(libs)"
+mkdir -p "$lib/greet/src" "$lib/greet/include"
+printf 'THIS_LIB_NAME := greet\nTHIS_LIB_OBJS := greet.o\ninclude $(EV3RT_SDK_LIB_DIR)/../Makefile.slib\n' \
+	> "$lib/greet/Makefile"
+printf 'const char *greeting(void);\n' > "$lib/greet/include/greet.h"
+printf '#include "greet.h"\nconst char *greeting(void) { return "from greet"; }\n' > "$lib/greet/src/greet.c"
+dir="$WORK/uses lib"
+copy_say "$dir"
+sed 's|^#define SAY_WHAT .*|#include "greet.h"\n#define SAY_WHAT greeting()|' "$SAY/app.h" > "$dir/app.h"
+printf 'include $(EV3RT_SDK_LIB_DIR)/greet/Makefile\n' > "$dir/Makefile.inc"
+"$EV3SIM" run "$dir" --lib-dir "$lib" --seconds 1 > "$WORK/out.txt" 2>&1 && said "from greet"
+ok $? "--lib-dir with a space and a '\$' in its path"
 
 copy_say "$WORK/a/pathcheck_twin" "from a"
 copy_say "$WORK/b/pathcheck_twin" "from b"
