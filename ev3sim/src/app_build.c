@@ -39,7 +39,7 @@ void ev3sim_app_name(const char *app_realpath, char *name, size_t len)
 
 	if (len == 0)
 		return;
-	for (; base[n] != '\0' && n < APP_NAME_MAX && n + 1 < len; n++)
+	for (; n < APP_NAME_MAX && n + 1 < len && base[n] != '\0'; n++)
 		name[n] = is_safe_name_byte(base[n]) ? base[n] : '_';
 	name[n] = '\0';
 	if (n == 0)
