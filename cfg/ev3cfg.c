@@ -12,7 +12,9 @@
  * APIs are read: INCLUDE, DOMAIN, CRE_TSK, CRE_SEM, CRE_FLG, CRE_DTQ, CRE_PDQ,
  * CRE_MTX, CRE_CYC, CRE_ALM, EV3_CRE_CYC, ATT_MOD, ATT_INI, ATT_TER, DEF_SVC,
  * CFG_INT, ATT_ISR, and ev3lx's EV3LX_INCLUDE_TABLE(symbol) (an existing
- * struct rtos_cfg, such as the platform's, joined to this one).  It writes:
+ * struct rtos_cfg, such as the platform's, joined to this one).  Anything
+ * else in a .cfg file's text is an error, HRP2's other static APIs by name;
+ * so is a NUL byte.  It writes:
  *
  *   OUTDIR/kernel_cfg.h    #define of every object ID and domain; the apps include it
  *   OUTDIR/kernel_cfg.c    the rtos_cfg tables and `const struct rtos_cfg NAME`
