@@ -29,8 +29,11 @@
 # Reads the Makefile.inc of app directory $(1) (mk/ev3rt/appinfo.mk) into
 # the variables $(2)_*, its SDK libraries from directory $(3), through the
 # build directory $(4).
+# It is written beside and renamed into place, so a make reading the same
+# app at the same time never includes half of it.
 ev3rt_read_app = $(if $(shell env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL $(MAKE) -s --no-print-directory \
-	-f mk/ev3rt/appinfo.mk APP='$(1)' PREFIX='$(2)' EV3RT_LIB_DIR='$(3)' SDKDIR='$(4)' info >&2 && echo ok),\
+	-f mk/ev3rt/appinfo.mk APP='$(1)' PREFIX='$(2)' EV3RT_LIB_DIR='$(3)' SDKDIR='$(4)' \
+	OUT='$(4)/appinfo.mk.'$$$$ info >&2 && mv -f '$(4)/appinfo.mk.'$$$$ '$(4)/appinfo.mk' && echo ok),\
 	$(eval include $(4)/appinfo.mk),$(error $(1)/Makefile.inc: the app could not be read))
 
 # SDK library $(1) of app $(2) in configuration $(3), its sources in
