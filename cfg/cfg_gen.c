@@ -25,8 +25,10 @@ struct tok {
 	enum tok_kind kind;
 	char *text;
 	bool space;          /* whitespace before it (for copying expressions) */
+	bool cfg_text;       /* from a configuration file, not a header it #includes */
+	bool bol;            /* first on its line */
 	const char *file;
-	int line;
+	int line, col;
 };
 
 enum api {
@@ -65,6 +67,59 @@ static const struct api_desc apis[API_COUNT] = {
 	[API_INCLUDE_TABLE] = { "EV3LX_INCLUDE_TABLE", false, false, 0, 0, NULL },
 };
 
+/* The static APIs of TOPPERS/HRP2 that ev3lx does not implement, with what
+ * they configure: kernel/kernel_api.csv of EV3RT's HRP2 (ev3rt-git/ev3rt-hrp2)
+ * and its message-buffer extension (extension/messagebuf/kernel/kernel_api.csv).
+ * A configuration naming one is refused rather than run without it. */
+static const struct { const char *name, *what; } unsupported_apis[] = {
+	{ "DEF_TEX", "task exception routines" },
+	{ "CRE_MPF", "fixed-sized memory pools" },
+	{ "CRE_MBF", "message buffers" },
+	{ "DEF_OVR", "the overrun handler" },
+	{ "SAC_TSK", "access control vectors" }, { "SAC_SEM", "access control vectors" },
+	{ "SAC_FLG", "access control vectors" }, { "SAC_DTQ", "access control vectors" },
+	{ "SAC_PDQ", "access control vectors" }, { "SAC_MTX", "access control vectors" },
+	{ "SAC_MBF", "access control vectors" }, { "SAC_MPF", "access control vectors" },
+	{ "SAC_CYC", "access control vectors" }, { "SAC_ALM", "access control vectors" },
+	{ "SAC_SYS", "access control vectors" },
+	{ "AID_TSK", "IDs for dynamically created objects" }, { "AID_SEM", "IDs for dynamically created objects" },
+	{ "AID_FLG", "IDs for dynamically created objects" }, { "AID_DTQ", "IDs for dynamically created objects" },
+	{ "AID_PDQ", "IDs for dynamically created objects" }, { "AID_MTX", "IDs for dynamically created objects" },
+	{ "AID_MPF", "IDs for dynamically created objects" }, { "AID_CYC", "IDs for dynamically created objects" },
+	{ "AID_ALM", "IDs for dynamically created objects" }, { "AID_ISR", "IDs for dynamically created objects" },
+	{ "ATT_REG", "memory regions (a domain's memory is its ATT_MOD objects')" },
+	{ "DEF_SRG", "memory regions (a domain's memory is its ATT_MOD objects')" },
+	{ "ATT_SEC", "sections (a domain's memory is its ATT_MOD objects')" },
+	{ "ATA_SEC", "sections (a domain's memory is its ATT_MOD objects')" },
+	{ "LNK_SEC", "sections (a domain's memory is its ATT_MOD objects')" },
+	{ "ATA_MOD", "access permissions of modules (ATT_MOD gives the domain's own)" },
+	{ "ATT_MEM", "memory objects (a domain's memory is its ATT_MOD objects')" },
+	{ "ATA_MEM", "memory objects (a domain's memory is its ATT_MOD objects')" },
+	{ "ATT_PMA", "memory objects (a domain's memory is its ATT_MOD objects')" },
+	{ "ATA_PMA", "memory objects (a domain's memory is its ATT_MOD objects')" },
+	{ "DEF_INH", "interrupt handlers (use ATT_ISR)" },
+	{ "DEF_EXC", "CPU exception handlers" },
+	{ "LMT_DOM", "domain priority limits (a user domain's tasks start at TMIN_APP_TPRI)" },
+	{ "DEF_ICS", "the interrupt context stack (the kernel allocates it)" },
+	{ "DEF_KMM", "the kernel memory area (the kernel allocates it)" },
+};
+
+/* Static APIs of other TOPPERS kernels that EV3RT app authors meet, and what
+ * HRP2 offers instead (ASP's and HRP3's specifications). */
+static const struct { const char *name, *why; } foreign_apis[] = {
+	{ "CRE_MBX", "TOPPERS/HRP2 has no mailboxes (CRE_MBX is TOPPERS/ASP's); a data queue, CRE_DTQ, carries data" },
+	{ "ACV_DOM", "ACV_DOM is TOPPERS/HRP3's; HRP2 domains have no access vectors" },
+};
+
+/* Bounds of pass 2 on sizes, from the EV3's 64 MB of RAM (LEGO MINDSTORMS
+ * EV3 hardware developer kit: 64 MB DDR RAM): one stack may take an eighth of
+ * it, all the configuration's task stacks together half. */
+#define EV3CFG_MAX_STKSZ_TEXT "(8UL << 20)"
+#define EV3CFG_MAX_STACKS_TEXT "(32UL << 20)"
+
+/* Errors printed before the rest are only counted (random input gives thousands). */
+#define MAX_PRINTED_ERRORS 50
+
 #define MAX_ELEMS 8
 
 struct obj {
@@ -88,6 +143,8 @@ struct cfg_ctx {
 	struct obj *objs;
 	int nobjs, capobjs;
 	char **domains;          /* DOMAIN names, 1-based IDs in order of appearance */
+	const char **domain_file;   /* where each was first named */
+	int *domain_line;
 	int ndomains;
 	char **c_includes;
 	int nc_includes;
@@ -96,7 +153,7 @@ struct cfg_ctx {
 	int nnames;
 	/* parse state */
 	struct tok *toks;
-	int ntoks, pos;
+	int ntoks, captoks, pos;
 	int dom_stack[16];
 	int dom_depth;
 };
@@ -139,20 +196,44 @@ static const char *intern(struct cfg_ctx *ctx, const char *s, size_t n)
 	return ctx->names[ctx->nnames++];
 }
 
+/* Prints "file:line[:col]: error: [what: ]message" and counts it (col 0: none). */
+static void verror(struct cfg_ctx *ctx, const char *file, int line, int col, const char *what, const char *fmt,
+		   va_list ap)
+{
+	if (ctx->nerrors++ >= MAX_PRINTED_ERRORS)
+		return;
+	fprintf(ctx->err, "%s:%d:", file, line);
+	if (col > 0)
+		fprintf(ctx->err, "%d:", col);
+	fputs(" error: ", ctx->err);
+	if (what != NULL)
+		fprintf(ctx->err, "%s: ", what);
+	vfprintf(ctx->err, fmt, ap);
+	fputc('\n', ctx->err);
+	if (ctx->nerrors == MAX_PRINTED_ERRORS)
+		fprintf(ctx->err, "%s:%d: note: further errors are counted, not shown\n", file, line);
+}
+
 /* Reports "file:line: error: API(ID): message" and counts it. */
 static void __attribute__((format(printf, 5, 6)))
 report(struct cfg_ctx *ctx, const char *file, int line, const char *what, const char *fmt, ...)
 {
 	va_list ap;
 
-	fprintf(ctx->err, "%s:%d: error: ", file, line);
-	if (what != NULL)
-		fprintf(ctx->err, "%s: ", what);
 	va_start(ap, fmt);
-	vfprintf(ctx->err, fmt, ap);
+	verror(ctx, file, line, 0, what, fmt, ap);
 	va_end(ap);
-	fputc('\n', ctx->err);
-	ctx->nerrors++;
+}
+
+/* Reports an error at a token's file, line and column. */
+static void __attribute__((format(printf, 4, 5)))
+report_at(struct cfg_ctx *ctx, const struct tok *t, const char *what, const char *fmt, ...)
+{
+	va_list ap;
+
+	va_start(ap, fmt);
+	verror(ctx, t->file, t->line, t->col, what, fmt, ap);
+	va_end(ap);
 }
 
 struct cfg_ctx *cfg_new(FILE *err, cfg_include_fn include, void *include_arg)
@@ -179,6 +260,8 @@ void cfg_free(struct cfg_ctx *ctx)
 	for (int i = 0; i < ctx->ndomains; i++)
 		free(ctx->domains[i]);
 	free(ctx->domains);
+	free(ctx->domain_file);
+	free(ctx->domain_line);
 	for (int i = 0; i < ctx->nc_includes; i++)
 		free(ctx->c_includes[i]);
 	free(ctx->c_includes);
@@ -199,33 +282,63 @@ void cfg_add_c_include(struct cfg_ctx *ctx, const char *directive)
 
 /* ---- tokenizer over preprocessor output ---- */
 
+/* True for a file whose text is configuration (static APIs only): the file
+ * being parsed and every .cfg file; the others are headers it #includes. */
+static bool is_cfg_file(const char *file, const char *root)
+{
+	size_t n = strlen(file);
+
+	return strcmp(file, root) == 0 || (n > 4 && strcmp(file + n - 4, ".cfg") == 0);
+}
+
 static void push_tok(struct cfg_ctx *ctx, enum tok_kind kind, const char *s, size_t n, bool space,
-		     const char *file, int line)
+		     const struct tok *where)
 {
 	struct tok *t;
 
-	ctx->toks = xrealloc(ctx->toks, (size_t)(ctx->ntoks + 1) * sizeof(*ctx->toks));
+	if (ctx->ntoks == ctx->captoks) {
+		ctx->captoks = ctx->captoks ? 2 * ctx->captoks : 256;
+		ctx->toks = xrealloc(ctx->toks, (size_t)ctx->captoks * sizeof(*ctx->toks));
+	}
 	t = &ctx->toks[ctx->ntoks++];
+	*t = *where;
 	t->kind = kind;
 	t->text = s != NULL ? xstrndup(s, n) : NULL;
 	t->space = space;
-	t->file = file;
-	t->line = line;
+}
+
+/* A character that may start or continue a C identifier (gcc accepts '$'). */
+static bool is_ident_char(char c)
+{
+	return isalnum((unsigned char)c) || c == '_' || c == '$';
+}
+
+/* A byte that may appear in C text outside literals and comments: printable
+ * ASCII except the three characters no C token uses, or whitespace. */
+static bool is_c_text_byte(char c)
+{
+	unsigned char u = (unsigned char)c;
+
+	if (u == ' ' || u == '\t' || u == '\n' || u == '\r' || u == '\v' || u == '\f')
+		return true;
+	return u > ' ' && u < 0x7f && u != '@' && u != '`' && u != '\\';
 }
 
 /* Splits text into tokens; "# N \"file\"" lines set the position, other
- * directives (#pragma, #ident) are dropped. */
+ * directives (#pragma, #ident) are dropped.  Bytes that are not C text,
+ * unterminated literals and comments are reported (once per line). */
 static void tokenize(struct cfg_ctx *ctx, const char *text, const char *name)
 {
-	const char *p = text;
-	const char *file = intern(ctx, name, strlen(name));
-	int line = 1;
+	const char *p = text, *line_start = text;
+	const char *root = intern(ctx, name, strlen(name));
+	struct tok at = { .file = root, .line = 1, .cfg_text = true };
 	bool bol = true, space = false;
 
 	while (*p != '\0') {
+		at.col = (int)(p - line_start) + 1;
 		if (*p == '\n') {
-			line++;
-			p++;
+			at.line++;
+			line_start = ++p;
 			bol = true;
 			space = true;
 			continue;
@@ -245,30 +358,39 @@ static void tokenize(struct cfg_ctx *ctx, const char *text, const char *name)
 			if (strncmp(q, "line", 4) == 0 && !isalnum((unsigned char)q[4]))
 				q += 4;
 			n = strtol(q, &end, 10);
-			if (end != q && n > 0) {
+			if (end != q && n > 0 && n < 100000000) {
 				q = end;
 				while (*q == ' ' || *q == '\t')
 					q++;
 				if (*q == '"') {
-					const char *e = strchr(q + 1, '"');
+					const char *e = strpbrk(q + 1, "\"\n");
 
-					if (e != NULL)
-						file = intern(ctx, q + 1, (size_t)(e - q - 1));
+					if (e != NULL && *e == '"') {
+						at.file = intern(ctx, q + 1, (size_t)(e - q - 1));
+						at.cfg_text = is_cfg_file(at.file, root);
+					}
 				}
-				line = (int)n - 1;   /* the newline ending this marker counts */
+				at.line = (int)n - 1;   /* the newline ending this marker counts */
 			}
 			while (*p != '\0' && *p != '\n')
 				p++;
 			continue;
 		}
+		at.bol = bol;
 		bol = false;
 		if (p[0] == '/' && p[1] == '*') {
 			const char *e = strstr(p + 2, "*/");
 
-			for (const char *c = p; c < (e ? e : p + strlen(p)); c++)
-				if (*c == '\n')
-					line++;
-			p = e ? e + 2 : p + strlen(p);
+			if (e == NULL) {
+				report_at(ctx, &at, NULL, "unterminated comment");
+				break;
+			}
+			for (const char *c = p; c < e; c++)
+				if (*c == '\n') {
+					at.line++;
+					line_start = c + 1;
+				}
+			p = e + 2;
 			space = true;
 			continue;
 		}
@@ -277,31 +399,42 @@ static void tokenize(struct cfg_ctx *ctx, const char *text, const char *name)
 				p++;
 			continue;
 		}
-		if (isalpha((unsigned char)*p) || *p == '_') {
+		if (isalpha((unsigned char)*p) || *p == '_' || *p == '$') {
 			const char *s = p;
 
-			while (isalnum((unsigned char)*p) || *p == '_')
+			while (is_ident_char(*p))
 				p++;
-			push_tok(ctx, TK_ID, s, (size_t)(p - s), space, file, line);
+			push_tok(ctx, TK_ID, s, (size_t)(p - s), space, &at);
 		} else if (isdigit((unsigned char)*p) || (*p == '.' && isdigit((unsigned char)p[1]))) {
 			const char *s = p;
 
 			while (isalnum((unsigned char)*p) || *p == '.' || *p == '_' ||
 			       ((*p == '+' || *p == '-') && (p[-1] == 'e' || p[-1] == 'E' || p[-1] == 'p' || p[-1] == 'P')))
 				p++;
-			push_tok(ctx, TK_NUM, s, (size_t)(p - s), space, file, line);
+			push_tok(ctx, TK_NUM, s, (size_t)(p - s), space, &at);
 		} else if (*p == '"' || *p == '\'') {
 			const char *s = p;
 			char quote = *p++;
 
 			while (*p != '\0' && *p != quote && *p != '\n') {
-				if (*p == '\\' && p[1] != '\0')
+				if (*p == '\\' && p[1] != '\0' && p[1] != '\n')
 					p++;
 				p++;
 			}
-			if (*p == quote)
+			if (*p != quote) {
+				report_at(ctx, &at, NULL, "missing terminating %c character", quote);
+				continue;
+			}
+			p++;
+			push_tok(ctx, quote == '"' ? TK_STR : TK_NUM, s, (size_t)(p - s), space, &at);
+		} else if (!is_c_text_byte(*p)) {
+			if ((unsigned char)*p < 0x80 && isprint((unsigned char)*p))
+				report_at(ctx, &at, NULL, "stray '%c': not C text", *p);
+			else
+				report_at(ctx, &at, NULL, "stray byte 0x%02x: not C text", (unsigned char)*p);
+			while (*p != '\0' && *p != '\n')
 				p++;
-			push_tok(ctx, quote == '"' ? TK_STR : TK_NUM, s, (size_t)(p - s), space, file, line);
+			continue;
 		} else {
 			static const char *const two[] = { "<<", ">>", "<=", ">=", "==", "!=", "&&", "||", "->", "++", "--" };
 			size_t n = 1;
@@ -309,12 +442,13 @@ static void tokenize(struct cfg_ctx *ctx, const char *text, const char *name)
 			for (size_t i = 0; i < sizeof(two) / sizeof(two[0]); i++)
 				if (p[0] == two[i][0] && p[1] == two[i][1])
 					n = 2;
-			push_tok(ctx, TK_PUNCT, p, n, space, file, line);
+			push_tok(ctx, TK_PUNCT, p, n, space, &at);
 			p += n;
 		}
 		space = false;
 	}
-	push_tok(ctx, TK_EOF, NULL, 0, true, file, line);
+	at.col = (int)(p - line_start) + 1;
+	push_tok(ctx, TK_EOF, NULL, 0, true, &at);
 }
 
 static void free_toks(struct cfg_ctx *ctx)
@@ -324,6 +458,7 @@ static void free_toks(struct cfg_ctx *ctx)
 	free(ctx->toks);
 	ctx->toks = NULL;
 	ctx->ntoks = 0;
+	ctx->captoks = 0;
 	ctx->pos = 0;
 }
 
@@ -381,6 +516,35 @@ static void skip_c_declaration(struct cfg_ctx *ctx)
 			return;
 		}
 		prev = t;
+	}
+}
+
+/* Skips what follows a syntax error: up to and including the next ';' outside
+ * brackets, or a whole bracketed block ("NAME(...) { ... }"), or up to the
+ * next line outside brackets, so one mistake gives one error. */
+static void skip_statement(struct cfg_ctx *ctx)
+{
+	int depth = 0;
+
+	for (bool first = true;; first = false) {
+		struct tok *t = peek(ctx, 0);
+
+		if (t->kind == TK_EOF || (depth == 0 && t->bol && !first))
+			return;
+		next(ctx);
+		if (is_punct(t, "(") || is_punct(t, "[") || is_punct(t, "{")) {
+			depth++;
+		} else if (is_punct(t, ")") || is_punct(t, "]") || is_punct(t, "}")) {
+			if (depth == 0)
+				return;
+			if (--depth == 0 && is_punct(t, "}")) {
+				if (is_punct(peek(ctx, 0), ";"))
+					next(ctx);
+				return;
+			}
+		} else if (depth == 0 && is_punct(t, ";")) {
+			return;
+		}
 	}
 }
 
@@ -470,13 +634,82 @@ static enum api id_kind(enum api a)
 	return a == API_EV3_CRE_CYC ? API_CRE_CYC : a;
 }
 
-static const struct obj *find_obj(const struct cfg_ctx *ctx, enum api kind, const char *id)
+/* Drops the object new_obj made last (its parameters were refused). */
+static void discard_last_obj(struct cfg_ctx *ctx)
 {
-	for (int i = 0; i < ctx->nobjs; i++)
-		if (id_kind(ctx->objs[i].api) == kind && ctx->objs[i].id != NULL &&
-		    strcmp(ctx->objs[i].id, id) == 0)
-			return &ctx->objs[i];
+	struct obj *o = &ctx->objs[--ctx->nobjs];
+
+	free(o->id);
+	for (int e = 0; e < o->nelem && e < MAX_ELEMS; e++)
+		free(o->elem[e]);
+}
+
+#define EV3_CYC_TASK_PREFIX "EV3_CYC_TASK_"
+
+/* Where name is already a C identifier of kernel_cfg.h (an object ID, an
+ * EV3_CRE_CYC handler task, a domain), other than self's own: the static API
+ * that defined it, its position and, for objects, the object; NULL if free.
+ * TOPPERS object IDs of every kind share this one namespace. */
+static const char *find_name(const struct cfg_ctx *ctx, const char *name, const struct obj *self,
+			     const char **file, int *line, const struct obj **obj)
+{
+	size_t plen = strlen(EV3_CYC_TASK_PREFIX);
+
+	*obj = NULL;
+	for (int i = 0; i < ctx->nobjs; i++) {
+		const struct obj *o = &ctx->objs[i];
+
+		if (o == self || !apis[o->api].has_id || o->id == NULL)
+			continue;
+		*file = o->file;
+		*line = o->line;
+		if (strcmp(o->id, name) == 0) {
+			*obj = o;
+			return apis[o->api].name;
+		}
+		if (o->api == API_EV3_CRE_CYC && strncmp(name, EV3_CYC_TASK_PREFIX, plen) == 0 &&
+		    strcmp(name + plen, o->id) == 0)
+			return "EV3_CRE_CYC (its handler task)";
+	}
+	for (int i = 0; i < ctx->ndomains; i++)
+		if (strcmp(ctx->domains[i], name) == 0) {
+			*file = ctx->domain_file[i];
+			*line = ctx->domain_line[i];
+			return "DOMAIN";
+		}
 	return NULL;
+}
+
+/* Reports (and returns true) if object o's ID, or for EV3_CRE_CYC its handler
+ * task's name, is already defined. */
+static bool id_taken(struct cfg_ctx *ctx, const struct obj *o, const char *what)
+{
+	const struct obj *dup;
+	const char *file = NULL, *by;
+	int line = 0;
+
+	by = find_name(ctx, o->id, o, &file, &line, &dup);
+	if (by != NULL && dup != NULL && id_kind(dup->api) == id_kind(o->api)) {
+		report(ctx, o->file, o->line, what, "%s is already defined at %s:%d (E_OBJ)", o->id, file, line);
+		return true;
+	}
+	if (by != NULL) {
+		report(ctx, o->file, o->line, what,
+		       "%s is already defined at %s:%d by %s; the IDs of every kind share one namespace (E_OBJ)",
+		       o->id, file, line, by);
+		return true;
+	}
+	if (o->api == API_EV3_CRE_CYC) {
+		char task[160];
+
+		snprintf(task, sizeof(task), EV3_CYC_TASK_PREFIX "%s", o->id);
+		if ((by = find_name(ctx, task, o, &file, &line, &dup)) != NULL) {
+			report(ctx, o->file, o->line, what,
+			       "its handler task %s is already defined at %s:%d by %s (E_OBJ)", task, file, line, by);
+			return true;
+		}
+	}
+	return false;
 }
 
 static bool is_null_expr(const char *e)
@@ -576,7 +809,7 @@ static void parse_api(struct cfg_ctx *ctx, enum api a)
 
 		if (id->kind != TK_ID || !(is_punct(peek(ctx, 0), ","))) {
 			report(ctx, name->file, name->line, what, "the first parameter must be the object's ID name (E_PAR)");
-			ctx->nobjs--;
+			discard_last_obj(ctx);
 			while (!is_punct(peek(ctx, 0), ";") && peek(ctx, 0)->kind != TK_EOF)
 				next(ctx);
 			next(ctx);
@@ -588,7 +821,7 @@ static void parse_api(struct cfg_ctx *ctx, enum api a)
 	} else if (d->has_value) {
 		if ((o->id = read_expr(ctx, what, ")")) == NULL || !is_punct(next(ctx), ",")) {
 			report(ctx, name->file, name->line, what, "expected a value and { %s } (E_PAR)", d->elems);
-			ctx->nobjs--;
+			discard_last_obj(ctx);
 			while (!is_punct(peek(ctx, 0), ";") && peek(ctx, 0)->kind != TK_EOF)
 				next(ctx);
 			next(ctx);
@@ -597,7 +830,7 @@ static void parse_api(struct cfg_ctx *ctx, enum api a)
 	}
 	if (!is_punct(next(ctx), "{")) {
 		report(ctx, name->file, name->line, what, "expected { %s } (E_PAR)", d->elems);
-		ctx->nobjs--;
+		discard_last_obj(ctx);
 		while (!is_punct(peek(ctx, 0), ";") && peek(ctx, 0)->kind != TK_EOF)
 			next(ctx);
 		next(ctx);
@@ -636,16 +869,25 @@ static void parse_api(struct cfg_ctx *ctx, enum api a)
 		report(ctx, o->file, o->line, what, "more than %d parameters in { } (E_PAR)", MAX_ELEMS);
 		return;
 	}
-	if (o->id != NULL && d->has_id) {
-		const struct obj *dup = find_obj(ctx, id_kind(a), o->id);
-
-		if (dup != NULL && dup != o) {
-			report(ctx, o->file, o->line, what, "%s is already defined at %s:%d (E_OBJ)", o->id,
-			       dup->file, dup->line);
-			return;
-		}
-	}
+	if (o->id != NULL && d->has_id && id_taken(ctx, o, what))
+		return;
 	check_obj(ctx, o, what);
+}
+
+#define MAX_DOMAIN_DEPTH ((int)(sizeof(((struct cfg_ctx *)0)->dom_stack) / sizeof(int)))
+
+/* Enters a domain block ("{" is next); blocks do not nest (E_RSATR).  A block
+ * too deep to track is skipped whole. */
+static void enter_domain(struct cfg_ctx *ctx, const struct tok *kw, int index, const char *name)
+{
+	if (ctx->dom_depth > 0)
+		report_at(ctx, kw, "DOMAIN", "%s inside another domain block (E_RSATR)", name);
+	if (ctx->dom_depth == MAX_DOMAIN_DEPTH) {
+		skip_statement(ctx);
+		return;
+	}
+	next(ctx);	/* "{" */
+	ctx->dom_stack[ctx->dom_depth++] = index;
 }
 
 /* Parses "DOMAIN ( name ) {" and enters the domain. */
@@ -654,27 +896,38 @@ static void parse_domain(struct cfg_ctx *ctx)
 	struct tok *kw = next(ctx);
 	struct tok *id;
 	int index = 0;
+	char what[160];
 
 	next(ctx);	/* "(" */
 	id = next(ctx);
 	if (id->kind != TK_ID || !is_punct(next(ctx), ")") || !is_punct(peek(ctx, 0), "{")) {
-		report(ctx, kw->file, kw->line, "DOMAIN", "expected DOMAIN(name) { ... } (E_PAR)");
+		report_at(ctx, kw, "DOMAIN", "expected DOMAIN(name) { ... } (E_PAR)");
+		ctx->pos = (int)(kw - ctx->toks) + 1;
+		skip_statement(ctx);
 		return;
 	}
-	next(ctx);
 	for (int i = 0; i < ctx->ndomains; i++)
 		if (strcmp(ctx->domains[i], id->text) == 0)
 			index = i + 1;
 	if (index == 0) {
+		const struct obj *dup;
+		const char *file = NULL, *by;
+		int line = 0;
+
+		if ((by = find_name(ctx, id->text, NULL, &file, &line, &dup)) != NULL)
+			report(ctx, kw->file, kw->line, "DOMAIN",
+			       "%s is already defined at %s:%d by %s; the IDs of every kind share one namespace (E_OBJ)",
+			       id->text, file, line, by);
 		ctx->domains = xrealloc(ctx->domains, (size_t)(ctx->ndomains + 1) * sizeof(char *));
+		ctx->domain_file = xrealloc(ctx->domain_file, (size_t)(ctx->ndomains + 1) * sizeof(char *));
+		ctx->domain_line = xrealloc(ctx->domain_line, (size_t)(ctx->ndomains + 1) * sizeof(int));
+		ctx->domain_file[ctx->ndomains] = kw->file;
+		ctx->domain_line[ctx->ndomains] = kw->line;
 		ctx->domains[ctx->ndomains++] = xstrdup(id->text);
 		index = ctx->ndomains;
 	}
-	if (ctx->dom_depth > 0) {
-		report(ctx, kw->file, kw->line, "DOMAIN", "DOMAIN(%s) inside another domain block (E_RSATR)", id->text);
-		return;
-	}
-	ctx->dom_stack[ctx->dom_depth++] = index;
+	snprintf(what, sizeof(what), "DOMAIN(%s)", id->text);
+	enter_domain(ctx, kw, index, what);
 }
 
 static int api_lookup(const char *name)
@@ -683,6 +936,24 @@ static int api_lookup(const char *name)
 		if (strcmp(apis[a].name, name) == 0)
 			return a;
 	return -1;
+}
+
+/* What an HRP2 static API that ev3lx lacks configures; NULL for other names. */
+static const char *unsupported_api(const char *name)
+{
+	for (size_t i = 0; i < sizeof(unsupported_apis) / sizeof(unsupported_apis[0]); i++)
+		if (strcmp(unsupported_apis[i].name, name) == 0)
+			return unsupported_apis[i].what;
+	return NULL;
+}
+
+/* Why a static API of another TOPPERS kernel is not HRP2's; NULL for other names. */
+static const char *foreign_api(const char *name)
+{
+	for (size_t i = 0; i < sizeof(foreign_apis) / sizeof(foreign_apis[0]); i++)
+		if (strcmp(foreign_apis[i].name, name) == 0)
+			return foreign_apis[i].why;
+	return NULL;
 }
 
 /* True for names shaped like a static API (ABC_DEF), which only appear in a
@@ -699,16 +970,88 @@ static bool looks_like_api(const char *s)
 	return u - s == 3 && isupper((unsigned char)u[1]);
 }
 
+/* Edit distance of a and b with adjacent transpositions (optimal string
+ * alignment), up to 3: enough to tell a misspelt keyword. */
+static int edit_distance(const char *a, const char *b)
+{
+	size_t na = strlen(a), nb = strlen(b);
+	int d[24][24];
+
+	if (na > 22 || nb > 22 || (na > nb ? na - nb : nb - na) > 3)
+		return 4;
+	for (size_t i = 0; i <= na; i++)
+		for (size_t j = 0; j <= nb; j++) {
+			int best;
+
+			if (i == 0 || j == 0) {
+				d[i][j] = (int)(i + j);
+				continue;
+			}
+			best = d[i - 1][j - 1] + (toupper((unsigned char)a[i - 1]) != toupper((unsigned char)b[j - 1]));
+			if (d[i - 1][j] + 1 < best)
+				best = d[i - 1][j] + 1;
+			if (d[i][j - 1] + 1 < best)
+				best = d[i][j - 1] + 1;
+			if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && d[i - 2][j - 2] + 1 < best)
+				best = d[i - 2][j - 2] + 1;
+			d[i][j] = best;
+		}
+	return d[na][nb];
+}
+
+/* The keyword a misspelt name probably meant (ignoring case, one edit or transposition), or NULL. */
+static const char *near_keyword(const char *name)
+{
+	static const char *const words[] = { "DOMAIN", "KERNEL_DOMAIN", "INCLUDE" };
+	const char *best = NULL;
+	int best_d = 2;
+
+	if (strlen(name) < 4)
+		return NULL;
+	for (size_t i = 0; i < sizeof(words) / sizeof(words[0]) + API_COUNT; i++) {
+		const char *w = i < sizeof(words) / sizeof(words[0]) ? words[i] : apis[i - sizeof(words) / sizeof(words[0])].name;
+		int dist = edit_distance(name, w);
+
+		if (dist < best_d) {
+			best_d = dist;
+			best = w;
+		}
+	}
+	return best;
+}
+
+/* Reports what stands where a static API should: an unknown name (with the
+ * keyword it resembles) or a token that cannot start one. */
+static void report_not_api(struct cfg_ctx *ctx, const struct tok *t)
+{
+	const char *hint = t->kind == TK_ID ? near_keyword(t->text) : NULL;
+
+	if (hint != NULL && strcmp(hint, t->text) == 0) {
+		report_at(ctx, t, NULL, "syntax error: %s is not followed by '%s'", t->text,
+			  strcmp(t->text, "KERNEL_DOMAIN") == 0 ? "{" : "(");
+	} else if (t->kind == TK_ID && is_punct(peek(ctx, 1), "(")) {
+		if (hint != NULL)
+			report_at(ctx, t, t->text, "unknown static API (did you mean %s?)", hint);
+		else
+			report_at(ctx, t, t->text, "unknown static API");
+	} else if (hint != NULL) {
+		report_at(ctx, t, NULL, "syntax error: '%s' is not a static API (did you mean %s?)", t->text, hint);
+	} else {
+		report_at(ctx, t, NULL, "syntax error: expected a static API, found '%s'", t->text);
+	}
+}
+
 int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 {
 	int errors = ctx->nerrors;
 	struct tok *saved_toks = ctx->toks;
-	int saved_n = ctx->ntoks, saved_pos = ctx->pos, saved_depth = ctx->dom_depth;
+	int saved_n = ctx->ntoks, saved_cap = ctx->captoks, saved_pos = ctx->pos, saved_depth = ctx->dom_depth;
 
 	if (ctx->root == NULL)
 		ctx->root = intern(ctx, name, strlen(name));
 	ctx->toks = NULL;
 	ctx->ntoks = 0;
+	ctx->captoks = 0;
 	ctx->pos = 0;
 	ctx->dom_depth = 0;
 	tokenize(ctx, text, name);
@@ -719,6 +1062,7 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 			break;
 		if (t->kind == TK_ID && is_punct(peek(ctx, 1), "(")) {
 			int a = api_lookup(t->text);
+			const char *what;
 
 			if (a >= 0) {
 				parse_api(ctx, (enum api)a);
@@ -728,16 +1072,25 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 				parse_domain(ctx);
 				continue;
 			}
-			if (looks_like_api(t->text)) {
-				report(ctx, t->file, t->line, t->text, "unknown static API");
+			if ((what = unsupported_api(t->text)) != NULL) {
+				report_at(ctx, t, t->text, "a static API of TOPPERS/HRP2 (%s) not supported by ev3lx", what);
+				skip_statement(ctx);
+				continue;
+			}
+			if ((what = foreign_api(t->text)) != NULL) {
+				report_at(ctx, t, t->text, "unknown static API: %s", what);
+				skip_statement(ctx);
+				continue;
+			}
+			if (looks_like_api(t->text) && !t->cfg_text) {
+				report_at(ctx, t, t->text, "unknown static API");
 				skip_c_declaration(ctx);
 				continue;
 			}
 		}
 		if (t->kind == TK_ID && strcmp(t->text, "KERNEL_DOMAIN") == 0 && is_punct(peek(ctx, 1), "{")) {
 			next(ctx);
-			next(ctx);
-			ctx->dom_stack[ctx->dom_depth++] = 0;
+			enter_domain(ctx, t, 0, "KERNEL_DOMAIN");
 			continue;
 		}
 		if (is_punct(t, "}") && ctx->dom_depth > 0) {
@@ -751,6 +1104,12 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 			next(ctx);
 			continue;
 		}
+		if (t->cfg_text) {
+			/* configuration text is static APIs only, as for TOPPERS's configurator */
+			report_not_api(ctx, t);
+			skip_statement(ctx);
+			continue;
+		}
 		skip_c_declaration(ctx);
 	}
 	if (ctx->dom_depth > 0)
@@ -758,6 +1117,7 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 	free_toks(ctx);
 	ctx->toks = saved_toks;
 	ctx->ntoks = saved_n;
+	ctx->captoks = saved_cap;
 	ctx->pos = saved_pos;
 	ctx->dom_depth = saved_depth;
 	return ctx->nerrors - errors;
@@ -959,8 +1319,13 @@ static void emit_checks(const struct cfg_ctx *ctx, struct out *o, const struct o
 			check(o, ob, c, "CRE_TSK(%s): itskpri above TMIN_APP_TPRI for a task of DOMAIN(%s) (E_PAR)",
 			      id, ctx->domains[ob->domain - 1]);
 		}
-		snprintf(c, sizeof(c), "(%s) > 0", ob->elem[4]);
-		check(o, ob, c, "CRE_TSK(%s): stksz must be positive (E_PAR)", id);
+		snprintf(c, sizeof(c), "(%s) > 0 && (%s) <= EV3CFG_MAX_STKSZ", ob->elem[4], ob->elem[4]);
+		check(o, ob, c, "CRE_TSK(%s): stksz out of range 1..EV3CFG_MAX_STKSZ (8 MiB, an eighth of the "
+		      "EV3 RAM of 64 MB) (E_PAR)", id);
+		if (ob->nelem >= 7) {
+			snprintf(c, sizeof(c), "(%s) >= 0 && (%s) <= EV3CFG_MAX_STKSZ", ob->elem[6], ob->elem[6]);
+			check(o, ob, c, "CRE_TSK(%s): sstksz out of range 0..EV3CFG_MAX_STKSZ (8 MiB) (E_PAR)", id);
+		}
 		break;
 	case API_CRE_SEM:
 		snprintf(c, sizeof(c), "((%s) & ~(ATR)TA_TPRI) == 0", ob->elem[0]);
@@ -1016,10 +1381,39 @@ static void emit_checks(const struct cfg_ctx *ctx, struct out *o, const struct o
 	case API_DEF_SVC:
 		snprintf(c, sizeof(c), "(%s) >= 1 && (%s) <= TNUM_FNCD", ob->id, ob->id);
 		check(o, ob, c, "DEF_SVC(%s): fncd out of range 1..TNUM_FNCD (E_PAR)", ob->id);
+		snprintf(c, sizeof(c), "(%s) >= 0 && (%s) <= EV3CFG_MAX_STKSZ", ob->elem[2], ob->elem[2]);
+		check(o, ob, c, "DEF_SVC(%s): stksz out of range 0..EV3CFG_MAX_STKSZ (8 MiB) (E_PAR)", ob->id);
 		break;
 	default:
 		break;
 	}
+}
+
+/* The sum of every task's stack (each counted once it is in range, so that
+ * one bad size gives one error), at the last task's line: within
+ * EV3CFG_MAX_STACKS, half the EV3's RAM. */
+static void emit_stack_total(const struct cfg_ctx *ctx, struct out *o)
+{
+	const struct obj *last = NULL;
+
+	for (int i = 0; i < ctx->nobjs; i++)
+		if (ctx->objs[i].api == API_CRE_TSK || ctx->objs[i].api == API_EV3_CRE_CYC)
+			last = &ctx->objs[i];
+	if (last == NULL)
+		return;
+	at_api(o, last);
+	emit(o, "_Static_assert(0ULL");
+	for (int i = 0; i < ctx->nobjs; i++) {
+		const struct obj *ob = &ctx->objs[i];
+
+		if (ob->api == API_CRE_TSK)
+			emit(o, " + ((%s) > 0 && (%s) <= EV3CFG_MAX_STKSZ ? (unsigned long long)(%s) : 0ULL)",
+			     ob->elem[4], ob->elem[4], ob->elem[4]);
+		else if (ob->api == API_EV3_CRE_CYC)
+			emit(o, " + (unsigned long long)EV3CFG_CYC_STACK");
+	}
+	emit(o, " <= EV3CFG_MAX_STACKS, \"%s: the task stacks of the configuration total more than "
+	     "EV3CFG_MAX_STACKS (32 MiB, half the EV3 RAM of 64 MB) (E_NOMEM)\");\n", last->id);
 }
 
 /* Writes one table: rows of every object of api kind(s), formatted by row(). */
@@ -1129,6 +1523,9 @@ void cfg_write_source(const struct cfg_ctx *ctx, FILE *f, const char *symbol, co
 	for (int i = 0; i < ctx->nc_includes; i++)
 		emit(&o, "%s\n", ctx->c_includes[i]);
 	at_self(&o);
+	emit(&o, "\n/* Bounds of sizes (ev3cfg, docs/ev3rt-apps.md): the EV3 has 64 MB of RAM. */\n");
+	emit(&o, "#define EV3CFG_MAX_STKSZ %s\n#define EV3CFG_MAX_STACKS %s\n", EV3CFG_MAX_STKSZ_TEXT,
+	     EV3CFG_MAX_STACKS_TEXT);
 	for (int i = 0; i < ctx->nobjs; i++)
 		if (ctx->objs[i].api == API_INCLUDE_TABLE)
 			emit(&o, "extern const struct rtos_cfg %s;\n", ctx->objs[i].id);
@@ -1216,6 +1613,7 @@ void cfg_write_source(const struct cfg_ctx *ctx, FILE *f, const char *symbol, co
 	}
 	for (int i = 0; i < ctx->nobjs; i++)
 		emit_checks(ctx, &o, &ctx->objs[i]);
+	emit_stack_total(ctx, &o);
 	at_self(&o);
 	for (int i = 0; i < ctx->nobjs; i++)
 		ntables += ctx->objs[i].api == API_INCLUDE_TABLE;

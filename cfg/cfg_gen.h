@@ -23,8 +23,10 @@ struct cfg_ctx *cfg_new(FILE *err, cfg_include_fn include, void *include_arg);
 void cfg_free(struct cfg_ctx *ctx);
 
 /* Parses the preprocessed text of file name (line markers "# N \"file\"" move
- * the position); C declarations between static APIs are skipped.  Returns the
- * number of errors reported ("file:line: error: API(ID): message"). */
+ * the position).  The text of name and of every .cfg file is static APIs
+ * only; C declarations from the headers they #include are skipped.  Returns
+ * the number of errors reported ("file:line: error: API(ID): message", with
+ * ":col" for what is not a static API). */
 int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name);
 
 /* Errors reported so far. */

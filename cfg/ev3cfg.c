@@ -12,7 +12,9 @@
  * APIs are read: INCLUDE, DOMAIN, CRE_TSK, CRE_SEM, CRE_FLG, CRE_DTQ, CRE_PDQ,
  * CRE_MTX, CRE_CYC, CRE_ALM, EV3_CRE_CYC, ATT_MOD, ATT_INI, ATT_TER, DEF_SVC,
  * CFG_INT, ATT_ISR, and ev3lx's EV3LX_INCLUDE_TABLE(symbol) (an existing
- * struct rtos_cfg, such as the platform's, joined to this one).  It writes:
+ * struct rtos_cfg, such as the platform's, joined to this one).  Anything
+ * else in a .cfg file's text is an error, HRP2's other static APIs by name;
+ * so is a NUL byte.  It writes:
  *
  *   OUTDIR/kernel_cfg.h    #define of every object ID and domain; the apps include it
  *   OUTDIR/kernel_cfg.c    the rtos_cfg tables and `const struct rtos_cfg NAME`
@@ -55,8 +57,8 @@ struct tool {
 	int nincluded;
 };
 
-/* Reads a whole file or command output; NULL on error. */
-static char *read_stream(FILE *f)
+/* Reads a whole file or command output (its length in *lenp); NULL on error. */
+static char *read_stream(FILE *f, size_t *lenp)
 {
 	size_t cap = 8192, len = 0;
 	char *buf = malloc(cap);
@@ -81,7 +83,27 @@ static char *read_stream(FILE *f)
 			break;
 	}
 	buf[len] = '\0';
+	*lenp = len;
 	return buf;
+}
+
+/* Reports a NUL byte in a file's text (C text has none, and it would end the
+ * text early); true if there is one. */
+static bool has_nul(const char *path, const char *text, size_t len)
+{
+	const char *nul = memchr(text, '\0', len);
+	int line = 1;
+	const char *line_start = text;
+
+	if (nul == NULL)
+		return false;
+	for (const char *c = text; c < nul; c++)
+		if (*c == '\n') {
+			line++;
+			line_start = c + 1;
+		}
+	fprintf(stderr, "%s:%d:%d: error: NUL byte: not C text\n", path, line, (int)(nul - line_start) + 1);
+	return true;
 }
 
 /* Appends s to the command line, single-quoted for the shell. */
@@ -138,16 +160,21 @@ static int process_file(struct cfg_ctx *ctx, struct tool *tool, const char *path
 	char cmd[8192] = "";
 	FILE *f, *pipe;
 	char *raw, *text;
+	size_t len;
 	int status;
 
 	if ((f = fopen(path, "r")) == NULL) {
 		fprintf(stderr, "ev3cfg: %s: %s\n", path, strerror(errno));
 		return 1;
 	}
-	raw = read_stream(f);
+	raw = read_stream(f, &len);
 	fclose(f);
 	if (raw == NULL)
 		return 1;
+	if (has_nul(path, raw, len)) {
+		free(raw);
+		return 1;
+	}
 	collect_c_includes(ctx, raw);
 	free(raw);
 	snprintf(cmd, sizeof(cmd), "%s -x c -DTOPPERS_MACRO_ONLY -DTOPPERS_CFG1 -DTOPPERS_CFG1_OUT ", tool->cpp);
@@ -164,10 +191,14 @@ static int process_file(struct cfg_ctx *ctx, struct tool *tool, const char *path
 		fprintf(stderr, "ev3cfg: cannot run %s\n", tool->cpp);
 		return 1;
 	}
-	text = read_stream(pipe);
+	text = read_stream(pipe, &len);
 	status = pclose(pipe);
 	if (text == NULL || status != 0) {
 		fprintf(stderr, "%s:1: error: the C preprocessor failed (%s)\n", path, tool->cpp);
+		free(text);
+		return 1;
+	}
+	if (has_nul(path, text, len)) {
 		free(text);
 		return 1;
 	}
@@ -221,6 +252,19 @@ static int include_file(struct cfg_ctx *ctx, const char *file, const char *from_
 	return process_file(ctx, tool, path);
 }
 
+/* Closes a generated file; 0, or -1 if it could not be written (reported). */
+static int close_out(FILE *f, const char *dir, const char *name)
+{
+	bool failed = ferror(f) != 0;
+
+	if (fclose(f) != 0 || failed) {
+		fprintf(stderr, "ev3cfg: %s/%s: cannot write\n", dir, name);
+		return -1;
+	}
+	return 0;
+}
+
+/* Opens dir/name for writing; NULL (reported) if it cannot. */
 static FILE *open_out(const char *dir, const char *name)
 {
 	char path[4096];
@@ -230,6 +274,37 @@ static FILE *open_out(const char *dir, const char *name)
 	if ((f = fopen(path, "w")) == NULL)
 		fprintf(stderr, "ev3cfg: %s: %s\n", path, strerror(errno));
 	return f;
+}
+
+/* Writes the generated files into outdir; 0, or 2 on an I/O error (reported). */
+static int write_outputs(const struct cfg_ctx *ctx, const char *outdir, const char *symbol)
+{
+	FILE *f, *ld;
+
+	if ((f = open_out(outdir, "kernel_cfg.h")) == NULL)
+		return 2;
+	cfg_write_header(ctx, f, symbol);
+	if (close_out(f, outdir, "kernel_cfg.h") != 0 || (f = open_out(outdir, "kernel_cfg.c")) == NULL)
+		return 2;
+	cfg_write_source(ctx, f, symbol, "kernel_cfg.c");
+	if (close_out(f, outdir, "kernel_cfg.c") != 0 || (f = open_out(outdir, "modules.txt")) == NULL)
+		return 2;
+	for (int m = 1; m <= cfg_module_count(ctx); m++) {
+		char name[64];
+
+		snprintf(name, sizeof(name), "ev3mod_%d.ld", m);
+		fprintf(f, "%s %s/%s\n", cfg_module_path(ctx, m), outdir, name);
+		if ((ld = open_out(outdir, name)) == NULL) {
+			fclose(f);
+			return 2;
+		}
+		cfg_write_module_script(ctx, ld, m);
+		if (close_out(ld, outdir, name) != 0) {
+			fclose(f);
+			return 2;
+		}
+	}
+	return close_out(f, outdir, "modules.txt") != 0 ? 2 : 0;
 }
 
 static int usage(void)
@@ -244,8 +319,7 @@ int main(int argc, char **argv)
 	struct tool tool = { .cpp = "cpp" };
 	const char *outdir = NULL, *symbol = "ev3rt_app_cfg", *input = NULL;
 	struct cfg_ctx *ctx;
-	FILE *f;
-	int errors;
+	int errors, status;
 
 	for (int i = 1; i < argc; i++) {
 		const char *a = argv[i];
@@ -289,33 +363,12 @@ int main(int argc, char **argv)
 	errors += cfg_errors(ctx);
 	if (errors > 0) {
 		fprintf(stderr, "ev3cfg: %s: %d error%s\n", input, errors, errors == 1 ? "" : "s");
-		cfg_free(ctx);
-		return 1;
+		status = 1;
+	} else {
+		status = write_outputs(ctx, outdir, symbol);
 	}
-	if ((f = open_out(outdir, "kernel_cfg.h")) == NULL)
-		return 2;
-	cfg_write_header(ctx, f, symbol);
-	fclose(f);
-	if ((f = open_out(outdir, "kernel_cfg.c")) == NULL)
-		return 2;
-	cfg_write_source(ctx, f, symbol, "kernel_cfg.c");
-	fclose(f);
-	if ((f = open_out(outdir, "modules.txt")) == NULL)
-		return 2;
-	for (int m = 1; m <= cfg_module_count(ctx); m++) {
-		char name[64];
-		FILE *ld;
-
-		snprintf(name, sizeof(name), "ev3mod_%d.ld", m);
-		fprintf(f, "%s %s/%s\n", cfg_module_path(ctx, m), outdir, name);
-		if ((ld = open_out(outdir, name)) == NULL)
-			return 2;
-		cfg_write_module_script(ctx, ld, m);
-		fclose(ld);
-	}
-	fclose(f);
 	cfg_free(ctx);
 	for (int i = 0; i < tool.nincluded; i++)
 		free(tool.included[i]);
-	return 0;
+	return status;
 }

@@ -8,3 +8,13 @@ $(EV3CFG): $(EV3CFG_SRCS) cfg/cfg_gen.h
 	@mkdir -p $(@D)
 	$(quiet) CC tools $@
 	$(Q)gcc -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) -O2 -g -o $@ $(EV3CFG_SRCS)
+
+# The same under ASan+UBSan with LeakSanitizer: make cfg-error-check runs it on
+# every bad configuration, so that no error path leaks or reads out of bounds.
+EV3CFG_SAN := $(BUILD)/host-san/tools/ev3cfg
+
+$(EV3CFG_SAN): $(EV3CFG_SRCS) cfg/cfg_gen.h
+	@mkdir -p $(@D)
+	$(quiet) CC host-san $@
+	$(Q)$(CC_host-san) -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) $(CFLAGS_host-san) $(LDFLAGS_host-san) \
+		-o $@ $(EV3CFG_SRCS)

@@ -8,8 +8,15 @@
 #                    tests/ev3sim/test_app_NAME.c the same way.
 #   ev3rt-app        `make ev3rt-app APP=/abs/dir [EV3RT_LIB_DIR=/abs/dir]`
 #                    builds the runner of any app directory,
-#                    $(BUILD)/host/ev3rt/run_NAME/run_NAME: what `ev3sim run
-#                    APP_DIR [--lib-dir DIR]` does before executing it.  The
+#                    $(BUILD)/host/ev3rt/KEY/KEY (KEY: run_NAME, or
+#                    EV3RT_RUN_KEY), the app named NAME (EV3RT_APP_NAME, else
+#                    the directory's name): what `ev3sim run APP_DIR
+#                    [--lib-dir DIR]` does before executing it.  ev3sim calls
+#                    it with APP and EV3RT_LIB_DIR links to the directories
+#                    inside KEY, a key made of the name and a hash of the real
+#                    path, and a lock on the build (ev3sim/src/app_build.c):
+#                    make expands '$' in APP and splits it at spaces, so a
+#                    path given here directly must have neither.  The
 #                    app's Makefile.inc is read as EV3RT's app build reads it
 #                    (public source: ev3rt-git/ev3rt-hrp2-sdk, common/Makefile.app
 #                    and Makefile.prj.common): SRCLANG (c, or c++: the app is
@@ -24,8 +31,11 @@
 # Reads the Makefile.inc of app directory $(1) (mk/ev3rt/appinfo.mk) into
 # the variables $(2)_*, its SDK libraries from directory $(3), through the
 # build directory $(4).
+# It is written beside and renamed into place, so a make reading the same
+# app at the same time never includes half of it.
 ev3rt_read_app = $(if $(shell env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL $(MAKE) -s --no-print-directory \
-	-f mk/ev3rt/appinfo.mk APP='$(1)' PREFIX='$(2)' EV3RT_LIB_DIR='$(3)' SDKDIR='$(4)' info >&2 && echo ok),\
+	-f mk/ev3rt/appinfo.mk APP='$(1)' PREFIX='$(2)' EV3RT_LIB_DIR='$(3)' SDKDIR='$(4)' \
+	OUT='$(4)/appinfo.mk.'$$$$ info >&2 && mv -f '$(4)/appinfo.mk.'$$$$ '$(4)/appinfo.mk' && echo ok),\
 	$(eval include $(4)/appinfo.mk),$(error $(1)/Makefile.inc: the app could not be read))
 
 # SDK library $(1) of app $(2) in configuration $(3), its sources in
@@ -110,8 +120,23 @@ $(BUILD)/$(2)/obj/tests/ev3sim/test_app_$(1).o: tests/ev3sim/test_app_$(1).c \
 endef
 $(foreach c,$(HOST_CONFIGS),$(foreach a,$(EV3SIM_TEST_APPS),$(eval $(call ev3sim_test_app_rules,$(a),$(c)))))
 
+ifneq ($(findstring $$,$(value APP)),)
+$(error APP=$(value APP): make would expand its '$$'; ev3sim run APP_DIR builds any path)
+endif
 ifneq ($(APP),)
-EV3RT_RUN_NAME := run_$(notdir $(APP))
+ifneq ($(words $(APP)),1)
+$(error APP="$(APP)": make splits a path at spaces; ev3sim run APP_DIR builds any path)
+endif
+ifneq ($(findstring $$,$(value EV3RT_LIB_DIR))$(word 2,$(EV3RT_LIB_DIR)),)
+$(error EV3RT_LIB_DIR=$(value EV3RT_LIB_DIR): make would expand or split it; ev3sim run --lib-dir takes any path)
+endif
+# ccache rewrites the paths of dependency files relative to CCACHE_BASEDIR
+# through their real paths, which would bring the app directory's own path
+# (its spaces, its ';') back into them: not for an app
+export CCACHE_BASEDIR :=
+EV3RT_APP_NAME ?= $(notdir $(APP))
+EV3RT_RUN_KEY  ?= run_$(EV3RT_APP_NAME)
+EV3RT_RUN_NAME := $(EV3RT_RUN_KEY)
 EV3RT_RUN_DIR  := $(BUILD)/host/ev3rt/$(EV3RT_RUN_NAME)
 EV3RT_LIB_DIR ?=
 $(call ev3rt_read_app,$(APP),EV3RT_RUN,$(EV3RT_LIB_DIR),$(EV3RT_RUN_DIR)/sdk)
@@ -120,7 +145,7 @@ $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 	@mkdir -p $(@D)
 	$(quiet) CC host $<
 	$(Q)$(CC_host) $(call src_flags,$<) $(WARN) $(CFLAGS_host) $(KERNEL_DEFS) \
-		-DEV3SIM_APP_NAME='"$(notdir $(APP))"' -c $< -o $@
+		-DEV3SIM_APP_NAME='"$(EV3RT_APP_NAME)"' -c $< -o $@
 
 # the runner is ev3sim's command line: it writes --lcd's PNG with libpng and --lcd-video's GIF
 # with giflib, as the ev3sim program does
@@ -131,16 +156,6 @@ EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_host += -lpng -lgif
 .PHONY: ev3rt-app
 ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)
 endif
-
-# `ev3sim run DIR` builds DIR's runner with a make of its own (ev3rt-app).
-# Checks that run the same app (ev3sim-audio-check and ev3sim-lcd-check both
-# run examples/hello, in parallel in `make test`) have that runner built
-# first, once, by this target, so that two such makes never write the same
-# files: theirs then find it up to date.  The directory is named as ev3sim
-# names it (its real path).
-.PHONY: ev3sim-runner-hello
-ev3sim-runner-hello: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
-	+$(Q)$(MAKE) -s --no-print-directory APP=$(realpath examples/hello) ev3rt-app
 
 # `make ev3sim-run-check` (in make test): `ev3sim run` builds an app directory
 # and runs it, ending with its summary line: examples/blink, an app whose
@@ -172,6 +187,18 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
 
 TEST_SUITE_EXTRA += ev3sim-run-check
+
+# `make ev3sim-app-path-check` (in make test): `ev3sim run` on app directories
+# whose paths make cannot hold ('$', spaces, quotes), an SDK library in such
+# a directory, two directories of one name, four first runs of one app at
+# once, and runners that cannot be executed (tests/ev3sim/app_paths_check.sh,
+# TAP).
+.PHONY: ev3sim-app-path-check
+ev3sim-app-path-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
+	+$(Q)EV3SIM=$(abspath $(BUILD)/host/ev3sim) WORK=$(abspath $(BUILD)/ev3sim-app-path-check) \
+		prove --exec sh tests/ev3sim/app_paths_check.sh
+
+TEST_SUITE_EXTRA += ev3sim-app-path-check
 
 # ev3sim's copy of examples/gyroboy (ev3sim/module.mk): the configuration as
 # ev3sim_gyroboy_cfg, the app's settings and counters renamed ev3sim_gyroboy_*,

@@ -11,7 +11,7 @@ LCD_CHECK_PNG := $(BUILD)/ev3sim/hello.png
 LCD_CHECK_GIF := $(BUILD)/ev3sim/hello.gif
 
 .PHONY: ev3sim-lcd-check
-ev3sim-lcd-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG) ev3sim-runner-hello
+ev3sim-lcd-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	@mkdir -p $(dir $(LCD_CHECK_PNG))
 	+$(Q)out=$$($(BUILD)/host/ev3sim run examples/hello --seconds 2 --quiet --lcd $(LCD_CHECK_PNG) \
 		--lcd-video $(LCD_CHECK_GIF)) || \

@@ -28,6 +28,9 @@ $(BUILD)/fuzz/libev3lx.a: $(OBJS_fuzz)
 	$(Q)rm -f $@
 	$(Q)ar rcs $@ $^
 
+# the configurator's harness carries cfg_gen (mk/ev3rt_app.mk)
+$(eval $(call ev3rt_cfg_unit_test,fuzz,tests/cfg/test_fuzz_cfg))
+
 # fuzz_NAME from tests/.../test_fuzz_NAME.c
 define fuzz_harness_rule
 $(BUILD)/fuzz/fuzz_$(patsubst test_fuzz_%.c,%,$(notdir $(1))): $(BUILD)/fuzz/obj/$(1:.c=.o) $$(SUPPORT_OBJS_fuzz) $(BUILD)/fuzz/libev3lx.a

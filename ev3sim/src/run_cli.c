@@ -4,13 +4,13 @@
  * the runner parses them (ev3sim_run_main) and runs the app.
  */
 #define _XOPEN_SOURCE 700
+#include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 #include "t_syslog.h"
 #include "ev3sim/brick_io.h"
@@ -19,8 +19,11 @@
 #include "ev3sim/parse.h"
 #include "ev3sim/balance_run.h"
 #include "ev3sim/run.h"
+#include "ev3sim/app_build.h"
 
 #define MAX_PUSH_NM 5.0
+
+extern char **environ;
 
 static const char run_usage[] =
 	"usage: ev3sim run APP_DIR [options]\n"
@@ -305,32 +308,14 @@ static bool source_root(char *root, size_t len)
 	return true;
 }
 
-/* Runs argv to its end, its output on stderr (stdout is the run's); its exit status, or -1. */
-static int run_program(char *const argv[])
-{
-	int wstatus;
-	pid_t pid = fork();
-
-	if (pid < 0)
-		return -1;
-	if (pid == 0) {
-		if (dup2(STDERR_FILENO, STDOUT_FILENO) < 0)
-			_exit(127);
-		execvp(argv[0], argv);
-		_exit(127);
-	}
-	if (waitpid(pid, &wstatus, 0) < 0 || !WIFEXITED(wstatus))
-		return -1;
-	return WEXITSTATUS(wstatus);
-}
-
 int ev3sim_run_command(int argc, char **argv)
 {
-	char root[PATH_MAX], app[PATH_MAX], runner[2 * PATH_MAX + 64], app_arg[PATH_MAX + 16];
-	char cfg_path[PATH_MAX + 16], lib_dir[PATH_MAX], lib_arg[PATH_MAX + 16] = "EV3RT_LIB_DIR=";
-	const char *base;
+	char root[PATH_MAX], app[PATH_MAX], runner[2 * PATH_MAX + 64], err[2 * PATH_MAX + 128];
+	char cfg_path[PATH_MAX + 16], lib_dir[PATH_MAX];
+	bool have_lib_dir = false;
 	struct stat st;
 	char **args;
+	int runner_fd;
 
 	if (argc < 1 || strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0) {
 		fputs(run_usage, argc < 1 ? stderr : stdout);
@@ -348,33 +333,29 @@ int ev3sim_run_command(int argc, char **argv)
 	if (argc >= 3 && strcmp(argv[1], "--lib-dir") == 0) {
 		if (realpath(argv[2], lib_dir) == NULL || stat(lib_dir, &st) != 0 || !S_ISDIR(st.st_mode))
 			return usage("--lib-dir '%s' is not a directory", argv[2]);
-		snprintf(lib_arg, sizeof(lib_arg), "EV3RT_LIB_DIR=%s", lib_dir);
+		have_lib_dir = true;
 		argv[2] = argv[0];      /* the runner gets APP_DIR's options only */
 		argv += 2;
 		argc -= 2;
 	}
-	base = strrchr(app, '/');
-	base = base && base[1] ? base + 1 : "app";
-	snprintf(runner, sizeof(runner), "%s/build/host/ev3rt/run_%s/run_%s", root, base, base);
-	snprintf(app_arg, sizeof(app_arg), "APP=%s", app);
-	{
-		char *make_argv[] = { "make", "-s", "--no-print-directory", "-C", root, app_arg,
-				      lib_arg, "ev3rt-app", NULL };
-
-		if (run_program(make_argv) != 0) {
-			fprintf(stderr, "ev3sim run: building %s failed\n", app);
-			return EV3SIM_EXIT_FAIL;
-		}
+	runner_fd = ev3sim_app_build(root, app, have_lib_dir ? lib_dir : NULL, runner, sizeof(runner), err,
+				     sizeof(err));
+	if (runner_fd < 0) {
+		fprintf(stderr, "ev3sim run: %s\n", err);
+		return EV3SIM_EXIT_FAIL;
 	}
 	args = calloc((size_t)argc + 1, sizeof(*args));
-	if (args == NULL)
+	if (args == NULL) {
+		close(runner_fd);
 		return EV3SIM_EXIT_FAIL;
+	}
 	args[0] = runner;
 	for (int i = 1; i < argc; i++)
 		args[i] = argv[i];
 	fflush(stdout);
-	execv(runner, args);
-	fprintf(stderr, "ev3sim run: cannot run %s\n", runner);
+	fexecve(runner_fd, args, environ);
+	fprintf(stderr, "ev3sim run: cannot execute %s: %s\n", runner, strerror(errno));
+	close(runner_fd);
 	free(args);
 	return EV3SIM_EXIT_FAIL;
 }

@@ -24,6 +24,8 @@ MAKEFLAGS += --no-builtin-rules
 
 $(if $(APP),,$(error appinfo.mk: APP is not set))
 $(if $(and $(PREFIX),$(SDKDIR)),,$(error appinfo.mk: PREFIX and SDKDIR must be set))
+# where the assignments go (the caller renames it to SDKDIR/appinfo.mk)
+OUT ?= $(SDKDIR)/appinfo.mk
 
 # What EV3RT's build gives a Makefile.inc before reading it.
 mkfile_path := $(APP)/
@@ -38,9 +40,23 @@ CONFIG_EV3RT_APPLICATION := 1
 EV3RT_SDK_LIB_DIR := $(SDKDIR)/library
 EV3RT_SDK_LIBS :=
 
-$(if $(shell set -e; rm -rf '$(SDKDIR)'; mkdir -p '$(EV3RT_SDK_LIB_DIR)'; \
-	cp '$(dir $(lastword $(MAKEFILE_LIST)))Makefile.slib' '$(SDKDIR)/Makefile.slib'; \
-	$(if $(EV3RT_LIB_DIR),for d in '$(EV3RT_LIB_DIR)'/*/; do ln -s "$$d" '$(EV3RT_SDK_LIB_DIR)'/; done;) \
+# Other makes may read the same app at once (every make of the tree reads
+# the examples; ev3sim runs of several apps run side by side), and the
+# build compiles the libraries' sources through these links: nothing is
+# removed that another make may be reading, every file and link is replaced
+# in one step (rename), and only links to libraries EV3RT_LIB_DIR no longer
+# has are dropped.
+$(if $(shell set -e; mkdir -p '$(EV3RT_SDK_LIB_DIR)'; \
+	cp '$(dir $(lastword $(MAKEFILE_LIST)))Makefile.slib' '$(SDKDIR)/Makefile.slib.'$$$$; \
+	mv -f '$(SDKDIR)/Makefile.slib.'$$$$ '$(SDKDIR)/Makefile.slib'; \
+	for l in '$(EV3RT_SDK_LIB_DIR)'/*; do \
+		[ -L "$$l" ] || continue; \
+		$(if $(EV3RT_LIB_DIR),[ -d '$(EV3RT_LIB_DIR)'/"$${l##*/}" ] ||) rm -f "$$l"; \
+	done; \
+	$(if $(EV3RT_LIB_DIR),for d in '$(EV3RT_LIB_DIR)'/*/; do \
+		n=$$(basename "$$d"); ln -sfn "$$d" '$(EV3RT_SDK_LIB_DIR)'/"$$n".$$$$; \
+		mv -fT '$(EV3RT_SDK_LIB_DIR)'/"$$n".$$$$ '$(EV3RT_SDK_LIB_DIR)'/"$$n"; \
+	done;) \
 	echo ok),,$(error cannot prepare $(SDKDIR)))
 wanted_libs := $(shell sed -n 's|.*$$(EV3RT_SDK_LIB_DIR)/\([^/]*\)/Makefile.*|\1|p' '$(APP)/Makefile.inc' 2>/dev/null)
 $(foreach l,$(wanted_libs),$(if $(wildcard $(EV3RT_SDK_LIB_DIR)/$(l)/Makefile),,$(error \
@@ -51,7 +67,7 @@ $(foreach l,$(wanted_libs),$(if $(wildcard $(EV3RT_SDK_LIB_DIR)/$(l)/Makefile),,
 
 main_src := $(APP)/$(if $(filter c++,$(SRCLANG)),app.cpp,app.c)
 src_dirs := $(APP) $(foreach d,$(APPL_DIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d))) \
-	$(shell find '$(APP)' -type d -name src)
+	$(shell find -H '$(APP)' -type d -name src)
 # the source of object $(1) with extension $(2): the first directory that has it
 src_of = $(firstword $(wildcard $(addsuffix /$(basename $(1))$(2),$(src_dirs))) $(APP)/$(basename $(1))$(2))
 srcs := $(main_src) $(foreach o,$(APPL_COBJS),$(call src_of,$(o),.c)) \
@@ -59,10 +75,10 @@ srcs := $(main_src) $(foreach o,$(APPL_COBJS),$(call src_of,$(o),.c)) \
 
 .PHONY: info
 info:
-	$(file >$(SDKDIR)/appinfo.mk,# $(APP)/Makefile.inc as read by mk/ev3rt/appinfo.mk)
-	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_SRCS := $(srcs))
-	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_INCLUDES := $(INCLUDES) $(patsubst %,-I%,$(shell find '$(APP)' -type d -name include)))
-	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_LDLIBS := $(APPL_LIBS) $(filter-out -lc,$(LIBS)))
-	$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_SLIBS := $(EV3RT_SDK_LIBS))
-	$(foreach l,$(EV3RT_SDK_LIBS),$(file >>$(SDKDIR)/appinfo.mk,$(PREFIX)_SLIB_SRCS_$(l) := $(EV3RT_SLIB_SRCS_$(l))))
+	$(file >$(OUT),# $(APP)/Makefile.inc as read by mk/ev3rt/appinfo.mk)
+	$(file >>$(OUT),$(PREFIX)_SRCS := $(srcs))
+	$(file >>$(OUT),$(PREFIX)_INCLUDES := $(INCLUDES) $(patsubst %,-I%,$(shell find -H '$(APP)' -type d -name include)))
+	$(file >>$(OUT),$(PREFIX)_LDLIBS := $(APPL_LIBS) $(filter-out -lc,$(LIBS)))
+	$(file >>$(OUT),$(PREFIX)_SLIBS := $(EV3RT_SDK_LIBS))
+	$(foreach l,$(EV3RT_SDK_LIBS),$(file >>$(OUT),$(PREFIX)_SLIB_SRCS_$(l) := $(EV3RT_SLIB_SRCS_$(l))))
 	@:

@@ -53,6 +53,16 @@ static char *generate(struct cfg_ctx *ctx, bool source)
 	return buf;
 }
 
+/* text gives at least one error, the first of them message (a lexical error may leave more behind). */
+static void expect_first_error(const char *text, const char *message, const char *name)
+{
+	int n = run(text, NULL);
+
+	ok(n >= 1 && errbuf != NULL && strncmp(errbuf, message, strlen(message)) == 0, "%s", name);
+	if (n < 1 || strncmp(errbuf, message, strlen(message)) != 0)
+		tap_diag("got %d error(s): %s", n, errbuf);
+}
+
 static void expect_error(const char *text, const char *message, const char *name)
 {
 	int n = run(text, NULL);
@@ -67,7 +77,7 @@ int main(void)
 	struct cfg_ctx *ctx;
 	char *h, *c;
 
-	tap_plan(22);
+	tap_plan(45);
 
 	/* A configuration as the preprocessor leaves it: line markers, header declarations. */
 	is_int(run("# 1 \"app.cfg\"\n"
@@ -106,8 +116,8 @@ int main(void)
 	free(c);
 	cfg_free(ctx);
 
-	expect_error("\n\nCRE_FOO(X, { 1 });\n", "app.cfg:3: error: CRE_FOO: unknown static API",
-		     "an unknown static API is named with its line");
+	expect_error("\n\nCRE_FOO(X, { 1 });\n", "app.cfg:3:1: error: CRE_FOO: unknown static API",
+		     "an unknown static API is named with its line and column");
 	expect_error("CRE_SEM(S, { 0U, 1 });\n",
 		     "app.cfg:1: error: CRE_SEM(S): 2 parameters in { } (sematr, isemcnt, maxsem), expected 3 (E_PAR)",
 		     "a wrong parameter count names the API, the object and the expected packet");
@@ -142,6 +152,90 @@ int main(void)
 	is_int(run("CRE_MTX(M, { TA_CEILING, 3 });\nCRE_MTX(N, { 0U });\nCRE_PDQ(P, { 0U, 4, 8, NULL });\n"
 		   "CRE_ALM(A, { 0U, 0, alm });\nDEF_SVC(5, { 0U, svc, 1024 });\nEV3LX_INCLUDE_TABLE(ev3api_cfg);\n",
 		   NULL), 0, "mutexes with and without a ceiling, PDQ, alarm, DEF_SVC and a platform table parse");
+
+	/* Configuration text is static APIs only; what TOPPERS's configurator refuses, so does ev3cfg. */
+	expect_error("DOMIAN(TDOM_APP) {\nCRE_SEM(S, { 0U, 0, 1 });\n}\n",
+		     "app.cfg:1:1: error: DOMIAN: unknown static API (did you mean DOMAIN?)",
+		     "a misspelt DOMAIN block is one error, with the keyword it resembles");
+	expect_error("  Domain(TDOM_APP) {\n}\n", "app.cfg:1:3: error: Domain: unknown static API (did you mean DOMAIN?)",
+		     "DOMAIN in the wrong case is refused");
+	expect_error("CRE_SEM(S, { 0U, 0, 1 });\nthis is junk\nCRE_FLG(F, { 0U, 0 });\n",
+		     "app.cfg:2:1: error: syntax error: expected a static API, found 'this'", "a junk line is a syntax error");
+	expect_error("int helper(void) { return 1; }\n", "app.cfg:1:1: error: syntax error: expected a static API, found 'int'",
+		     "a C definition in the configuration file itself is refused");
+	expect_error("CRE_SEM(S, { 0U, 0, 1 });\n}\n", "app.cfg:2:1: error: syntax error: expected a static API, found '}'",
+		     "an unmatched '}'");
+	expect_error("DOMAIN TDOM_APP {\n}\n", "app.cfg:1:1: error: syntax error: DOMAIN is not followed by '('",
+		     "DOMAIN without its parentheses");
+	expect_first_error("CRE_SEM(S, { 0U, 0, 1 });\nCRE_\x01SEM(T, { 0U, 0, 1 });\n",
+		     "app.cfg:2:5: error: stray byte 0x01: not C text", "a control byte is not C text");
+	expect_error("CRE_SEM(S, { 0U, 0, 1 }); @\n", "app.cfg:1:27: error: stray '@': not C text",
+		     "a character no C token uses");
+	expect_first_error("CRE_SEM(S, { 0U, 0, 1 });\nATT_MOD(\"app.o);\n", "app.cfg:2:9: error: missing terminating \" character",
+		     "an unterminated string");
+	expect_error("CRE_SEM(S, { 0U, 0, 1 });\n/* never closed\n", "app.cfg:2:1: error: unterminated comment",
+		     "an unterminated comment");
+	expect_error("DEF_TEX(T, { 0U, tex });\n",
+		     "app.cfg:1:1: error: DEF_TEX: a static API of TOPPERS/HRP2 (task exception routines) not supported by ev3lx",
+		     "an HRP2 static API ev3lx lacks is refused by name");
+	expect_error("SAC_SEM(S, { 1, 1, 1, 1 });\n", "SAC_SEM: a static API of TOPPERS/HRP2 (access control vectors) not supported",
+		     "access control vectors are refused, not ignored");
+	expect_error("CRE_MBX(M, { 0U, 1, NULL });\n", "app.cfg:1:1: error: CRE_MBX: unknown static API: TOPPERS/HRP2 has no mailboxes",
+		     "a mailbox (ASP's) is named as not HRP2's");
+	expect_error("# 1 \"app.h\" 1\nextern int x;\nFOO_BAR(1);\n# 3 \"app.cfg\" 2\n",
+		     "app.h:2:1: error: FOO_BAR: unknown static API", "a static-API-shaped call in a header is still refused");
+
+	/* One namespace: kernel_cfg.h defines every ID, domain and EV3 handler task as a C macro. */
+	expect_error("CRE_SEM(X, { 0U, 0, 1 });\nCRE_FLG(X, { 0U, 0 });\n",
+		     "app.cfg:2: error: CRE_FLG(X): X is already defined at app.cfg:1 by CRE_SEM; the IDs of every kind share one namespace (E_OBJ)",
+		     "a semaphore and a flag of one name");
+	expect_error("DOMAIN(MAIN) {\n}\nCRE_SEM(MAIN, { 0U, 0, 1 });\n",
+		     "app.cfg:3: error: CRE_SEM(MAIN): MAIN is already defined at app.cfg:1 by DOMAIN",
+		     "an object named as a domain");
+	expect_error("CRE_TSK(T, { 0U, 0, t, 8, 1024, NULL });\nDOMAIN(T) {\n}\n",
+		     "app.cfg:2: error: DOMAIN: T is already defined at app.cfg:1 by CRE_TSK", "a domain named as an object");
+	expect_error("EV3_CRE_CYC(C, { 0U, 0, h, 10, 0 });\nCRE_TSK(EV3_CYC_TASK_C, { 0U, 0, t, 8, 1024, NULL });\n",
+		     "app.cfg:2: error: CRE_TSK(EV3_CYC_TASK_C): EV3_CYC_TASK_C is already defined at app.cfg:1 by EV3_CRE_CYC (its handler task)",
+		     "a task named as an EV3 cyclic handler's task");
+
+	/* Nested domain blocks, however deep, are errors, not overflows. */
+	{
+		char text[40 * 20 + 1] = "";
+
+		for (int i = 0; i < 20; i++)
+			strcat(text, "KERNEL_DOMAIN {\n");
+		for (int i = 0; i < 20; i++)
+			strcat(text, "}\n");
+		ok(run(text, NULL) > 0 && strstr(errbuf, "app.cfg:2:1: error: DOMAIN: KERNEL_DOMAIN inside another domain block (E_RSATR)"),
+		   "nested KERNEL_DOMAIN blocks: one error each, no overflow of the block stack");
+	}
+	/* Random input gives many errors; the first ones are printed, all are counted. */
+	{
+		char *text = malloc(200 * 6 + 1);
+
+		text[0] = '\0';
+		for (int i = 0; i < 200; i++)
+			strcat(text, "junk\n");
+		ok(run(text, NULL) == 200 && strstr(errbuf, "further errors are counted, not shown") &&
+		   strstr(errbuf, "app.cfg:51:1:") == NULL, "200 errors: 50 printed, the rest counted");
+		free(text);
+	}
+
+	/* Sizes: each stack within 8 MiB, all of them within 32 MiB (pass 2). */
+	is_int(run("CRE_TSK(T, { 0U, 0, t, 8, 1 << 30, NULL, 4096, NULL });\nEV3_CRE_CYC(C, { 0U, 0, h, 10, 0 });\n"
+		   "DEF_SVC(1, { 0U, svc, 1024 });\n", &ctx), 0, "a 1 GiB stack passes pass 1 (a value: pass 2 checks it)");
+	c = generate(ctx, true);
+	ok(strstr(c, "#define EV3CFG_MAX_STKSZ (8UL << 20)\n#define EV3CFG_MAX_STACKS (32UL << 20)\n") &&
+	   strstr(c, "_Static_assert((1 << 30) > 0 && (1 << 30) <= EV3CFG_MAX_STKSZ, \"CRE_TSK(T): stksz out of range") &&
+	   strstr(c, "_Static_assert((4096) >= 0 && (4096) <= EV3CFG_MAX_STKSZ, \"CRE_TSK(T): sstksz out of range") &&
+	   strstr(c, "_Static_assert((1024) >= 0 && (1024) <= EV3CFG_MAX_STKSZ, \"DEF_SVC(1): stksz out of range"),
+	   "pass 2 bounds every stack size");
+	ok(strstr(c, "#line 2 \"app.cfg\"\n_Static_assert(0ULL + ((1 << 30) > 0 && (1 << 30) <= EV3CFG_MAX_STKSZ ? "
+		     "(unsigned long long)(1 << 30) : 0ULL) + (unsigned long long)EV3CFG_CYC_STACK <= EV3CFG_MAX_STACKS") != NULL,
+	   "and their total, at the last task's line, counting EV3_CRE_CYC's handler tasks");
+	free(c);
+	cfg_free(ctx);
+
 	free(errbuf);
 	return tap_done();
 }
