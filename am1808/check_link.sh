@@ -13,7 +13,7 @@ nm=arm-none-eabi-nm
 printf '#include "kernel.h"\n#include "sil.h"\n#include "t_syslog.h"\n' > "$out/api_decls.c"
 $cc -std=c11 -Irtos_stub/include -DEV3LX_AM1808=1 -mcpu=arm926ej-s -marm \
 	-aux-info "$out/api_decls.aux" -c "$out/api_decls.c" -o "$out/api_decls.o"
-grep -E '^/\* rtos_stub/include/[a-z_]+\.h:[0-9]+:NC \*/ extern ' "$out/api_decls.aux" \
+grep -E '^/\* rtos_stub/include/[a-z0-9_]+\.h:[0-9]+:NC \*/ extern ' "$out/api_decls.aux" \
 	| sed -E 's/.* ([A-Za-z_][A-Za-z0-9_]*) \(.*/\1/' | sort -u > "$out/api_symbols.txt"
 $nm --defined-only -g "$out/hrp2_link_provider.o" | awk '{print $3}' | sort -u > "$out/provider_symbols.txt"
 if ! diff -u "$out/api_symbols.txt" "$out/provider_symbols.txt" > "$out/provider_diff.txt"; then

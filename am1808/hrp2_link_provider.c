@@ -14,7 +14,7 @@
 ER act_tsk(ID tskid) { (void)tskid; return E_NOSPT; }
 ER iact_tsk(ID tskid) { (void)tskid; return E_NOSPT; }
 ER_UINT can_act(ID tskid) { (void)tskid; return E_NOSPT; }
-void ext_tsk(void) { for (;;) { } }
+ER ext_tsk(void) { for (;;) { } }
 ER chg_pri(ID tskid, PRI tskpri) { (void)tskid; (void)tskpri; return E_NOSPT; }
 ER get_pri(ID tskid, PRI *p_tskpri) { (void)tskid; (void)p_tskpri; return E_NOSPT; }
 ER get_tid(ID *p_tskid) { (void)p_tskid; return E_NOSPT; }
@@ -115,3 +115,9 @@ ER prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode)
 
 void syslog(uint_t prio, const char *format, ...) { (void)prio; (void)format; }
 ER syslog_msk_log(uint_t logmask, uint_t lowmask) { (void)logmask; (void)lowmask; return E_NOSPT; }
+
+/* EV3RT's platform (target/ev3_gcc/platform/src/ev3main.c), which ev3.h declares. */
+void svc_perror(const char *file, int_t line, const char *expr, ER ercd)
+{
+	(void)file; (void)line; (void)expr; (void)ercd;
+}

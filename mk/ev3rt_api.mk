@@ -6,7 +6,7 @@ EV3RT_NOT_YET_CALLS :=
 .PHONY: ev3rt-link-check
 ev3rt-link-check: $(LIB_host)
 	@mkdir -p $(BUILD)/host/ev3rt_link
-	$(Q)$(call compile,host,tests/ev3rt_link/not_yet_app.c) \
+	$(Q)$(call compile,host,tests/ev3rt_link/not_yet_app.c) -Itests/ev3rt_link \
 		-c tests/ev3rt_link/not_yet_app.c -o $(BUILD)/host/ev3rt_link/not_yet_app.o
 	$(Q)if $(CC_host) -o $(BUILD)/host/ev3rt_link/not_yet_app $(BUILD)/host/ev3rt_link/not_yet_app.o \
 		$(LIB_host) -lm > $(BUILD)/host/ev3rt_link/link.log 2>&1; then \

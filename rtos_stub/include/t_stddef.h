@@ -125,23 +125,19 @@ typedef struct acvct {
 
 /*
  * assert as TOPPERS's t_stddef.h defines it: a failed assertion is logged
- * at LOG_EMERG with its expression, file and line (TOPPERS_assert_fail),
+ * at LOG_EMERG with its expression, file and line (TOPPERS_assert_fail, a
+ * macro of t_syslog.h, which every user of assert includes through kernel.h),
  * then TOPPERS_assert_abort runs, which on EV3RT's AM1808 target does
  * nothing, so the program goes on (public source: ev3rt-git/ev3rt-hrp2,
- * include/t_stddef.h and arch/arm_gcc/am1808/chip_stddef.h).  Without
- * NDEBUG only; Linux code never sees it (kbuild has no assert).
+ * include/t_stddef.h, include/t_syslog.h, arch/arm_gcc/am1808/chip_stddef.h).
+ * Without NDEBUG only; Linux code never sees it (kbuild has no assert).
  */
 #ifndef __KERNEL__
-#ifdef __cplusplus
-extern "C" {
-#endif
-/* Logs a failed assertion: its expression, file and line. */
-void TOPPERS_assert_fail(const char *expr, const char *file, int line);
 /* What follows a failed assertion on the target: nothing on EV3RT's AM1808. */
-void TOPPERS_assert_abort(void);
-#ifdef __cplusplus
+static inline void TOPPERS_assert_abort(void)
+{
 }
-#endif
+
 #undef assert
 #ifndef NDEBUG
 #define assert(exp) ((void)((exp) ? 0 : (TOPPERS_assert_fail(#exp, __FILE__, __LINE__), \

@@ -29,6 +29,12 @@ void syslog(uint_t prio, const char *format, ...)
 /* Sets which priorities reach the log (logmask) and the console (lowmask). */
 ER syslog_msk_log(uint_t logmask, uint_t lowmask);
 
+/* The log line of a failed assert (t_stddef.h): at LOG_EMERG, as TOPPERS's. */
+#ifndef TOPPERS_assert_fail
+#define TOPPERS_assert_fail(exp, file, line) \
+	syslog(LOG_EMERG, "%s:%d: Assertion `%s' failed.", (file), (int)(line), (exp))
+#endif
+
 #ifdef __cplusplus
 }
 #endif

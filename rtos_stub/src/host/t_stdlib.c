@@ -1,7 +1,6 @@
 /*
- * t_stdlib.c — TOPPERS's library functions on the host: error names, the
- * log line of a failed service call (t_perror, EV3RT's svc_perror) and a
- * failed assertion.  On the AM1808 the kernel's library and EV3RT's
+ * t_stdlib.c — TOPPERS's library functions on the host: error names and
+ * the log line of a failed service call (t_perror, EV3RT's svc_perror).  On the AM1808 the kernel's library and EV3RT's
  * platform define them.
  */
 #include "kernel_impl.h"
@@ -48,15 +47,4 @@ void svc_perror(const char *file, int_t line, const char *expr, ER ercd)
 {
 	if (ercd < 0)
 		t_perror(LOG_ERROR, file, line, expr, ercd);
-}
-
-/* Logs a failed assertion at LOG_EMERG, with its expression, file and line. */
-void TOPPERS_assert_fail(const char *expr, const char *file, int line)
-{
-	syslog(LOG_EMERG, "%s:%d: Assertion `%s' failed.", file, line, expr);
-}
-
-/* EV3RT's AM1808 target does nothing after a failed assertion; neither does the host. */
-void TOPPERS_assert_abort(void)
-{
 }
