@@ -104,7 +104,9 @@ $(EV3RT_PLATFORM): $(LIB_host) $(EV3RT_PLATFORM_OBJS) mk/ev3rt/platform_syms.sh 
 # ev3sim's own test apps, tests/ev3sim/apps/NAME (app.c alone): each linked
 # into tests/ev3sim/test_app_NAME.c as an example is into its test, as
 # ev3sim_test_NAME (no example's name).
-EV3SIM_TEST_APPS := $(patsubst tests/ev3sim/test_app_%.c,%,$(wildcard tests/ev3sim/test_app_*.c))
+# (only those with an app: test_app_build.c tests ev3sim/src/app_build.c)
+EV3SIM_TEST_APPS := $(filter $(patsubst tests/ev3sim/apps/%/app.cfg,%,$(wildcard tests/ev3sim/apps/*/app.cfg)),\
+	$(patsubst tests/ev3sim/test_app_%.c,%,$(wildcard tests/ev3sim/test_app_*.c)))
 
 # $(1) = test app, $(2) = config
 define ev3sim_test_app_rules
