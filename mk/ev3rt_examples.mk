@@ -96,10 +96,17 @@ EV3RT_PLATFORM_OBJS := $(BUILD)/host/obj/ev3sim/lcd_png.o $(BUILD)/host/obj/ev3s
 $(EV3RT_PLATFORM): $(LIB_host) $(EV3RT_PLATFORM_OBJS) mk/ev3rt/platform_syms.sh $(EV3RT_APP_FS_SYMS) $(wildcard api/*.h api/syssvc/*.h rtos_stub/include/*.h rtos_stub/include/syssvc/*.h)
 	@mkdir -p $(@D)
 	$(quiet) LD host $@
-	$(Q)ld -r -o $@.r.o --whole-archive $(LIB_host) --no-whole-archive $(EV3RT_PLATFORM_OBJS)
-	$(Q)PLATFORM_KEEP='ev3sim_run_main $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $@.r.o $(CC_host) $(call layer_inc,api) \
-		$(CFLAGS_host) $(KERNEL_DEFS) > $@.syms
-	$(Q)objcopy --keep-global-symbols=$@.syms $@.r.o $@
+	$(Q)set -e; tmp=$@.$$$$; \
+	ld -r -o $$tmp.r.o --whole-archive $(LIB_host) --no-whole-archive $(EV3RT_PLATFORM_OBJS); \
+	PLATFORM_KEEP='ev3sim_run_main $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $$tmp.r.o \
+		$(CC_host) $(call layer_inc,api) $(CFLAGS_host) $(KERNEL_DEFS) > $$tmp.syms; \
+	objcopy --keep-global-symbols=$$tmp.syms $$tmp.r.o $$tmp; \
+	mv $$tmp.syms $@.syms; rm -f $$tmp.r.o; mv $$tmp $@
+# Made with ev3sim, so that `ev3sim run` finds it made: apps' builds in
+# parallel (each under its own lock) would each make it; each makes it in
+# files of its own and renames them into place, so even then none sees
+# another's half-written object.
+$(BUILD)/host/ev3sim: | $(EV3RT_PLATFORM)
 
 # ev3sim's own test apps, tests/ev3sim/apps/NAME (app.c alone): each linked
 # into tests/ev3sim/test_app_NAME.c as an example is into its test, as
