@@ -208,9 +208,10 @@ FILE *ev3_serial_open_file(serial_port_t port)
 	return f;
 }
 
+/* A peer is there when the platform takes a zero-length write on the port. */
 bool_t ev3_bluetooth_is_connected(void)
 {
-	return false;
+	return api_may_wait() == E_OK && brick_io_serial_write(EV3_SERIAL_BT, NULL, 0) == E_OK;
 }
 
 bool_t ev3_usb_cdc_is_connected(void)

@@ -3,7 +3,7 @@
  * file or terminal, behind the API's storage and serial service calls
  * (brick_io.h, ev3api_brick_io.h).
  */
-#define _XOPEN_SOURCE 700
+#define _GNU_SOURCE    /* accept4, SOCK_NONBLOCK */
 #define _FILE_OFFSET_BITS 64   /* 32-bit hosts (qemu-arm): 64-bit inodes and offsets from readdir and stat */
 #include <dirent.h>
 #include <errno.h>
@@ -13,7 +13,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/un.h>
 #include <time.h>
 #include <unistd.h>
 #include "ev3api_brick_io.h"
@@ -30,6 +32,84 @@ static struct {
 	int serial_write_errno;             /* the first failed write's errno since the setup, 0: none */
 } io = { .serial_fd = -1 };
 
+/* Bluetooth SPP's far end: a PC program connected to a Unix socket (--bt). */
+static struct {
+	char *path;                         /* the socket's path, NULL: no peer can come */
+	int listen_fd;                      /* -1: none */
+	int peer_fd;                        /* -1: no peer connected */
+	bool hung_up;                       /* a peer left, and no read has seen the end yet */
+} bt = { .listen_fd = -1, .peer_fd = -1 };
+
+/* Closes the Bluetooth socket and its peer, and removes the socket's file. */
+static void bt_teardown(void)
+{
+	if (bt.peer_fd >= 0)
+		close(bt.peer_fd);
+	if (bt.listen_fd >= 0)
+		close(bt.listen_fd);
+	if (bt.path != NULL)
+		unlink(bt.path);
+	free(bt.path);
+	bt.path = NULL;
+	bt.listen_fd = bt.peer_fd = -1;
+	bt.hung_up = false;
+}
+
+ER brick_io_bt_listen(const char *path, char *err, size_t errlen)
+{
+	struct sockaddr_un addr = { .sun_family = AF_UNIX };
+	struct stat st;
+
+	bt_teardown();
+	if (strlen(path) >= sizeof(addr.sun_path)) {
+		snprintf(err, errlen, "--bt %s: a socket path has at most %zu bytes", path, sizeof(addr.sun_path) - 1);
+		return E_PAR;
+	}
+	/* a socket left by an earlier run is replaced; any other file is not */
+	if (lstat(path, &st) == 0) {
+		if (!S_ISSOCK(st.st_mode)) {
+			snprintf(err, errlen, "--bt %s: exists and is not a socket", path);
+			return E_OBJ;
+		}
+		unlink(path);
+	}
+	strcpy(addr.sun_path, path);
+	bt.listen_fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+	if (bt.listen_fd < 0 || bind(bt.listen_fd, (struct sockaddr *)&addr, sizeof(addr)) != 0 ||
+	    listen(bt.listen_fd, 1) != 0) {
+		snprintf(err, errlen, "--bt %s: %s", path, strerror(errno));
+		if (bt.listen_fd >= 0)
+			close(bt.listen_fd);
+		bt.listen_fd = -1;
+		return E_OBJ;
+	}
+	bt.path = strdup(path);
+	return E_OK;
+}
+
+/* The peer went away: Bluetooth is disconnected until another connects,
+ * and the next read sees the end of the stream, as on EV3RT. */
+static void bt_drop_peer(void)
+{
+	close(bt.peer_fd);
+	bt.peer_fd = -1;
+	bt.hung_up = true;
+}
+
+/* Whether a peer is connected: one that has hung up is dropped (its
+ * socket reads as ended, what it sent before read first), one waiting to
+ * connect is taken. */
+static bool bt_peer(void)
+{
+	char byte;
+
+	if (bt.peer_fd >= 0 && recv(bt.peer_fd, &byte, 1, MSG_PEEK | MSG_DONTWAIT) == 0)
+		bt_drop_peer();
+	if (bt.peer_fd < 0 && bt.listen_fd >= 0)
+		bt.peer_fd = accept4(bt.listen_fd, NULL, NULL, SOCK_NONBLOCK | SOCK_CLOEXEC);
+	return bt.peer_fd >= 0;
+}
+
 void brick_io_teardown(void)
 {
 	for (uint_t i = 0; i < BRICK_IO_MAX_DIRS; i++) {
@@ -45,6 +125,7 @@ void brick_io_teardown(void)
 		close(io.serial_fd);
 	io.serial_fd = -1;
 	io.serial_is_uart = false;
+	bt_teardown();
 }
 
 void brick_io_serial_to_uart(void)
@@ -370,11 +451,49 @@ static ER_UINT svc_dir_close(intptr_t dirid, intptr_t p2, intptr_t p3, intptr_t 
 }
 
 /* Whether port has a far end: the sensor-port UART when --serial gave one or
- * serial_log models it; Bluetooth and USB never (no host peer yet). */
+ * serial_log models it; Bluetooth while a peer is connected to --bt's
+ * socket; USB never (no host peer). */
 static bool serial_connected(intptr_t port)
 {
+	if (port == EV3_SERIAL_BT)
+		return bt_peer();
 	return (port == EV3_SERIAL_DEFAULT || port == EV3_SERIAL_UART) &&
 	       (io.serial_fd >= 0 || io.serial_is_uart);
+}
+
+/* Bluetooth's write: what the peer's socket takes (0: full); a peer gone
+ * is a disconnection, and the bytes are lost as on the air. */
+static ER_UINT bt_write(const void *buf, size_t len)
+{
+	ssize_t put = send(bt.peer_fd, buf, len, MSG_NOSIGNAL);
+
+	if (put >= 0)
+		return (ER_UINT)put;
+	if (errno == EAGAIN || errno == EWOULDBLOCK)
+		return 0;
+	bt_drop_peer();
+	return (ER_UINT)len;
+}
+
+/* Bluetooth's read: what the peer sent (0: nothing yet); once after a peer
+ * left, the end of the stream (E_OBJ); with no peer, the reader waits. */
+static ER_UINT bt_read(void *buf, size_t len)
+{
+	ssize_t got;
+
+	if (!bt_peer()) {
+		if (!bt.hung_up)
+			return 0;
+		bt.hung_up = false;
+		return E_OBJ;
+	}
+	got = recv(bt.peer_fd, buf, len, 0);
+	if (got > 0)
+		return (ER_UINT)got;
+	if (got < 0 && (errno == EAGAIN || errno == EWOULDBLOCK))
+		return 0;
+	bt_drop_peer();
+	return bt_read(buf, len);
 }
 
 /* The head of both directions: context, port, length and buffer. */
@@ -404,6 +523,8 @@ static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, i
 		return p_len == 0 ? E_OBJ : p_len;    /* nothing listens: the bytes are lost, as on the wire */
 	if (p_len == 0)
 		return E_OK;
+	if (port == EV3_SERIAL_BT)
+		return bt_write((const void *)p_buf, (size_t)p_len);
 	if (io.serial_is_uart)
 		return serial_log_send((const char *)p_buf, (uint_t)p_len);
 	put = write(io.serial_fd, (const void *)p_buf, (size_t)p_len);
@@ -426,6 +547,8 @@ static ER_UINT svc_serial_read(intptr_t port, intptr_t p_buf, intptr_t p_len, in
 	(void)p4; (void)p5; (void)cdmid;
 	if ((ercd = serial_check(port, p_buf, p_len, TPM_WRITE)) != E_OK || p_len == 0)
 		return ercd;
+	if (port == EV3_SERIAL_BT)
+		return bt_read((void *)p_buf, (size_t)p_len);
 	if (!serial_connected(port))
 		return 0;           /* nothing arrives from no far end: the reader waits */
 	if (io.serial_is_file || io.serial_is_uart)

@@ -418,6 +418,10 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	run_includes[0] = app;
 	if (brick_io_setup(o->sd_dir, o->serial_path, err, errlen) != E_OK)
 		return E_PAR;
+	if (o->bt_path != NULL && brick_io_bt_listen(o->bt_path, err, errlen) != E_OK) {
+		brick_io_teardown();
+		return E_PAR;
+	}
 	memset(&run, 0, sizeof(run));
 	run.o = o;
 	run.r = r;

@@ -61,6 +61,9 @@ static const char run_usage[] =
 	"  --serial PATH        the serial port (EV3_SERIAL_DEFAULT, EV3_SERIAL_UART): a file\n"
 	"                       receives what the app writes; a pseudo-terminal or FIFO\n"
 	"                       carries both directions\n"
+	"  --bt PATH            Bluetooth SPP: a Unix socket at PATH; a program connected to it\n"
+	"                       is the paired PC or brick (EV3_SERIAL_BT, SIO_PORT_BT,\n"
+	"                       ev3_bluetooth_is_connected)\n"
 	"  --trace FILE.vcd     host_sim's signal trace\n"
 	"  --audio FILE.wav     what the speaker played (32 kHz, 16-bit mono)\n"
 	"  --lcd FILE.png       the display's last frame (178 x 128, grey)\n"
@@ -210,6 +213,8 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		o->sd_dir = v;
 	} else if (strcmp(name, "--serial") == 0) {
 		o->serial_path = v;
+	} else if (strcmp(name, "--bt") == 0) {
+		o->bt_path = v;
 	} else if (strcmp(name, "--csv") == 0) {
 		*csv_path = v;
 	} else {

@@ -49,6 +49,13 @@ enum brick_io_card_use {
  * E_NOMEM. */
 ER brick_io_card_path(const char *path, enum brick_io_card_use use, char **host);
 
+/* After brick_io_setup: Bluetooth SPP's far end is a Unix socket at path,
+ * to which a PC program connects as it would pair with the brick; while it
+ * is connected, ev3_bluetooth_is_connected is true and EV3_SERIAL_BT (and
+ * SIO_PORT_BT) carry its bytes; it may disconnect and connect again.  E_OK,
+ * or E_PAR / E_OBJ with the reason in err. */
+ER brick_io_bt_listen(const char *path, char *err, size_t errlen);
+
 /* Closes what brick_io_setup opened (directories the app left open too). */
 void brick_io_teardown(void);
 
