@@ -108,7 +108,7 @@ static const struct { const char *name, *what; } unsupported_apis[] = {
  * HRP2 offers instead (ASP's and HRP3's specifications). */
 static const struct { const char *name, *why; } foreign_apis[] = {
 	{ "CRE_MBX", "TOPPERS/HRP2 has no mailboxes (CRE_MBX is TOPPERS/ASP's); a data queue, CRE_DTQ, carries data" },
-	{ "ACV_DOM", "ACV_DOM is TOPPERS/HRP3's; HRP2 domains have no access vectors" },
+	{ "ACV_DOM", "ACV_DOM (a domain's access vector) is TOPPERS/HRP3's, not HRP2's" },
 };
 
 /* Bounds of pass 2 on sizes, from the EV3's 64 MB of RAM (LEGO MINDSTORMS

@@ -77,7 +77,7 @@ int main(void)
 	struct cfg_ctx *ctx;
 	char *h, *c;
 
-	tap_plan(45);
+	tap_plan(46);
 
 	/* A configuration as the preprocessor leaves it: line markers, header declarations. */
 	is_int(run("# 1 \"app.cfg\"\n"
@@ -182,6 +182,8 @@ int main(void)
 		     "access control vectors are refused, not ignored");
 	expect_error("CRE_MBX(M, { 0U, 1, NULL });\n", "app.cfg:1:1: error: CRE_MBX: unknown static API: TOPPERS/HRP2 has no mailboxes",
 		     "a mailbox (ASP's) is named as not HRP2's");
+	expect_error("ACV_DOM({ 1, 1, 1, 1 });\n", "app.cfg:1:1: error: ACV_DOM: unknown static API: ACV_DOM (a domain's access vector) is TOPPERS/HRP3's",
+		     "HRP3's ACV_DOM is named as not HRP2's");
 	expect_error("# 1 \"app.h\" 1\nextern int x;\nFOO_BAR(1);\n# 3 \"app.cfg\" 2\n",
 		     "app.h:2:1: error: FOO_BAR: unknown static API", "a static-API-shaped call in a header is still refused");
 
