@@ -62,7 +62,8 @@ ER brick_io_bt_listen(const char *path, char *err, size_t errlen)
 
 	bt_teardown();
 	if (strlen(path) >= sizeof(addr.sun_path)) {
-		snprintf(err, errlen, "--bt %s: a socket path has at most %zu bytes", path, sizeof(addr.sun_path) - 1);
+		snprintf(err, errlen, "--bt: a socket path has at most %zu bytes (%zu given)",
+			 sizeof(addr.sun_path) - 1, strlen(path));
 		return E_PAR;
 	}
 	/* a socket left by an earlier run is replaced; any other file is not */

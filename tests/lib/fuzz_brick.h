@@ -31,7 +31,9 @@
 #define FZ_TASK_ID	1
 #define FZ_STACK	(64 * 1024)
 #define FZ_MS		1000000ULL
+#ifndef FZ_WORK_LIMIT_MS
 #define FZ_WORK_LIMIT_MS 2000	/* a work item that takes longer is a hang */
+#endif
 
 typedef void (*fz_work_fn)(const uint8_t *data, size_t size);
 
@@ -69,21 +71,22 @@ static inline void fz_check(const char *what, size_t size)
 	}
 }
 
-/* Boots the brick at the first call; at_boot (may be NULL) runs in the worker task once. */
-static inline void fz_boot(void (*at_boot)(void))
+/* Boots the brick at the first call, with the configurations includes (NULL
+ * ended) and the worker in protection domain domid; at_boot (may be NULL)
+ * runs in the worker task once. */
+static inline void fz_boot_with(const struct rtos_cfg *const *includes, ID domid, void (*at_boot)(void))
 {
-	static const struct rtos_task_cfg task = {
+	static struct rtos_task_cfg task = {
 		FZ_TASK_ID, TA_ACT, 0, fz_task, 8, FZ_STACK, TDOM_KERNEL, "fuzz",
 	};
-	static const struct rtos_cfg *const includes[] = { &ev3_drivers_cfg, NULL };
-	static const struct rtos_cfg cfg = {
-		.name = "fuzz", .tasks = &task, .ntasks = 1, .includes = includes,
-	};
+	static struct rtos_cfg cfg = { .name = "fuzz", .tasks = &task, .ntasks = 1 };
 	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
 	struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 1 };
 
 	if (fz.booted)
 		return;
+	task.domid = domid;
+	cfg.includes = includes;
 	fz.at_boot = at_boot;
 	if (hs_sim_boot(&scn) != E_OK) {
 		fprintf(stderr, "fuzz: boot failed: %s\n", rtos_host_boot_error());
@@ -97,6 +100,14 @@ static inline void fz_boot(void (*at_boot)(void))
 	}
 	fz.booted = true;
 	fz.bugs = rtos_host_bug_count();
+}
+
+/* Boots the brick with linux_compat and the drivers, the worker in the kernel domain. */
+static inline void fz_boot(void (*at_boot)(void))
+{
+	static const struct rtos_cfg *const includes[] = { &ev3_drivers_cfg, NULL };
+
+	fz_boot_with(includes, TDOM_KERNEL, at_boot);
 }
 
 /* Runs work(data, size) in the worker task; aborts on a hang or a bug report. */
