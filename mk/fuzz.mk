@@ -71,3 +71,12 @@ fuzz: fuzz-build
 			rm -f tests/fuzz/corpus/$$n/* && cp $(BUILD)/fuzz/min/$$n/* tests/fuzz/corpus/$$n/; \
 	done; \
 	echo "fuzz: report in $(BUILD)/fuzz/report.txt"; exit $$status
+
+# `make reliability`: docs/reliability.md's figures from runs made now
+# (mk/reliability.sh), in build/reliability/figures.md.
+.PHONY: reliability
+reliability: $(BUILD)/host-pgo/ev3sim
+	@mkdir -p $(BUILD)/reliability
+	@bash mk/reliability.sh $(BUILD)/host-pgo/ev3sim > $(BUILD)/reliability/figures.md
+	@cat $(BUILD)/reliability/figures.md
+	@echo "reliability: $(BUILD)/reliability/figures.md"
