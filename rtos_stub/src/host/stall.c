@@ -66,11 +66,18 @@ static uintptr_t context_pc(const void *uctx)
 #endif
 }
 
-/* "PC 0x... (file+0xoffset: symbol)" as far as the dynamic linker knows. */
+/* "PC 0x...: function at file:line" as addr2line knows it, else
+ * "PC 0x... (file+0xoffset: symbol)" as far as the dynamic linker knows. */
 static void describe_pc(uintptr_t pc, char *buf, size_t size)
 {
 	Dl_info info;
 
+	char line[256];
+
+	if (rtos_host_source_line(pc, line, sizeof(line))) {
+		snprintf(buf, size, "PC %#lx: %s", (unsigned long)pc, line);
+		return;
+	}
 	if (pc != 0 && dladdr((void *)pc, &info) != 0 && info.dli_fname != NULL) {
 		snprintf(buf, size, "PC %#lx (%s+%#lx%s%s)", (unsigned long)pc, info.dli_fname,
 			 (unsigned long)(pc - (uintptr_t)info.dli_fbase), info.dli_sname ? ": " : "",
@@ -117,7 +124,7 @@ static void stall_signal(int sig, siginfo_t *si, void *uctx)
 	kernel_exited = true;
 	if (cpu.kind != EXEC_TASK || cpu.isr_depth != 0 || cpu.irq_defer != 0) {
 		fflush(NULL);
-		_exit(3);
+		_exit(RTOS_HOST_EXIT_STALL);
 	}
 	/* Never returning to the task: the signal must not stay blocked. */
 	sigemptyset(&set);
