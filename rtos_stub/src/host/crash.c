@@ -344,8 +344,14 @@ static void crash_signal(int sig, siginfo_t *si, void *uctx)
 	uintptr_t pc, sp, addr = (uintptr_t)si->si_addr;
 	struct tcb *t = cpu.kind == EXEC_TASK ? runtsk : NULL;
 	bool overflow = false;
+	struct sigaction ignore;
 	unsigned i;
 
+	/* the stall watch must not take a slow report (addr2line, ASan's) for a stall: the
+	 * process ends here, and ASan's report unblocks signals on its way */
+	memset(&ignore, 0, sizeof(ignore));
+	ignore.sa_handler = SIG_IGN;
+	(void)sigaction(SIGALRM, &ignore, NULL);
 	context_pc_sp(uctx, &pc, &sp);
 	if (sig == SIGSEGV || sig == SIGBUS) {
 		struct tcb *owner = task_of_stack_address(sp);
@@ -455,6 +461,7 @@ void rtos_host_crash_install(void)
 	sa.sa_sigaction = crash_signal;
 	sa.sa_flags = SA_SIGINFO | SA_ONSTACK;
 	sigemptyset(&sa.sa_mask);
+	sigaddset(&sa.sa_mask, SIGALRM);   /* no stall report until the handler has ignored it */
 	for (unsigned i = 0; i < NFATAL; i++)
 		(void)sigaction(fatal_signals[i], &sa, &previous[i]);
 #if CRASH_ASAN
