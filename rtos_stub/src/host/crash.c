@@ -22,10 +22,10 @@
  * the trap stays on the faulting stack and a fault at a stack's end, with
  * the trap installed, still kills the process without a report.
  *
- * Under AddressSanitizer, whose SIGSEGV, SIGBUS and SIGFPE handlers are
- * installed before main, the report is written first and ASan's handler
- * then runs for its own (the stack trace); ASan's death callback exits with
- * this file's status instead of ASan's 1.
+ * A handler installed before ours runs after the report: AddressSanitizer's
+ * (SIGSEGV, SIGBUS and SIGFPE, installed before main) for its own report with
+ * the stack trace — ASan's death callback then exits with this file's status
+ * instead of ASan's 1 — or a fuzzer's, which keeps the input.
  */
 #define _GNU_SOURCE
 #include <dlfcn.h>
@@ -169,6 +169,17 @@ static bool addr2line_run(const char *tool, const char *file, uintptr_t addr, ch
 	return n > 0 && WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 && strncmp(buf, "?? ", 3) != 0;
 }
 
+/* Where the program is loaded and whether addr2line needs addresses relative to it. */
+static void find_program(void)
+{
+	Dl_info info;
+
+	if (dladdr((void *)(uintptr_t)&rtos_host_crash_install, &info) == 0 || info.dli_fbase == NULL)
+		return;
+	exe_base = (uintptr_t)info.dli_fbase;
+	exe_relocatable = ((const ElfW(Ehdr) *)info.dli_fbase)->e_type == ET_DYN;
+}
+
 bool rtos_host_source_line(uintptr_t pc, char *buf, size_t len)
 {
 	static const char *const tools[] = {
@@ -188,6 +199,8 @@ bool rtos_host_source_line(uintptr_t pc, char *buf, size_t len)
 	buf[0] = '\0';
 	if (pc == 0)
 		return false;
+	if (exe_base == 0)
+		find_program();
 	if (dladdr((void *)pc, &info) != 0 && info.dli_fbase != NULL &&
 	    (uintptr_t)info.dli_fbase != exe_base && info.dli_fname != NULL && info.dli_fname[0] == '/') {
 		file = info.dli_fname;                   /* a shared object: always relocatable */
@@ -406,20 +419,11 @@ static void crash_signal(int sig, siginfo_t *si, void *uctx)
 	write_all(STDERR_FILENO, line, r.len);
 	for (i = 0; i < NFATAL && fatal_signals[i] != sig; i++)
 		;
-	if (CRASH_ASAN && i < NFATAL)
-		chain(i, sig, si, uctx);     /* ASan's report; its death callback exits with ours */
+	/* ASan's report (its death callback exits with our status), or a fuzzer's, which
+	 * keeps the input that crashed; the default action is not taken: our status stands */
+	if (i < NFATAL)
+		chain(i, sig, si, uctx);
 	_exit(exit_status);
-}
-
-/* Where the program is loaded and whether addr2line needs addresses relative to it. */
-static void find_program(void)
-{
-	Dl_info info;
-
-	if (dladdr((void *)(uintptr_t)&rtos_host_crash_install, &info) == 0 || info.dli_fbase == NULL)
-		return;
-	exe_base = (uintptr_t)info.dli_fbase;
-	exe_relocatable = ((const ElfW(Ehdr) *)info.dli_fbase)->e_type == ET_DYN;
 }
 
 /* The alternate signal stack: auto-disarming where the kernel can. */
