@@ -114,13 +114,16 @@ static void stall_signal(int sig, siginfo_t *si, void *uctx)
 		return;
 	}
 	quiet_ms += period_ms;
-	if (quiet_ms < stall_ms)
+	if (quiet_ms < stall_ms || kernel_stalled)
 		return;
+	/* Before the report, which runs addr2line and may take longer than a period (qemu-arm
+	 * on a loaded machine): a tick pending meanwhile comes when the signal is unblocked
+	 * below and must not report the stall again. */
+	stall_timer_disarm();
+	kernel_stalled = true;
 	describe_pc(context_pc(uctx), where, sizeof(where));
 	rtos_host_bug("stall", "ran %u ms of wall-clock time without advancing virtual time (a loop that "
 		      "makes no service call?), at %s", quiet_ms, where);
-	stall_timer_disarm();
-	kernel_stalled = true;
 	kernel_exited = true;
 	if (cpu.kind != EXEC_TASK || cpu.isr_depth != 0 || cpu.irq_defer != 0) {
 		fflush(NULL);
