@@ -26,6 +26,9 @@
  * (SIGSEGV, SIGBUS and SIGFPE, installed before main) for its own report with
  * the stack trace — ASan's death callback then exits with this file's status
  * instead of ASan's 1 — or a fuzzer's, which keeps the input.
+ *
+ * The stack-use check (stack_use_record, rtos_host_task_stack_used) lives
+ * here too: its overrun ends the system with RTOS_HOST_EXIT_STACK as well.
  */
 #define _GNU_SOURCE
 #include <dlfcn.h>
@@ -56,6 +59,7 @@
 #endif
 
 #define ALT_STACK_SIZE (1024U * 1024U)   /* room for the pointer trap's emulation and ASan's report */
+#define FRAME_REACH    (64U * 1024U)     /* a stack pointer this far below a stack: a frame jumped its guard */
 
 static const int fatal_signals[] = { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT };
 #define NFATAL (sizeof(fatal_signals) / sizeof(fatal_signals[0]))
@@ -76,6 +80,7 @@ struct text {
 	size_t len, size;
 };
 
+/* Appends s (truncated at the buffer's end). */
 static void put_str(struct text *t, const char *s)
 {
 	while (*s != '\0' && t->len + 1 < t->size)
@@ -83,6 +88,7 @@ static void put_str(struct text *t, const char *s)
 	t->buf[t->len] = '\0';
 }
 
+/* Appends v in base (10 or 16) with at least min_digits digits. */
 static void put_uint(struct text *t, unsigned long long v, unsigned base, unsigned min_digits)
 {
 	char digits[24];
@@ -97,12 +103,14 @@ static void put_uint(struct text *t, unsigned long long v, unsigned base, unsign
 	t->buf[t->len] = '\0';
 }
 
+/* Appends v as 0x... */
 static void put_hex(struct text *t, uintptr_t v)
 {
 	put_str(t, "0x");
 	put_uint(t, v, 16, 1);
 }
 
+/* Writes n bytes of s to fd, through short writes and EINTR. */
 static void write_all(int fd, const char *s, size_t n)
 {
 	while (n > 0) {
@@ -264,9 +272,10 @@ static bool past_stack_end(const struct tcb *t, uintptr_t addr, uintptr_t sp)
 {
 	uintptr_t lo = (uintptr_t)t->co.stack_lo;
 
-	return (addr >= (uintptr_t)t->co.map_base && addr < lo) || (sp < lo && sp + 65536U >= lo);
+	return (addr >= (uintptr_t)t->co.map_base && addr < lo) || (sp < lo && sp + FRAME_REACH >= lo);
 }
 
+/* Appends t's configured name, or its ID. */
 static void put_task_name(struct text *r, const struct tcb *t)
 {
 	if (t->cfg->name != NULL) {
@@ -308,6 +317,7 @@ static void put_context(struct text *r)
 	}
 }
 
+/* The signal's name and what its code says. */
 static const char *signal_text(int sig, int code)
 {
 	switch (sig) {
@@ -350,6 +360,7 @@ static void chain(unsigned i, int sig, siginfo_t *si, void *uctx)
 	}
 }
 
+/* The handler: the report, the previous handler's, then the kind's exit status. */
 static void crash_signal(int sig, siginfo_t *si, void *uctx)
 {
 	char line[640], where[512];
