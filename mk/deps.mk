@@ -7,6 +7,7 @@ DEPS_PACKAGES := gcc-arm-linux-gnueabi g++-arm-linux-gnueabi libc6-dev-armel-cro
 
 # tool -> package, checked by `deps-check`
 DEPS_TOOLS := arm-linux-gnueabi-gcc:gcc-arm-linux-gnueabi arm-linux-gnueabi-g++:g++-arm-linux-gnueabi qemu-arm:qemu-user \
+	addr2line:binutils \
 	mkimage:u-boot-tools cloc:cloc gnuplot:gnuplot-nox sparse:sparse \
 	arm-none-eabi-gcc:gcc-arm-none-eabi prove:perl cppcheck:cppcheck clang-tidy:clang-tidy ccache:ccache
 

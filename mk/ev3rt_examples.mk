@@ -169,8 +169,10 @@ endif
 # `make ev3sim-run-check` (in make test): `ev3sim run` builds an app directory
 # and runs it, ending with its summary line: examples/blink, an app whose
 # Makefile.inc adds a source from another directory (APPL_COBJS, APPL_DIRS,
-# INCLUDES, mkfile_path) with its own ATT_MOD, and an app with a main() and
-# global names ev3lx uses inside (tests/ev3sim/apps/namespace).
+# INCLUDES, mkfile_path) with its own ATT_MOD, an app with a main() and
+# global names ev3lx uses inside (tests/ev3sim/apps/namespace); then
+# tests/ev3sim/apps/misbehave crashes (status 4) and stalls (status 3), each
+# reported with its source line from the runner `ev3sim run` built.
 .PHONY: ev3sim-run-check
 ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	+$(Q)out=$$($(BUILD)/host/ev3sim run examples/blink --seconds 3 --click back:1500ms --quiet) || \
@@ -194,6 +196,17 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=namespace .* warnings=0 errors=0 bugs=0 " || \
 		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
 	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
+	+$(Q)for case in "null 4 FATAL: crash: SIGSEGV" "stall 3 ev3sim run: the app stalled"; do \
+		set -- $$case; what=$$1; want=$$2; shift 2; text="$$*"; \
+		err=$$(EV3LX_MISBEHAVE=$$what EV3LX_STALL_MS=500 $(BUILD)/host/ev3sim run tests/ev3sim/apps/misbehave \
+			--seconds 2 2>&1 >/dev/null); status=$$?; \
+		if [ $$status != $$want ] || ! printf '%s\n' "$$err" | grep -q "$$text" || \
+		   ! printf '%s\n' "$$err" | grep -q "main_task at .*app\.c:[0-9]"; then \
+			echo "ev3sim-run-check: FAILED: misbehave $$what: status $$status (want $$want):"; \
+			printf '%s\n' "$$err"; exit 1; \
+		fi; \
+		echo "ev3sim-run-check: misbehave $$what: status $$status, $$(printf '%s\n' "$$err" | grep -o 'main_task at [^ ]*' | head -n 1)"; \
+	done
 
 TEST_SUITE_EXTRA += ev3sim-run-check
 

@@ -245,7 +245,7 @@ ER ev3sim_balance_run(const struct ev3sim_balance_opts *o, struct ev3sim_balance
 	}
 	end = EV3SIM_RELEASE_NS + (uint64_t)llround(o->seconds * 1e9);
 	tty = o->progress && isatty(STDERR_FILENO);
-	while (rtos_host_now() < end && !ev3sim_robot_fallen(NULL)) {
+	while (rtos_host_now() < end && !ev3sim_robot_fallen(NULL) && !rtos_host_exited()) {
 		uint64_t next = rtos_host_now() + CHUNK_NS;
 
 		hs_sim_run_until(next < end ? next : end);

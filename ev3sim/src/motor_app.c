@@ -120,7 +120,7 @@ ER ev3sim_motor_app(const struct ev3sim_motor_opts *o, FILE *out, char *err, siz
 		return E_SYS;
 	}
 	limit = (uint64_t)(o->seconds * 1e9) + 2000000000ULL;
-	while (!run.done && rtos_host_now() < limit)
+	while (!run.done && rtos_host_now() < limit && !rtos_host_exited())
 		hs_sim_run_for(10000000ULL);
 	wall = ev3sim_wall_seconds() - wall0;
 	fprintf(out, "port=%c kind=%s mode=%s value=%d seconds=%g counts=%ld final_speed_pct=%d "

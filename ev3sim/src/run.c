@@ -455,7 +455,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	end = (uint64_t)llround(o->seconds * 1e9);
 	if (o->lcd_video_path && (!ev3sim_lcd_video || ev3sim_lcd_video->begin(o->lcd_video_path) != E_OK))
 		lcd_failed = true;
-	while (rtos_host_now() < end) {
+	/* a stalled task or a stack overrun ends the system: time then stands still */
+	while (rtos_host_now() < end && !rtos_host_exited()) {
 		uint64_t next = rtos_host_now() + CHUNK_NS;
 
 		hs_sim_run_until(next < end ? next : end);
@@ -478,6 +479,9 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	}
 	r->seconds = rtos_host_now() * 1e-9;
 	r->bugs = rtos_host_bug_count();
+	r->end_status = rtos_host_end_status();
+	if (r->end_status != 0)
+		snprintf(r->end_report, sizeof(r->end_report), "%s", rtos_host_last_bug());
 	r->wall_s = ev3sim_wall_seconds() - wall0;
 	if (ev3sim_wav_end(audio_err, sizeof(audio_err)) != E_OK)
 		ercd = E_SYS;
@@ -497,6 +501,12 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	rtos_host_trace_set_sink(NULL, NULL);
 	shutdown = hs_sim_shutdown();
 	brick_io_teardown();
+	if (r->end_status != 0) {
+		snprintf(err, errlen, "the app %s at %.3f s: %s",
+			 r->end_status == RTOS_HOST_EXIT_STALL ? "stalled" : "overran a task's stack", r->seconds,
+			 r->end_report);
+		return E_SYS;
+	}
 	if (shutdown != E_OK) {
 		snprintf(err, errlen, "cannot write %s completely", o->trace_path);
 		return E_SYS;

@@ -230,7 +230,7 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 	struct ev3sim_run_result r;
 	const char *csv_path = NULL;
 	bool touch_given = false, quiet = false;
-	char err[256], line[1024];
+	char err[1536], line[1024];
 	int status = EV3SIM_EXIT_OK;
 
 	/* the robot first: its devices are the defaults the other options change */
@@ -276,7 +276,7 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 	o.quiet = quiet;
 	if (ev3sim_run(&o, app, &r, err, sizeof(err)) != E_OK) {
 		fprintf(stderr, "ev3sim run: %s\n", err);
-		status = EV3SIM_EXIT_FAIL;
+		status = r.end_status != 0 ? r.end_status : EV3SIM_EXIT_FAIL;
 	} else {
 		ev3sim_run_summary(&o, &r, line, sizeof(line));
 		printf("%s\n", line);

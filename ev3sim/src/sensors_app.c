@@ -397,7 +397,7 @@ ER ev3sim_sensors_app(const struct ev3sim_sensors_opts *o, FILE *out, char *err,
 	hs_sim_at(TOUCH_TOGGLE_NS, toggle_touch, NULL);
 	/* detection, up to 4 s of handshakes, then the rows */
 	limit = (uint64_t)(o->seconds * 1e9) + 8000000000ULL;
-	while (!run.done && rtos_host_now() < limit)
+	while (!run.done && rtos_host_now() < limit && !rtos_host_exited())
 		hs_sim_run_for(10000000ULL);
 	wall = ev3sim_wall_seconds() - wall0;
 	fprintf(out, "in1=%s/%s in2=%s/%s in3=%s/%s in4=%s/%s outA=%s/%s outB=%s/%s outC=%s/%s "

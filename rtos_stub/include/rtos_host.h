@@ -13,6 +13,7 @@
 #define RTOS_HOST_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include "kernel.h"
 #include "rtos_cfg.h"
 
@@ -123,6 +124,58 @@ ER rtos_host_set_svc_cost(FN fncd, int32_t ns);
 void rtos_host_set_stall_bound(uint32_t stall_ms);
 /* True if the last run ended with a stalled task (until the next boot). */
 bool rtos_host_stalled(void);
+
+/* ---- Fatal faults: stall, crash, stack overflow (docs/rtos-stub.md) ---- */
+
+/*
+ * The exit statuses of a program whose system ended on a fault: a stalled
+ * task (stall.c), a fatal signal (crash.c: SIGSEGV, SIGBUS, SIGFPE, SIGILL,
+ * SIGABRT), a task past its stack (its host stack's end, or more use than
+ * its configuration gives it).  ev3sim uses the same numbers.
+ */
+#define RTOS_HOST_EXIT_STALL  3
+#define RTOS_HOST_EXIT_CRASH  4
+#define RTOS_HOST_EXIT_STACK  5
+
+/*
+ * Installs the fatal-signal report (rtos_host_boot does, once per process):
+ * an alternate signal stack and handlers for SIGSEGV, SIGBUS, SIGFPE, SIGILL
+ * and SIGABRT that print "FATAL: ..." lines on stderr naming the kind, the
+ * context (the running task), the faulting address and the source line of
+ * the faulting PC (addr2line), then exit with RTOS_HOST_EXIT_CRASH, or
+ * RTOS_HOST_EXIT_STACK for a fault at a task stack's end.  A handler that was
+ * installed before (AddressSanitizer's) runs after the report, for its own.
+ */
+void rtos_host_crash_install(void);
+/* True if a handler running on the alternate signal stack may switch tasks:
+ * the stack disarms itself while in use (SS_AUTODISARM), so a signal taken
+ * meanwhile lands on the stack of whatever runs.  host_sim's pointer trap
+ * runs there only then. */
+bool rtos_host_signal_stack_disarms(void);
+/* "function at file:line" of code address pc, by addr2line on the program
+ * (or the shared object holding pc) into buf; false if unknown.  Safe enough
+ * for a signal handler: dladdr, fork, exec, read, waitpid. */
+bool rtos_host_source_line(uintptr_t pc, char *buf, size_t len);
+
+/*
+ * Stack use: the depth a task's own code reached below its entry, sampled
+ * at each of its service calls made at task level (outside extended service
+ * calls) — interrupts, device models and extended services run nested on the
+ * host's task stacks and are not the task's.  A task whose use exceeds the
+ * stack size its configuration gives it (stksz) by more than
+ * RTOS_HOST_STACK_SLACK is reported as a bug ("stack: ...", naming the task,
+ * the size and the use) and the system ends as after ext_ker;
+ * rtos_host_end_status then says RTOS_HOST_EXIT_STACK.  The slack is the
+ * host's own: 64-bit frames, and glibc's fprintf to an unbuffered stream (a
+ * serial port's) keeps a BUFSIZ (8 KiB) buffer on the stack where newlib's
+ * keeps 1 KiB — a 4 KiB task that logs that way measures 9.5 KiB here.
+ */
+#define RTOS_HOST_STACK_SLACK (16U * 1024U)
+/* The deepest use measured for task tskid since boot (0 if none or no task). */
+size_t rtos_host_task_stack_used(ID tskid);
+/* Why the system ended: 0 (still running, never booted, or ext_ker),
+ * RTOS_HOST_EXIT_STALL or RTOS_HOST_EXIT_STACK; until the next boot. */
+int rtos_host_end_status(void);
 
 /* ---- Device events (the hardware side) ---- */
 

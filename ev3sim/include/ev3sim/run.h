@@ -82,6 +82,8 @@ struct ev3sim_run_result {
 	double progress_m, travel_m, max_line_error_mm, rms_line_error_mm, on_line_pct;
 	double wall_s;
 	unsigned lcd_dark;          /* dark pixels of the display at the end (with lcd_path) */
+	int end_status;             /* 0, or why the app ended the system: RTOS_HOST_EXIT_STALL, _STACK */
+	char end_report[1024];      /* then: the kernel's report (task, PC and source line, or sizes) */
 };
 
 /* Writes what the display shows as a 178 x 128 8-bit grey PNG (0 dark, 255

@@ -25,7 +25,8 @@
  * addressing mode and write-back) on the same accessor path, updating the
  * saved registers and the PC.  An instruction neither decoder handles stops
  * the run with a report naming the instruction, its address and the
- * register's physical address — never a bare crash.
+ * register's physical address — never a bare crash.  Other faults go to the
+ * kernel's fatal-signal report (rtos_host_crash_install), installed first.
  */
 #define _GNU_SOURCE
 #include <signal.h>
@@ -477,11 +478,16 @@ bool hs_trap_install(void)
 
 	if (installed)
 		return HS_TRAP_EMULATES;
+	/* the kernel's fatal-signal report first: faults that are not ours go to it */
+	rtos_host_crash_install();
 	memset(&sa, 0, sizeof(sa));
 	sa.sa_sigaction = trap_handler;
 	/* SA_NODEFER: an access emulated here may run interrupt handlers or
-	 * switch tasks (per-access CPU time), which may trap again. */
-	sa.sa_flags = SA_SIGINFO | SA_NODEFER;
+	 * switch tasks (per-access CPU time), which may trap again.  SA_ONSTACK
+	 * only where the alternate stack disarms itself while in use (so such a
+	 * switch is safe there): then a fault at a task stack's end, which has no
+	 * room for a handler, still reaches the kernel's report through chain. */
+	sa.sa_flags = SA_SIGINFO | SA_NODEFER | (rtos_host_signal_stack_disarms() ? SA_ONSTACK : 0);
 	sigemptyset(&sa.sa_mask);
 	if (sigaction(SIGSEGV, &sa, &previous) != 0)
 		return false;

@@ -431,7 +431,6 @@ static void free_objects(void)
 	paused_task = NULL;
 	run_active = false;
 	kernel_exited = false;
-	kernel_stalled = false;
 }
 
 /*
@@ -491,8 +490,12 @@ ER rtos_host_boot(const struct rtos_cfg *cfg)
 		rtos_host_bug("harness", "rtos_host_boot from inside the kernel (%s)", rtos_host_context_name());
 		return E_CTX;
 	}
+	rtos_host_crash_install();
 	free_objects();
 	kernel_booted = false;
+	/* kept through shutdown: a program's exit status still says why its system ended */
+	kernel_stalled = false;
+	kernel_stack_overrun = false;
 	bug_reset();
 	syslog_reset();
 	boot_error[0] = '\0';

@@ -16,23 +16,26 @@ static uint_t bugs_since_boot;
 static uint_t bugs_unexpected;
 static bool bugs_expected;
 static bool exit_hook_installed;
-static char last_bug[512];
+static char last_bug[1024];
 
-/* At exit: an unexpected bug turns a passing run into a failing one. */
+/* At exit: an unexpected bug turns a passing run into a failing one; a system
+ * that ended on a stalled task or a stack overrun exits with that kind's status. */
 static void bug_exit_hook(void)
 {
+	int status = rtos_host_end_status();
+
 	if (bugs_unexpected == 0)
 		return;
 	fprintf(stderr, "rtos_host: %u unexpected bug report(s): failing the run\n", bugs_unexpected);
 	printf("# rtos_host: %u unexpected bug report(s): failing the run\n", bugs_unexpected);
 	fflush(NULL);
-	_exit(1);
+	_exit(status != 0 ? status : 1);
 }
 
 /* Reports a bug on stderr (unless expected) and as a TAP diagnostic, with virtual time and context. */
 void rtos_host_bug(const char *what, const char *fmt, ...)
 {
-	char msg[384];
+	char msg[768];
 	va_list ap;
 
 	va_start(ap, fmt);

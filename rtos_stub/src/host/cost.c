@@ -47,10 +47,13 @@ static bool charge_applies(void)
 	       runtsk->nocharge_depth == 0 && (cpu_cost.kernel_domain || runtsk->cfg->domid != TDOM_KERNEL);
 }
 
-/* The first step of every service call: its CPU time. */
+/* The first step of every service call: the calling task's stack use, its CPU time. */
 void svc_charge(void)
 {
-	if (cpu_cost.svc_ns != 0 && charge_applies())
+	if (cpu.kind != EXEC_TASK || cpu.isr_depth != 0 || cpu.irq_defer != 0 || runtsk->nocharge_depth != 0)
+		return;
+	stack_use_sample(runtsk, __builtin_frame_address(0));
+	if (cpu_cost.svc_ns != 0 && (cpu_cost.kernel_domain || runtsk->cfg->domid != TDOM_KERNEL))
 		task_consume(cpu_cost.svc_ns);
 }
 
@@ -62,6 +65,8 @@ struct tcb *svc_ext_enter(FN fncd)
 
 	if (cpu.kind != EXEC_TASK)
 		return NULL;
+	if (cpu.isr_depth == 0 && cpu.irq_defer == 0 && runtsk->nocharge_depth == 0)
+		stack_use_sample(runtsk, __builtin_frame_address(0));
 	if (ns != 0 && charge_applies())
 		task_consume(ns);
 	/* the task that called, even if another ran meanwhile */

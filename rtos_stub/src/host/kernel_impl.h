@@ -153,6 +153,8 @@ struct tcb {
 	FLGPTN   flgptn;                 /* pattern at release */
 	struct tmevt tmevt;
 	struct coroutine co;
+	uintptr_t stack_entry;           /* the stack pointer where the task's code starts (task_entry) */
+	size_t   stack_used;             /* the deepest use below stack_entry seen since boot */
 };
 
 extern struct tcb *tcb_table[TNUM_TSKID + 1];   /* NULL: not configured */
@@ -415,6 +417,19 @@ static inline void task_consume(uint64_t ns)
 /* Starts the stall watch for a run of the harness (it ends with run_active). */
 void stall_watch_start(void);
 extern bool kernel_stalled;
+/* The system ended on a task's stack overrun (until the next boot). */
+extern bool kernel_stack_overrun;
+/* A task's stack use passed its record: reports and ends the system if it
+ * passes the configured size (crash.c). */
+void stack_use_record(struct tcb *t, size_t used);
+/* Samples the running task's stack use at frame (a service call's entry, at task level). */
+static inline void stack_use_sample(struct tcb *t, const void *frame)
+{
+	size_t used = t->stack_entry - (uintptr_t)frame;
+
+	if (used > t->stack_used && (uintptr_t)frame < t->stack_entry)
+		stack_use_record(t, used);
+}
 
 /* ---- Context checks, TOPPERS shape ---- */
 static inline bool ctx_is_task(void)

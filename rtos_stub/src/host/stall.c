@@ -66,11 +66,18 @@ static uintptr_t context_pc(const void *uctx)
 #endif
 }
 
-/* "PC 0x... (file+0xoffset: symbol)" as far as the dynamic linker knows. */
+/* "PC 0x...: function at file:line" as addr2line knows it, else
+ * "PC 0x... (file+0xoffset: symbol)" as far as the dynamic linker knows. */
 static void describe_pc(uintptr_t pc, char *buf, size_t size)
 {
 	Dl_info info;
 
+	char line[256];
+
+	if (rtos_host_source_line(pc, line, sizeof(line))) {
+		snprintf(buf, size, "PC %#lx: %s", (unsigned long)pc, line);
+		return;
+	}
 	if (pc != 0 && dladdr((void *)pc, &info) != 0 && info.dli_fname != NULL) {
 		snprintf(buf, size, "PC %#lx (%s+%#lx%s%s)", (unsigned long)pc, info.dli_fname,
 			 (unsigned long)(pc - (uintptr_t)info.dli_fbase), info.dli_sname ? ": " : "",
@@ -107,17 +114,20 @@ static void stall_signal(int sig, siginfo_t *si, void *uctx)
 		return;
 	}
 	quiet_ms += period_ms;
-	if (quiet_ms < stall_ms)
+	if (quiet_ms < stall_ms || kernel_stalled)
 		return;
+	/* Before the report, which runs addr2line and may take longer than a period (qemu-arm
+	 * on a loaded machine): a tick pending meanwhile comes when the signal is unblocked
+	 * below and must not report the stall again. */
+	stall_timer_disarm();
+	kernel_stalled = true;
 	describe_pc(context_pc(uctx), where, sizeof(where));
 	rtos_host_bug("stall", "ran %u ms of wall-clock time without advancing virtual time (a loop that "
 		      "makes no service call?), at %s", quiet_ms, where);
-	stall_timer_disarm();
-	kernel_stalled = true;
 	kernel_exited = true;
 	if (cpu.kind != EXEC_TASK || cpu.isr_depth != 0 || cpu.irq_defer != 0) {
 		fflush(NULL);
-		_exit(3);
+		_exit(RTOS_HOST_EXIT_STALL);
 	}
 	/* Never returning to the task: the signal must not stay blocked. */
 	sigemptyset(&set);

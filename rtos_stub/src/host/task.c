@@ -147,6 +147,7 @@ static void task_entry(void)
 {
 	struct tcb *t = runtsk;
 
+	t->stack_entry = (uintptr_t)__builtin_frame_address(0);
 	irq_dispatch_pending();
 	t->cfg->task(t->cfg->exinf);
 	task_exit_running();
