@@ -210,6 +210,15 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 
 TEST_SUITE_EXTRA += ev3sim-run-check
 
+# `make adversarial-check` (in make test): bad input to ev3sim and its
+# configurator and a rebuilt tree, each answered with its message and exit status
+# (tests/ev3sim/adversarial_check.sh, TAP).
+.PHONY: adversarial-check
+adversarial-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
+	+$(Q)EV3SIM=$(abspath $(BUILD)/host/ev3sim) ROOT=$(CURDIR) WORK=$(abspath $(BUILD)/adversarial-check) \
+		prove --exec sh tests/ev3sim/adversarial_check.sh
+TEST_SUITE_EXTRA += adversarial-check
+
 # `make ev3sim-app-path-check` (in make test): `ev3sim run` on app directories
 # whose paths make cannot hold ('$', spaces, quotes), an SDK library in such
 # a directory, two directories of one name, four first runs of one app at
