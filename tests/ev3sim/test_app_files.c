@@ -59,10 +59,10 @@ static void test_full_disk(void)
 static void test_fifo(void)
 {
 	char fifo[64];
-	int fds[2];
+	int fd;
 
 	snprintf(fifo, sizeof(fifo), "%s/fifo", tmp);
-	if (mkfifo(fifo, 0600) != 0 || pipe(fds) != 0) {
+	if (mkfifo(fifo, 0600) != 0) {
 		tap_skip(5, "cannot make a FIFO");
 		return;
 	}
@@ -78,28 +78,20 @@ static void test_fifo(void)
 		ok(run_files(vcd, NULL) && run.status == 1 && strstr(run.err, ": a FIFO ("),
 		   "--trace to a FIFO: refused before the run");
 	}
-	{
-		const char *args[] = { "--seconds", "1", "--quiet", "--audio", fifo, NULL };
-		pid_t reader = fork();
-		unsigned long bytes = 0;
+	/* a reader (this test, holding the FIFO's read end; half a second's WAV fits the pipe's 64 KiB) */
+	if ((fd = et_fifo_reader(fifo)) >= 0) {
+		const char *args[] = { "--seconds", "0.5", "--quiet", "--audio", fifo, NULL };
+		static char wav[65536];
+		size_t n;
 
-		if (reader == 0) {
-			FILE *in = fopen(fifo, "r");
-			unsigned long n = 0;
-
-			while (in && getc(in) != EOF)
-				n++;
-			if (write(fds[1], &n, sizeof(n)) != sizeof(n))
-				_exit(1);
-			_exit(0);
-		}
 		ok(run_files(args, NULL) && run.status == 0, "--audio to a FIFO with a reader: done");
-		ok(read(fds[0], &bytes, sizeof(bytes)) == sizeof(bytes) && bytes == 44 + 2 * EV3_SPEAKER_RATE &&
-		   waitpid(reader, NULL, 0) == reader, "the reader got the header and 1 s of samples (%lu bytes)",
-		   bytes);
+		n = et_fifo_drain(fd, wav, sizeof(wav));
+		ok(n == 44 + EV3_SPEAKER_RATE && memcmp(wav, "RIFF\xff\xff\xff\xff", 8) == 0,
+		   "the reader got the header, its sizes 'to the end', and 0.5 s of samples (%zu bytes)", n);
+		close(fd);
+	} else {
+		tap_skip(2, "cannot open the FIFO");
 	}
-	close(fds[0]);
-	close(fds[1]);
 	unlink(fifo);
 }
 

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
 #include <unistd.h>
 #include <sys/wait.h>
 #include "tap.h"
@@ -91,6 +92,26 @@ static inline bool et_run_main(struct et_run *r, const char *const *args, int (*
 static inline bool et_run(struct et_run *r, const char *const *args)
 {
 	return et_run_main(r, args, ev3sim_main, NULL);
+}
+
+/* Opens FIFO path for reading without blocking, so that a writer's open
+ * finds a reader; -1 if it cannot.  The FIFO then holds what is written
+ * (up to the pipe's 64 KiB) until et_fifo_drain reads it. */
+static inline int et_fifo_reader(const char *path)
+{
+	return open(path, O_RDONLY | O_NONBLOCK);
+}
+
+/* Reads what the FIFO's writer left (it has closed it) into buf, at most
+ * len bytes; the number read.  Never blocks. */
+static inline size_t et_fifo_drain(int fd, char *buf, size_t len)
+{
+	size_t n = 0;
+	ssize_t got;
+
+	while (n < len && (got = read(fd, buf + n, len - n)) > 0)
+		n += (size_t)got;
+	return n;
 }
 
 /* The last line of the output (the summary), without its newline. */
