@@ -25,13 +25,7 @@ static char line_buf[16];       /* outside it too */
 
 static void put_file(const char *rel, const char *text, size_t len)
 {
-	char path[256];
-	FILE *f;
-
-	snprintf(path, sizeof(path), "%s/%s", card, rel);
-	f = fopen(path, "wb");
-	if (f == NULL || fwrite(text, 1, len, f) != len || fclose(f) != 0)
-		tap_bail_out(path);
+	tf_put_file(card, rel, text, len);
 }
 
 static void make_card(void)

@@ -18,17 +18,6 @@
 
 static char dir[64], card[96];
 
-static void put(const char *name, const uint8_t *bytes, size_t len)
-{
-	char path[160];
-	FILE *f;
-
-	snprintf(path, sizeof(path), "%s/%s", card, name);
-	f = fopen(path, "wb");
-	if (f == NULL || fwrite(bytes, 1, len, f) != len || fclose(f) != 0)
-		tap_bail_out(path);
-}
-
 static void le32(uint8_t *p, uint32_t v)
 {
 	p[0] = (uint8_t)v;
@@ -66,8 +55,8 @@ static void make_card(void)
 	tf_make_scratch_dir(dir);
 	snprintf(card, sizeof(card), "%s/card", dir);
 	mkdir(card, 0755);
-	put("picture.bmp", bmp, sizeof(bmp));
-	put("beep.wav", wav, sizeof(wav));
+	tf_put_file(card, "picture.bmp", bmp, sizeof(bmp));
+	tf_put_file(card, "beep.wav", wav, sizeof(wav));
 }
 
 static void body(void)

@@ -32,6 +32,18 @@ static inline bool tf_write_text(const char *path, const char *text)
 	return f != NULL && fputs(text, f) >= 0 && fclose(f) == 0;
 }
 
+/* Writes len bytes to dir/rel (created or truncated); bails out on any error. */
+static inline void tf_put_file(const char *dir, const char *rel, const void *bytes, size_t len)
+{
+	char path[512];
+	FILE *f;
+
+	snprintf(path, sizeof(path), "%s/%s", dir, rel);
+	f = fopen(path, "wb");
+	if (f == NULL || fwrite(bytes, 1, len, f) != len || fclose(f) != 0)
+		tap_bail_out(path);
+}
+
 /* Reads path into buf (NUL-terminated, at most len - 1 bytes); the bytes read, 0 if none. */
 static inline size_t tf_read_text(const char *path, char *buf, size_t len)
 {
