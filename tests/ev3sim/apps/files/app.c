@@ -15,7 +15,6 @@
 #include <unistd.h>
 #include "ev3api.h"
 #include "app.h"
-#include "kernel_cfg.h"
 
 /* Logs the outcome of one step: ok is its success. */
 static void step(const char *what, bool ok)

@@ -6,6 +6,7 @@ extern "C" {
 #endif
 
 #include "ev3api.h"
+#include "target_test.h"
 
 #define MAIN_PRIORITY     (TMIN_APP_TPRI + 1)
 

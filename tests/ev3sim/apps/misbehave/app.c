@@ -14,7 +14,6 @@
 #include <string.h>
 #include "ev3api.h"
 #include "app.h"
-#include "kernel_cfg.h"
 
 #define BIG_LOCALS (64 * 1024)
 

@@ -4,6 +4,7 @@
  * big-locals), so that tests can check ev3sim's reports and exit statuses.
  */
 #include "ev3api.h"
+#include "target_test.h"
 
 #define MAIN_PRIORITY (TMIN_APP_TPRI + 1)
 #ifndef STACK_SIZE

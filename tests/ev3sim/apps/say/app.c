@@ -3,7 +3,6 @@
  */
 #include "ev3api.h"
 #include "app.h"
-#include "kernel_cfg.h"
 
 void main_task(intptr_t exinf)
 {

@@ -3,6 +3,7 @@
  * ev3sim-app-path-check copies it under awkward paths and edits this line.
  */
 #include "ev3api.h"
+#include "target_test.h"
 
 #define SAY_WHAT "original"
 
