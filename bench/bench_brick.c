@@ -75,7 +75,7 @@ bool bench_brick_run(enum bench_brick_kind kind, void (*body)(void), uint64_t se
 	struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = seed };
 	/* The calls' CPU time in virtual time is simulation: the bench measures the
 	 * code itself, and a call that let virtual time pass took a slow path. */
-	static const struct rtos_host_cpu_cost free_calls = { 0, 0, false };
+	static const struct rtos_host_cpu_cost free_calls = { 0, 0, false, 0 };
 	struct rtos_host_cpu_cost cost;
 	bool done;
 

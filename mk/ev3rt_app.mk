@@ -47,11 +47,14 @@ EV3RT_APP_FS_SYMS := mk/ev3rt_app_fs.syms
 # call would have no definition to link against.
 EV3RT_APP_CSTD   ?= -std=gnu99 -fgnu89-inline
 EV3RT_APP_CXXSTD ?= -std=gnu++11
+# The app's own computation costs virtual CPU time: every basic block calls
+# the host kernel's __sanitizer_cov_trace_pc (rtos_host.h, CPU time).
+EV3RT_APP_CPU    ?= -fsanitize-coverage=trace-pc
 
 # The app compile flags above are a key of each configuration's
 # ($(BUILD)/CONFIG/ev3rt/app.key) that every app object depends on, made once.
 ev3rt_app_key = $(if $(EV3RT_APP_KEY_$(1)),,$(eval EV3RT_APP_KEY_$(1) := $(BUILD)/$(1)/ev3rt/app.key)$(eval \
-	$(call key_file_rule,$(BUILD)/$(1)/ev3rt/app.key,$$(EV3RT_APP_CSTD) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_WARN))))
+	$(call key_file_rule,$(BUILD)/$(1)/ev3rt/app.key,$$(EV3RT_APP_CSTD) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CPU) $$(EV3RT_APP_WARN))))
 
 define ev3rt_app
 $(call ev3rt_app_key,$(2))
@@ -73,14 +76,14 @@ $(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.c $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h 
 		$(BUILD)/$(2)/ev3rt/app.key
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(2) $$<
-	$(Q)$$(CC_$(2)) $$(EV3RT_APP_CSTD) $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+	$(Q)$$(CC_$(2)) $$(EV3RT_APP_CSTD) $$(EV3RT_APP_CPU) $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
 		-MMD -MP -c $$< -o $$@
 
 $(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.cpp $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h $(BUILD)/$(2)/compile.key \
 		$(BUILD)/$(2)/ev3rt/app.key
 	@mkdir -p $$(@D)
 	$$(quiet) CXX $(2) $$<
-	$(Q)$$(CXX_$(2)) $$(EV3RT_APP_CXXSTD) $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+	$(Q)$$(CXX_$(2)) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CPU) $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
 		-MMD -MP -c $$< -o $$@
 
 $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c $(BUILD)/$(2)/compile.key

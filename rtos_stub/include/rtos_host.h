@@ -100,10 +100,28 @@ uint64_t rtos_host_quiet_until(void);
 #define RTOS_HOST_EXT_SVC_INSN  562U
 #define RTOS_HOST_INSN_NS(n)    ((uint32_t)(((uint64_t)(n) * 1000000000U + RTOS_HOST_CPU_HZ / 2) / RTOS_HOST_CPU_HZ))
 
+/*
+ * The app's own computation costs CPU time too: an EV3RT app is compiled
+ * with -fsanitize-coverage=trace-pc (mk/ev3rt_app.mk), so every basic block
+ * it enters calls __sanitizer_cov_trace_pc, and each block costs
+ * RTOS_HOST_APP_BLOCK_INSN instructions at 300 MHz, charged to the task as
+ * a service call is (user-domain tasks at task level, after boot; 16
+ * blocks at a time).  The block counts are the compiler's, the same on the
+ * host and the ARMv5 (gcc instruments before it lowers to a target).  Five
+ * instructions a block is what the ARM926's build of integer code executes
+ * under qemu-arm, measured with -singlestep on loops, a bubble sort and a
+ * matrix product: 3.2 to 6.0 (docs/ev3rt-apps.md, CPU time); library code
+ * the app calls (stdio, soft floating point) is not instrumented and costs
+ * nothing, so a program spending its time there reads faster than on the
+ * brick.
+ */
+#define RTOS_HOST_APP_BLOCK_INSN 5U
+
 struct rtos_host_cpu_cost {
 	uint32_t svc_ns;         /* a kernel service call (0: free) */
 	uint32_t ext_svc_ns;     /* cal_svc, unless set per function code */
 	bool     kernel_domain;  /* charge kernel-domain tasks too */
+	uint32_t app_block_ns;   /* a basic block of an app's own code (0: free) */
 };
 
 /* Sets the costs (NULL: the defaults above); they stay across boots. */

@@ -1,7 +1,8 @@
 /*
  * test_app_misbehave.c — an app that misbehaves (tests/ev3sim/apps/misbehave)
  * run as `ev3sim run` runs it (ev3sim_run_main), once per mistake in a
- * child process: a stalled task, a NULL store, a division by zero, abort(),
+ * child process: a stalled task (and a busy one, which is no stall: its CPU
+ * time lets virtual time pass), a NULL store, a division by zero, abort(),
  * runaway recursion and 64 KiB of locals in a 4 KiB task each end the run
  * with a report on stderr naming the task (and the source line where the
  * kind has one) and the exit status docs/ev3sim.md gives the kind — never
@@ -124,8 +125,19 @@ static void test_stall(void)
 	run_misbehave("stall", &o);
 	expect("a stalled task", &o, EV3SIM_EXIT_STALL,
 	       (const char *[]){ "ev3sim run: the app stalled at 0.100 s", "in task MAIN_TASK",
-				 "without advancing virtual time", "main_task at ", "app.c:", NULL });
+				 "without advancing virtual time", "spin_unseen at ", "app.c:", NULL });
 	ok(strstr(o.out, "app=misbehave ") == NULL, "a stalled run prints no summary");
+}
+
+/* A loop in the app's own code costs the CPU time of its basic blocks: no
+ * stall, the run ends at its time with a summary, as on the brick. */
+static void test_busy(void)
+{
+	struct outcome o;
+
+	run_misbehave("busy", &o);
+	is_int(o.status, 0, "a task busy in its own code: status 0 (its CPU time lets time pass)");
+	ok(strstr(o.out, "app=misbehave robot=bare seconds=3 ") != NULL, "the run reached its 3 s and summed up");
 }
 
 static void test_null(void)
@@ -210,6 +222,7 @@ int main(void)
 {
 	test_clean_run();
 	test_stall();
+	test_busy();
 	test_null();
 	test_divide();
 	test_abort();

@@ -388,6 +388,8 @@ extern struct rtos_host_cpu_cost cpu_cost;
  * task (which may be preempted meanwhile).  Out of line in cost.c, so that
  * make bench's instruction counter sees one call of simulation code. */
 void svc_charge(void);
+/* The compiler's call at each basic block of an app's code (cost.c). */
+void __sanitizer_cov_trace_pc(void);
 /* cal_svc's charge: the extended service's cost, and no charge for the calls
  * it makes; returns the calling task (NULL in non-task context) for svc_ext_exit. */
 struct tcb *svc_ext_enter(FN fncd);

@@ -32,7 +32,7 @@ static void steady(void)
  * tick boundary is 1 ms and sample i is taken at i ms. */
 static void sample(char *bits, unsigned ms, enum ev3_ui_color lit_color, bool *colour_ok)
 {
-	struct rtos_host_cpu_cost cost, free_calls = { 0, 0, false };
+	struct rtos_host_cpu_cost cost, free_calls = { 0, 0, false, 0 };
 
 	rtos_host_get_cpu_cost(&cost);
 	rtos_host_set_cpu_cost(&free_calls);

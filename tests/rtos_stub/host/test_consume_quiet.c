@@ -115,7 +115,7 @@ static void run_past_edges(const struct rtos_cfg *c, const char *what, uint64_t 
 /* The charges' run: 10 us, then 100 us more. */
 static void check_charges(void)
 {
-	static const struct rtos_host_cpu_cost one_us = { 1000, 1000, false };
+	static const struct rtos_host_cpu_cost one_us = { 1000, 1000, false, 0 };
 
 	rtos_host_set_cpu_cost(&one_us);
 	run_past_edges(&charging_cfg, "service call's charge", 10 * US, 100 * US);

@@ -38,7 +38,7 @@ static ER_UINT ext_svc(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4, intpt
 static void app_task(intptr_t x)
 {
 	uint64_t t0;
-	struct rtos_host_cpu_cost cost, none = { 0, 0, false };
+	struct rtos_host_cpu_cost cost, none = { 0, 0, false, 0 };
 
 	rtos_host_event_at(5 * MS, raise_flag, NULL);
 	while (!flag) {

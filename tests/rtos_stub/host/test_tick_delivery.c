@@ -82,7 +82,7 @@ static const struct rtos_cfg cfg = {
 int main(void)
 {
 	/* no CPU time for service calls: the sleep starts at time 0 exactly */
-	static const struct rtos_host_cpu_cost free_calls = { 0, 0, false };
+	static const struct rtos_host_cpu_cost free_calls = { 0, 0, false, 0 };
 
 	tap_plan(6);
 	rtos_host_set_cpu_cost(&free_calls);

@@ -1,7 +1,10 @@
 /*
  * app.c — misbehave: the main task does what EV3LX_MISBEHAVE names, each a
  * mistake an app can make on the brick:
- *   stall       loops without a service call (time stands still)
+ *   stall       loops without a service call in code the app's CPU time
+ *               does not count (as a library's loop: time stands still)
+ *   busy        loops without a service call in its own code (its CPU
+ *               time lets virtual time pass: no stall)
  *   null        stores through a NULL pointer
  *   divide      divides by zero (under the sanitizers UBSan reports it first)
  *   abort       calls abort() (as a failed assert does)
@@ -53,6 +56,14 @@ static __attribute__((noinline)) void big_locals(void)
 	syslog(LOG_NOTICE, "misbehave: big locals %d", buf[512]);
 }
 
+/* Spins for ever in code no basic-block count reaches (as a loop inside a
+ * library the app calls): nothing charges CPU time, so time stands still. */
+static __attribute__((noinline, no_sanitize_coverage)) void spin_unseen(void)
+{
+	for (;;)
+		spins++;
+}
+
 void main_task(intptr_t exinf)
 {
 	const char *what = getenv("EV3LX_MISBEHAVE");
@@ -62,6 +73,8 @@ void main_task(intptr_t exinf)
 	if (what == NULL)
 		what = "";
 	if (strcmp(what, "stall") == 0) {
+		spin_unseen();
+	} else if (strcmp(what, "busy") == 0) {
 		for (;;)
 			spins++;
 	} else if (strcmp(what, "null") == 0) {
