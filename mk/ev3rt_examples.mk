@@ -201,11 +201,11 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 		err=$$(EV3LX_MISBEHAVE=$$what EV3LX_STALL_MS=500 $(BUILD)/host/ev3sim run tests/ev3sim/apps/misbehave \
 			--seconds 2 2>&1 >/dev/null); status=$$?; \
 		if [ $$status != $$want ] || ! printf '%s\n' "$$err" | grep -q "$$text" || \
-		   ! printf '%s\n' "$$err" | grep -q "main_task at .*app\.c:[0-9]"; then \
+		   ! printf '%s\n' "$$err" | grep -qE "(main_task|spin_unseen) at .*app\.c:[0-9]"; then \
 			echo "ev3sim-run-check: FAILED: misbehave $$what: status $$status (want $$want):"; \
 			printf '%s\n' "$$err"; exit 1; \
 		fi; \
-		echo "ev3sim-run-check: misbehave $$what: status $$status, $$(printf '%s\n' "$$err" | grep -o 'main_task at [^ ]*' | head -n 1)"; \
+		echo "ev3sim-run-check: misbehave $$what: status $$status, $$(printf '%s\n' "$$err" | grep -oE '(main_task|spin_unseen) at [^ ]*' | head -n 1)"; \
 	done
 
 TEST_SUITE_EXTRA += ev3sim-run-check
@@ -216,7 +216,7 @@ TEST_SUITE_EXTRA += ev3sim-run-check
 .PHONY: adversarial-check
 adversarial-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	+$(Q)EV3SIM=$(abspath $(BUILD)/host/ev3sim) ROOT=$(CURDIR) WORK=$(abspath $(BUILD)/adversarial-check) \
-		prove --exec sh tests/ev3sim/adversarial_check.sh
+		prove --verbose --exec sh tests/ev3sim/adversarial_check.sh
 TEST_SUITE_EXTRA += adversarial-check
 
 # `make ev3sim-app-path-check` (in make test): `ev3sim run` on app directories

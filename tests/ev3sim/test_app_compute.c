@@ -23,8 +23,11 @@ int main(void)
 	static const char *const args[] = { "--seconds", "1", NULL };
 	unsigned long one = 0, two = 0;
 	const char *line;
+	bool ran = et_run_main(&run, args, compute_main, NULL);
 
-	ok(et_run_main(&run, args, compute_main, NULL) && run.status == 0, "the compute app runs (status %d)", run.status);
+	ok(ran && run.status == 0, "the compute app runs (status %d)", run.status);
+	if (run.status != 0)
+		tap_diag("stderr:\n%s", run.err);
 	line = strstr(run.out, "compute: ");
 	ok(line != NULL && sscanf(line, "compute: 100000 rounds %lu us, 200000 rounds %lu us", &one, &two) == 2,
 	   "it timed its two loops");

@@ -5,15 +5,15 @@
  */
 #include "app.h"
 
-static volatile int sink;
+static volatile unsigned sink;
 
 /* n rounds of a few integer operations, in the app's own code. */
 static __attribute__((noinline)) void work(int n)
 {
-	int s = 0;
+	unsigned s = 0;
 
-	for (int i = 0; i < n; i++)
-		s += (i * 3) ^ (i >> 2);
+	for (unsigned i = 0; i < (unsigned)n; i++)
+		s += (i * 3U) ^ (i >> 2);
 	sink = s;
 }
 
