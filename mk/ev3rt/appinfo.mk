@@ -45,7 +45,10 @@ EV3RT_SDK_LIBS :=
 # build compiles the libraries' sources through these links: nothing is
 # removed that another make may be reading, every file and link is replaced
 # in one step (rename), and only links to libraries EV3RT_LIB_DIR no longer
-# has are dropped.
+# has are dropped.  A link is made under a hidden name (.NAME.PID) before its
+# rename: the sweep's glob never sees it, so one make's sweep cannot remove
+# the link another make is about to rename ('mv: cannot stat
+# .../library/running_average.3504' failed ev3sim-audio-check).
 $(if $(shell set -e; mkdir -p '$(EV3RT_SDK_LIB_DIR)'; \
 	cp '$(dir $(lastword $(MAKEFILE_LIST)))Makefile.slib' '$(SDKDIR)/Makefile.slib.'$$$$; \
 	mv -f '$(SDKDIR)/Makefile.slib.'$$$$ '$(SDKDIR)/Makefile.slib'; \
@@ -54,8 +57,8 @@ $(if $(shell set -e; mkdir -p '$(EV3RT_SDK_LIB_DIR)'; \
 		$(if $(EV3RT_LIB_DIR),[ -d '$(EV3RT_LIB_DIR)'/"$${l##*/}" ] ||) rm -f "$$l"; \
 	done; \
 	$(if $(EV3RT_LIB_DIR),for d in '$(EV3RT_LIB_DIR)'/*/; do \
-		n=$$(basename "$$d"); ln -sfn "$$d" '$(EV3RT_SDK_LIB_DIR)'/"$$n".$$$$; \
-		mv -fT '$(EV3RT_SDK_LIB_DIR)'/"$$n".$$$$ '$(EV3RT_SDK_LIB_DIR)'/"$$n"; \
+		n=$$(basename "$$d"); ln -sfn "$$d" '$(EV3RT_SDK_LIB_DIR)'/."$$n".$$$$; \
+		mv -fT '$(EV3RT_SDK_LIB_DIR)'/."$$n".$$$$ '$(EV3RT_SDK_LIB_DIR)'/"$$n"; \
 	done;) \
 	echo ok),,$(error cannot prepare $(SDKDIR)))
 wanted_libs := $(shell sed -n 's|.*$$(EV3RT_SDK_LIB_DIR)/\([^/]*\)/Makefile.*|\1|p' '$(APP)/Makefile.inc' 2>/dev/null)
