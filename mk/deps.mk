@@ -1,12 +1,12 @@
 # Tools ev3lx needs beyond a Debian 12 base with gcc and arm-none-eabi-gcc.
 # `make deps` installs what is missing; `make`/`make test` call it when needed.
 
-DEPS_PACKAGES := gcc-arm-linux-gnueabi g++-arm-linux-gnueabi libc6-dev-armel-cross qemu-user \
+DEPS_PACKAGES := g++ gcc-arm-linux-gnueabi g++-arm-linux-gnueabi libc6-dev-armel-cross qemu-user \
 	u-boot-tools cloc gnuplot-nox linux-headers-amd64 sparse gcc-arm-none-eabi \
 	libnewlib-arm-none-eabi perl cppcheck clang-tidy libpng-dev libgif-dev ccache
 
 # tool -> package, checked by `deps-check`
-DEPS_TOOLS := arm-linux-gnueabi-gcc:gcc-arm-linux-gnueabi arm-linux-gnueabi-g++:g++-arm-linux-gnueabi qemu-arm:qemu-user \
+DEPS_TOOLS := g++:g++ arm-linux-gnueabi-gcc:gcc-arm-linux-gnueabi arm-linux-gnueabi-g++:g++-arm-linux-gnueabi qemu-arm:qemu-user \
 	addr2line:binutils \
 	mkimage:u-boot-tools cloc:cloc gnuplot:gnuplot-nox sparse:sparse \
 	arm-none-eabi-gcc:gcc-arm-none-eabi prove:perl cppcheck:cppcheck clang-tidy:clang-tidy ccache:ccache
