@@ -47,11 +47,9 @@ static ER port_of(ID portid, serial_port_t *port)
 /* The head of every call: task context, a port the platform provides. */
 static ER serial_check(ID portid, serial_port_t *port)
 {
-	ER ercd;
+	ER ercd = api_may_wait();
 
-	if ((ercd = api_may_wait()) != E_OK || (ercd = port_of(portid, port)) != E_OK)
-		return ercd;
-	return E_OK;
+	return ercd != E_OK ? ercd : port_of(portid, port);
 }
 
 /* Sends all of buf (n <= CHUNK), waiting 1 ms at a time while the port is full. */

@@ -23,11 +23,6 @@ static char dir[64], card[96], serial_out[96];
 static fileinfo_t global_info;  /* outside the app's domain */
 static char line_buf[16];       /* outside it too */
 
-static void put_file(const char *rel, const char *text, size_t len)
-{
-	tf_put_file(card, rel, text, len);
-}
-
 static void make_card(void)
 {
 	char path[256], big[BIG_SIZE];
@@ -41,12 +36,12 @@ static void make_card(void)
 	mkdir(path, 0755);
 	snprintf(path, sizeof(path), "%s/ev3rt/res", card);
 	mkdir(path, 0755);
-	put_file("ev3rt/res/hello.txt", "hello, brick\n", 13);
-	put_file("ev3rt/res/empty.txt", "", 0);
-	put_file("ev3rt/res/.hidden", "h", 1);
+	tf_put_file(card, "ev3rt/res/hello.txt", "hello, brick\n", 13);
+	tf_put_file(card, "ev3rt/res/empty.txt", "", 0);
+	tf_put_file(card, "ev3rt/res/.hidden", "h", 1);
 	for (unsigned i = 0; i < BIG_SIZE; i++)
 		big[i] = (char)(i * 7 + 3);
-	put_file("ev3rt/res/big.bin", big, BIG_SIZE);
+	tf_put_file(card, "ev3rt/res/big.bin", big, BIG_SIZE);
 	snprintf(path, sizeof(path), "%s/secret.txt", dir);     /* beside the card, not on it */
 	FILE *f = fopen(path, "w");
 	if (f == NULL || fputs("secret\n", f) < 0 || fclose(f) != 0)
