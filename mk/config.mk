@@ -1,10 +1,12 @@
 # Build configurations.
 #   host        — the host backend, native gcc
 #   host-san    — the same under ASan + UBSan
+#   host32      — the host backend built -m32 (gcc-multilib): the target's 32-bit
+#                 `unsigned long` and pointers, natively, with x86's trap
 #   arm926-test — the host backend cross-built for ARMv5 Linux, run under qemu-arm
 #   am1808      — the target library (arm-none-eabi, freestanding), see mk/am1808.mk
 
-HOST_CONFIGS := host host-san arm926-test
+HOST_CONFIGS := host host-san host32 arm926-test
 
 WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes \
 	-Wpointer-arith -Wundef -Wno-unused-parameter
@@ -58,6 +60,33 @@ CFLAGS_host-san := -O1 -g $(DEBUG_PREFIX_MAP) -DEV3LX_HOST=1 -fsanitize=address,
 LDFLAGS_host-san := -fsanitize=address,undefined
 RUN_host-san    :=
 
+# -m32 is part of the compiler's name, not of its flags: every use of the
+# compiler (its include directory, an app's partial link, a C++ link) is a
+# 32-bit one.  Not position-independent, as the brick's image is not: i386
+# PIC code gets its address from a __x86.get_pc_thunk.* function, one COMDAT
+# copy per object, which an app's domain relink (--force-group-allocation,
+# mk/ev3rt_app.mk) would turn into clashing definitions.  The peripheral window
+# sits at its physical address, as on the brick (host_sim/src/core/space.c).
+# Debian's gcc-multilib gives -m32 the C library's 32-bit headers but not the
+# kernel's user-space <asm/*.h> (glibc's <errno.h> includes <asm/errno.h>),
+# which only the amd64 multiarch directory has: Linux's x86 uapi headers are
+# one set for both ABIs (<asm/unistd.h> picks unistd_32.h under __i386__), so
+# host32 sees that directory, and only it, after the system's own.
+HOST32_ASM_DIR  := /usr/include/x86_64-linux-gnu/asm
+HOST32_SYSINC   := $(BUILD)/host32/sysinc
+$(if $(wildcard $(HOST32_SYSINC)/asm),,$(shell mkdir -p $(HOST32_SYSINC) && ln -sfn $(HOST32_ASM_DIR) $(HOST32_SYSINC)/asm))
+# Floating point in SSE2 registers, not the x87's 80-bit ones: double
+# arithmetic then rounds to double at every step (FLT_EVAL_METHOD 0), as on
+# x86-64 and the ARM, so that the simulation's physics gives the same results
+# in every configuration (and `x == 1e-4` compares doubles, not a double with
+# a long double constant).
+HOST32_ARCH     := -m32 -msse2 -mfpmath=sse -fno-pie -no-pie -idirafter $(HOST32_SYSINC)
+CC_host32       := $(CCACHE) gcc $(HOST32_ARCH)
+CXX_host32      := $(CCACHE) g++ $(HOST32_ARCH)
+CFLAGS_host32   := -O2 -g $(DEBUG_PREFIX_MAP) -DEV3LX_HOST=1
+LDFLAGS_host32  :=
+RUN_host32      :=
+
 CC_arm926-test     := $(CCACHE) arm-linux-gnueabi-gcc
 CXX_arm926-test    := $(CCACHE) arm-linux-gnueabi-g++
 CFLAGS_arm926-test := -O2 -g $(DEBUG_PREFIX_MAP) -DEV3LX_HOST=1 -mcpu=arm926ej-s -marm
@@ -96,10 +125,12 @@ module_flags = $(if $(call is_module_src,$(2)),-fvisibility=hidden)
 module_objs = $(foreach o,$(1),$(if $(and $(filter %_hack.o,$(o)),$(findstring /obj/hacks/,$(o))),$(o:.o=.mod.o),$(o)))
 LD_host := ld
 LD_host-san := ld
+LD_host32 := ld -m elf_i386
 LD_arm926-test := arm-linux-gnueabi-ld
 LD_am1808 := arm-none-eabi-ld
 OBJCOPY_host := objcopy
 OBJCOPY_host-san := objcopy
+OBJCOPY_host32 := objcopy
 OBJCOPY_arm926-test := arm-linux-gnueabi-objcopy
 OBJCOPY_am1808 := arm-none-eabi-objcopy
 

@@ -1,6 +1,6 @@
 /*
- * test_ioremap_identity.c — in the configuration with the target's types
- * (arm926 under qemu-arm: 32-bit pointers) ioremap() of a peripheral returns
+ * test_ioremap_identity.c — in the configurations with the target's types
+ * (arm926 under qemu-arm, and host32: 32-bit pointers) ioremap() of a peripheral returns
  * its physical address, as on the brick, whose peripherals are identity
  * mapped; a plain pointer made from the physical address reaches the same
  * register.  Elsewhere (64-bit hosts) the window space mirrors the

@@ -26,8 +26,8 @@
  * page for page, so that an ioremap of any range there — across pages,
  * regions and unmodelled holes, as Linux allows — is one contiguous window;
  * a region elsewhere (the AINTC at 0xFFFEE000) gets pages after the mirror.
- * On a 32-bit ARM host (the arm926 configuration under qemu-arm) the mirror is
- * placed at its physical address, so that ioremap() of a peripheral returns
+ * On a 32-bit host (the arm926 configuration under qemu-arm, and host32, an
+ * i386 process) the mirror is placed at its physical address, so that ioremap() of a peripheral returns
  * the physical address itself, as the brick's identity mapping of the
  * peripherals does and as 2.6-era drivers that compare or print the pointers
  * assume; where that address is taken the space goes anywhere.
@@ -210,7 +210,7 @@ int hs_space_init(uint32_t access_ns)
 	if (space.base)
 		return 0;
 	p = MAP_FAILED;
-#if defined(__arm__) && defined(MAP_FIXED_NOREPLACE)
+#if (defined(__arm__) || defined(__i386__)) && defined(MAP_FIXED_NOREPLACE)
 	p = mmap((void *)(uintptr_t)HS_MIRROR_PHYS, (size_t)HS_SPACE_PAGES * HS_PAGE, PROT_NONE,
 		 MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE | MAP_FIXED_NOREPLACE, -1, 0);
 	if (p != MAP_FAILED && p != (void *)(uintptr_t)HS_MIRROR_PHYS) {

@@ -2,11 +2,13 @@
  * trap.c — plain pointer accesses to register windows.  Host only.
  *
  * The window space is mapped without access rights, so a volatile load or
- * store through a plain pointer faults.  On x86-64 Linux the SIGSEGV
+ * store through a plain pointer faults.  On x86-64 and i386 Linux (the host32
+ * configuration, gcc -m32: the same forms without REX prefixes) the SIGSEGV
  * handler decodes the faulting instruction (the mov forms gcc emits for
- * 8/16/32-bit volatile accesses: mov r/m<->r, mov imm->r/m, movzx, movsx,
- * movsxd; the read-modify-write and compare forms -O2 makes of compound
- * statements such as `*p |= m`: add/or/adc/sbb/and/sub/xor/cmp with a
+ * 8/16/32-bit volatile accesses: mov r/m<->r, mov imm->r/m, mov between the
+ * accumulator and an absolute address (moffs), movzx, movsx, movsxd; the
+ * read-modify-write and compare forms -O2 makes of compound statements such
+ * as `*p |= m`: add/or/adc/sbb/and/sub/xor/cmp with a
  * register or immediate, test, inc, dec, not, neg, bt/bts/btr/btc; with
  * 0x66, REX, lock and segment prefixes), performs the access through
  * sil_host_read/sil_host_write — exactly the accessor path, hooks, log,
@@ -45,14 +47,30 @@
 static struct sigaction previous;
 static bool installed;
 
-#if defined(__x86_64__) && defined(__linux__)
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__linux__)
 #define HS_TRAP_EMULATES 1
+#define HS_TRAP_X86 1
 
+#ifdef __x86_64__
 /* gregs index of x86-64 register number 0..15 (rax, rcx, rdx, rbx, rsp, rbp, rsi, rdi, r8..r15). */
 static const int greg_of[16] = {
 	REG_RAX, REG_RCX, REG_RDX, REG_RBX, REG_RSP, REG_RBP, REG_RSI, REG_RDI,
 	REG_R8, REG_R9, REG_R10, REG_R11, REG_R12, REG_R13, REG_R14, REG_R15,
 };
+#define REG_IP REG_RIP
+/* The stack pointer, stepped over the red zone (128 bytes below it that a leaf function may use). */
+#define ALU_SP_DOWN "lea -128(%%rsp), %%rsp\n\t"
+#define ALU_SP_UP "\n\tlea 128(%%rsp), %%rsp"
+#else
+/* gregs index of i386 register number 0..7 (eax, ecx, edx, ebx, esp, ebp, esi, edi): no REX, no r8..r15. */
+static const int greg_of[16] = {
+	REG_EAX, REG_ECX, REG_EDX, REG_EBX, REG_ESP, REG_EBP, REG_ESI, REG_EDI,
+};
+#define REG_IP REG_EIP
+/* The i386 ABI has no red zone. */
+#define ALU_SP_DOWN ""
+#define ALU_SP_UP ""
+#endif
 
 /* The arithmetic forms, in the order of the x86 group-1 /digit field. */
 enum alu_op {
@@ -62,7 +80,7 @@ enum alu_op {
 };
 
 /* EFLAGS bits an arithmetic instruction defines: OF SF ZF AF PF CF. */
-#define ARITH_FLAGS 0x8D5ULL
+#define ARITH_FLAGS 0x8D5UL
 
 /*
  * Runs one instruction on registers with the given arithmetic flags in and
@@ -72,8 +90,8 @@ enum alu_op {
 #define ALU_ASM(text, type, cons)							\
 	do {										\
 		type x_ = (type)a, y_ = (type)b;					\
-		__asm__("lea -128(%%rsp), %%rsp\n\tpush %[f]\n\tpopf\n\t" text		\
-			"\n\tpushf\n\tpop %[f]\n\tlea 128(%%rsp), %%rsp"		\
+		__asm__(ALU_SP_DOWN "push %[f]\n\tpopf\n\t" text			\
+			"\n\tpushf\n\tpop %[f]" ALU_SP_UP				\
 			: [x] "+" cons (x_), [f] "+r" (fl) : [y] cons (y_) : "cc");	\
 		r = x_;									\
 	} while (0)
@@ -94,10 +112,10 @@ enum alu_op {
 			ALU_ASM(text, uint32_t, "r");					\
 	} while (0)
 
-/* a op b at width bytes, as the CPU computes it; *flags: EFLAGS in and out. */
-static uint32_t alu(enum alu_op op, unsigned width, uint32_t a, uint32_t b, uint64_t *flags)
+/* a op b at width bytes, as the CPU computes it; *flags: EFLAGS in and out (a register's width: pushf/popf). */
+static uint32_t alu(enum alu_op op, unsigned width, uint32_t a, uint32_t b, unsigned long *flags)
 {
-	uint64_t fl = (*flags & ARITH_FLAGS) | 0x202U;
+	unsigned long fl = (*flags & ARITH_FLAGS) | 0x202U;
 	uint32_t r = a;
 
 	switch (op) {
@@ -178,13 +196,26 @@ static bool decode(const uint8_t *p, struct insn *in)
 		else
 			break;
 	}
+#ifdef __x86_64__
 	if ((*p & 0xF0U) == 0x40U) {
 		in->rex = true;
 		rex_w = (*p & 8U) != 0;
 		rex_r = (*p & 4U) != 0;
 		p++;
 	}
+#endif
 	op = *p++;
+	if (op >= 0xA0U && op <= 0xA3U) {
+		/* mov al/eax <-> moffs: the accumulator and an absolute address (no ModRM),
+		 * as gcc emits for a constant address on i386 (the window at its physical
+		 * address: `*(volatile u32 *)0x01E26010`) */
+		in->reg = 0;
+		in->store = op >= 0xA2U;
+		in->width = (op & 1U) ? (rex_w ? 8U : opsize ? 2U : 4U) : 1U;
+		in->dst_width = in->width;
+		in->len = (unsigned)(p - start) + (unsigned)sizeof(void *);
+		return in->width == 1U || in->width == 2U || in->width == 4U;
+	}
 	if (op == 0x0FU)
 		op = 0x0F00U | *p++;
 	if ((p[0] >> 6) == 3U)
@@ -222,7 +253,9 @@ static bool decode(const uint8_t *p, struct insn *in)
 	case 0x0FB7: in->width = 2; break;
 	case 0x0FBE: in->width = 1; in->sign = true; break;
 	case 0x0FBF: in->width = 2; in->sign = true; break;
-	case 0x63:   in->width = 4; in->sign = rex_w; break;
+#ifdef __x86_64__
+	case 0x63:   in->width = 4; in->sign = rex_w; break;   /* movsxd (arpl on i386: not an access form) */
+#endif
 	case 0x80: case 0x81: case 0x83:            /* group 1: op r/m, imm */
 		in->alu = (enum alu_op)(in->reg & 7U);
 		in->width = op == 0x80U ? 1U : in->dst_width;
@@ -346,7 +379,7 @@ static void reg_put(mcontext_t *mc, const struct insn *in, uint32_t v)
 /* An arithmetic form: one bus read, the operation, one bus write unless it only reads. */
 static void emulate_alu(mcontext_t *mc, const struct insn *in, uintptr_t addr)
 {
-	uint64_t flags = (uint64_t)mc->gregs[REG_EFL];
+	unsigned long flags = (unsigned long)mc->gregs[REG_EFL];
 	uint32_t mem = sil_host_read((const volatile void *)addr, in->width);
 	uint32_t other = in->has_imm ? in->imm : reg_get(mc, in, in->width);
 	uint32_t r;
@@ -426,11 +459,11 @@ static void trap_handler(int sig, siginfo_t *si, void *uctx)
 		chain(sig, si, uctx);
 		return;
 	}
-#if HS_TRAP_EMULATES && defined(__x86_64__)
+#if HS_TRAP_EMULATES && defined(HS_TRAP_X86)
 	{
 		ucontext_t *uc = uctx;
 		mcontext_t *mc = &uc->uc_mcontext;
-		const uint8_t *ip = (const uint8_t *)mc->gregs[REG_RIP];
+		const uint8_t *ip = (const uint8_t *)(uintptr_t)mc->gregs[REG_IP];
 		struct insn in;
 
 		if (!decode(ip, &in)) {
@@ -448,7 +481,7 @@ static void trap_handler(int sig, siginfo_t *si, void *uctx)
 				       in.has_imm ? in.imm : reg_get(mc, &in, in.width));
 		else
 			reg_put(mc, &in, sil_host_read((const volatile void *)addr, in.width));
-		mc->gregs[REG_RIP] += (greg_t)in.len;
+		mc->gregs[REG_IP] += (greg_t)in.len;
 	}
 #elif HS_TRAP_EMULATES
 	{
@@ -508,6 +541,6 @@ const char *hs_trap_reason(void)
 #if HS_TRAP_EMULATES
 	return "";
 #else
-	return "trapping plain pointer accesses needs x86-64 or ARM Linux";
+	return "trapping plain pointer accesses needs x86-64, i386 or ARM Linux";
 #endif
 }

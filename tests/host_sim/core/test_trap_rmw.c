@@ -1,5 +1,5 @@
 /*
- * test_trap_rmw.c — the x86-64 trap's read-modify-write and compare forms,
+ * test_trap_rmw.c — the x86 trap (x86-64 and i386)'s read-modify-write and compare forms,
  * instruction by instruction: each form runs once on plain memory and once
  * on a trapped register window, from several start values and operands,
  * and must leave the same memory value, the same destination register and
@@ -32,7 +32,16 @@ static const struct hs_reg tdev_regs[] = {
 	{ .name = "R32", .offset = 0x0, .kind = HS_RW, .widths = HS_W8 | HS_W16 },
 };
 
-#if defined(__x86_64__)
+#if defined(__x86_64__) || defined(__i386__)
+#define X86_FORMS 1
+#ifdef __x86_64__
+/* below the red zone, as the trap's own flags computation does */
+#define SP_DOWN "lea -128(%%rsp), %%rsp\n\t"
+#define SP_UP "\n\tlea 128(%%rsp), %%rsp"
+#else
+#define SP_DOWN ""
+#define SP_UP ""
+#endif
 static const uint32_t starts[] = { 0x00000000U, 0x00000001U, 0x7FFFFFFFU, 0x80000000U, 0xFFFFFFFFU, 0x12F0A55AU };
 static const uint32_t operands[] = { 0x00000000U, 0x00000001U, 0x0000001FU, 0x80000080U, 0xFFFFFFFFU, 0x00000F0FU };
 
@@ -44,14 +53,14 @@ struct outcome {
 #define FORM(name, type, text)								\
 	static struct outcome name(volatile void *mem, uint32_t reg, bool carry_in)	\
 	{										\
-		uint64_t f;								\
+		unsigned long f;							\
 		struct outcome o;							\
-		__asm__ volatile("lea -128(%%rsp), %%rsp\n\t"				\
+		__asm__ volatile(SP_DOWN						\
 				 "push %[c]\n\tpopf\n\t"					\
 				 text "\n\t"						\
-				 "pushf\n\tpop %[f]\n\tlea 128(%%rsp), %%rsp"		\
+				 "pushf\n\tpop %[f]" SP_UP					\
 				 : [m] "+m" (*(type *)mem), [r] "+q" (reg), [f] "=&r" (f)	\
-				 : [c] "r" ((uint64_t)(carry_in ? 0x202U | ARITH_FLAGS : 0x202U)) : "cc", "memory");	\
+				 : [c] "r" ((unsigned long)(carry_in ? 0x202U | ARITH_FLAGS : 0x202U)) : "cc", "memory");	\
 		o.reg = reg;								\
 		o.flags = (uint32_t)f & ARITH_FLAGS;					\
 		o.mem = 0;								\
@@ -192,7 +201,7 @@ int main(void)
 {
 	struct hs_scenario scn = { .rtos = &cfg };
 
-#if defined(__x86_64__)
+#ifdef X86_FORMS
 	tap_plan(HS_ARRAY_SIZE(forms) + 1);
 #else
 	tap_plan(1);
@@ -210,7 +219,7 @@ int main(void)
 		hs_region_add(&(struct hs_region_cfg){ .name = "TDEV", .phys = TDEV_PHYS, .size = 0x1000,
 			.regs = tdev_regs, .nregs = HS_ARRAY_SIZE(tdev_regs) });
 		reg32 = rtos_host_map_io(TDEV_PHYS, 4);
-#if defined(__x86_64__)
+#ifdef X86_FORMS
 		for (size_t i = 0; i < HS_ARRAY_SIZE(forms); i++)
 			check_form(&forms[i], reg32);
 #endif
