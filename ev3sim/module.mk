@@ -7,6 +7,13 @@ HOST_SRCS     += $(sort $(wildcard ev3sim/src/*.c))
 HOST_PROGRAMS += ev3sim
 ev3sim_SRCS   := ev3sim/main.c ev3sim/lcd_png.c ev3sim/lcd_gif.c
 ev3sim_LDLIBS := -lpng -lgif
+# build/host32/ev3sim: the simulator with the target's 32-bit types, for
+# modules written for them (`volatile unsigned long *` registers); without
+# the image writers (--lcd, --lcd-video), as gcc-multilib brings no 32-bit
+# libpng or giflib.
+HOST32_PROGRAMS += ev3sim
+ev3sim_SRCS_host32 := ev3sim/main.c
+ev3sim_LDLIBS_host32 :=
 
 # `ev3sim balance` runs examples/gyroboy, an EV3RT app, built by the
 # configurator like any app (mk/ev3rt_examples.mk) under its own configuration

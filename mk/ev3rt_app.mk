@@ -4,7 +4,7 @@
 #   $(eval $(call ev3rt_app,NAME,CONFIG,CFG,SRCS[,RUNNER]))
 #
 #   NAME    the app's name; it builds in $(BUILD)/CONFIG/ev3rt/NAME/
-#   CONFIG  host, host-san or arm926-test
+#   CONFIG  host, host-san, host32 or arm926-test
 #   CFG     the app's configuration file (app.cfg); its directory is on the
 #           include path of everything below, then cfg/ (app_common.cfg)
 #           and the platform's headers

@@ -91,22 +91,35 @@ $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_
 # ev3lx's, as on EV3RT, whose kernel and app are separate images.  The app's
 # file calls, renamed (mk/ev3rt_app.mk), are ev3sim's: those names stay too.
 EV3RT_APP_FS_CALLS := $(sort $(shell awk '{ print $$2 }' $(EV3RT_APP_FS_SYMS)))
-EV3RT_PLATFORM := $(BUILD)/host/ev3rt/platform.o
-EV3RT_PLATFORM_OBJS := $(BUILD)/host/obj/ev3sim/lcd_png.o $(BUILD)/host/obj/ev3sim/lcd_gif.o
-$(EV3RT_PLATFORM): $(LIB_host) $(EV3RT_PLATFORM_OBJS) mk/ev3rt/platform_syms.sh $(EV3RT_APP_FS_SYMS) $(wildcard api/*.h api/syssvc/*.h rtos_stub/include/*.h rtos_stub/include/syssvc/*.h)
-	@mkdir -p $(@D)
-	$(quiet) LD host $@
-	$(Q)set -e; tmp=$@.$$$$; \
-	ld -r -o $$tmp.r.o --whole-archive $(LIB_host) --no-whole-archive $(EV3RT_PLATFORM_OBJS); \
-	PLATFORM_KEEP='ev3sim_run_main __sanitizer_cov_trace_pc $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $$tmp.r.o \
-		$(CC_host) $(call layer_inc,api) $(CFLAGS_host) $(KERNEL_DEFS) > $$tmp.syms; \
-	objcopy --keep-global-symbols=$$tmp.syms $$tmp.r.o $$tmp; \
-	mv $$tmp.syms $@.syms; rm -f $$tmp.r.o; mv $$tmp $@
+# The configurations whose ev3sim runs apps: host, and host32 (the target's
+# 32-bit types; its ev3sim has no image writers: no 32-bit libpng or giflib
+# comes with gcc-multilib).
+EV3SIM_CONFIGS := host host32
+EV3SIM_WRITERS_host := ev3sim/lcd_png.c ev3sim/lcd_gif.c
+EV3SIM_WRITERS_host32 :=
+EV3SIM_LDLIBS_host := -lpng -lgif
+EV3SIM_LDLIBS_host32 :=
+EV3RT_PLATFORM = $(BUILD)/$(1)/ev3rt/platform.o
+EV3RT_PLATFORM_OBJS = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(EV3SIM_WRITERS_$(1)))
+# $(1) = config
+define ev3rt_platform_rules
+$(call EV3RT_PLATFORM,$(1)): $(LIB_$(1)) $(call EV3RT_PLATFORM_OBJS,$(1)) mk/ev3rt/platform_syms.sh $(EV3RT_APP_FS_SYMS) \
+		$(wildcard api/*.h api/syssvc/*.h rtos_stub/include/*.h rtos_stub/include/syssvc/*.h)
+	@mkdir -p $$(@D)
+	$$(quiet) LD $(1) $$@
+	$(Q)set -e; tmp=$$@.$$$$$$$$; \
+	$(LD_$(1)) -r -o $$$$tmp.r.o --whole-archive $(LIB_$(1)) --no-whole-archive $(call EV3RT_PLATFORM_OBJS,$(1)); \
+	PLATFORM_KEEP='ev3sim_run_main __sanitizer_cov_trace_pc $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $$$$tmp.r.o \
+		$(CC_$(1)) $(call layer_inc,api) $(CFLAGS_$(1)) $(KERNEL_DEFS) > $$$$tmp.syms; \
+	$(OBJCOPY_$(1)) --keep-global-symbols=$$$$tmp.syms $$$$tmp.r.o $$$$tmp; \
+	mv $$$$tmp.syms $$@.syms; rm -f $$$$tmp.r.o; mv $$$$tmp $$@
 # Made with ev3sim, so that `ev3sim run` finds it made: apps' builds in
 # parallel (each under its own lock) would each make it; each makes it in
 # files of its own and renames them into place, so even then none sees
 # another's half-written object.
-$(BUILD)/host/ev3sim: | $(EV3RT_PLATFORM)
+$(BUILD)/$(1)/ev3sim: | $(call EV3RT_PLATFORM,$(1))
+endef
+$(foreach c,$(EV3SIM_CONFIGS),$(eval $(call ev3rt_platform_rules,$(c))))
 
 # ev3sim's own test apps, tests/ev3sim/apps/NAME (app.c alone): each linked
 # into tests/ev3sim/test_app_NAME.c as an example is into its test, as
@@ -146,21 +159,26 @@ export CCACHE_BASEDIR :=
 EV3RT_APP_NAME ?= $(notdir $(APP))
 EV3RT_RUN_KEY  ?= run_$(EV3RT_APP_NAME)
 EV3RT_RUN_NAME := $(EV3RT_RUN_KEY)
-EV3RT_RUN_DIR  := $(BUILD)/host/ev3rt/$(EV3RT_RUN_NAME)
+# the configuration of the ev3sim that builds the app (build/CONFIG/ev3sim)
+EV3RT_RUN_CONFIG ?= host
+ifeq ($(filter $(EV3RT_RUN_CONFIG),$(EV3SIM_CONFIGS)),)
+$(error EV3RT_RUN_CONFIG=$(EV3RT_RUN_CONFIG): ev3sim runs apps in $(EV3SIM_CONFIGS))
+endif
+EV3RT_RUN_DIR  := $(BUILD)/$(EV3RT_RUN_CONFIG)/ev3rt/$(EV3RT_RUN_NAME)
 EV3RT_LIB_DIR ?=
 $(call ev3rt_read_app,$(APP),EV3RT_RUN,$(EV3RT_LIB_DIR),$(EV3RT_RUN_DIR)/sdk)
 
 $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 	@mkdir -p $(@D)
-	$(quiet) CC host $<
-	$(Q)$(CC_host) $(call src_flags,$<) $(WARN) $(CFLAGS_host) $(KERNEL_DEFS) \
+	$(quiet) CC $(EV3RT_RUN_CONFIG) $<
+	$(Q)$(CC_$(EV3RT_RUN_CONFIG)) $(call src_flags,$<) $(WARN) $(CFLAGS_$(EV3RT_RUN_CONFIG)) $(KERNEL_DEFS) \
 		-DEV3SIM_APP_NAME='"$(EV3RT_APP_NAME)"' -c $< -o $@
 
 # the runner is ev3sim's command line: it writes --lcd's PNG with libpng and --lcd-video's GIF
-# with giflib, as the ev3sim program does
-EV3RT_PLATFORM_$(EV3RT_RUN_NAME)_host := $(EV3RT_PLATFORM)
-$(eval $(call ev3rt_dir_app,$(EV3RT_RUN_NAME),host,$(APP),EV3RT_RUN,$(EV3RT_RUN_DIR)/runner.o))
-EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_host += -lpng -lgif
+# with giflib where the ev3sim program does
+EV3RT_PLATFORM_$(EV3RT_RUN_NAME)_$(EV3RT_RUN_CONFIG) := $(call EV3RT_PLATFORM,$(EV3RT_RUN_CONFIG))
+$(eval $(call ev3rt_dir_app,$(EV3RT_RUN_NAME),$(EV3RT_RUN_CONFIG),$(APP),EV3RT_RUN,$(EV3RT_RUN_DIR)/runner.o))
+EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_$(EV3RT_RUN_CONFIG) += $(EV3SIM_LDLIBS_$(EV3RT_RUN_CONFIG))
 
 .PHONY: ev3rt-app
 ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)
@@ -209,6 +227,28 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	done
 
 TEST_SUITE_EXTRA += ev3sim-run-check
+
+# `make ev3sim-run-check-host32` (in make test): build/host32/ev3sim builds
+# an app for host32 (build/host32/ev3rt/, a 32-bit runner: ELF class 1) and
+# runs it; --lcd is refused before the run with its reason (no 32-bit libpng).
+.PHONY: ev3sim-run-check-host32
+ev3sim-run-check-host32: $(BUILD)/host32/ev3sim $(LIB_host32) $(EV3CFG)
+	+$(Q)out=$$($(BUILD)/host32/ev3sim run examples/blink --seconds 3 --click back:1500ms --quiet) || \
+		{ echo "ev3sim-run-check-host32: FAILED: build/host32/ev3sim run examples/blink exited $$?"; exit 1; }; \
+	summary=$$(printf '%s\n' "$$out" | tail -n 1); \
+	case "$$summary" in \
+	"app=blink robot=bare seconds=3 seed=1 "*" warnings=0 errors=0 bugs=0 sim_speed="*) ;; \
+	*) echo "ev3sim-run-check-host32: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1;; \
+	esac; \
+	runner=$$(ls -t $(BUILD)/host32/ev3rt/run_blink-*/run_blink-????????????????| head -n 1); \
+	[ "$$(od -An -tu1 -j4 -N1 "$$runner" | tr -d ' ')" = 1 ] || \
+		{ echo "ev3sim-run-check-host32: FAILED: the runner $$runner is not a 32-bit program"; exit 1; }; \
+	echo "ev3sim-run-check-host32: $$summary (32-bit runner $$runner)"
+	+$(Q)err=$$($(BUILD)/host32/ev3sim run examples/blink --lcd $(BUILD)/host32/blink.png 2>&1 >/dev/null); status=$$?; \
+	[ $$status = 2 ] && printf '%s\n' "$$err" | grep -q "no PNG writer (the 32-bit ev3sim links no libpng" || \
+		{ echo "ev3sim-run-check-host32: FAILED: --lcd: status $$status: $$err"; exit 1; }; \
+	echo "ev3sim-run-check-host32: --lcd refused: $$err"
+TEST_SUITE_EXTRA += ev3sim-run-check-host32
 
 # `make adversarial-check` (in make test): bad input to ev3sim and its
 # configurator and a rebuilt tree, each answered with its message and exit status

@@ -1,5 +1,6 @@
 #!/bin/bash
 # module_check.sh NM LD LIB OUTDIR [LEGACY_MODULE ...]
+# (LD: the linker with its options, one argument: "ld -m elf_i386")
 # Checks the modules' private namespaces in one configuration: every module
 # object in the library LIB (hacks/<name>_hack.c with its driver, linked as
 # <name>_hack.mod.o) defines no global symbol but its interface
@@ -28,7 +29,8 @@ for m in $members; do
 	count=$((count + 1))
 done
 if [ $# -gt 0 ]; then
-	if ! "$ld" -r -o "$out/users_modules.o" "$@" 2> "$out/users_modules.err"; then
+	# shellcheck disable=SC2086 # the linker's options are words of $ld
+	if ! $ld -r -o "$out/users_modules.o" "$@" 2> "$out/users_modules.err"; then
 		cat "$out/users_modules.err"
 		echo "module-check: the users' modules do not link together: $*"
 		fail=1

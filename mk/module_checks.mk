@@ -8,7 +8,7 @@
 
 NOSTDINC_PROBES := linux/videodev2.h stdio.h stdlib.h string.h sys/types.h stdint.h limits.h
 NOSTDINC_PROBE_SRC := hacks/nostdinc_probe_hack.c
-NOSTDINC_CONFIGS := host arm926-test am1808
+NOSTDINC_CONFIGS := host host32 arm926-test am1808
 # The AM1808 build is freestanding (-ffreestanding), where the compiler's own
 # <stdint.h> stands alone: it is the compiler's, allowed as under kbuild.
 nostdinc_probes = $(if $(filter am1808,$(1)),$(filter-out stdint.h,$(NOSTDINC_PROBES)),$(NOSTDINC_PROBES))
@@ -28,7 +28,7 @@ nostdinc-check:
 
 MODULE_CHECK_LIBS := $(foreach c,$(HOST_CONFIGS),$(LIB_$(c))) $(AM1808_LIB)
 module-check: $(MODULE_CHECK_LIBS) $(foreach c,$(HOST_CONFIGS) am1808,$(LEGACY_OBJS_$(c)))
-	@$(foreach c,$(HOST_CONFIGS),bash mk/module_check.sh nm $(LD_$(c)) $(LIB_$(c)) $(BUILD)/$(c)/module-check $(LEGACY_OBJS_$(c)) &&) \
+	@$(foreach c,$(HOST_CONFIGS),bash mk/module_check.sh nm '$(LD_$(c))' $(LIB_$(c)) $(BUILD)/$(c)/module-check $(LEGACY_OBJS_$(c)) &&) \
 		bash mk/module_check.sh arm-none-eabi-nm $(LD_am1808) $(AM1808_LIB) $(AM1808)/module-check $(LEGACY_OBJS_am1808)
 
 TEST_SUITE_EXTRA += nostdinc-check module-check

@@ -68,17 +68,21 @@ prove-$(1): tests-$(1)
 endef
 $(foreach c,$(HOST_CONFIGS),$(eval $(call host_config_rules,$(c))))
 
-# Program $(1) in configuration $(2): the host's, and the simulator's
-# profile-guided builds (mk/pgo.mk).
+# Program $(1) in configuration $(2): the host's, host32's (HOST32_PROGRAMS)
+# and the simulator's profile-guided builds (mk/pgo.mk).  A program's sources
+# and libraries in one configuration may differ: NAME_SRCS_CONFIG and
+# NAME_LDLIBS_CONFIG, where defined, replace NAME_SRCS and NAME_LDLIBS.
+program_var = $(if $(filter undefined,$(origin $(1)_$(2)_$(3))),$($(1)_$(2)),$($(1)_$(2)_$(3)))
 define host_program_rules
-$(BUILD)/$(2)/$(1): $$(patsubst %.c,$(BUILD)/$(2)/obj/%.o,$$($(1)_SRCS)) $$(LIB_$(2))
+$(BUILD)/$(2)/$(1): $$(patsubst %.c,$(BUILD)/$(2)/obj/%.o,$$(call program_var,$(1),SRCS,$(2))) $$(LIB_$(2))
 	@mkdir -p $$(@D)
 	$$(quiet) LD $(2) $$@
-	$(Q)$$(CC_$(2)) $$(CFLAGS_$(2)) -o $$@ $$(patsubst %.c,$(BUILD)/$(2)/obj/%.o,$$($(1)_SRCS)) \
-		-Wl,--start-group $$(LIB_$(2)) -Wl,--end-group -lm $$($(1)_LDLIBS)
--include $$(patsubst %.c,$(BUILD)/$(2)/obj/%.d,$$($(1)_SRCS))
+	$(Q)$$(CC_$(2)) $$(CFLAGS_$(2)) -o $$@ $$(patsubst %.c,$(BUILD)/$(2)/obj/%.o,$$(call program_var,$(1),SRCS,$(2))) \
+		-Wl,--start-group $$(LIB_$(2)) -Wl,--end-group -lm $$(call program_var,$(1),LDLIBS,$(2))
+-include $$(patsubst %.c,$(BUILD)/$(2)/obj/%.d,$$(call program_var,$(1),SRCS,$(2)))
 endef
 $(foreach p,$(HOST_PROGRAMS),$(eval $(call host_program_rules,$(p),host)))
+$(foreach p,$(HOST32_PROGRAMS),$(eval $(call host_program_rules,$(p),host32)))
 
 .PHONY: host-all
 host-all: $(LIB_host) $(addprefix $(BUILD)/host/,$(HOST_PROGRAMS)) tests-host

@@ -1,4 +1,4 @@
-# `make test`: the suite — three prove runs and the checks (TEST_SUITE_EXTRA,
+# `make test`: the suite — four prove runs and the checks (TEST_SUITE_EXTRA,
 # appended by the other mk/*.mk; this file is read after them).  All of them
 # are the goals of one make, so the builds, the prove runs and the checks
 # share the job slots instead of queueing behind each other, and the kbuild,
@@ -22,10 +22,10 @@
 # number could be one of make's jobserver pipes): the make's own output (the build lines of every configuration)
 # goes to build/logs/test/make.log, summed up per configuration at the end,
 # with its errors if a build failed.  The result comes last.
-TEST_SUITE_RUNS = prove-arm926-test prove-host-san prove-host $(TEST_SUITE_EXTRA)
+TEST_SUITE_RUNS = prove-arm926-test prove-host-san prove-host prove-host32 $(TEST_SUITE_EXTRA)
 SUITE_LOGS := $(BUILD)/logs/test
 # The configurations the suite builds, for its build summary.
-SUITE_CONFIGS := host host-san arm926-test am1808 bench-prod
+SUITE_CONFIGS := host host-san host32 arm926-test am1808 bench-prod
 
 .PHONY: test-suite
 ifeq ($(V),1)

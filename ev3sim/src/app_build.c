@@ -3,7 +3,7 @@
  *
  * make expands '$' in any variable's value and splits words at spaces, so
  * the app directory's own path never reaches it: make is given the link
- * ROOT/build/host/ev3rt/KEY/app, whose characters are all safe (and
+ * ROOT/build/CONFIG/ev3rt/KEY/app, whose characters are all safe (and
  * KEY/libdir for --lib-dir), and the app's sanitised name.  KEY hashes the real path: two directories called
  * "robot" build apart.  The lock serialises builds of one app only.
  */
@@ -162,17 +162,18 @@ static int run_program(char *const argv[], char *err, size_t err_len)
 	return WEXITSTATUS(wstatus);
 }
 
-int ev3sim_app_build(const char *root, const char *app, const char *lib_dir, char *runner, size_t runner_len,
-		     char *err, size_t err_len)
+int ev3sim_app_build(const char *root, const char *config, const char *app, const char *lib_dir, char *runner,
+		     size_t runner_len, char *err, size_t err_len)
 {
 	char key[APP_NAME_MAX + 32], name[APP_NAME_MAX + 1], dir[PATH_MAX], lock[PATH_MAX + 8];
 	char app_arg[PATH_MAX + 8], lib_arg[PATH_MAX + 24] = "EV3RT_LIB_DIR=";
-	char name_arg[APP_NAME_MAX + 32], key_arg[APP_NAME_MAX + 48];
+	char name_arg[APP_NAME_MAX + 32], key_arg[APP_NAME_MAX + 48], config_arg[APP_NAME_MAX + 32];
 	int lock_fd, fd = -1, status;
 
 	ev3sim_app_name(app, name, sizeof(name));
 	ev3sim_app_key(app, key, sizeof(key));
-	if (snprintf(dir, sizeof(dir), "%s/build/host/ev3rt/%s", root, key) >= (int)sizeof(dir) ||
+	if (snprintf(config_arg, sizeof(config_arg), "EV3RT_RUN_CONFIG=%s", config) >= (int)sizeof(config_arg) ||
+	    snprintf(dir, sizeof(dir), "%s/build/%s/ev3rt/%s", root, config, key) >= (int)sizeof(dir) ||
 	    snprintf(runner, runner_len, "%s/%s", dir, key) >= (int)runner_len) {
 		snprintf(err, err_len, "the path of %s's build directory is too long", app);
 		return -1;
@@ -204,7 +205,7 @@ int ev3sim_app_build(const char *root, const char *app, const char *lib_dir, cha
 		snprintf(err, err_len, "cannot link %s/libdir to %s: %s", dir, lib_dir, strerror(errno));
 	} else {
 		char *make_argv[] = { "make", "-s", "--no-print-directory", "-C", (char *)root, app_arg, lib_arg,
-				      name_arg, key_arg, "ev3rt-app", NULL };
+				      name_arg, key_arg, config_arg, "ev3rt-app", NULL };
 		char why[PATH_MAX + 64] = "";
 
 		status = run_program(make_argv, why, sizeof(why));

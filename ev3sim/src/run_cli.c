@@ -195,13 +195,13 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		o->audio_path = v;     /* streamed: opened at the boot (wav_out.h) */
 	} else if (strcmp(name, "--lcd") == 0) {
 		if (!ev3sim_lcd_png_writer)
-			return usage("%s: this program has no PNG writer", "--lcd");
+			return usage("%s: this program has no PNG writer (the 32-bit ev3sim links no libpng: build/host/ev3sim has it)", "--lcd");
 		if (!ev3sim_can_create("run", v))
 			return EV3SIM_EXIT_FAIL;
 		o->lcd_path = v;
 	} else if (strcmp(name, "--lcd-video") == 0) {
 		if (!ev3sim_lcd_video)
-			return usage("%s: this program has no GIF writer", "--lcd-video");
+			return usage("%s: this program has no GIF writer (the 32-bit ev3sim links no giflib: build/host/ev3sim has it)", "--lcd-video");
 		if (!ev3sim_can_create("run", v))
 			return EV3SIM_EXIT_FAIL;
 		o->lcd_video_path = v;
@@ -291,8 +291,10 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 	return ev3sim_finish_stdout("run", status);
 }
 
-/* The source tree: ev3sim is build/host/ev3sim in it. */
-static bool source_root(char *root, size_t len)
+/* The source tree, and the configuration an app is built for: ev3sim is
+ * build/CONFIG/ev3sim in the tree; host32's builds apps for host32 (the
+ * target's 32-bit types), every other one (host, host-pgo) for host. */
+static bool source_root(char *root, size_t len, const char **config)
 {
 	char exe[PATH_MAX];
 	ssize_t n = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
@@ -300,11 +302,14 @@ static bool source_root(char *root, size_t len)
 	if (n <= 0)
 		return false;
 	exe[n] = '\0';
+	*config = "host";
 	for (int up = 0; up < 3; up++) {
 		char *slash = strrchr(exe, '/');
 
 		if (slash == NULL)
 			return false;
+		if (up == 1 && strcmp(slash + 1, "host32") == 0)
+			*config = "host32";
 		*slash = '\0';
 	}
 	if (strlen(exe) >= len)
@@ -317,6 +322,7 @@ int ev3sim_run_command(int argc, char **argv)
 {
 	char root[PATH_MAX], app[PATH_MAX], runner[2 * PATH_MAX + 64], err[2 * PATH_MAX + 128];
 	char cfg_path[PATH_MAX + 16], lib_dir[PATH_MAX];
+	const char *config;
 	bool have_lib_dir = false;
 	struct stat st;
 	char **args;
@@ -331,7 +337,7 @@ int ev3sim_run_command(int argc, char **argv)
 	snprintf(cfg_path, sizeof(cfg_path), "%s/app.cfg", app);
 	if (access(cfg_path, R_OK) != 0)
 		return usage("'%s' has no app.cfg", argv[0]);
-	if (!source_root(root, sizeof(root))) {
+	if (!source_root(root, sizeof(root), &config)) {
 		fprintf(stderr, "ev3sim run: cannot find the ev3lx source tree\n");
 		return EV3SIM_EXIT_FAIL;
 	}
@@ -343,7 +349,7 @@ int ev3sim_run_command(int argc, char **argv)
 		argv += 2;
 		argc -= 2;
 	}
-	runner_fd = ev3sim_app_build(root, app, have_lib_dir ? lib_dir : NULL, runner, sizeof(runner), err,
+	runner_fd = ev3sim_app_build(root, config, app, have_lib_dir ? lib_dir : NULL, runner, sizeof(runner), err,
 				     sizeof(err));
 	if (runner_fd < 0) {
 		fprintf(stderr, "ev3sim run: %s\n", err);
