@@ -13,6 +13,14 @@
 # differing from the tree's is reported and makes the script exit 1.
 # Environment: HACK_DIRS, DRIVER_DIRS (find_drivers.sh), BUILD_CONFIGS, RECORDS_ROOT
 # (where the builds are, default build/).
+#
+# The users' modules (LEGACY_HACK_DIRS: tests/legacy and its genuine/ home,
+# each hack including its module from drivers/) get a table of their own,
+# without the ratios: each module's sha256 must be the one recorded for its
+# pristine source in LEGACY_PRISTINE (sha256sum's format: the module as its
+# author wrote it; a changed line makes the tree differ from it), and every
+# build of LEGACY_CONFIGS must have compiled those bytes (the records beside
+# the module objects, build/CONFIG/legacy/).
 set -euo pipefail
 out=$1; shift
 mkdir -p "$out"
@@ -39,9 +47,10 @@ ratio() { awk -v w="$1" -v r="$2" 'BEGIN { if (r > 0) printf "%.3f", w / r; else
 
 hash_of() { [ -n "$1" ] && [ -f "$1" ] && sha256sum "$1" | cut -c1-64 || echo "-"; }
 configs=(${BUILD_CONFIGS:-host host-san arm926-test am1808 kbuild})
-# The hash configuration $1 recorded at compile time for driver $2 ("-" if none).
+# The hash configuration $1 recorded at compile time for driver $2 ("-" if none),
+# in the build's directory $3 (default obj: the library's hack files).
 recorded_hash() {
-	local recs=${RECORDS_ROOT:-build}/$1/obj
+	local recs=${RECORDS_ROOT:-build}/$1/${3:-obj}
 	[ "$1" = kbuild ] && recs=${RECORDS_ROOT:-build}/kbuild/drivers.sha256
 	[ -e "$recs" ] || { echo "-"; return; }
 	{ grep -rh --include='*.drivers' --include='drivers.sha256' -E "  (\./)?$2\$" "$recs" 2>/dev/null || true; } |
@@ -138,6 +147,47 @@ echo "tests,,,,$test_code,,," >> "$csv"
 	echo "- With the shared shim: wrote $written_shim lines — written/reused $(ratio "$written_shim" "$total_reused"), $(pct "$written_shim" "$total_reused") % saved."
 	echo "- \"Coding saved\" = 1 − written/reused: the share of the reused code that did not have to be written."
 } | tee "$md"
+
+# The users' modules: pristine, and compiled unmodified by every configuration.
+if [ -n "${LEGACY_HACK_DIRS:-}" ] && [ "${modules[0]}" != custom ]; then
+	legacy_rows=()
+	while read -r hack drv; do
+		[ -n "$drv" ] || continue
+		src=$(hash_of "$drv")
+		pristine=$(awk -v f="$drv" '$2 == f { print $1 }' "${LEGACY_PRISTINE:-/dev/null}" 2>/dev/null | head -n 1)
+		cells="" bad=0
+		if [ -z "$pristine" ]; then
+			cells+="pristine:MISSING "; bad=1
+			echo "report: $drv: no pristine sha256 recorded in ${LEGACY_PRISTINE:-(none)}" >&2
+		elif [ "$pristine" != "$src" ]; then
+			cells+="pristine:DIFFERS "; bad=1
+			echo "report: $drv differs from its pristine source (sha256 $src, pristine $pristine in $LEGACY_PRISTINE)" >&2
+		else
+			cells+="pristine:ok "
+		fi
+		for c in ${LEGACY_CONFIGS:-}; do
+			h=$(recorded_hash "$c" "$drv" legacy)
+			if [ "$h" = "$src" ]; then cells+="$c:ok "
+			elif [ "$h" = "-" ]; then cells+="$c:MISSING "; bad=1
+				echo "report: $drv: no compile-time hash recorded by the $c build" >&2
+			else cells+="$c:DIFFERS "; bad=1
+				echo "report: $drv: the $c build compiled a different file (sha256 $h, tree $src)" >&2
+			fi
+		done
+		[ $bad = 0 ] || proof_failures=$((proof_failures + 1))
+		name=$(basename "$drv" .c)
+		legacy_rows+=("| $name | \`$drv\` | $(cloc_code "$drv") | $([ $bad = 0 ] && echo 0 || echo n/a) | \`$(echo "$src" | cut -c1-16)\` | ${cells% } |")
+		echo "legacy:$name,1,$(cloc_code "$drv"),$([ $bad = 0 ] && echo 0 || echo n/a),,$(echo "$src" | cut -c1-16),${cells% }" >> "$csv"
+	done < <(bash cloc_report/find_drivers.sh "$LEGACY_HACK_DIRS" "")
+	{
+		echo
+		echo "Users' 2.6-era modules (tests/legacy: conformance modules run by the tests; not in the ratios):"
+		echo
+		echo "| module | source | code lines | modified lines | sha256 | pristine, and compiled unmodified by |"
+		echo "|---|---|---:|---:|---|---|"
+		printf '%s\n' "${legacy_rows[@]}"
+	} | tee -a "$md"
+fi
 if [ $proof_failures -gt 0 ]; then
 	echo "report: FAILED: $proof_failures driver(s) without a compile-time proof of 0 modified lines" >&2
 	exit 1

@@ -108,7 +108,9 @@ warn_flags = $(if $(call is_linux_src,$(1)),$(filter-out -Wpointer-arith,$(WARN)
 # platform glue (linux_compat/src/host: signals, the simulated hardware's side)
 # and the test programs, which speak TAP through stdio, use the C library.
 NOSTDINC_DIRS := hacks linux_compat/src linux_compat/mach-davinci linux_compat/include tests/legacy
-is_nostdinc_src = $(filter-out linux_compat/src/host/%,$(filter $(addsuffix /%,$(NOSTDINC_DIRS)),$(filter-out tests/legacy/test_%,$(1))))
+# the test programs among the users' modules (tests/legacy and its genuine/ home)
+LEGACY_TEST_PATTERNS := tests/legacy/test_% tests/legacy/genuine/test_%
+is_nostdinc_src = $(filter-out linux_compat/src/host/%,$(filter $(addsuffix /%,$(NOSTDINC_DIRS)),$(filter-out $(LEGACY_TEST_PATTERNS),$(1))))
 # the compiler's own include directory, per configuration (CC_am1808 is set in mk/am1808.mk)
 cc_include = $(or $(CC_INCLUDE_$(1)),$(eval CC_INCLUDE_$(1) := $(shell $(CC_$(1)) -print-file-name=include))$(CC_INCLUDE_$(1)))
 nostdinc_flags = $(if $(call is_nostdinc_src,$(2)),-nostdinc -isystem $(call cc_include,$(1)))

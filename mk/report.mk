@@ -10,6 +10,12 @@ REPORT_CONFIGS := $(HOST_CONFIGS) am1808 kbuild
 export HACK_DIRS = $(EV3LX_HACK_DIRS)
 export DRIVER_DIRS
 export BUILD_CONFIGS = $(REPORT_CONFIGS)
+# The users' modules (mk/legacy.mk): their hacks' directories, the sha256 of
+# their pristine sources, and the builds that compile them.
+LEGACY_PRISTINE := tests/legacy/pristine.sha256
+export LEGACY_HACK_DIRS = tests/legacy tests/legacy/genuine
+export LEGACY_PRISTINE
+export LEGACY_CONFIGS = $(HOST_CONFIGS) am1808
 
 # The sources whose objects record driver hashes: those in the hack and
 # driver directories (the hack files, and the tests that act as one).
@@ -41,7 +47,8 @@ hash_recording_objs = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(call is_hash_record
 # removes the stamp.
 REPORT_STAMP := $(REPORT_DIR)/reuse.stamp
 REPORT_BUILDS = $(foreach c,$(HOST_CONFIGS),$(call hash_recording_objs,$(c),$(HOST_SRCS) $(TEST_SRCS))) \
-	$(call hash_recording_objs,am1808,$(AM1808_SRCS)) $(KBUILD_OUT)/summary.txt
+	$(call hash_recording_objs,am1808,$(AM1808_SRCS)) $(KBUILD_OUT)/summary.txt \
+	$(foreach c,$(HOST_CONFIGS) am1808,$(LEGACY_OBJS_$(c)))
 REPORT_SRC_DIRS := linux_compat rtos_stub tests
 REPORT_SRCS = $(sort $(shell find $(REPORT_SRC_DIRS) $(EV3LX_HACK_DIRS) $(DRIVER_DIRS) -type f \
 	\( -name '*.c' -o -name '*.h' -o -name '*.S' \) 2>/dev/null))
@@ -63,7 +70,7 @@ report: deps-check
 	fi
 	@echo "report: $(REPORT_DIR)/reuse.md, $(REPORT_DIR)/reuse.csv"
 
-$(REPORT_STAMP): $(REPORT_KEY) $(REPORT_BUILDS) $(REPORT_SRCS) $(wildcard cloc_report/*.sh) mk/report.mk | deps-check
+$(REPORT_STAMP): $(REPORT_KEY) $(REPORT_BUILDS) $(REPORT_SRCS) $(LEGACY_PRISTINE) $(wildcard cloc_report/*.sh) mk/report.mk | deps-check
 	@rm -f $@
 	@bash cloc_report/reuse_report.sh $(REPORT_DIR) > /dev/null
 	@touch $@
