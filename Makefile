@@ -1,5 +1,6 @@
 # ev3lx — top-level build.  `make` builds everything and runs the main job;
-# `make test` runs the whole suite on host, host+sanitizers and ARMv5 (qemu).
+# `make test` runs the whole suite on host, host+sanitizers, the 32-bit host
+# (gcc -m32) and ARMv5 (qemu).
 #
 # Components describe their sources in <dir>/module.mk; build configurations,
 # rules and extra targets live in mk/*.mk.  All output goes below build/.
@@ -32,8 +33,8 @@ include mk/suite.mk
 # summed up in one line per configuration, or with its tail if it failed
 # (mk/quiet.sh); the main job prints its result last.
 .PHONY: all test clean main-job build-all
-BUILD_ALL_CONFIGS := host am1808 host-prof host-pgo
-build-all: host-all am1808 pgo
+BUILD_ALL_CONFIGS := host host32 am1808 host-prof host-pgo
+build-all: host-all $(BUILD)/host32/ev3sim am1808 pgo
 
 ifeq ($(V),1)
 all: deps-check build-all
