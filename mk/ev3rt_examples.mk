@@ -233,6 +233,10 @@ TEST_SUITE_EXTRA += ev3sim-run-check
 # runs it; --lcd is refused before the run with its reason (no 32-bit libpng).
 .PHONY: ev3sim-run-check-host32
 ev3sim-run-check-host32: $(BUILD)/host32/ev3sim $(LIB_host32) $(EV3CFG)
+	+$(Q)err=$$($(BUILD)/host32/ev3sim run examples/blink --lcd $(BUILD)/host32/blink.png 2>&1 >/dev/null); status=$$?; \
+	[ $$status = 2 ] && printf '%s\n' "$$err" | grep -q "no PNG writer (the 32-bit ev3sim links no libpng" || \
+		{ echo "ev3sim-run-check-host32: FAILED: --lcd: status $$status: $$err"; exit 1; }; \
+	echo "ev3sim-run-check-host32: --lcd refused: $$(printf '%s\n' "$$err" | head -n 1)"
 	+$(Q)out=$$($(BUILD)/host32/ev3sim run examples/blink --seconds 3 --click back:1500ms --quiet) || \
 		{ echo "ev3sim-run-check-host32: FAILED: build/host32/ev3sim run examples/blink exited $$?"; exit 1; }; \
 	summary=$$(printf '%s\n' "$$out" | tail -n 1); \
@@ -244,10 +248,6 @@ ev3sim-run-check-host32: $(BUILD)/host32/ev3sim $(LIB_host32) $(EV3CFG)
 	[ "$$(od -An -tu1 -j4 -N1 "$$runner" | tr -d ' ')" = 1 ] || \
 		{ echo "ev3sim-run-check-host32: FAILED: the runner $$runner is not a 32-bit program"; exit 1; }; \
 	echo "ev3sim-run-check-host32: $$summary (32-bit runner $$runner)"
-	+$(Q)err=$$($(BUILD)/host32/ev3sim run examples/blink --lcd $(BUILD)/host32/blink.png 2>&1 >/dev/null); status=$$?; \
-	[ $$status = 2 ] && printf '%s\n' "$$err" | grep -q "no PNG writer (the 32-bit ev3sim links no libpng" || \
-		{ echo "ev3sim-run-check-host32: FAILED: --lcd: status $$status: $$err"; exit 1; }; \
-	echo "ev3sim-run-check-host32: --lcd refused: $$err"
 TEST_SUITE_EXTRA += ev3sim-run-check-host32
 
 # `make adversarial-check` (in make test): bad input to ev3sim and its
