@@ -64,6 +64,9 @@ static const char run_usage[] =
 	"  --bt PATH            Bluetooth SPP: a Unix socket at PATH; a program connected to it\n"
 	"                       is the paired PC or brick (EV3_SERIAL_BT, SIO_PORT_BT,\n"
 	"                       ev3_bluetooth_is_connected)\n"
+	"  --bt-master PATH     the remote slave the brick connects to as SPP master\n"
+	"                       (SIO_PORT_SPP_MASTER_TEST): a program listening on a Unix\n"
+	"                       socket at PATH, e.g. another ev3sim run's --bt\n"
 	"  --trace FILE.vcd     host_sim's signal trace\n"
 	"  --audio FILE.wav     what the speaker played (32 kHz, 16-bit mono)\n"
 	"  --lcd FILE.png       the display's last frame (178 x 128, grey)\n"
@@ -215,6 +218,8 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		o->serial_path = v;
 	} else if (strcmp(name, "--bt") == 0) {
 		o->bt_path = v;
+	} else if (strcmp(name, "--bt-master") == 0) {
+		o->bt_master_path = v;
 	} else if (strcmp(name, "--csv") == 0) {
 		*csv_path = v;
 	} else {
