@@ -3,10 +3,13 @@
  * EV3RT's C++ API (libcpp-ev3: ev3api::Motor, ColorSensor, TouchSensor,
  * Clock) with a PID class of its own.
  *
- * The main task makes the tracer (its motors and sensor configured), waits
- * for the touch sensor, then starts TRACER_CYC, whose
- * handler activates the tracer task every TRACER_PERIOD_MS; it reports the
- * run every 5 s and stops the robot when the back button is pressed.
+ * The main task makes the tracer (its motors and sensor configured) as a
+ * local object, which lives as long as the task runs and which the tracer
+ * task reaches through a pointer; no heap, so nothing is left behind when
+ * the brick boots again.  It waits for the touch sensor, then starts
+ * TRACER_CYC, whose handler activates the tracer task every
+ * TRACER_PERIOD_MS; it reports the run every 5 s and stops the robot when
+ * the back button is pressed.
  */
 #include "app.h"
 #include "Tracer.h"
@@ -15,6 +18,7 @@
 
 using namespace ev3api;
 
+/* main_task's tracer, while it runs */
 static Tracer *tracer;
 
 /* Activates the tracer for one period (EV3RT's cyclic handlers run in a
@@ -34,11 +38,12 @@ void tracer_task(intptr_t exinf)
 
 void main_task(intptr_t unused)
 {
+	Tracer mainTracer;
 	TouchSensor touchSensor(PORT_1);
 	Clock clock;
 	uint32_t next_report = 5000;
 
-	tracer = new Tracer();
+	tracer = &mainTracer;
 	tracer->init();
 	syslog(LOG_NOTICE, "cpptracer: target %d%%, press the touch sensor to start", tracer->target());
 	while (!touchSensor.isPressed())
