@@ -98,7 +98,7 @@ $(EV3RT_PLATFORM): $(LIB_host) $(EV3RT_PLATFORM_OBJS) mk/ev3rt/platform_syms.sh 
 	$(quiet) LD host $@
 	$(Q)set -e; tmp=$@.$$$$; \
 	ld -r -o $$tmp.r.o --whole-archive $(LIB_host) --no-whole-archive $(EV3RT_PLATFORM_OBJS); \
-	PLATFORM_KEEP='ev3sim_run_main __sanitizer_cov_trace_pc $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $$tmp.r.o \
+	PLATFORM_KEEP='ev3sim_run_main __sanitizer_cov_trace_pc ev3rt_app_cxa_atexit $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $$tmp.r.o \
 		$(CC_host) $(call layer_inc,api) $(CFLAGS_host) $(KERNEL_DEFS) > $$tmp.syms; \
 	objcopy --keep-global-symbols=$$tmp.syms $$tmp.r.o $$tmp; \
 	mv $$tmp.syms $@.syms; rm -f $$tmp.r.o; mv $$tmp $@

@@ -97,8 +97,10 @@ int main(void)
 	}
 
 	/* Sensors */
-	if (LOGGED(1, "libcpp: touch before", "libcpp: touch before %d", &a))
+	if (LOGGED(2, "libcpp: touch before", "libcpp: touch before %d, the global object's %d", &a, &b)) {
 		is_int(a, 0, "TouchSensor::isPressed() is false before the press");
+		is_int(b, 0, "a global TouchSensor, constructed after boot as on EV3RT, reads its port too");
+	}
 	if (LOGGED(2, "libcpp: touch pressed", "libcpp: touch pressed at %u ms, C says %d", &u1, &a)) {
 		in_range(u1, 12000, 12030, "and true from the press at 12 s (%u ms)", u1);
 		is_int(a, 1, "as the C API says");

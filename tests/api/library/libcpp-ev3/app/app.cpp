@@ -28,6 +28,10 @@ static_assert(PORT_A == static_cast<int>(EV3_PORT_A) && PORT_D == static_cast<in
 static_assert(NUM_PORT_S == 4 && NUM_PORT_M == 4 && POWER_LOWSPEED == 2, "Port.h's constants");
 static_assert(Motor::PWM_MAX == 100 && Motor::PWM_MIN == -100, "Motor's PWM range");
 
+/* A global device object, as ET Robocon's apps have: EV3RT constructs it
+ * once the platform is up, so its port is configured when main_task runs. */
+static TouchSensor globalTouch(PORT_1);
+
 /* A Motor whose protected state the test reads, as an app's subclass can. */
 class ProbeMotor : public Motor {
 public:
@@ -150,7 +154,8 @@ static void test_sensors(Clock& clock)
 	int16_t rate;
 	SYSTIM now = 0;
 
-	syslog(LOG_NOTICE, "libcpp: touch before %d", (int)touch.isPressed());
+	syslog(LOG_NOTICE, "libcpp: touch before %d, the global object's %d", (int)touch.isPressed(),
+	       (int)globalTouch.isPressed());
 	while (!touch.isPressed())
 		clock.sleep(10);
 	get_tim(&now);
