@@ -81,9 +81,9 @@ ER ev3lx_button_set_on_clicked(button_t button, ISR handler, intptr_t exinf);
 
 /*
  * The app-init task, which runs the app's C++ global constructors at boot
- * once the platform is up, as EV3RT's app-init task does, before any task
- * of the app (whose priorities are TMIN_APP_TPRI and lower): at the button
- * task's priority and domain.
+ * once the platform is up, as EV3RT's app-init task does, holding the app's
+ * tasks (priorities TMIN_APP_TPRI and lower) until they return: at the
+ * button task's priority and domain.
  */
 #ifndef EV3_APP_INIT_TSKID
 #define EV3_APP_INIT_TSKID        (TNUM_TSKID - 4)

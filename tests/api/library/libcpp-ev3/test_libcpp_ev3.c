@@ -3,7 +3,7 @@
  * through its unit-test app (app/: a C++ app taking the library from its
  * Makefile.inc as EV3RT apps do) on a bare brick: large motors on A and D,
  * touch on 1, gyro on 2, colour on 3, ultrasonic on 4, the touch sensor
- * pressed from 12 s to 13 s.  Each class does what EV3RT documents, and each
+ * pressed from 15 s to 16 s.  Each class does what EV3RT documents, and each
  * sensor read is what EV3RT's C call says of the same port.
  */
 #include "../../../examples/example_test.h"
@@ -28,11 +28,17 @@ int main(void)
 	o.in[1] = EV3SIM_IN_GYRO;
 	o.in[2] = EV3SIM_IN_COLOR;
 	o.in[3] = EV3SIM_IN_ULTRASONIC;
-	o.actions[0] = (struct ev3sim_action){ .touch = true, .t_ns = 12000000000ULL, .hold_ns = 1000000000ULL };
+	o.actions[0] = (struct ev3sim_action){ .touch = true, .t_ns = 15000000000ULL, .hold_ns = 1000000000ULL };
 	o.nactions = 1;
-	o.seconds = 16;
+	o.seconds = 19;
 	if (!ok(ex_run(&o, &r), "the unit-test app runs"))
 		return tap_done();
+
+	/* global objects */
+	if (LOGGED(2, "libcpp: global gyro", "libcpp: global gyro set %d, angle %d", &a, &b)) {
+		is_int(a, 1, "main_task starts after the global constructors, even one that waits for its sensor");
+		in_range(b, -1, 1, "the global GyroSensor reads its port (angle %d)", b);
+	}
 
 	/* Clock */
 	if (LOGGED(3, "libcpp: clock", "libcpp: clock wait 120 -> %u, sleep 80 -> %u, reset -> %u", &u1, &u2, &u3)) {
@@ -102,7 +108,7 @@ int main(void)
 		is_int(b, 0, "a global TouchSensor, constructed after boot as on EV3RT, reads its port too");
 	}
 	if (LOGGED(2, "libcpp: touch pressed", "libcpp: touch pressed at %u ms, C says %d", &u1, &a)) {
-		in_range(u1, 12000, 12030, "and true from the press at 12 s (%u ms)", u1);
+		in_range(u1, 15000, 15030, "and true from the press at 15 s (%u ms)", u1);
 		is_int(a, 1, "as the C API says");
 	}
 	if (LOGGED(2, "libcpp: gyro angle", "libcpp: gyro angle %d rate %d", &a, &b)) {

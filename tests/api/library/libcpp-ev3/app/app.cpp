@@ -1,7 +1,7 @@
 /*
  * app.cpp — libcpp-ev3's unit-test app, run by test_libcpp_ev3 in a bare
  * brick with large motors on A and D, touch on 1, gyro on 2, colour on 3
- * and ultrasonic on 4, the touch sensor pressed from 12 s to 13 s.  Each
+ * and ultrasonic on 4, the touch sensor pressed from 15 s to 16 s.  Each
  * class is driven through its public interface (its protected parts
  * through a subclass, as an app's own class would) and what it did is
  * logged as "libcpp: ..." lines, beside what EV3RT's C API says of the same
@@ -31,6 +31,11 @@ static_assert(Motor::PWM_MAX == 100 && Motor::PWM_MIN == -100, "Motor's PWM rang
 /* A global device object, as ET Robocon's apps have: EV3RT constructs it
  * once the platform is up, so its port is configured when main_task runs. */
 static TouchSensor globalTouch(PORT_1);
+
+/* A global pointer set by a constructor that waits for its sensor (the
+ * gyro's reset), as EV3RT's samples write it: the app's tasks do not start
+ * before it is set. */
+static GyroSensor *globalGyro = new GyroSensor(PORT_2);
 
 /* A Motor whose protected state the test reads, as an app's subclass can. */
 class ProbeMotor : public Motor {
@@ -192,6 +197,8 @@ void main_task(intptr_t unused)
 {
 	Clock clock;
 
+	syslog(LOG_NOTICE, "libcpp: global gyro set %d, angle %d", (int)(globalGyro != NULL),
+	       globalGyro != NULL ? globalGyro->getAngle() : -1);
 	test_clock();
 	test_motor(clock);
 	test_steering(clock);
