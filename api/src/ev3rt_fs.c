@@ -381,5 +381,5 @@ bool_t ev3_bluetooth_is_connected(void)
 
 bool_t ev3_usb_cdc_is_connected(void)
 {
-	return false;
+	return api_may_wait() == E_OK && brick_io_serial_write(EV3_SERIAL_USB_CDC, NULL, 0) == E_OK;
 }

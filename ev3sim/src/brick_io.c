@@ -32,18 +32,24 @@ static struct {
 	int serial_write_errno;             /* the first failed write's errno since the setup, 0: none */
 } io = { .serial_fd = -1 };
 
-/* One Bluetooth SPP link's far end: a connected socket to a host program. */
-struct bt_link {
+/* A serial link's far end (Bluetooth SPP, USB CDC): a connected socket to a host program. */
+struct peer_link {
 	int fd;                             /* -1: not connected */
 	bool hung_up;                       /* the far end left, and no read has seen the end yet */
 };
 
-/* The brick as SPP slave: a PC program connects to a Unix socket (--bt). */
-static struct {
+/* A port whose far end is a program on the host that connects to a Unix
+ * socket: the PC paired over Bluetooth SPP (--bt) or plugged into the
+ * USB port as a CDC device (--usb). */
+struct peer_port {
+	const char *option;                 /* the command line's name for it */
 	char *path;                         /* the socket's path, NULL: no peer can come */
 	int listen_fd;                      /* -1: none */
-	struct bt_link peer;
-} bt = { .listen_fd = -1, .peer.fd = -1 };
+	struct peer_link peer;
+};
+
+static struct peer_port bt = { .option = "--bt", .listen_fd = -1, .peer.fd = -1 };
+static struct peer_port usb = { .option = "--usb", .listen_fd = -1, .peer.fd = -1 };
 
 /*
  * The brick as SPP master (SIO_PORT_SPP_MASTER_TEST): it connects to a
@@ -60,14 +66,14 @@ static struct {
 static struct {
 	bool has_slave;                     /* --bt-master gave the slave's socket */
 	struct sockaddr_un slave;           /* its address */
-	struct bt_link link;
+	struct peer_link link;
 	int answer_fd;                      /* the socket of an attempt a slave answered, -1: none */
 	bool attempting;
 	SYSTIM attempt_ends;                /* when the attempt under way ends */
 } spp = { .link.fd = -1, .answer_fd = -1 };
 
 /* Closes a link's socket; the link is then as if never connected. */
-static void link_close(struct bt_link *link)
+static void link_close(struct peer_link *link)
 {
 	if (link->fd >= 0)
 		close(link->fd);
@@ -75,17 +81,24 @@ static void link_close(struct bt_link *link)
 	link->hung_up = false;
 }
 
-/* Closes the Bluetooth sockets and their peers, and removes the listening socket's file. */
-static void bt_teardown(void)
+/* Closes a peer port's sockets and removes its socket's file. */
+static void peer_port_close(struct peer_port *port)
 {
-	link_close(&bt.peer);
-	if (bt.listen_fd >= 0)
-		close(bt.listen_fd);
-	if (bt.path != NULL)
-		unlink(bt.path);
-	free(bt.path);
-	bt.path = NULL;
-	bt.listen_fd = -1;
+	link_close(&port->peer);
+	if (port->listen_fd >= 0)
+		close(port->listen_fd);
+	if (port->path != NULL)
+		unlink(port->path);
+	free(port->path);
+	port->path = NULL;
+	port->listen_fd = -1;
+}
+
+/* Closes the peers' sockets, removes the listening sockets' files, forgets the SPP master's slave. */
+static void peers_teardown(void)
+{
+	peer_port_close(&bt);
+	peer_port_close(&usb);
 	link_close(&spp.link);
 	if (spp.answer_fd >= 0)
 		close(spp.answer_fd);
@@ -108,37 +121,51 @@ static ER unix_address(const char *option, const char *path, struct sockaddr_un 
 	return E_OK;
 }
 
-ER brick_io_bt_listen(const char *path, char *err, size_t errlen)
+/* Listens for port's peer on a Unix socket at path: E_OK, or E_PAR / E_OBJ
+ * with the reason (naming the option) in err. */
+static ER peer_port_listen(struct peer_port *port, const char *path, char *err, size_t errlen)
 {
 	struct sockaddr_un addr;
 	struct stat st;
 
-	link_close(&bt.peer);
-	if (bt.listen_fd >= 0)
-		close(bt.listen_fd);
-	bt.listen_fd = -1;
-	if (unix_address("--bt", path, &addr, err, errlen) != E_OK)
+	peer_port_close(port);
+	if (unix_address(port->option, path, &addr, err, errlen) != E_OK)
 		return E_PAR;
 	/* a socket left by an earlier run is replaced; any other file is not */
 	if (lstat(path, &st) == 0) {
 		if (!S_ISSOCK(st.st_mode)) {
-			snprintf(err, errlen, "--bt %s: exists and is not a socket", path);
+			snprintf(err, errlen, "%s %s: exists and is not a socket", port->option, path);
 			return E_OBJ;
 		}
 		unlink(path);
 	}
-	bt.listen_fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
-	if (bt.listen_fd < 0 || bind(bt.listen_fd, (struct sockaddr *)&addr, sizeof(addr)) != 0 ||
-	    listen(bt.listen_fd, 1) != 0) {
-		snprintf(err, errlen, "--bt %s: %s", path, strerror(errno));
-		if (bt.listen_fd >= 0)
-			close(bt.listen_fd);
-		bt.listen_fd = -1;
+	port->listen_fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+	if (port->listen_fd < 0 || bind(port->listen_fd, (struct sockaddr *)&addr, sizeof(addr)) != 0 ||
+	    listen(port->listen_fd, 1) != 0) {
+		snprintf(err, errlen, "%s %s: %s", port->option, path, strerror(errno));
+		if (port->listen_fd >= 0)
+			close(port->listen_fd);
+		port->listen_fd = -1;
 		return E_OBJ;
 	}
-	free(bt.path);
-	bt.path = strdup(path);
+	port->path = strdup(path);
+	if (port->path == NULL) {
+		snprintf(err, errlen, "%s %s: out of memory", port->option, path);
+		peer_port_close(port);
+		unlink(path);
+		return E_NOMEM;
+	}
 	return E_OK;
+}
+
+ER brick_io_bt_listen(const char *path, char *err, size_t errlen)
+{
+	return peer_port_listen(&bt, path, err, errlen);
+}
+
+ER brick_io_usb_listen(const char *path, char *err, size_t errlen)
+{
+	return peer_port_listen(&usb, path, err, errlen);
 }
 
 ER brick_io_bt_master(const char *path, char *err, size_t errlen)
@@ -149,7 +176,7 @@ ER brick_io_bt_master(const char *path, char *err, size_t errlen)
 
 /* The far end went away: the link is down until it connects again, and
  * the next read sees the end of the stream, as on EV3RT. */
-static void link_drop(struct bt_link *link)
+static void link_drop(struct peer_link *link)
 {
 	close(link->fd);
 	link->fd = -1;
@@ -158,7 +185,7 @@ static void link_drop(struct bt_link *link)
 
 /* Whether the link's far end is still there (one that hung up is dropped;
  * what it sent before is read first). */
-static bool link_up(struct bt_link *link)
+static bool link_up(struct peer_link *link)
 {
 	char byte;
 
@@ -167,13 +194,13 @@ static bool link_up(struct bt_link *link)
 	return link->fd >= 0;
 }
 
-/* Whether a PC is connected to --bt's socket: one waiting to connect is taken. */
-static bool bt_peer(void)
+/* Whether a program is connected to port's socket: one waiting to connect is taken. */
+static bool port_peer(struct peer_port *port)
 {
-	if (!link_up(&bt.peer) && bt.listen_fd >= 0)
+	if (!link_up(&port->peer) && port->listen_fd >= 0)
 		/* cppcheck-suppress nullPointer ; accept4 takes NULL for a peer address it need not return (POSIX accept) */
-		bt.peer.fd = accept4(bt.listen_fd, NULL, NULL, SOCK_NONBLOCK | SOCK_CLOEXEC);
-	return bt.peer.fd >= 0;
+		port->peer.fd = accept4(port->listen_fd, NULL, NULL, SOCK_NONBLOCK | SOCK_CLOEXEC);
+	return port->peer.fd >= 0;
 }
 
 /* Ends the master's connection attempt once its time has come: the link is
@@ -214,7 +241,7 @@ void brick_io_teardown(void)
 		close(io.serial_fd);
 	io.serial_fd = -1;
 	io.serial_is_uart = false;
-	bt_teardown();
+	peers_teardown();
 }
 
 void brick_io_serial_to_uart(void)
@@ -540,13 +567,14 @@ static ER_UINT svc_dir_close(intptr_t dirid, intptr_t p2, intptr_t p3, intptr_t 
 }
 
 /* Whether port has a far end: the sensor-port UART when --serial gave one or
- * serial_log models it; Bluetooth while a peer is connected to --bt's
- * socket; the SPP master while its link to the slave is up; USB never (no
- * host peer). */
+ * serial_log models it; Bluetooth and USB while a program is connected to
+ * --bt's or --usb's socket; the SPP master while its link to the slave is up. */
 static bool serial_connected(intptr_t port)
 {
 	if (port == EV3_SERIAL_BT)
-		return bt_peer();
+		return port_peer(&bt);
+	if (port == EV3_SERIAL_USB_CDC)
+		return port_peer(&usb);
 	if (port == BRICK_IO_SERIAL_SPP_MASTER)
 		return spp_peer();
 	return (port == EV3_SERIAL_DEFAULT || port == EV3_SERIAL_UART) &&
@@ -555,7 +583,7 @@ static bool serial_connected(intptr_t port)
 
 /* A Bluetooth link's write: what the far end's socket takes (0: full); a
  * far end gone is a disconnection, and the bytes are lost as on the air. */
-static ER_UINT link_write(struct bt_link *link, const void *buf, size_t len)
+static ER_UINT link_write(struct peer_link *link, const void *buf, size_t len)
 {
 	ssize_t put = send(link->fd, buf, len, MSG_NOSIGNAL);
 
@@ -570,7 +598,7 @@ static ER_UINT link_write(struct bt_link *link, const void *buf, size_t len)
 /* A Bluetooth link's read: what the far end sent (0: nothing yet); once
  * after the far end left, the end of the stream (E_OBJ); while it is not
  * connected, the reader waits. */
-static ER_UINT link_read(struct bt_link *link, bool connected, void *buf, size_t len)
+static ER_UINT link_read(struct peer_link *link, bool connected, void *buf, size_t len)
 {
 	ssize_t got;
 
@@ -618,6 +646,8 @@ static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, i
 		return E_OK;
 	if (port == EV3_SERIAL_BT)
 		return link_write(&bt.peer, (const void *)p_buf, (size_t)p_len);
+	if (port == EV3_SERIAL_USB_CDC)
+		return link_write(&usb.peer, (const void *)p_buf, (size_t)p_len);
 	if (port == BRICK_IO_SERIAL_SPP_MASTER)
 		return link_write(&spp.link, (const void *)p_buf, (size_t)p_len);
 	if (io.serial_is_uart)
@@ -643,7 +673,9 @@ static ER_UINT svc_serial_read(intptr_t port, intptr_t p_buf, intptr_t p_len, in
 	if ((ercd = serial_check(port, p_buf, p_len, TPM_WRITE)) != E_OK || p_len == 0)
 		return ercd;
 	if (port == EV3_SERIAL_BT)
-		return link_read(&bt.peer, bt_peer(), (void *)p_buf, (size_t)p_len);
+		return link_read(&bt.peer, port_peer(&bt), (void *)p_buf, (size_t)p_len);
+	if (port == EV3_SERIAL_USB_CDC)
+		return link_read(&usb.peer, port_peer(&usb), (void *)p_buf, (size_t)p_len);
 	if (port == BRICK_IO_SERIAL_SPP_MASTER)
 		return link_read(&spp.link, spp_peer(), (void *)p_buf, (size_t)p_len);
 	if (!serial_connected(port))

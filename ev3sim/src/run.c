@@ -419,6 +419,7 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	if (brick_io_setup(o->sd_dir, o->serial_path, err, errlen) != E_OK)
 		return E_PAR;
 	if ((o->bt_path != NULL && brick_io_bt_listen(o->bt_path, err, errlen) != E_OK) ||
+	    (o->usb_path != NULL && brick_io_usb_listen(o->usb_path, err, errlen) != E_OK) ||
 	    (o->bt_master_path != NULL && brick_io_bt_master(o->bt_master_path, err, errlen) != E_OK)) {
 		brick_io_teardown();
 		return E_PAR;

@@ -68,6 +68,9 @@ static const char run_usage[] =
 	"  --bt-master PATH     the remote slave the brick connects to as SPP master\n"
 	"                       (SIO_PORT_SPP_MASTER_TEST): a program listening on a Unix\n"
 	"                       socket at PATH, e.g. another ev3sim run's --bt\n"
+	"  --usb PATH           USB CDC: a Unix socket at PATH; a program connected to it is\n"
+	"                       the PC the brick is plugged into (EV3_SERIAL_USB_CDC,\n"
+	"                       SIO_PORT_USB_CDC, ev3_usb_cdc_is_connected)\n"
 	"  --trace FILE.vcd     host_sim's signal trace\n"
 	"  --audio FILE.wav     what the speaker played (32 kHz, 16-bit mono)\n"
 	"  --lcd FILE.png       the display's last frame (178 x 128, grey)\n"
@@ -221,6 +224,8 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		o->bt_path = v;
 	} else if (strcmp(name, "--bt-master") == 0) {
 		o->bt_master_path = v;
+	} else if (strcmp(name, "--usb") == 0) {
+		o->usb_path = v;
 	} else if (strcmp(name, "--csv") == 0) {
 		*csv_path = v;
 	} else {

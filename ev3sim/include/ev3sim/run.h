@@ -65,6 +65,7 @@ struct ev3sim_run_opts {
 	const char *serial_path;    /* the serial port's far end, NULL: not connected */
 	const char *bt_path;        /* Bluetooth SPP's far end: a Unix socket there (brick_io.h), NULL: none */
 	const char *bt_master_path; /* the SPP master's remote slave: a Unix socket there, NULL: none */
+	const char *usb_path;       /* USB CDC's far end: a Unix socket there, NULL: none */
 	FILE *csv;                  /* the robot's state every 10 ms, NULL: none */
 	bool quiet;                 /* the console shows warnings and worse only */
 	/* every syslog line of the run ("WARNING: text"), NULL: none */
