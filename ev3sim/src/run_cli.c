@@ -55,6 +55,9 @@ static const char run_usage[] =
 	"                       or a time T (let go at T, driven or not)\n"
 	"  --tilt DEG           gyroboy: tilt when let go (default 0.5)\n"
 	"  --push T:NM          gyroboy: pitch torque NM (N m) for 100 ms at T; may repeat\n"
+	"  --place T:MM         tribot: the hand puts the robot down MM mm to its left\n"
+	"                       (negative: right) at T, same heading (e.g. to show a\n"
+	"                       calibrating app white, then black); may repeat\n"
 	"  --fault SPEC         inject a fault (as ev3sim balance --help lists; uart faults go to\n"
 	"                       the first UART sensor, times from power-on); may repeat\n"
 	"  --sd DIR             the SD card: ev3_memfile_load and ev3_sdcard_* see DIR (and\n"
@@ -188,6 +191,16 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		    !ev3sim_parse_double(tail, &nm) || fabs(nm) > MAX_PUSH_NM)
 			return usage("--push: bad value '%s' (T:NM, |NM| <= 5 N m)", v);
 		o->pushes[o->npushes++].torque_nm = nm;
+	} else if (strcmp(name, "--place") == 0) {
+		double mm;
+
+		if (o->nplacements == EV3SIM_MAX_PLACEMENTS)
+			return usage("%s: too many placements (16)", "--place");
+		if (!split_colon(v, head, sizeof(head), &tail) || tail == NULL ||
+		    !ev3sim_parse_time(head, &o->placements[o->nplacements].t_ns) ||
+		    !ev3sim_parse_double(tail, &mm) || !(fabs(mm) <= EV3SIM_MAX_PLACE_MM))
+			return usage("--place: bad value '%s' (T:MM, |MM| <= 2000)", v);
+		o->placements[o->nplacements++].left_mm = mm;
 	} else if (strcmp(name, "--fault") == 0) {
 		if (o->nfaults == EV3SIM_RUN_MAX_FAULTS)
 			return usage("%s: too many faults (16)", "--fault");

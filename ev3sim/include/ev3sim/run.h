@@ -25,6 +25,7 @@
 #include "ev3sim/apps.h"
 #include "ev3sim/fault_spec.h"
 #include "ev3sim/robot.h"
+#include "ev3sim/tribot.h"
 
 #define EV3SIM_RUN_MAX_FAULTS   16U
 #define EV3SIM_RUN_MAX_ACTIONS  16U
@@ -57,6 +58,8 @@ struct ev3sim_run_opts {
 	double gyro_noise_dps;      /* the gyro's sample noise (a gyro-noise fault overrides it) */
 	struct ev3sim_push pushes[EV3SIM_MAX_PUSHES];              /* gyroboy, t_ns from boot */
 	unsigned npushes;
+	struct ev3sim_placement placements[EV3SIM_MAX_PLACEMENTS]; /* tribot, t_ns from boot */
+	unsigned nplacements;
 	const char *trace_path;     /* VCD, NULL: none */
 	const char *audio_path;     /* WAV of what the speaker played, NULL: none */
 	const char *lcd_path;       /* PNG of the display's last frame, NULL: none */
