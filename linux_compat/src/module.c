@@ -125,6 +125,23 @@ static void apply_boot_args(const char *args)
 	}
 }
 
+/* True if a module other than mod with mod's name is loaded (its init ran or
+ * runs, and did not fail): Linux refuses a second module of one name. */
+static bool name_loaded(const struct module *mod)
+{
+	size_t i, n = initcall_count();
+
+	for (i = 0; i < n; i++) {
+		const struct module *other = __start_lx_initcalls[i]->module;
+
+		if (other != NULL && other != mod && strcmp(other->name, mod->name) == 0 &&
+		    (other->state == MODULE_STATE_COMING || other->state == MODULE_STATE_LIVE ||
+		     other->state == MODULE_STATE_GOING))
+			return true;
+	}
+	return false;
+}
+
 /* Runs each module_init once in order; the number that failed. */
 int lx_modules_init(void)
 {
@@ -139,6 +156,17 @@ int lx_modules_init(void)
 		mod = c->module;
 		if (mod == NULL || mod->state != MODULE_STATE_UNFORMED)
 			continue;
+		if (name_loaded(mod)) {
+			/* as insmod of a second module with one KBUILD_MODNAME
+			 * (load_module: "module is already loaded"); its
+			 * parameters stay the first one's */
+			mod->state = MODULE_STATE_FAILED;
+			mod->init_result = -EEXIST;
+			pr_err("module %s: a module of that name is already loaded; this one is refused (-EEXIST), "
+			       "its init and exit are not called\n", mod->name);
+			failed++;
+			continue;
+		}
 		mod->state = MODULE_STATE_COMING;
 		ret = c->init();
 		mod->init_result = ret;
@@ -154,8 +182,17 @@ int lx_modules_init(void)
 	/* Modules with only a module_exit are live from the start, as in Linux. */
 	for (i = 0; i < n; i++) {
 		mod = __start_lx_initcalls[i]->module;
-		if (mod != NULL && mod->state == MODULE_STATE_UNFORMED)
+		if (mod != NULL && mod->state == MODULE_STATE_UNFORMED) {
+			if (name_loaded(mod)) {
+				mod->state = MODULE_STATE_FAILED;
+				mod->init_result = -EEXIST;
+				pr_err("module %s: a module of that name is already loaded; this one is refused (-EEXIST)\n",
+				       mod->name);
+				failed++;
+				continue;
+			}
 			make_live(mod);
+		}
 	}
 	return failed;
 }
@@ -207,20 +244,25 @@ void lx_modules_reset(void)
 	}
 }
 
-/* The linked module called name, or NULL. */
+/* The linked module called name (the loaded one where several share it), or NULL. */
 struct module *lx_module_find(const char *name)
 {
 	size_t i, n = initcall_count();
+	struct module *found = NULL;
 
 	if (name == NULL)
 		return NULL;
 	for (i = 0; i < n; i++) {
 		struct module *mod = __start_lx_initcalls[i]->module;
 
-		if (mod != NULL && strcmp(mod->name, name) == 0)
+		if (mod == NULL || strcmp(mod->name, name) != 0)
+			continue;
+		if (mod->state == MODULE_STATE_LIVE || mod->state == MODULE_STATE_COMING)
 			return mod;
+		if (found == NULL)
+			found = mod;
 	}
-	return NULL;
+	return found;
 }
 
 /* The module's name; "kernel" for built-in code. */
