@@ -33,6 +33,8 @@ void lx_fiq_boot(void)
 /* Runs the FIQ handler for irq in interrupt context (interrupts already masked). */
 static void fiq_run(unsigned int irq)
 {
+	bool masked = fiq.masked;       /* the CPSR: its F bit comes back from the SPSR on return */
+
 	fiq.running = true;
 	lx_irq_enter((int)irq);
 	if (fiq.handler)
@@ -42,6 +44,7 @@ static void fiq_run(unsigned int irq)
 			  "(set_fiq_handler)", irq);
 	lx_irq_exit();
 	fiq.running = false;
+	fiq.masked = masked;
 }
 
 bool lx_fiq_take(unsigned int irq)
@@ -89,6 +92,11 @@ void set_fiq_handler(void *start, unsigned int length)
 {
 	(void)length;
 	fiq.handler = (void (*)(void))start;
+}
+
+void set_fiq_c_handler(void (*handler)(void))
+{
+	fiq.handler = handler;
 }
 
 void set_fiq_regs(struct pt_regs *regs)

@@ -39,6 +39,12 @@ int claim_fiq(struct fiq_handler *f);
 void release_fiq(struct fiq_handler *f);
 /* Sets what the FIQ runs: here, start as a C function (see above). */
 void set_fiq_handler(void *start, unsigned int length);
+/* A C function as the FIQ handler: LEGO's EV3 kernel adds it to this header
+ * (mindboards/ev3sources, extra/linux-03.20.00.13, arch/arm/kernel/fiq.c: a
+ * stub at the vector jumps to a register-saving wrapper around handler); its
+ * I2C engine, davinci-iic.c, sets its FIQ handler with it.  Here it is
+ * set_fiq_handler's own model. */
+void set_fiq_c_handler(void (*handler)(void));
 /* Stores the FIQ mode's registers (r8..r14). */
 void set_fiq_regs(struct pt_regs *regs);
 /* The registers set_fiq_regs stored. */

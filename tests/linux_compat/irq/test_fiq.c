@@ -68,6 +68,9 @@ static void body(void)
 	log_buf[0] = '\0';
 	local_fiq_enable();
 	is_str(log_buf, "F", "local_fiq_enable takes the pending FIQ at once");
+	set_fiq_handler(NULL, 0);
+	set_fiq_c_handler(fiq_handler);
+	raise_and_log(IRQ_DA8XX_TINT34_1, "F", "set_fiq_c_handler (LEGO's kernel) sets the same handler");
 	disable_fiq(IRQ_DA8XX_TINT34_1);
 	ok(!rtos_host_irq_enabled(IRQ_DA8XX_TINT34_1), "disable_fiq masks the line");
 	free_irq(IRQ_DA8XX_TINT34_1, &dev);
@@ -89,7 +92,7 @@ static void body(void)
 
 int main(void)
 {
-	tap_plan(13);
+	tap_plan(14);
 	ok(lx_test_run(body), "test task ran to completion");
 	return tap_done();
 }
