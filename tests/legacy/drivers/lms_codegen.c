@@ -127,10 +127,10 @@ static int __init ModuleInit(void)
 
 static void __exit ModuleExit(void)
 {
-	iounmap(Spi0);
-	iounmap(Ecap0);
-	iounmap(Pwm1);
-	iounmap(Pwm0);
+	iounmap((void __iomem *)Spi0);
+	iounmap((void __iomem *)Ecap0);
+	iounmap((void __iomem *)Pwm1);
+	iounmap((void __iomem *)Pwm0);
 }
 
 module_init(ModuleInit);
