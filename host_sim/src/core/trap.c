@@ -14,9 +14,13 @@
  * (and, for arithmetic, the flags, computed by the same instruction on the
  * host) in the saved context and resumes after the instruction.  A read-
  * modify-write is one read and one write on the bus, as on the ARM (LDR,
- * ORR, STR); compares and bit tests only read.  Faults outside
- * the window space go to the handler installed before ours (ASan's, or the
- * default action).
+ * ORR, STR); compares and bit tests only read.  It also takes the 8-byte
+ * movs and the SSE moves gcc makes of adjacent stores through a non-volatile
+ * pointer (store merging, SLP vectorization).  An access wider than its
+ * register or spanning registers is performed as the per-register accesses
+ * an ARM926 issues, lowest address first (hs_space_split; the ARM path too).
+ * Faults outside the window space go to the handler installed before ours
+ * (ASan's, or the default action).
  *
  * On ARM Linux (the arm926 configuration under qemu-arm, whose `unsigned
  * long` and pointers are the target's 32 bits) the handler performs the
