@@ -375,6 +375,24 @@ static int store_param(const struct lx_module_param *p, const char *value)
 }
 
 /* Sets a module parameter from text before the module is initialised. */
+/* Sets the same parameter of every other module of p's name, as insmod's
+ * arguments reach whichever of them loads (the others are refused,
+ * -EEXIST): which one that is is only known at boot.  The value was valid
+ * for p, whose type they share when built from one driver. */
+static void store_in_namesakes(const struct lx_module_param *p, const char *value)
+{
+	size_t i, n = param_count();
+
+	for (i = 0; i < n; i++) {
+		const struct lx_module_param *q = __start_lx_module_params[i];
+
+		if (q != p && strcmp(q->module, p->module) == 0 && strcmp(q->name, p->name) == 0 &&
+		    store_param(q, value) != 0)
+			pr_err("module %s: bad value \"%s\" for parameter %s of a module of the same name\n",
+			       q->module, value, q->name);
+	}
+}
+
 ER lx_module_param_set(const char *module, const char *param, const char *value)
 {
 	const struct lx_module_param *p;
@@ -392,6 +410,7 @@ ER lx_module_param_set(const char *module, const char *param, const char *value)
 		pr_err("module %s: bad value \"%s\" for parameter %s\n", module, value, param);
 		return E_PAR;
 	}
+	store_in_namesakes(p, value);
 	return E_OK;
 }
 
