@@ -109,7 +109,7 @@ $(call EV3RT_PLATFORM,$(1)): $(LIB_$(1)) $(call EV3RT_PLATFORM_OBJS,$(1)) mk/ev3
 	$$(quiet) LD $(1) $$@
 	$(Q)set -e; tmp=$$@.$$$$$$$$; \
 	$(LD_$(1)) -r -o $$$$tmp.r.o --whole-archive $(LIB_$(1)) --no-whole-archive $(call EV3RT_PLATFORM_OBJS,$(1)); \
-	PLATFORM_KEEP='ev3sim_run_main __sanitizer_cov_trace_pc $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $$$$tmp.r.o \
+	PLATFORM_KEEP='ev3sim_run_main __sanitizer_cov_trace_pc ev3rt_app_cxa_atexit $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $$$$tmp.r.o \
 		$(CC_$(1)) $(call layer_inc,api) $(CFLAGS_$(1)) $(KERNEL_DEFS) > $$$$tmp.syms; \
 	$(OBJCOPY_$(1)) --keep-global-symbols=$$$$tmp.syms $$$$tmp.r.o $$$$tmp; \
 	mv $$$$tmp.syms $$@.syms; rm -f $$$$tmp.r.o; mv $$$$tmp $$@
@@ -120,6 +120,27 @@ $(call EV3RT_PLATFORM,$(1)): $(LIB_$(1)) $(call EV3RT_PLATFORM_OBJS,$(1)) mk/ev3
 $(BUILD)/$(1)/ev3sim: | $(call EV3RT_PLATFORM,$(1))
 endef
 $(foreach c,$(EV3SIM_CONFIGS),$(eval $(call ev3rt_platform_rules,$(c))))
+
+# The tests of ev3lx's SDK libraries (api/library/LIB): an app that takes
+# the library from its Makefile.inc, tests/api/library/LIB/app/, linked into
+# tests/api/library/LIB/test_*.c (each runs it as an example's test does).
+EV3RT_LIB_TESTS := $(patsubst tests/api/library/%/app/app.cfg,%,$(wildcard tests/api/library/*/app/app.cfg))
+$(foreach l,$(EV3RT_LIB_TESTS),$(call ev3rt_read_app,tests/api/library/$(l)/app,LIBTEST_$(l),,$(BUILD)/ev3rt-info/libtest_$(l)))
+
+# $(1) = library, $(2) = config, $(3) = a test (its path without .c)
+define ev3rt_lib_test_rules
+TEST_LDLIBS_$(patsubst tests/%,%,$(3)) := -lstdc++
+$(BUILD)/$(2)/obj/$(3).o: $(3).c $(BUILD)/$(2)/ev3rt/libtest_$(1)/libtest_$(1).o
+	@mkdir -p $$(@D)
+	$$(quiet) CC $(2) $$<
+	$(Q)$$(CC_$(2)) $$(call src_flags,$$<) $$(WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+		-MMD -MP -MF $$(@:.o=.d) -MT $$@ -c $$< -o $$@.main.o
+	$(Q)$$(CC_$(2)) -r -nostdlib -o $$@ $$@.main.o $(BUILD)/$(2)/ev3rt/libtest_$(1)/libtest_$(1).o
+endef
+$(foreach c,$(HOST_CONFIGS),$(foreach l,$(EV3RT_LIB_TESTS),\
+	$(eval $(call ev3rt_dir_app,libtest_$(l),$(c),tests/api/library/$(l)/app,LIBTEST_$(l)))\
+	$(foreach t,$(patsubst %.c,%,$(wildcard tests/api/library/$(l)/test_*.c)),\
+		$(eval $(call ev3rt_lib_test_rules,$(l),$(c),$(t))))))
 
 # ev3sim's own test apps, tests/ev3sim/apps/NAME (app.c alone): each linked
 # into tests/ev3sim/test_app_NAME.c as an example is into its test, as
