@@ -30,12 +30,20 @@
  *    while unlimited, back to 0 when a limited command ends (its busy bits
  *    clear) and from the stop after OUTPUT_STOP; TachoSensor is cumulative
  *    (cleared by CLR_COUNT and SET_TYPE only).
+ *  - A step command counts from where TachoCounts is 0: after a coast STOP
+ *    that is the stop, not the command (a step of 90 issued 100 ms later,
+ *    the motor having coasted on 45, turns 45 more; one issued after it
+ *    coasted 115 to rest turns back 25); a step re-issued while the same
+ *    step runs ends where the first would have.  OUTPUT_RESET makes a step
+ *    count from where the motor is.
  *  - OUTPUT_STOP with brake holds the stop position with LEGO's proportional
  *    term: settled within 250 ms, a count or so back from the overshoot, and
  *    it stays put; only a load displacing the shaft by more than 3 counts
  *    starts an integral that brings it back.
- *  - MOTORDATA Speed is the measured speed, except after OUTPUT_STOP: the
- *    commanded 0 from the next 2 ms tick until the port is driven again.
+ *  - MOTORDATA Speed is the measured speed.  OUTPUT_STOP clears the edge
+ *    history: 0 until a full averaging window is in again (~40 ms coasting
+ *    from speed 50, ~14 ms braked), then the coasting or settling motor's
+ *    speed (+40 coasting, -16 braked 100 ms after a stop from speed 50).
  *
  * Concurrency: one spinlock guards all port state.  The tacho interrupt and
  * the 2 ms control hrtimer run with interrupts off and take it plainly;
@@ -258,7 +266,7 @@ struct pwm_port {
 
 	/* derived in the control tick */
 	s8 speed;
-	bool stopped;         /* OUTPUT_STOP until driven again: MOTORDATA shows speed 0 */
+	bool stopped;         /* OUTPUT_STOP cleared the stamps: speed 0 until a full window is in */
 	s32 command_origin;   /* TachoCounts reference */
 	s32 sensor_origin;    /* TachoSensor reference */
 
@@ -411,7 +419,13 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 	return IRQ_HANDLED;
 }
 
-/* Measures a port's speed (-100..100) from its edge stamps; 0 after a silence. */
+/*
+ * Measures a port's speed (-100..100) from its edge stamps; 0 after a
+ * silence.  The window is as many edges as the speed asks for (more when
+ * faster); after OUTPUT_STOP cleared the stamps, the speed stays 0 until the
+ * window the newest edge interval asks for is full, as LEGO's driver shows
+ * it (about 40 ms for a large motor coasting from speed 50).
+ */
 static s8 tacho_speed(struct pwm_port *p, u32 now)
 {
 	u32 cpp = counts_per_pulse(p);
@@ -428,7 +442,14 @@ static s8 tacho_speed(struct pwm_port *p, u32 now)
 		p->stamp_valid = 0;
 		return 0;
 	}
+	if (p->stopped) {
+		ticks = (newest - p->stamps[(p->stamp_head + STAMP_RING - 2) % STAMP_RING]) & STAMP_MASK;
+		mag = ticks ? min_t(u32, cpp / ticks, SPEED_MAX) : SPEED_MAX;
+	}
 	n = table[(mag >= 40) + (mag >= 60) + (mag >= 80)];
+	if (p->stopped && p->stamp_valid - 1U < n)
+		return 0;
+	p->stopped = false;
 	if (n > p->stamp_valid - 1U)
 		n = p->stamp_valid - 1U;
 	oldest = p->stamps[(p->stamp_head + STAMP_RING - 1 - n) % STAMP_RING];
@@ -735,17 +756,16 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 
 /*
  * Publishes a port's counters into the shared MOTORDATA: TachoCounts from the
- * start of the current command (0 while unlimited), Speed as measured except
- * after a STOP, where it is the commanded 0; TachoSensor cumulative.
+ * start of the current command (0 while unlimited), Speed as measured (after
+ * a STOP too, while the motor coasts or the brake settles); TachoSensor
+ * cumulative.
  */
 static void publish(struct pwm_port *p, struct lms_motor_data *md)
 {
 	bool unlimited = p->state == STATE_UNREG || p->state == STATE_REG;
 
-	if (p->state != STATE_IDLE && p->state != STATE_BRAKED)
-		p->stopped = false;
 	WRITE_ONCE(md->tacho_counts, unlimited ? 0 : p->position - p->command_origin);
-	WRITE_ONCE(md->speed, p->stopped ? 0 : p->speed);
+	WRITE_ONCE(md->speed, p->speed);
 	WRITE_ONCE(md->tacho_sensor, p->position - p->sensor_origin);
 }
 
@@ -947,6 +967,9 @@ static int cmd_stop(const u8 *b)
 			continue;
 		sync_dissolve(p);
 		port_finish(p, i, brake, p->position);
+		/* Speed starts again from a cleared history, as LEGO's driver clears its samples. */
+		p->stamp_valid = 0;
+		p->speed = 0;
 		p->stopped = true;
 	}
 	spin_unlock_irqrestore(&pwm_lock, flags);
@@ -1123,6 +1146,21 @@ static s32 get_s32(const u8 *b)
 	return (s32)((u32)b[0] | (u32)b[1] << 8 | (u32)b[2] << 16 | (u32)b[3] << 24);
 }
 
+/*
+ * Where a step command on a port counts from: where MOTORDATA TachoCounts is
+ * 0.  That is the command's own start while the port runs unlimited, timed
+ * or in a pair (their count restarts all the time or with the command), but
+ * the stop after OUTPUT_STOP (counting on while coasting) or the start of a
+ * step still running (a step re-issued ends where the first would have).
+ */
+static s32 step_origin(const struct pwm_port *p)
+{
+	if (p->state == STATE_IDLE || p->state == STATE_BRAKED ||
+	    (p->state == STATE_LIMITED && !p->profile.by_time))
+		return p->command_origin;
+	return p->position;
+}
+
 /* STEP_/TIME_POWER and STEP_/TIME_SPEED: start a ramp profile on each port of nos. */
 static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 {
@@ -1134,6 +1172,7 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 	struct pwm_profile next;
 	unsigned long flags;
 	ktime_t now;
+	s32 origin;
 	int i;
 
 	if (!valid_nos(nos) || value < -SPEED_MAX || value > SPEED_MAX || brake > 1)
@@ -1154,6 +1193,7 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 
 		if (!(nos & BIT(i)))
 			continue;
+		origin = by_time ? p->position : step_origin(p);
 		sync_dissolve(p);
 		/* A new command changes the target; the regulator keeps what it has learnt. */
 		if (!regulated || !regulating(p))
@@ -1164,9 +1204,9 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 		};
 		next.ramp_in = ramp_entry(p, &next, now);
 		*pr = next;
-		pr->origin = p->position;
+		pr->origin = origin;
 		pr->start = now;
-		p->command_origin = p->position;
+		p->command_origin = origin;
 		/* A step command with no power would never arrive: it is done at once. */
 		if (!by_time && value == 0 && step[0] + step[1] + step[2] != 0) {
 			port_finish(p, i, brake, p->position);
