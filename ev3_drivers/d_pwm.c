@@ -21,11 +21,16 @@
  *    where the port runs, the same sync pair runs on (its slave keeping its
  *    lag, even when the turn changes sign), so the motors run at the speed a
  *    single command gives.  A command naming one motor of a pair floats both.
- *  - A step command slows down over its last counts (3/4 of a count per unit
- *    of speed, 15..60) to speed 3 and stops on its end without overshoot,
- *    then holds it if braking (a 90-count step at speed 30 is busy ~630 ms);
- *    a braking time command slows down over its last 100 ms (<= 3 degrees
- *    past where time runs out).
+ *  - A regulated command that brakes at its end closes in on it as LEGO's
+ *    does: over its last speed/2 counts (speed/3 on a medium motor; speed
+ *    ms for a time command) it asks for the counts (ms) left as its speed,
+ *    or for 1 while more than 5 are left and the motor is faster, then holds
+ *    the end (a 90-count step at speed 30 is busy ~590 ms, 360 at 50 ~1 s;
+ *    a medium motor runs up to ~2 degrees past at speed 90, as LEGO's does);
+ *    with a ramp down it ramps to speed 5 and brakes at the end.  A coasting
+ *    step still slows down over its last counts (3/4 per unit of speed,
+ *    15..60) to speed 3 and stops on its end, where LEGO's runs on at speed
+ *    and coasts past it; a step pair (STEP_SYNC) slows down the same way.
  *  - MOTORDATA TachoCounts counts from the start of the current command: 0
  *    while unlimited, back to 0 when a limited command ends (its busy bits
  *    clear) and from the stop after OUTPUT_STOP; TachoSensor is cumulative
@@ -224,6 +229,7 @@ struct pwm_profile {          /* a limited command */
 	u32 up, flat, down;   /* phase lengths in counts or ms; all 0 = forever */
 	s32 origin;           /* position at the start */
 	ktime_t start;
+	bool closing;         /* braking at its end: closing in on it (latched) */
 };
 
 struct pwm_port {
@@ -607,13 +613,13 @@ static u32 approach_span(const struct pwm_profile *pr)
  * phase, the ramp down, and the approach to the end (*approaching set):
  * the speed falls in proportion to what is left, to APPROACH_SPEED.
  */
-static bool profile_target(const struct pwm_profile *pr, u32 progress, s32 *target,
+static bool profile_target(const struct pwm_profile *pr, u32 progress, bool approach, s32 *target,
 			   bool *approaching)
 {
 	u32 peak = abs(pr->peak), mag = peak;
 	u32 total = pr->up + pr->flat + pr->down;
 	u32 floor = min_t(u32, mag, pr->regulated ? RAMP_FLOOR_SPEED : RAMP_FLOOR_POWER);
-	u32 near = approach_span(pr), left;
+	u32 near = approach ? approach_span(pr) : 0, left;
 
 	*approaching = false;
 	if (total == 0) {
@@ -669,14 +675,55 @@ static void port_finish(struct pwm_port *p, int port, bool brake, s32 hold_pos)
 	test_status &= ~BIT(port);
 }
 
+/*
+ * Closing in on the end of a regulated command that brakes there with no
+ * ramp down, as LEGO's driver does: once what is left (counts, or ms) is no
+ * more than the speed's half (a large motor's counts; a third for a medium
+ * motor; the whole speed in ms), the target speed is what is left, or 1
+ * while more than 5 are left and the motor is still faster than that.
+ * False while not closing in yet.
+ */
+static bool closes_at_end(const struct pwm_port *p)
+{
+	const struct pwm_profile *pr = &p->profile;
+
+	return p->tacho && pr->regulated && pr->brake && !pr->down &&
+	       pr->up + pr->flat != 0;
+}
+
+static bool closing_target(struct pwm_port *p, u32 progress, s32 *target)
+{
+	struct pwm_profile *pr = &p->profile;
+	u32 total = pr->up + pr->flat + pr->down, left, speed = abs(p->speed), near;
+
+	if (!closes_at_end(p) || progress >= total)
+		return false;
+	left = total - progress;
+	near = pr->by_time ? speed : p->medium ? speed / 3 : speed / 2;
+	if (!pr->closing && (progress < pr->up || left > near))
+		return false;
+	pr->closing = true;
+	if (left > 5 && left < speed)
+		left = 1;
+	left = min_t(u32, left, abs(pr->peak));
+	*target = pr->peak < 0 ? -(s32)left : (s32)left;
+	return true;
+}
+
 /* Runs one limited command tick; finishes the command when its profile ends. */
 static void limited_tick(struct pwm_port *p, int port, ktime_t now)
 {
 	struct pwm_profile *pr = &p->profile;
+	u32 progress = profile_progress(pr, p, now);
 	s32 target, end;
 	bool approaching;
 
-	if (!profile_target(pr, profile_progress(pr, p, now), &target, &approaching)) {
+	if (closing_target(p, progress, &target)) {
+		p->setpoint = target;
+		port_drive_power(p, pid_step(p, target), true);
+		return;
+	}
+	if (!profile_target(pr, progress, !(p->tacho && pr->regulated && pr->brake), &target, &approaching)) {
 		end = pr->origin + (pr->peak < 0 ? -(s32)(pr->up + pr->flat + pr->down)
 						 : (s32)(pr->up + pr->flat + pr->down));
 		/* A step command holds exactly its end position, not where momentum took it. */
@@ -713,7 +760,7 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 	s32 target, end, err, lag, slave_target, master_target;
 	bool brake = pr->brake, approaching;
 
-	if (!profile_target(pr, profile_progress(pr, m, now), &target, &approaching)) {
+	if (!profile_target(pr, profile_progress(pr, m, now), true, &target, &approaching)) {
 		/* A step pair holds its end positions, a timed one where time ran out. */
 		if (pr->by_time) {
 			port_finish(s, m->partner, brake, s->position);
