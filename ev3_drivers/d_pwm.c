@@ -49,6 +49,8 @@
  *    history: 0 until a full averaging window is in again (~40 ms coasting
  *    from speed 50, ~14 ms braked), then the coasting or settling motor's
  *    speed (+40 coasting, -16 braked 100 ms after a stop from speed 50).
+ *    A change of direction keeps the last speed until the new direction
+ *    fills a window (SPEED +50 to -50: 90 % of the speed after ~80 ms).
  *
  * Concurrency: one spinlock guards all port state.  The tacho interrupt and
  * the 2 ms control hrtimer run with interrupts off and take it plainly;
@@ -272,7 +274,7 @@ struct pwm_port {
 
 	/* derived in the control tick */
 	s8 speed;
-	bool stopped;         /* OUTPUT_STOP cleared the stamps: speed 0 until a full window is in */
+	bool stopped;         /* STOP or a turn cleared the stamps: speed held until a full window */
 	s32 command_origin;   /* TachoCounts reference */
 	s32 sensor_origin;    /* TachoSensor reference */
 
@@ -413,8 +415,10 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 		dir = p->last_dir;
 	else
 		dir = (int_high != dir_high) ? 1 : -1;
-	if (dir != p->last_dir)
+	if (dir != p->last_dir) {
 		p->stamp_valid = 0;
+		p->stopped = true;
+	}
 	p->last_dir = dir;
 	p->position += dir;
 	p->stamps[p->stamp_head] = stamp;
@@ -428,9 +432,11 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 /*
  * Measures a port's speed (-100..100) from its edge stamps; 0 after a
  * silence.  The window is as many edges as the speed asks for (more when
- * faster); after OUTPUT_STOP cleared the stamps, the speed stays 0 until the
- * window the newest edge interval asks for is full, as LEGO's driver shows
- * it (about 40 ms for a large motor coasting from speed 50).
+ * faster).  After OUTPUT_STOP (speed set to 0) or a change of direction
+ * cleared the stamps, the speed keeps its last value until the window the
+ * newest edge interval asks for is full, as LEGO's driver shows it (0 for
+ * about 40 ms of a large motor coasting from speed 50; through a reversal
+ * the old direction's speed, so that the regulator keeps pushing).
  */
 static s8 tacho_speed(struct pwm_port *p, u32 now)
 {
@@ -441,20 +447,22 @@ static s8 tacho_speed(struct pwm_port *p, u32 now)
 	int mag = abs(p->speed);
 	u32 n, newest, oldest, ticks, speed;
 
-	if (p->stamp_valid < 2)
+	if (p->stamp_valid == 0)
 		return 0;
 	newest = p->stamps[(p->stamp_head + STAMP_RING - 1) % STAMP_RING];
 	if (((now - newest) & STAMP_MASK) > cpp) {
 		p->stamp_valid = 0;
 		return 0;
 	}
+	if (p->stamp_valid < 2)
+		return p->stopped ? p->speed : 0;
 	if (p->stopped) {
 		ticks = (newest - p->stamps[(p->stamp_head + STAMP_RING - 2) % STAMP_RING]) & STAMP_MASK;
 		mag = ticks ? min_t(u32, cpp / ticks, SPEED_MAX) : SPEED_MAX;
 	}
 	n = table[(mag >= 40) + (mag >= 60) + (mag >= 80)];
 	if (p->stopped && p->stamp_valid - 1U < n)
-		return 0;
+		return p->speed;
 	p->stopped = false;
 	if (n > p->stamp_valid - 1U)
 		n = p->stamp_valid - 1U;

@@ -380,6 +380,31 @@ static void test_lego_timings(void)
 	   travel, over);
 }
 
+/*
+ * 2c. Reversal without a stop, SPEED +50 then -50: 90 % of the speed the
+ * other way within LEGO's 76-85 ms; the measured speed keeps its
+ * last value across the turn until a full window of the new direction is in,
+ * as LEGO's does, so the regulator keeps pushing through the turn.
+ */
+static void test_reversal_time(void)
+{
+	double steady, t0, took;
+
+	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 1U << PORT_A, 50);
+	pwm_cmd(LMS_PWM_OUTPUT_START, 1U << PORT_A);
+	dly_tsk(1500);
+	steady = motor_dps(PORT_A);
+	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 1U << PORT_A, -50);
+	pwm_cmd(LMS_PWM_OUTPUT_START, 1U << PORT_A);
+	t0 = now_ms();
+	while (motor_dps(PORT_A) > -0.9 * steady && now_ms() - t0 < 1000)
+		dly_tsk(1);
+	took = now_ms() - t0;
+	ok(took >= 72 && took <= 85, "SPEED +50 to -50: 90 %% of %.0f deg/s the other way after %.0f ms (LEGO's 76-85)",
+	   steady, took);
+	rest();
+}
+
 /* 3b. A step counts from where TachoCounts is 0 (LEGO's driver counts it in the
  * same count it zeroes at STOP, at the end of a step and while unlimited). */
 static void test_step_origin(void)
@@ -556,6 +581,7 @@ static void body(void)
 	test_reissue();
 	test_approach();
 	test_lego_timings();
+	test_reversal_time();
 	test_counters();
 	test_step_origin();
 	test_brake_hold();
@@ -569,7 +595,7 @@ int main(void)
 	const int motors[4] = { HS_MOTOR_LARGE, HS_MOTOR_LARGE, HS_MOTOR_MEDIUM,
 				PWM_TEST_NO_MOTOR };
 
-	tap_plan(65);
+	tap_plan(66);
 	ok(pwm_test_run(body, motors), "test body ran to its end");
 	return tap_done();
 }
