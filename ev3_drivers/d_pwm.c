@@ -274,7 +274,7 @@ struct pwm_port {
 
 	/* derived in the control tick */
 	s8 speed;
-	bool stopped;         /* STOP or a turn cleared the stamps: speed held until a full window */
+	bool speed_held;      /* STOP or a turn cleared the stamps: speed held until a full window */
 	s32 command_origin;   /* TachoCounts reference */
 	s32 sensor_origin;    /* TachoSensor reference */
 
@@ -417,7 +417,7 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 		dir = (int_high != dir_high) ? 1 : -1;
 	if (dir != p->last_dir) {
 		p->stamp_valid = 0;
-		p->stopped = true;
+		p->speed_held = true;
 	}
 	p->last_dir = dir;
 	p->position += dir;
@@ -455,15 +455,15 @@ static s8 tacho_speed(struct pwm_port *p, u32 now)
 		return 0;
 	}
 	if (p->stamp_valid < 2)
-		return p->stopped ? p->speed : 0;
-	if (p->stopped) {
+		return p->speed_held ? p->speed : 0;
+	if (p->speed_held) {
 		ticks = (newest - p->stamps[(p->stamp_head + STAMP_RING - 2) % STAMP_RING]) & STAMP_MASK;
 		mag = ticks ? min_t(u32, cpp / ticks, SPEED_MAX) : SPEED_MAX;
 	}
 	n = table[(mag >= 40) + (mag >= 60) + (mag >= 80)];
-	if (p->stopped && p->stamp_valid - 1U < n)
+	if (p->speed_held && p->stamp_valid - 1U < n)
 		return p->speed;
-	p->stopped = false;
+	p->speed_held = false;
 	if (n > p->stamp_valid - 1U)
 		n = p->stamp_valid - 1U;
 	oldest = p->stamps[(p->stamp_head + STAMP_RING - 1 - n) % STAMP_RING];
@@ -683,6 +683,20 @@ static void port_finish(struct pwm_port *p, int port, bool brake, s32 hold_pos)
 	test_status &= ~BIT(port);
 }
 
+/* True if the port's limited command is regulated and brakes at its end: it ends as LEGO's does. */
+static bool brakes_at_end(const struct pwm_port *p)
+{
+	return p->tacho && p->profile.regulated && p->profile.brake;
+}
+
+/* True if it also has no ramp down and a length: it closes in on its end (closing_target). */
+static bool closes_at_end(const struct pwm_port *p)
+{
+	const struct pwm_profile *pr = &p->profile;
+
+	return brakes_at_end(p) && !pr->down && pr->up + pr->flat != 0;
+}
+
 /*
  * Closing in on the end of a regulated command that brakes there with no
  * ramp down, as LEGO's driver does: once what is left (counts, or ms) is no
@@ -691,14 +705,6 @@ static void port_finish(struct pwm_port *p, int port, bool brake, s32 hold_pos)
  * while more than 5 are left and the motor is still faster than that.
  * False while not closing in yet.
  */
-static bool closes_at_end(const struct pwm_port *p)
-{
-	const struct pwm_profile *pr = &p->profile;
-
-	return p->tacho && pr->regulated && pr->brake && !pr->down &&
-	       pr->up + pr->flat != 0;
-}
-
 static bool closing_target(struct pwm_port *p, u32 progress, s32 *target)
 {
 	struct pwm_profile *pr = &p->profile;
@@ -731,7 +737,8 @@ static void limited_tick(struct pwm_port *p, int port, ktime_t now)
 		port_drive_power(p, pid_step(p, target), true);
 		return;
 	}
-	if (!profile_target(pr, progress, !(p->tacho && pr->regulated && pr->brake), &target, &approaching)) {
+	/* Braking at the end, LEGO's driver has no approach of its own: a ramp down brakes at speed 5. */
+	if (!profile_target(pr, progress, !brakes_at_end(p), &target, &approaching)) {
 		end = pr->origin + (pr->peak < 0 ? -(s32)(pr->up + pr->flat + pr->down)
 						 : (s32)(pr->up + pr->flat + pr->down));
 		/* A step command holds exactly its end position, not where momentum took it. */
@@ -1025,7 +1032,7 @@ static int cmd_stop(const u8 *b)
 		/* Speed starts again from a cleared history, as LEGO's driver clears its samples. */
 		p->stamp_valid = 0;
 		p->speed = 0;
-		p->stopped = true;
+		p->speed_held = true;
 	}
 	spin_unlock_irqrestore(&pwm_lock, flags);
 	return 0;
