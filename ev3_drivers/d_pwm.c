@@ -21,21 +21,36 @@
  *    where the port runs, the same sync pair runs on (its slave keeping its
  *    lag, even when the turn changes sign), so the motors run at the speed a
  *    single command gives.  A command naming one motor of a pair floats both.
- *  - A step command slows down over its last counts (3/4 of a count per unit
- *    of speed, 15..60) to speed 3 and stops on its end without overshoot,
- *    then holds it if braking (a 90-count step at speed 30 is busy ~630 ms);
- *    a braking time command slows down over its last 100 ms (<= 3 degrees
- *    past where time runs out).
+ *  - A regulated command that brakes at its end closes in on it as LEGO's
+ *    does: over its last speed/2 counts (speed/3 on a medium motor; speed
+ *    ms for a time command) it asks for the counts (ms) left as its speed,
+ *    or for 1 while more than 5 are left and the motor is faster, then holds
+ *    the end (a 90-count step at speed 30 is busy ~590 ms, 360 at 50 ~1 s;
+ *    a medium motor runs up to ~2 degrees past at speed 90, as LEGO's does);
+ *    with a ramp down it ramps to speed 5 and brakes at the end.  A coasting
+ *    step still slows down over its last counts (3/4 per unit of speed,
+ *    15..60) to speed 3 and stops on its end, where LEGO's runs on at speed
+ *    and coasts past it; a step pair (STEP_SYNC) slows down the same way.
  *  - MOTORDATA TachoCounts counts from the start of the current command: 0
  *    while unlimited, back to 0 when a limited command ends (its busy bits
  *    clear) and from the stop after OUTPUT_STOP; TachoSensor is cumulative
  *    (cleared by CLR_COUNT and SET_TYPE only).
+ *  - A step command counts from where TachoCounts is 0: after a coast STOP
+ *    that is the stop, not the command (a step of 90 issued 100 ms later,
+ *    the motor having coasted on 45, turns 45 more; one issued after it
+ *    coasted 115 to rest turns back 25); a step re-issued while the same
+ *    step runs ends where the first would have.  OUTPUT_RESET makes a step
+ *    count from where the motor is.
  *  - OUTPUT_STOP with brake holds the stop position with LEGO's proportional
  *    term: settled within 250 ms, a count or so back from the overshoot, and
  *    it stays put; only a load displacing the shaft by more than 3 counts
  *    starts an integral that brings it back.
- *  - MOTORDATA Speed is the measured speed, except after OUTPUT_STOP: the
- *    commanded 0 from the next 2 ms tick until the port is driven again.
+ *  - MOTORDATA Speed is the measured speed.  OUTPUT_STOP clears the edge
+ *    history: 0 until a full averaging window is in again (~40 ms coasting
+ *    from speed 50, ~14 ms braked), then the coasting or settling motor's
+ *    speed (+40 coasting, -16 braked 100 ms after a stop from speed 50).
+ *    A change of direction keeps the last speed until the new direction
+ *    fills a window (SPEED +50 to -50: 90 % of the speed after ~80 ms).
  *
  * Concurrency: one spinlock guards all port state.  The tacho interrupt and
  * the 2 ms control hrtimer run with interrupts off and take it plainly;
@@ -216,6 +231,7 @@ struct pwm_profile {          /* a limited command */
 	u32 up, flat, down;   /* phase lengths in counts or ms; all 0 = forever */
 	s32 origin;           /* position at the start */
 	ktime_t start;
+	bool closing;         /* braking at its end: closing in on it (latched) */
 };
 
 struct pwm_port {
@@ -258,7 +274,7 @@ struct pwm_port {
 
 	/* derived in the control tick */
 	s8 speed;
-	bool stopped;         /* OUTPUT_STOP until driven again: MOTORDATA shows speed 0 */
+	bool speed_held;      /* STOP or a turn cleared the stamps: speed held until a full window */
 	s32 command_origin;   /* TachoCounts reference */
 	s32 sensor_origin;    /* TachoSensor reference */
 
@@ -399,8 +415,10 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 		dir = p->last_dir;
 	else
 		dir = (int_high != dir_high) ? 1 : -1;
-	if (dir != p->last_dir)
+	if (dir != p->last_dir) {
 		p->stamp_valid = 0;
+		p->speed_held = true;
+	}
 	p->last_dir = dir;
 	p->position += dir;
 	p->stamps[p->stamp_head] = stamp;
@@ -411,7 +429,15 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 	return IRQ_HANDLED;
 }
 
-/* Measures a port's speed (-100..100) from its edge stamps; 0 after a silence. */
+/*
+ * Measures a port's speed (-100..100) from its edge stamps; 0 after a
+ * silence.  The window is as many edges as the speed asks for (more when
+ * faster).  After OUTPUT_STOP (speed set to 0) or a change of direction
+ * cleared the stamps, the speed keeps its last value until the window the
+ * newest edge interval asks for is full, as LEGO's driver shows it (0 for
+ * about 40 ms of a large motor coasting from speed 50; through a reversal
+ * the old direction's speed, so that the regulator keeps pushing).
+ */
 static s8 tacho_speed(struct pwm_port *p, u32 now)
 {
 	u32 cpp = counts_per_pulse(p);
@@ -421,14 +447,23 @@ static s8 tacho_speed(struct pwm_port *p, u32 now)
 	int mag = abs(p->speed);
 	u32 n, newest, oldest, ticks, speed;
 
-	if (p->stamp_valid < 2)
+	if (p->stamp_valid == 0)
 		return 0;
 	newest = p->stamps[(p->stamp_head + STAMP_RING - 1) % STAMP_RING];
 	if (((now - newest) & STAMP_MASK) > cpp) {
 		p->stamp_valid = 0;
 		return 0;
 	}
+	if (p->stamp_valid < 2)
+		return p->speed_held ? p->speed : 0;
+	if (p->speed_held) {
+		ticks = (newest - p->stamps[(p->stamp_head + STAMP_RING - 2) % STAMP_RING]) & STAMP_MASK;
+		mag = ticks ? min_t(u32, cpp / ticks, SPEED_MAX) : SPEED_MAX;
+	}
 	n = table[(mag >= 40) + (mag >= 60) + (mag >= 80)];
+	if (p->speed_held && p->stamp_valid - 1U < n)
+		return p->speed;
+	p->speed_held = false;
 	if (n > p->stamp_valid - 1U)
 		n = p->stamp_valid - 1U;
 	oldest = p->stamps[(p->stamp_head + STAMP_RING - 1 - n) % STAMP_RING];
@@ -586,13 +621,13 @@ static u32 approach_span(const struct pwm_profile *pr)
  * phase, the ramp down, and the approach to the end (*approaching set):
  * the speed falls in proportion to what is left, to APPROACH_SPEED.
  */
-static bool profile_target(const struct pwm_profile *pr, u32 progress, s32 *target,
+static bool profile_target(const struct pwm_profile *pr, u32 progress, bool approach, s32 *target,
 			   bool *approaching)
 {
 	u32 peak = abs(pr->peak), mag = peak;
 	u32 total = pr->up + pr->flat + pr->down;
 	u32 floor = min_t(u32, mag, pr->regulated ? RAMP_FLOOR_SPEED : RAMP_FLOOR_POWER);
-	u32 near = approach_span(pr), left;
+	u32 near = approach ? approach_span(pr) : 0, left;
 
 	*approaching = false;
 	if (total == 0) {
@@ -648,14 +683,62 @@ static void port_finish(struct pwm_port *p, int port, bool brake, s32 hold_pos)
 	test_status &= ~BIT(port);
 }
 
+/* True if the port's limited command is regulated and brakes at its end: it ends as LEGO's does. */
+static bool brakes_at_end(const struct pwm_port *p)
+{
+	return p->tacho && p->profile.regulated && p->profile.brake;
+}
+
+/* True if it also has no ramp down and a length: it closes in on its end (closing_target). */
+static bool closes_at_end(const struct pwm_port *p)
+{
+	const struct pwm_profile *pr = &p->profile;
+
+	return brakes_at_end(p) && !pr->down && pr->up + pr->flat != 0;
+}
+
+/*
+ * Closing in on the end of a regulated command that brakes there with no
+ * ramp down, as LEGO's driver does: once what is left (counts, or ms) is no
+ * more than the speed's half (a large motor's counts; a third for a medium
+ * motor; the whole speed in ms), the target speed is what is left, or 1
+ * while more than 5 are left and the motor is still faster than that.
+ * False while not closing in yet.
+ */
+static bool closing_target(struct pwm_port *p, u32 progress, s32 *target)
+{
+	struct pwm_profile *pr = &p->profile;
+	u32 total = pr->up + pr->flat + pr->down, left, speed = abs(p->speed), near;
+
+	if (!closes_at_end(p) || progress >= total)
+		return false;
+	left = total - progress;
+	near = pr->by_time ? speed : p->medium ? speed / 3 : speed / 2;
+	if (!pr->closing && (progress < pr->up || left > near))
+		return false;
+	pr->closing = true;
+	if (left > 5 && left < speed)
+		left = 1;
+	left = min_t(u32, left, abs(pr->peak));
+	*target = pr->peak < 0 ? -(s32)left : (s32)left;
+	return true;
+}
+
 /* Runs one limited command tick; finishes the command when its profile ends. */
 static void limited_tick(struct pwm_port *p, int port, ktime_t now)
 {
 	struct pwm_profile *pr = &p->profile;
+	u32 progress = profile_progress(pr, p, now);
 	s32 target, end;
 	bool approaching;
 
-	if (!profile_target(pr, profile_progress(pr, p, now), &target, &approaching)) {
+	if (closing_target(p, progress, &target)) {
+		p->setpoint = target;
+		port_drive_power(p, pid_step(p, target), true);
+		return;
+	}
+	/* Braking at the end, LEGO's driver has no approach of its own: a ramp down brakes at speed 5. */
+	if (!profile_target(pr, progress, !brakes_at_end(p), &target, &approaching)) {
 		end = pr->origin + (pr->peak < 0 ? -(s32)(pr->up + pr->flat + pr->down)
 						 : (s32)(pr->up + pr->flat + pr->down));
 		/* A step command holds exactly its end position, not where momentum took it. */
@@ -692,7 +775,7 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 	s32 target, end, err, lag, slave_target, master_target;
 	bool brake = pr->brake, approaching;
 
-	if (!profile_target(pr, profile_progress(pr, m, now), &target, &approaching)) {
+	if (!profile_target(pr, profile_progress(pr, m, now), true, &target, &approaching)) {
 		/* A step pair holds its end positions, a timed one where time ran out. */
 		if (pr->by_time) {
 			port_finish(s, m->partner, brake, s->position);
@@ -735,17 +818,16 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 
 /*
  * Publishes a port's counters into the shared MOTORDATA: TachoCounts from the
- * start of the current command (0 while unlimited), Speed as measured except
- * after a STOP, where it is the commanded 0; TachoSensor cumulative.
+ * start of the current command (0 while unlimited), Speed as measured (after
+ * a STOP too, while the motor coasts or the brake settles); TachoSensor
+ * cumulative.
  */
 static void publish(struct pwm_port *p, struct lms_motor_data *md)
 {
 	bool unlimited = p->state == STATE_UNREG || p->state == STATE_REG;
 
-	if (p->state != STATE_IDLE && p->state != STATE_BRAKED)
-		p->stopped = false;
 	WRITE_ONCE(md->tacho_counts, unlimited ? 0 : p->position - p->command_origin);
-	WRITE_ONCE(md->speed, p->stopped ? 0 : p->speed);
+	WRITE_ONCE(md->speed, p->speed);
 	WRITE_ONCE(md->tacho_sensor, p->position - p->sensor_origin);
 }
 
@@ -947,7 +1029,10 @@ static int cmd_stop(const u8 *b)
 			continue;
 		sync_dissolve(p);
 		port_finish(p, i, brake, p->position);
-		p->stopped = true;
+		/* Speed starts again from a cleared history, as LEGO's driver clears its samples. */
+		p->stamp_valid = 0;
+		p->speed = 0;
+		p->speed_held = true;
 	}
 	spin_unlock_irqrestore(&pwm_lock, flags);
 	return 0;
@@ -1123,6 +1208,21 @@ static s32 get_s32(const u8 *b)
 	return (s32)((u32)b[0] | (u32)b[1] << 8 | (u32)b[2] << 16 | (u32)b[3] << 24);
 }
 
+/*
+ * Where a step command on a port counts from: where MOTORDATA TachoCounts is
+ * 0.  That is the command's own start while the port runs unlimited, timed
+ * or in a pair (their count restarts all the time or with the command), but
+ * the stop after OUTPUT_STOP (counting on while coasting) or the start of a
+ * step still running (a step re-issued ends where the first would have).
+ */
+static s32 step_origin(const struct pwm_port *p)
+{
+	if (p->state == STATE_IDLE || p->state == STATE_BRAKED ||
+	    (p->state == STATE_LIMITED && !p->profile.by_time))
+		return p->command_origin;
+	return p->position;
+}
+
 /* STEP_/TIME_POWER and STEP_/TIME_SPEED: start a ramp profile on each port of nos. */
 static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 {
@@ -1134,6 +1234,7 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 	struct pwm_profile next;
 	unsigned long flags;
 	ktime_t now;
+	s32 origin;
 	int i;
 
 	if (!valid_nos(nos) || value < -SPEED_MAX || value > SPEED_MAX || brake > 1)
@@ -1154,6 +1255,7 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 
 		if (!(nos & BIT(i)))
 			continue;
+		origin = by_time ? p->position : step_origin(p);
 		sync_dissolve(p);
 		/* A new command changes the target; the regulator keeps what it has learnt. */
 		if (!regulated || !regulating(p))
@@ -1164,9 +1266,9 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 		};
 		next.ramp_in = ramp_entry(p, &next, now);
 		*pr = next;
-		pr->origin = p->position;
+		pr->origin = origin;
 		pr->start = now;
-		p->command_origin = p->position;
+		p->command_origin = origin;
 		/* A step command with no power would never arrive: it is done at once. */
 		if (!by_time && value == 0 && step[0] + step[1] + step[2] != 0) {
 			port_finish(p, i, brake, p->position);

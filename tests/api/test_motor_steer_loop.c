@@ -6,7 +6,9 @@
  * same arguments, straight and in a curve, and keep moving when the loop
  * steers a little left and right in turn, as a line follower does; the same
  * for ev3_motor_set_power on each wheel from the loop.  A blocking rotate
- * waits for the whole step, its slow approach to the end included.
+ * waits for the whole step, its slow approach to the end included, and
+ * (as with LEGO's motor driver, which EV3RT runs) counts its degrees from
+ * where the last ev3_motor_stop found the wheel, coasting included.
  */
 #include <math.h>
 #include "api_test.h"
@@ -39,6 +41,7 @@ static double wheel_deg(unsigned port)
 }
 
 static bool by_power;   /* drive with ev3_motor_set_power per wheel instead of steering */
+static double left_stopped_at;  /* where the left wheel was when it was last told to stop */
 
 /* Wheel speeds (deg/s) over ms, steering every LOOP_MS if loop, else once before. */
 static void drive(bool loop, int speed, int turn, bool wiggle, unsigned ms, double dps[2])
@@ -67,6 +70,7 @@ static void run(bool loop, int speed, int turn, bool wiggle, double dps[2])
 	drive(loop, speed, turn, wiggle, 1000, dps);
 	drive(loop, speed, turn, wiggle, 1000, dps);
 	ev3_motor_stop(LEFT, false);
+	left_stopped_at = wheel_deg(LEFT);
 	ev3_motor_stop(RIGHT, false);
 	dly_tsk(1500);
 }
@@ -119,16 +123,18 @@ static void body(void)
 	   "set_power 40 on both wheels every 4 ms: %.0f mm/s, as once (%.0f mm/s, +-3%%)",
 	   forward_mm_s(loop), forward_mm_s(once));
 
-	/* A blocking rotate waits for the whole step, its approach to the end included. */
+	/* A blocking rotate waits for the whole step, its approach to the end included;
+	 * its degrees count from the stop before it (the wheel coasted on from there). */
 	for (int speed = 100; speed >= 10; speed -= 45) {
-		double l0 = wheel_deg(LEFT);
+		double l0 = left_stopped_at;
 		uint64_t t0 = at_now_ms();
 		ER ercd = ev3_motor_rotate(LEFT, 1080, speed, true);
 
 		ok(ercd == E_OK && fabs(wheel_deg(LEFT) - l0 - 1080) <= 2,
-		   "rotate 1080 deg at speed %d, blocking: %d after %u ms, at %.1f deg", speed,
-		   (int)ercd, (unsigned)(at_now_ms() - t0), wheel_deg(LEFT) - l0);
+		   "rotate 1080 deg at speed %d, blocking: %d after %u ms, at %.1f deg from the stop",
+		   speed, (int)ercd, (unsigned)(at_now_ms() - t0), wheel_deg(LEFT) - l0);
 		ev3_motor_stop(LEFT, false);
+		left_stopped_at = wheel_deg(LEFT);
 		dly_tsk(500);
 	}
 }
