@@ -148,6 +148,12 @@ EV3RT_RUN_KEY  ?= run_$(EV3RT_APP_NAME)
 EV3RT_RUN_NAME := $(EV3RT_RUN_KEY)
 EV3RT_RUN_DIR  := $(BUILD)/host/ev3rt/$(EV3RT_RUN_NAME)
 EV3RT_LIB_DIR ?=
+# the kernel profile (ev3sim run --kernel): auto, hrp2 or hrp3
+EV3RT_KERNEL ?= auto
+ifeq ($(filter auto hrp2 hrp3,$(EV3RT_KERNEL)),)
+$(error EV3RT_KERNEL=$(EV3RT_KERNEL): expected auto, hrp2 or hrp3)
+endif
+EV3RT_KERNEL_$(EV3RT_RUN_NAME) := $(EV3RT_KERNEL)
 $(call ev3rt_read_app,$(APP),EV3RT_RUN,$(EV3RT_LIB_DIR),$(EV3RT_RUN_DIR)/sdk)
 
 $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c

@@ -35,7 +35,11 @@ static const char run_usage[] =
 	"\n"
 	"  --lib-dir DIR        EV3RT SDK libraries the app's Makefile.inc includes from\n"
 	"                       $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile (e.g. the SDK's\n"
-	"                       common/library, with libcpp-ev3); first option only\n"
+	"                       common/library, with libcpp-ev3); before the others\n"
+	"  --kernel K           the kernel profile the app is written for: hrp2 (EV3RT 0.x,\n"
+	"                       time in ms), hrp3 (EV3RT 1.x, time in us) or auto (default:\n"
+	"                       hrp3 when app.cfg has a CRE_CYC or CRE_ALM in HRP3's\n"
+	"                       notification form); before the others\n"
 	"  --robot R            bare, gyroboy or tribot (default bare):\n"
 	"                         gyroboy: large motors A (left), D (right), gyro on 2; held\n"
 	"                                  upright until --release (when the app drives\n"
@@ -317,6 +321,7 @@ int ev3sim_run_command(int argc, char **argv)
 {
 	char root[PATH_MAX], app[PATH_MAX], runner[2 * PATH_MAX + 64], err[2 * PATH_MAX + 128];
 	char cfg_path[PATH_MAX + 16], lib_dir[PATH_MAX];
+	const char *kernel = NULL;
 	bool have_lib_dir = false;
 	struct stat st;
 	char **args;
@@ -335,15 +340,24 @@ int ev3sim_run_command(int argc, char **argv)
 		fprintf(stderr, "ev3sim run: cannot find the ev3lx source tree\n");
 		return EV3SIM_EXIT_FAIL;
 	}
-	if (argc >= 3 && strcmp(argv[1], "--lib-dir") == 0) {
-		if (realpath(argv[2], lib_dir) == NULL || stat(lib_dir, &st) != 0 || !S_ISDIR(st.st_mode))
-			return usage("--lib-dir '%s' is not a directory", argv[2]);
-		have_lib_dir = true;
-		argv[2] = argv[0];      /* the runner gets APP_DIR's options only */
+	/* the build's options; the runner gets the others */
+	while (argc >= 2 && (strcmp(argv[1], "--lib-dir") == 0 || strcmp(argv[1], "--kernel") == 0)) {
+		if (argc < 3)
+			return usage("%s needs a value", argv[1]);
+		if (strcmp(argv[1], "--lib-dir") == 0) {
+			if (realpath(argv[2], lib_dir) == NULL || stat(lib_dir, &st) != 0 || !S_ISDIR(st.st_mode))
+				return usage("--lib-dir '%s' is not a directory", argv[2]);
+			have_lib_dir = true;
+		} else if (strcmp(argv[2], "auto") == 0 || strcmp(argv[2], "hrp2") == 0 || strcmp(argv[2], "hrp3") == 0) {
+			kernel = argv[2];
+		} else {
+			return usage("--kernel '%s': expected hrp2, hrp3 or auto", argv[2]);
+		}
+		argv[2] = argv[0];
 		argv += 2;
 		argc -= 2;
 	}
-	runner_fd = ev3sim_app_build(root, app, have_lib_dir ? lib_dir : NULL, runner, sizeof(runner), err,
+	runner_fd = ev3sim_app_build(root, app, have_lib_dir ? lib_dir : NULL, kernel, runner, sizeof(runner), err,
 				     sizeof(err));
 	if (runner_fd < 0) {
 		fprintf(stderr, "ev3sim run: %s\n", err);

@@ -46,9 +46,20 @@ typedef uint_t          STAT;    /* object state */
 typedef uint_t          MODE;    /* service call mode */
 typedef int_t           PRI;     /* priority */
 typedef size_t          SIZE;    /* memory area size */
+#ifdef EV3LX_KERNEL_HRP3
+/* The HRP3 profile (an app written for TOPPERS/HRP3, EV3RT 1.x: the build
+ * defines EV3LX_KERNEL_HRP3, docs/ev3rt-apps.md): time in microseconds, with
+ * HRP3's types (public source: ev3rt-git/ev3rt-hrp3, include/t_stddef.h). */
+typedef uint32_t        TMO;     /* timeout, in us */
+typedef uint32_t        RELTIM;  /* relative time, in us */
+typedef uint64_t        SYSTIM;  /* system time, in us */
+typedef uint32_t        PRCTIM;  /* processor time, in us */
+typedef uint32_t        HRTCNT;  /* high-resolution timer count, in us */
+#else
 typedef int_t           TMO;     /* timeout, in ms */
 typedef uint_t          RELTIM;  /* relative time, in ms */
 typedef ulong_t         SYSTIM;  /* system time, in ms */
+#endif
 typedef uint32_t        SYSUTM;  /* performance time, in us */
 typedef uintptr_t       FP;      /* program start address */
 typedef int_t           ER_BOOL; /* error code or boolean */
@@ -94,6 +105,10 @@ typedef struct acvct {
 #define E_CLS    (-52)
 #define E_WBLK   (-57)
 #define E_BOVR   (-58)
+#ifdef EV3LX_KERNEL_HRP3
+#define E_RASTER (-53)  /* HRP3: the task's termination was requested */
+#define E_COMM   (-65)  /* HRP3: communication error */
+#endif
 
 /* The main error code is the low byte, sign-extended; the sub code the rest. */
 #define MERCD(ercd)        ((ER)((int8_t)(ercd)))
@@ -102,9 +117,17 @@ typedef struct acvct {
 
 #define TA_NULL  0U
 
+#ifdef EV3LX_KERNEL_HRP3
+#define TMO_POL  0U
+#define TMO_FEVR 0xffffffffU   /* HRP3: UINT32_MAX */
+#define TMO_NBLK 0xfffffffeU   /* HRP3: UINT32_MAX - 1 */
+/* HRP3's largest relative time: 4 000 000 000 us (66 min 40 s). */
+#define TMAX_RELTIM 4000000000U
+#else
 #define TMO_POL  0
 #define TMO_FEVR (-1)
 #define TMO_NBLK (-2)
+#endif
 
 /* Integer constants of a TOPPERS type, as apps write them (ULONG_C(1000)). */
 #ifndef INT_C
