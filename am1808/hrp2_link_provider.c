@@ -116,7 +116,9 @@ ER prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode)
 void syslog(uint_t prio, const char *format, ...) { (void)prio; (void)format; }
 ER syslog_msk_log(uint_t logmask, uint_t lowmask) { (void)logmask; (void)lowmask; return E_NOSPT; }
 
-/* EV3RT's platform (target/ev3_gcc/platform/src/ev3main.c), which ev3.h declares. */
+/* EV3RT's platform (target/ev3_gcc/platform/src/ev3rt_config.c, ev3main.c), which ev3.h declares. */
+int SIO_PORT_DEFAULT = 1;
+
 void svc_perror(const char *file, int_t line, const char *expr, ER ercd)
 {
 	(void)file; (void)line; (void)expr; (void)ercd;
