@@ -34,7 +34,10 @@
 # relocatable object holding the app's objects, every ATT_MOD object relinked
 # into its domain's sections, and kernel_cfg.o — link it with a runner and
 # libev3lx.a.  App sources get EV3RT_APP_WARN (no -Werror: apps build
-# unchanged); configuration errors stop the build with "app.cfg:LINE: ...".
+# unchanged; none under the app's OMIT_WARNING_ALL, EV3RT_OMIT_WALL_NAME_CONFIG)
+# and, last, the app's own flags (EV3RT_APPFLAGS_NAME_CONFIG: its COPTS, CDEFS,
+# APPL_CFLAGS); the program is linked with its EV3RT_LDFLAGS_NAME_CONFIG;
+# configuration errors stop the build with "app.cfg:LINE: ...".
 EV3RT_APP_WARN ?= -Wall -Wno-unused-parameter
 
 # The app's C library file calls (fopen, open, mkdir, rename, remove, stat,
@@ -83,14 +86,16 @@ $(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.c $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h 
 		$(BUILD)/$(2)/ev3rt/app.key
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(2) $$<
-	$(Q)$$(CC_$(2)) $$(EV3RT_APP_CSTD) $$(EV3RT_APP_CPU) $$(EV3RT_PROFILE_$(1)_$(2)) $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+	$(Q)$$(CC_$(2)) $$(EV3RT_APP_CSTD) $$(EV3RT_APP_CPU) $$(EV3RT_PROFILE_$(1)_$(2)) $$(EV3RT_INC_$(1)_$(2)) \
+		$$(if $$(EV3RT_OMIT_WALL_$(1)_$(2)),,$$(EV3RT_APP_WARN)) $$(CFLAGS_$(2)) $(KERNEL_DEFS) $$(EV3RT_APPFLAGS_$(1)_$(2)) \
 		-MMD -MP -c $$< -o $$@
 
 $(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.cpp $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h $(BUILD)/$(2)/compile.key \
 		$(BUILD)/$(2)/ev3rt/app.key
 	@mkdir -p $$(@D)
 	$$(quiet) CXX $(2) $$<
-	$(Q)$$(CXX_$(2)) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CPU) $$(EV3RT_PROFILE_$(1)_$(2)) $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+	$(Q)$$(CXX_$(2)) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CPU) $$(EV3RT_PROFILE_$(1)_$(2)) $$(EV3RT_INC_$(1)_$(2)) \
+		$$(if $$(EV3RT_OMIT_WALL_$(1)_$(2)),,$$(EV3RT_APP_WARN)) $$(CFLAGS_$(2)) $(KERNEL_DEFS) $$(EV3RT_APPFLAGS_$(1)_$(2)) \
 		-MMD -MP -c $$< -o $$@
 
 $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c $(BUILD)/$(2)/compile.key
@@ -130,7 +135,7 @@ ifneq ($(strip $(5)),)
 EV3RT_PLATFORM_$(1)_$(2) ?= $(BUILD)/$(2)/libev3lx.a
 $(BUILD)/$(2)/ev3rt/$(1)/$(1): $(BUILD)/$(2)/ev3rt/$(1)/$(1).o $(5) $$(EV3RT_PLATFORM_$(1)_$(2)) $$(EV3RT_LIBS_$(1)_$(2))
 	$$(quiet) LD $(2) $$@
-	$(Q)$$(EV3RT_LINK_$(1)_$(2)) $$(CFLAGS_$(2)) $$(LDFLAGS_$(2)) -o $$@ $$< $(5) \
+	$(Q)$$(EV3RT_LINK_$(1)_$(2)) $$(CFLAGS_$(2)) $$(LDFLAGS_$(2)) $$(EV3RT_LDFLAGS_$(1)_$(2)) -o $$@ $$< $(5) \
 		-Wl,--start-group $$(EV3RT_LIBS_$(1)_$(2)) $$(EV3RT_PLATFORM_$(1)_$(2)) -Wl,--end-group -lm \
 		$$(EV3RT_LDLIBS_$(1)_$(2))
 endif
