@@ -57,6 +57,8 @@ static const char run_usage[] =
 	"                       first drives a wheel motor, so a balancer calibrates first)\n"
 	"                       or a time T (let go at T, driven or not)\n"
 	"  --tilt DEG           gyroboy: tilt when let go (default 0.5)\n"
+	"  --gyro-noise SIGMA   white noise on every gyro sample, deg/s (default 0.15, an EV3\n"
+	"                       gyro at rest, for the gyro boy's gyro; 0 for one --in names)\n"
 	"  --push T:NM          gyroboy: pitch torque NM (N m) for 100 ms at T; may repeat\n"
 	"  --fault SPEC         inject a fault (as ev3sim balance --help lists; uart faults go to\n"
 	"                       the first UART sensor, times from power-on); may repeat\n"
@@ -175,6 +177,10 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 	} else if (strcmp(name, "--tilt") == 0) {
 		if (!ev3sim_parse_double(v, &o->start_tilt_deg) || fabs(o->start_tilt_deg) >= 30.0)
 			return usage("--tilt: bad value '%s' (|DEG| < 30)", v);
+	} else if (strcmp(name, "--gyro-noise") == 0) {
+		if (!ev3sim_parse_double(v, &o->gyro_noise_dps) || !(o->gyro_noise_dps >= 0) ||
+		    o->gyro_noise_dps > EV3SIM_MAX_GYRO_NOISE_DPS)
+			return usage("--gyro-noise: bad value '%s' (0..1000 deg/s)", v);
 	} else if (strcmp(name, "--push") == 0) {
 		double nm;
 
