@@ -72,7 +72,7 @@ HDRCHECK_OBJS := $(foreach c,host am1808,$(foreach p,$(HDRCHECK_PAIRS_$(c)),$(HD
 # EV3RT's apps may be C++ (app.cpp), and every one of these declares its
 # functions with C linkage.
 HDRCHECK_CXX_HDRS := $(filter-out api/ev3api_brick_io.h,$(wildcard api/*.h api/syssvc/*.h)) \
-	$(addprefix rtos_stub/include/,kernel.h t_stddef.h t_syslog.h t_stdlib.h target_kernel.h ev3.h syssvc/syslog.h)
+	$(addprefix rtos_stub/include/,kernel.h kernel_hrp3.h t_stddef.h t_syslog.h t_stdlib.h target_kernel.h ev3.h syssvc/syslog.h)
 HDRCHECK_CXX_OBJS := $(patsubst %.h,$(HDRCHECK)/cxx/%.o,$(HDRCHECK_CXX_HDRS))
 $(HDRCHECK)/cxx/%.o: %.h
 	@mkdir -p $(@D)

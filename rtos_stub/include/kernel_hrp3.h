@@ -8,6 +8,16 @@
 #ifndef TOPPERS_KERNEL_HRP3_H
 #define TOPPERS_KERNEL_HRP3_H
 
+/* Included by name, it makes the including file an HRP3 one; after kernel.h
+ * of the HRP2 profile it could only contradict it. */
+#if defined(TOPPERS_KERNEL_H) && !defined(EV3LX_KERNEL_HRP3)
+#error "kernel_hrp3.h after kernel.h of the HRP2 profile: an app is built for one profile (docs/ev3rt-apps.md)"
+#endif
+#ifndef EV3LX_KERNEL_HRP3
+#define EV3LX_KERNEL_HRP3 1
+#endif
+#include "kernel.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
