@@ -1029,6 +1029,10 @@ static void parse_api(struct cfg_ctx *ctx, enum api a)
 		else
 			next(ctx);
 		if (a == API_INCLUDE) {
+			/* TECS's generated configuration: an app of TOPPERS's third-generation kernels */
+			if (strcmp(s, "tecsgen.cfg") == 0)
+				mark_profile(ctx, true, name->file, name->line, "INCLUDE(\"tecsgen.cfg\")",
+					     "INCLUDE(\"tecsgen.cfg\") (TECS's components, of a third-generation kernel)");
 			if (ctx->include == NULL)
 				report(ctx, name->file, name->line, what, "INCLUDE is not available here");
 			else

@@ -72,12 +72,29 @@ static void expect_error(const char *text, const char *message, const char *name
 		tap_diag("got %d error(s): %s", n, errbuf);
 }
 
+/* An INCLUDE that reads nothing: the configuration's own text is what is tested. */
+static int include_nothing(struct cfg_ctx *ctx, const char *file, const char *from_file, int from_line, void *arg)
+{
+	(void)ctx; (void)file; (void)from_file; (void)from_line; (void)arg;
+	return 0;
+}
+
+/* The profile text (with INCLUDE available) is configured for, or -1 on errors. */
+static int profile_of(const char *text)
+{
+	struct cfg_ctx *ctx = cfg_new(stderr, include_nothing, NULL);
+	int profile = cfg_parse(ctx, text, "app.cfg") == 0 ? cfg_profile(ctx) : -1;
+
+	cfg_free(ctx);
+	return profile;
+}
+
 int main(void)
 {
 	struct cfg_ctx *ctx;
 	char *h, *c;
 
-	tap_plan(71);
+	tap_plan(73);
 
 	/* A configuration as the preprocessor leaves it: line markers, header declarations. */
 	is_int(run("# 1 \"app.cfg\"\n"
@@ -254,6 +271,10 @@ int main(void)
 		     "an error notification of a notification that cannot fail");
 	expect_error("CRE_ALM(A, { 0U, { TNFY_FOO, T } });\n", "nfymode 'TNFY_FOO' is not TNFY_* or TNFY_* | TENFY_* (E_PAR)",
 		     "an unknown nfymode");
+	is_int(profile_of("INCLUDE(\"app_common.cfg\");\nINCLUDE(\"tecsgen.cfg\");\nCRE_TSK(T, { 0U, 0, t, 8, 4096, NULL });\n"),
+	       CFG_PROFILE_HRP3, "INCLUDE(\"tecsgen.cfg\") (TECS, of the third-generation kernels) makes it HRP3's");
+	is_int(profile_of("INCLUDE(\"app_common.cfg\");\nCRE_TSK(T, { 0U, 0, t, 8, 4096, NULL });\n"), CFG_PROFILE_HRP2,
+	       "tasks alone say nothing: HRP2's, unless the build says otherwise");
 	expect_error("DOMAIN(TDOM_APP) {\nCRE_CYC(C, { TA_STA, { TNFY_HANDLER, 0, h }, 10, 0 });\n}\n",
 		     "app.cfg:2: error: CRE_CYC(C): TNFY_HANDLER is not permitted in a user domain (DOMAIN(TDOM_APP))",
 		     "TNFY_HANDLER in a user domain is HRP3's E_OACV");
