@@ -3,7 +3,8 @@
  * through kernel.h (target_kernel.h) and some include by name: every name
  * it gives apps, in both EV3RT lines (public sources: ev3rt-git/ev3rt-hrp2
  * and ev3rt-git/ev3rt-hrp3, target/ev3_gcc/ev3.h).  As there, STACK_SIZE is
- * the one an app may define first; the rest are the platform's.  Where a
+ * the one an app may define first (and in EV3RT 1.x's, the app's to
+ * define); the rest are the platform's.  Where a
  * value describes EV3RT's own platform (its tasks' priorities) it is ev3lx's
  * platform's, in EV3RT's order; the hardware's (clocks, interrupt numbers)
  * are the AM1808's, as EV3RT gives them.
@@ -74,8 +75,11 @@
 #define TPRI_EV3_CYC         (TMIN_APP_TPRI)
 #define TPRI_BLUETOOTH_LOW   (TMAX_TPRI)
 
-/* A task's stack size where the app does not give one: EV3RT's default. */
-#ifndef STACK_SIZE
+/* A task's stack size where the app does not give one: EV3RT 0.x's default.
+ * EV3RT 1.x's ev3.h leaves it out (its apps define it, some without asking
+ * whether it is defined: EV3RT 1.x's test-cyc sample), so the HRP3 profile
+ * does too. */
+#if !defined(STACK_SIZE) && !defined(EV3LX_KERNEL_HRP3)
 #define STACK_SIZE 4096
 #endif
 

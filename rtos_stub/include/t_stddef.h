@@ -67,6 +67,18 @@ typedef int_t           ER_ID;   /* error code or ID */
 typedef int_t           ER_UINT; /* error code or unsigned value */
 typedef uint32_t        ACPTN;   /* access permission pattern */
 
+#ifndef __KERNEL__
+/* IEEE 754 single and double precision, as TOPPERS's GCC tool header gives
+ * them (public source: ev3rt-git/ev3rt-hrp2 and ev3rt-hrp3,
+ * arch/gcc/tool_stddef.h, TOPPERS_STDFLOAT_TYPE1); apps use them. */
+typedef float           float32_t;
+typedef double          double64_t;
+#define FLOAT32_MIN     1.17549435e-38F
+#define FLOAT32_MAX     3.40282347e+38F
+#define DOUBLE64_MIN    2.2250738585072014e-308
+#define DOUBLE64_MAX    1.7976931348623157e+308
+#endif
+
 typedef struct acvct {
 	ACPTN acptn1;   /* normal operations */
 	ACPTN acptn2;   /* management operations */
