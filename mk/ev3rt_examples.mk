@@ -181,7 +181,7 @@ endif
 # Makefile.inc adds a source from another directory (APPL_COBJS, APPL_DIRS,
 # INCLUDES, mkfile_path) with its own ATT_MOD, one whose Makefile.inc sets
 # COPTS, CDEFS, APPL_CFLAGS, SRCDIRS, LDFLAGS, APPL_LIBS, LIBS and OMIT_*
-# (tests/ev3sim/apps/makeinc), an HRP3 app and an HRP2 app side by side
+# (tests/ev3sim/apps/makeinc, an ET Robocon-style HRP3 app: INCLUDE("tecsgen.cfg")), an HRP3 app and an HRP2 app side by side
 # (examples/notify, examples/dtq), an app with a main() and
 # global names ev3lx uses inside (tests/ev3sim/apps/namespace); then
 # tests/ev3sim/apps/misbehave crashes (status 4) and stalls (status 3), each
@@ -204,7 +204,7 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
 	+$(Q)out=$$($(BUILD)/host/ev3sim run tests/ev3sim/apps/makeinc --seconds 1) || \
 		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/makeinc exited $$?"; exit 1; }; \
-	printf '%s\n' "$$out" | grep -q "NOTICE: makeinc: gain 150, CDEFS and APPL_CFLAGS, not optimized, zlib [0-9.]*, sqrt 7" && \
+	printf '%s\n' "$$out" | grep -q "NOTICE: makeinc: gain 150, CDEFS and APPL_CFLAGS, not optimized, zlib [0-9.]*, sqrt 7, dly_tsk(250000) 250 ms" && \
 	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=makeinc .* warnings=0 errors=0 bugs=0 " || \
 		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
 	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"

@@ -49,7 +49,7 @@ int main(void)
 {
 	size_t n = sizeof(constants) / sizeof(constants[0]), m = sizeof(platform_pris) / sizeof(platform_pris[0]);
 
-	tap_plan((int)(n + m) + 3);
+	tap_plan((int)(n + m) + 4);
 	for (size_t i = 0; i < n; i++)
 		ok(constants[i].ours == constants[i].ev3rt, "%s is %lld, as on EV3RT (ours: %lld)", constants[i].name,
 		   constants[i].ev3rt, constants[i].ours);
@@ -59,5 +59,7 @@ int main(void)
 	is_int(TPRI_EV3_CYC, TMIN_APP_TPRI, "TPRI_EV3_CYC: EV3_CRE_CYC's handler tasks run at TMIN_APP_TPRI");
 	is_int(SIO_PORT_DEFAULT, 1, "SIO_PORT_DEFAULT is SIO_PORT_UART, the port EV3_SERIAL_DEFAULT uses");
 	ok(sizeof(SYSTIM) == sizeof(ulong_t) && (TMO)-1 < 0, "the HRP2 profile keeps HRP2's SYSTIM and signed TMO");
+	ok(sizeof(float32_t) == 4 && sizeof(double64_t) == 8 && FLOAT32_MAX > 3e38F && DOUBLE64_MIN < 3e-308,
+	   "t_stddef.h gives TOPPERS's float32_t and double64_t with their limits");
 	return tap_done();
 }

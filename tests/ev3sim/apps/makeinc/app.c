@@ -18,6 +18,12 @@ void main_task(intptr_t exinf)
 	const char *defs = "no CDEFS or APPL_CFLAGS";
 #endif
 
-	syslog(LOG_NOTICE, "makeinc: gain %d, %s, %s, zlib %s, sqrt %d", gain_apply(100), defs, optimized,
-	       zlibVersion(), (int)sqrt(49.0));
+	float32_t root = (float32_t)sqrt(49.0);
+	SYSTIM before, after;
+
+	get_tim(&before);
+	dly_tsk(250U * 1000U);
+	get_tim(&after);
+	syslog(LOG_NOTICE, "makeinc: gain %d, %s, %s, zlib %s, sqrt %d, dly_tsk(250000) %d ms", gain_apply(100), defs,
+	       optimized, zlibVersion(), (int)root, (int)((after - before) / 1000U));
 }

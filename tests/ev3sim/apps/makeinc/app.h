@@ -2,7 +2,8 @@
  * app.h — makeinc: an app whose Makefile.inc sets the variables EV3RT's
  * app build honours beyond the sources (COPTS, CDEFS, APPL_CFLAGS, SRCDIRS,
  * LDFLAGS, APPL_LIBS, LIBS, OMIT_OPTIMIZATION, OMIT_WARNING_ALL), in the
- * idiom of an EV3RT 1.x app.
+ * idiom of an ET Robocon app for EV3RT 1.x: app.cfg INCLUDEs tecsgen.cfg
+ * (so it is built in the HRP3 profile) and #includes ev3.h by name.
  */
 #ifdef __cplusplus
 extern "C" {
