@@ -1,5 +1,7 @@
 /*
- * kernel.h — the TOPPERS/HRP2 service-call subset ev3lx stands on.
+ * kernel.h — the TOPPERS/HRP2 service-call subset ev3lx stands on, and for
+ * an app built in the HRP3 profile (EV3LX_KERNEL_HRP3) TOPPERS/HRP3's forms
+ * of them (kernel_hrp3.h, docs/ev3rt-apps.md "Two kernel profiles").
  *
  * Signatures, constants and error codes are those of TOPPERS/HRP2, so that
  * everything above rtos_stub links unchanged against the real kernel on the
@@ -162,34 +164,34 @@ typedef struct t_ralm {    /* ref_alm */
 #endif
 
 /* ---- Task management ---- */
-ER      act_tsk(ID tskid) EV3LX_HRP3_SVC(act_tsk);                 /* activate (queue one activation if not dormant) */
+ER      act_tsk(ID tskid) EV3LX_HRP3_SVC(act_tsk); /* activate (queue one activation if not dormant) */
 ER      iact_tsk(ID tskid);                /* act_tsk from non-task context */
 ER_UINT can_act(ID tskid);                 /* cancel queued activations, return their count */
 ER      ext_tsk(void);                     /* end the calling task; returns only on error (E_CTX: not a task) */
 ER      chg_pri(ID tskid, PRI tskpri);     /* change base priority */
 ER      get_pri(ID tskid, PRI *p_tskpri);  /* read current priority */
-ER      get_tid(ID *p_tskid) EV3LX_HRP3_SVC(get_tid);              /* ID of the running task */
+ER      get_tid(ID *p_tskid) EV3LX_HRP3_SVC(get_tid); /* ID of the running task */
 ER      iget_tid(ID *p_tskid);             /* ID of the task interrupted (TSK_NONE if idle) */
 
 /* ---- Task-dependent synchronisation ---- */
 ER      slp_tsk(void);                     /* sleep until woken */
-ER      tslp_tsk(TMO tmout) EV3LX_HRP3_SVC(tslp_tsk);               /* sleep with timeout (E_TMOUT) */
-ER      wup_tsk(ID tskid) EV3LX_HRP3_SVC(wup_tsk);                 /* wake, or queue one wakeup */
+ER      tslp_tsk(TMO tmout) EV3LX_HRP3_SVC(tslp_tsk); /* sleep with timeout (E_TMOUT) */
+ER      wup_tsk(ID tskid) EV3LX_HRP3_SVC(wup_tsk); /* wake, or queue one wakeup */
 ER      iwup_tsk(ID tskid);
 ER_UINT can_wup(ID tskid);
-ER      rel_wai(ID tskid) EV3LX_HRP3_SVC(rel_wai);                 /* force a waiting task out with E_RLWAI */
+ER      rel_wai(ID tskid) EV3LX_HRP3_SVC(rel_wai); /* force a waiting task out with E_RLWAI */
 ER      irel_wai(ID tskid);
-ER      dly_tsk(RELTIM dlytim) EV3LX_HRP3_SVC(dly_tsk);            /* delay for at least dlytim ms */
+ER      dly_tsk(RELTIM dlytim) EV3LX_HRP3_SVC(dly_tsk); /* delay for at least dlytim ms (HRP3: us) */
 ER      sus_tsk(ID tskid);                 /* suspend (a waiting task becomes waiting-suspended) */
 ER      rsm_tsk(ID tskid);                 /* resume a suspended task */
 ER      ter_tsk(ID tskid);                 /* terminate another task (releases its mutexes) */
 
 /* ---- Semaphores ---- */
-ER      sig_sem(ID semid) EV3LX_HRP3_SVC(sig_sem);                 /* release one resource (E_QOVR at maximum) */
+ER      sig_sem(ID semid) EV3LX_HRP3_SVC(sig_sem); /* release one resource (E_QOVR at maximum) */
 ER      isig_sem(ID semid);
 ER      wai_sem(ID semid);                 /* acquire, waiting */
 ER      pol_sem(ID semid);                 /* acquire, E_TMOUT if none */
-ER      twai_sem(ID semid, TMO tmout) EV3LX_HRP3_SVC(twai_sem);     /* acquire with timeout */
+ER      twai_sem(ID semid, TMO tmout) EV3LX_HRP3_SVC(twai_sem); /* acquire with timeout */
 
 /* ---- Eventflags ---- */
 ER      set_flg(ID flgid, FLGPTN setptn) EV3LX_HRP3_SVC(set_flg);
@@ -241,19 +243,19 @@ ER      ref_alm(ID almid, T_RALM *pk_ralm) EV3LX_HRP3_SVC(ref_alm);
 ER      get_inf(intptr_t *p_exinf);        /* the calling task's exinf */
 
 /* ---- Time management ---- */
-ER      get_tim(SYSTIM *p_systim) EV3LX_HRP3_SVC(get_tim);         /* system time in ms since boot */
+ER      get_tim(SYSTIM *p_systim) EV3LX_HRP3_SVC(get_tim); /* system time in ms since boot (HRP3: us, 64 bits) */
 ER      get_utm(SYSUTM *p_sysutm);         /* performance time in us since boot */
 ER      sta_cyc(ID cycid);                 /* start a cyclic handler */
 ER      stp_cyc(ID cycid);
-ER      sta_alm(ID almid, RELTIM almtim) EV3LX_HRP3_SVC(sta_alm);  /* start an alarm, almtim ms from now */
+ER      sta_alm(ID almid, RELTIM almtim) EV3LX_HRP3_SVC(sta_alm); /* start an alarm, almtim ms (HRP3: us) from now */
 ER      ista_alm(ID almid, RELTIM almtim);
 ER      stp_alm(ID almid) EV3LX_HRP3_SVC(stp_alm);
 ER      istp_alm(ID almid);
 
 /* ---- System state ---- */
-ER      rot_rdq(PRI tskpri) EV3LX_HRP3_SVC(rot_rdq);               /* rotate the ready queue of a priority */
+ER      rot_rdq(PRI tskpri) EV3LX_HRP3_SVC(rot_rdq); /* rotate the ready queue of a priority */
 ER      irot_rdq(PRI tskpri);
-ER      loc_cpu(void) EV3LX_HRP3_SVC(loc_cpu);                     /* CPU lock: mask all interrupts and dispatch */
+ER      loc_cpu(void) EV3LX_HRP3_SVC(loc_cpu); /* CPU lock: mask all interrupts and dispatch */
 ER      iloc_cpu(void);
 ER      unl_cpu(void) EV3LX_HRP3_SVC(unl_cpu);
 ER      iunl_cpu(void);
