@@ -79,6 +79,19 @@ ER ev3lx_button_set_on_clicked(button_t button, ISR handler, intptr_t exinf);
 #define EV3_LCD_TASK_STACK        (8 * 1024)
 #endif
 
+/*
+ * The app-init task, which runs the app's C++ global constructors at boot
+ * once the platform is up, as EV3RT's app-init task does, holding the app's
+ * tasks (priorities TMIN_APP_TPRI and lower) until they return: at the
+ * button task's priority and domain.
+ */
+#ifndef EV3_APP_INIT_TSKID
+#define EV3_APP_INIT_TSKID        (TNUM_TSKID - 4)
+#endif
+#ifndef EV3_APP_INIT_TASK_STACK
+#define EV3_APP_INIT_TASK_STACK   (16 * 1024)
+#endif
+
 #ifdef __cplusplus
 }
 #endif

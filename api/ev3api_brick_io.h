@@ -37,6 +37,18 @@ extern "C" {
 #define BRICK_IO_FN_DIR_CLOSE   (BRICK_IO_FN_FIRST + 4)  /* (ID): E_ID if not open */
 #define BRICK_IO_FN_SERIAL_WRITE (BRICK_IO_FN_FIRST + 5) /* (serial_port_t, const void *buf, uint_t len): bytes taken, 0 full; len 0: E_OBJ unless connected */
 #define BRICK_IO_FN_SERIAL_READ (BRICK_IO_FN_FIRST + 6)  /* (serial_port_t, void *buf, uint_t len): returns bytes, 0 none yet, E_OBJ at end */
+#define BRICK_IO_FN_SPP_CONNECT (BRICK_IO_FN_FIRST + 7)  /* (const uint8_t addr[6], const char *pin): starts the SPP master's connection attempt; E_OK (at once if connected), E_CTX while one is under way */
+#define BRICK_IO_FN_SPP_CONNECTING (BRICK_IO_FN_FIRST + 8) /* (): 1 while the attempt is under way, else 0 */
+
+/* The Bluetooth SPP master link (the brick connects to a remote slave,
+ * SIO_PORT_SPP_MASTER_TEST): a port of the serial service calls beyond
+ * serial_port_t's, so that apps never see it among EV3_SERIAL_*. */
+#define BRICK_IO_SERIAL_SPP_MASTER ((serial_port_t)4)
+#define BRICK_IO_SERIAL_LAST       BRICK_IO_SERIAL_SPP_MASTER
+
+/* A Bluetooth PIN code has 1 to 16 bytes (Bluetooth Core Specification,
+ * Vol 3 Part C, "Bluetooth PIN"). */
+#define BRICK_IO_MAX_PIN 16U
 
 #define BRICK_IO_MAX_DIRS       8U   /* directories open at once */
 #define BRICK_IO_MAX_PATH       (TMAX_FILENAME_LEN + 1)   /* bytes of a path with its NUL */
@@ -75,6 +87,16 @@ static inline ER_UINT brick_io_serial_write(serial_port_t port, const void *buf,
 static inline ER_UINT brick_io_serial_read(serial_port_t port, void *buf, uint_t len)
 {
 	return cal_svc(BRICK_IO_FN_SERIAL_READ, (intptr_t)port, (intptr_t)buf, (intptr_t)len, 0, 0);
+}
+
+static inline ER brick_io_spp_connect(const uint8_t addr[6], const char *pin)
+{
+	return (ER)cal_svc(BRICK_IO_FN_SPP_CONNECT, (intptr_t)addr, (intptr_t)pin, 0, 0, 0);
+}
+
+static inline ER_UINT brick_io_spp_connecting(void)
+{
+	return cal_svc(BRICK_IO_FN_SPP_CONNECTING, 0, 0, 0, 0, 0);
 }
 
 #ifdef __cplusplus

@@ -28,4 +28,6 @@ shim=(); while IFS= read -r f; do shim+=("$f"); done < <(find linux_compat rtos_
 check "reused total" "$(csvv total 3)" "${reused[@]}"
 check "written glue total" "$(csvv total 5)" "${glue[@]}"
 check "shared shim" "$(csvv shared_shim 5)" "${shim[@]}"
+slibs=(); while IFS= read -r f; do slibs+=("$f"); done < <(find api/library -type f \( -name '*.c' -o -name '*.cpp' -o -name '*.h' \) 2>/dev/null | sort)
+check "SDK libraries" "$(csvv sdk_libraries 5)" "${slibs[@]}"
 exit $fail

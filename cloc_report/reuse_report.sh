@@ -21,7 +21,7 @@ mkdir -p "$out"
 expand() {
 	local p
 	for p in "$@"; do
-		if [ -d "$p" ]; then find "$p" -type f \( -name '*.c' -o -name '*.h' -o -name '*.S' \) | sort
+		if [ -d "$p" ]; then find "$p" -type f \( -name '*.c' -o -name '*.cpp' -o -name '*.h' -o -name '*.S' \) | sort
 		elif [ -f "$p" ]; then echo "$p"; fi
 	done
 }
@@ -82,6 +82,8 @@ else
 	mapfile -t shim < <(expand linux_compat rtos_stub/include rtos_stub/src)
 fi
 mapfile -t tests < <(expand tests)
+# ev3lx's SDK libraries for apps (libcpp-ev3: EV3RT's C++ API written here)
+mapfile -t slibs < <(expand api/library)
 
 total_reused=0; total_glue=0; rows=(); module_glue=()
 for m in "${modules[@]}"; do
@@ -111,6 +113,7 @@ done
 
 shim_code=$(cloc_code "${shim[@]}")
 test_code=$(cloc_code "${tests[@]}")
+slib_code=$(cloc_code "${slibs[@]}")
 shared_glue=0
 if [ "${modules[0]}" != custom ]; then
 	mapfile -t shared_hacks < <(expand ${HACK_DIRS:-hacks} | grep -vxF -f <(printf '%s\n' "${module_glue[@]}") || true)
@@ -121,6 +124,7 @@ written_shim=$((written + shim_code))
 echo "total,,$total_reused,,$written,,," >> "$csv"
 echo "shared_shim,,,,$shim_code,,," >> "$csv"
 echo "tests,,,,$test_code,,," >> "$csv"
+echo "sdk_libraries,,,,$slib_code,,," >> "$csv"
 
 {
 	echo "| module | reused (code lines) | modified lines | written glue | written/reused | coding saved | driver sha256 | compiled unmodified by |"
@@ -133,6 +137,7 @@ echo "tests,,,,$test_code,,," >> "$csv"
 	echo "| shared glue (hacks/ headers and helpers) | $shared_glue |"
 	echo "| shared shim (linux_compat + rtos_stub) | $shim_code |"
 	echo "| tests | $test_code |"
+	echo "| SDK libraries for apps, written here (api/library: libcpp-ev3) | $slib_code |"
 	echo
 	echo "- Without the shared shim: wrote $written lines to reuse $total_reused — written/reused $(ratio "$written" "$total_reused"), $(pct "$written" "$total_reused") % of the coding saved."
 	echo "- With the shared shim: wrote $written_shim lines — written/reused $(ratio "$written_shim" "$total_reused"), $(pct "$written_shim" "$total_reused") % saved."

@@ -17,10 +17,11 @@
  * LEDs: two bicolour LEDs, each a red and a green GPIO output; orange is both.  Steady patterns
  * cost nothing; flash and pulse patterns run a 100 ms hrtimer only while selected.
  *
- * GPIO pins - NOT from our EV3 facts sheet: they follow ev3dev's EV3 board support as we know
- * it (buttons UP GP7_15, ENTER GP1_13, DOWN GP7_14, RIGHT GP7_12, LEFT GP6_6, BACK GP6_10,
- * pressed = high; LEDs left red GP6_7, left green GP6_13, right red GP6_12, right green GP6_14,
- * lit = high).  Check them against the EV3 schematic before loading this on a brick; every
+ * GPIO pins - NOT from our EV3 facts sheet: the buttons follow ev3dev's EV3 board support as
+ * we know it (UP GP7_15, ENTER GP1_13, DOWN GP7_14, RIGHT GP7_12, LEFT GP6_6, BACK GP6_10,
+ * pressed = high); the LEDs (left red GP6_13, left green GP6_7, right red GP6_12, right green
+ * GP6_14, lit = high) LEGO's lms2012 d_ui pin table (mindboards/ev3sources) and EV3RT's brick
+ * driver (ev3rt-git/ev3rt-hrp2), which both make GP6_12 and GP6_13 red, GP6_7 and GP6_14 green.  Check them against the EV3 schematic before loading this on a brick; every
  * pin and both active levels are module parameters.  The pins must already be muxed to GPIO
  * (board code / boot loader), as for gpio-keys and gpio-leds.
  */
@@ -73,8 +74,8 @@ UI_GPIO_PARAM(down_gpio, 7, 14, "the DOWN button");
 UI_GPIO_PARAM(right_gpio, 7, 12, "the RIGHT button");
 UI_GPIO_PARAM(left_gpio, 6, 6, "the LEFT button");
 UI_GPIO_PARAM(back_gpio, 6, 10, "the BACK button");
-UI_GPIO_PARAM(left_red_gpio, 6, 7, "the left LED's red half");
-UI_GPIO_PARAM(left_green_gpio, 6, 13, "the left LED's green half");
+UI_GPIO_PARAM(left_red_gpio, 6, 13, "the left LED's red half");
+UI_GPIO_PARAM(left_green_gpio, 6, 7, "the left LED's green half");
 UI_GPIO_PARAM(right_red_gpio, 6, 12, "the right LED's red half");
 UI_GPIO_PARAM(right_green_gpio, 6, 14, "the right LED's green half");
 

@@ -19,14 +19,24 @@ include mk/layers.mk
 # Linux code is held to kbuild W=1: -Wextra without -Wmissing-field-initializers
 # (LEGO fills struct miscdevice positionally: { minor, name, fops }).
 LINUX_INC  := -D__KERNEL__ -Wno-missing-field-initializers -Ilinux_compat/include -Ilinux_compat/mach-davinci/include
-# Code generation as kbuild's top-level Makefile sets it for every kernel object
-# (Linux 6.1): drivers may type-pun through pointers, rely on wrapping signed
-# arithmetic, keep null checks after a dereference, and must not get stores the
-# source does not contain (another context may own the neighbouring field).
-# -fno-common: a tentative definition is a definition, so two modules' `int Hw;`
-# are two symbols the module link keeps apart, never one merged common block.
-LINUX_CODEGEN := -fno-strict-aliasing -fno-common -fno-delete-null-pointer-checks \
-	-fno-strict-overflow -fno-allow-store-data-races
+# Code generation as kbuild sets it for every kernel object, in every
+# configuration — the list from Linux 6.1's top-level Makefile (Debian's
+# linux-headers-6.1 package: KBUILD_CFLAGS), plus -funsigned-char, which
+# kbuild passes on every architecture since Linux 6.2 ("kbuild: treat char as
+# always unsigned"; ARM's ABI makes char unsigned anyway): drivers may
+# type-pun through pointers, rely on wrapping signed arithmetic, keep null
+# checks after a dereference, compare `char` command bytes above 127 as
+# unsigned, and must not get stores the source does not contain (another
+# context may own the neighbouring field).  -fno-common: a tentative definition
+# is a definition, so two modules' `int Hw;` are two symbols the module link
+# keeps apart, never one merged common block.  Left out of 6.1's list:
+# -fshort-wchar (these objects link with the C library's 4-byte wchar_t; no
+# Linux code here uses wchar_t), -fno-PIE (the host programs are PIE), the
+# configuration-dependent -fstack-protector* and the architecture's own
+# (-mcmodel=kernel, -mno-red-zone: kernel-mode x86 code).
+LINUX_CODEGEN := -funsigned-char -fno-strict-aliasing -fno-common -fno-delete-null-pointer-checks \
+	-fno-strict-overflow -fno-allow-store-data-races -fno-stack-check -fconserve-stack \
+	-fno-builtin-wcslen
 
 # Build-time kernel settings (TIC_NUME/TIC_DENO: tick length in ms; TNUM_FNCD:
 # the highest extended service call function code, for the library and every
@@ -122,8 +132,9 @@ compile = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(cal
 	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2))) $(CFLAGS_$(1)) $(KERNEL_DEFS)
 
 # Flags of configuration $(1)'s compiler: clang (the fuzzing build) has no
-# -fno-allow-store-data-races (it never invents stores the source lacks).
-GCC_ONLY_FLAGS := -fno-allow-store-data-races
+# -fno-allow-store-data-races (it never invents stores the source lacks) nor
+# -fconserve-stack (kbuild passes it only to gcc too).
+GCC_ONLY_FLAGS := -fno-allow-store-data-races -fconserve-stack
 cc_flags = $(if $(filter clang%,$(notdir $(CC_$(1)))),$(filter-out $(GCC_ONLY_FLAGS),$(2)),$(2))
 
 # Checks kept as stamps (kbuild, bench-quick, report, ...) are remade only when
@@ -157,7 +168,7 @@ same_text = $(and $(findstring x$(strip $(1))x,x$(strip $(2))x),$(findstring x$(
 # test) — so a changed flag recompiles the objects that an old one made (the
 # compiler cache makes that cheap where nothing changed).
 define obj_rule
-$(call key_file_rule,$(2)/compile.key,$(CC_$(1)) $(CFLAGS_$(1)) $(KERNEL_DEFS))
+$(call key_file_rule,$(2)/compile.key,$(CC_$(1)) $(CFLAGS_$(1)) $(KERNEL_DEFS) $(LINUX_CODEGEN))
 $(2)/obj/%.o: %.c $(2)/compile.key
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(1) $$<

@@ -9,9 +9,10 @@
 #           include path of everything below, then cfg/ (app_common.cfg)
 #           and the platform's headers
 #   SRCS    the app's sources: C (.c) and C++ (.cpp, compiled with g++;
-#           the program is then linked with g++, so libstdc++ is linked and
-#           every static constructor runs before main(), before the kernel
-#           boots and the first task runs)
+#           the program is then linked with g++, so libstdc++ is linked;
+#           the app's global constructors run in the platform's app-init
+#           task at boot, before the app's tasks, as on EV3RT: see the
+#           object's rule below)
 #   RUNNER  optional: objects with main() (booting ev3rt_app_cfg); the app is
 #           then also linked as the program $(BUILD)/CONFIG/ev3rt/NAME/NAME
 #
@@ -108,9 +109,16 @@ $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c
 # any section (--force-group-allocation), or they would stay outside the
 # domain.  The app's SDK libraries (EV3RT_DOMLIBS_NAME_CONFIG) are linked
 # into the domain of the app's first module, as EV3RT links them into the
-# app's module: a library's buffers are the app's.
+# app's module: a library's buffers are the app's.  The app's C++ global
+# constructors (its objects' and libraries' .init_array; not the
+# configuration's, nor a sanitizer's, whose sections have a priority in
+# their names) go to ev3rt_app_init_array, which the platform's app-init task
+# runs at boot as EV3RT's does (api/src/app_init.c), and its __cxa_atexit is
+# the platform's, which registers no destructor, as EV3RT runs none.  (The
+# recipe is a prerequisite: an object linked by an older one would construct
+# its globals before boot.)
 $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o \
-		$$(EV3RT_DOMLIBS_$(1)_$(2)) $(EV3RT_APP_FS_SYMS)
+		$$(EV3RT_DOMLIBS_$(1)_$(2)) $(EV3RT_APP_FS_SYMS) mk/ev3rt_app.mk
 	$$(quiet) LD $(2) $$@
 	$(Q)set -e; objs=; \
 	for o in $$(EV3RT_OBJS_$(1)_$(2)); do \
@@ -128,8 +136,11 @@ $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(
 			$$$${script:+-Wl,-T,"$$$$script"} -Wl,--whole-archive $$(EV3RT_DOMLIBS_$(1)_$(2)) -Wl,--no-whole-archive; \
 		objs="$$$$objs $$@.libs.o"; \
 	fi; \
-	$$(CC_$(2)) -r -nostdlib -o $$@ $$$$objs $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o; \
-	$$(OBJCOPY_$(2)) --redefine-sym main=ev3rt_app_main --redefine-syms=$(EV3RT_APP_FS_SYMS) $$@
+	$$(CC_$(2)) -r -nostdlib -o $$@.app.o $$$$objs; \
+	$$(OBJCOPY_$(2)) --rename-section .init_array=ev3rt_app_init_array $$@.app.o; \
+	$$(CC_$(2)) -r -nostdlib -o $$@ $$@.app.o $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o; \
+	$$(OBJCOPY_$(2)) --redefine-sym main=ev3rt_app_main --redefine-sym __cxa_atexit=ev3rt_app_cxa_atexit \
+		--redefine-syms=$(EV3RT_APP_FS_SYMS) $$@
 
 ifneq ($(strip $(5)),)
 EV3RT_PLATFORM_$(1)_$(2) ?= $(BUILD)/$(2)/libev3lx.a

@@ -102,7 +102,7 @@ $(EV3RT_PLATFORM): $(LIB_host) $(EV3RT_PLATFORM_OBJS) mk/ev3rt/platform_syms.sh 
 	$(quiet) LD host $@
 	$(Q)set -e; tmp=$@.$$$$; \
 	ld -r -o $$tmp.r.o --whole-archive $(LIB_host) --no-whole-archive $(EV3RT_PLATFORM_OBJS); \
-	PLATFORM_KEEP='ev3sim_run_main __sanitizer_cov_trace_pc $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $$tmp.r.o \
+	PLATFORM_KEEP='ev3sim_run_main __sanitizer_cov_trace_pc ev3rt_app_cxa_atexit $(EV3RT_APP_FS_CALLS)' bash mk/ev3rt/platform_syms.sh $$tmp.r.o \
 		$(CC_host) $(call layer_inc,api) $(CFLAGS_host) $(KERNEL_DEFS) > $$tmp.syms; \
 	objcopy --keep-global-symbols=$$tmp.syms $$tmp.r.o $$tmp; \
 	mv $$tmp.syms $@.syms; rm -f $$tmp.r.o; mv $$tmp $@
@@ -111,6 +111,27 @@ $(EV3RT_PLATFORM): $(LIB_host) $(EV3RT_PLATFORM_OBJS) mk/ev3rt/platform_syms.sh 
 # files of its own and renames them into place, so even then none sees
 # another's half-written object.
 $(BUILD)/host/ev3sim: | $(EV3RT_PLATFORM)
+
+# The tests of ev3lx's SDK libraries (api/library/LIB): an app that takes
+# the library from its Makefile.inc, tests/api/library/LIB/app/, linked into
+# tests/api/library/LIB/test_*.c (each runs it as an example's test does).
+EV3RT_LIB_TESTS := $(patsubst tests/api/library/%/app/app.cfg,%,$(wildcard tests/api/library/*/app/app.cfg))
+$(foreach l,$(EV3RT_LIB_TESTS),$(call ev3rt_read_app,tests/api/library/$(l)/app,LIBTEST_$(l),,$(BUILD)/ev3rt-info/libtest_$(l)))
+
+# $(1) = library, $(2) = config, $(3) = a test (its path without .c)
+define ev3rt_lib_test_rules
+TEST_LDLIBS_$(patsubst tests/%,%,$(3)) := -lstdc++
+$(BUILD)/$(2)/obj/$(3).o: $(3).c $(BUILD)/$(2)/ev3rt/libtest_$(1)/libtest_$(1).o
+	@mkdir -p $$(@D)
+	$$(quiet) CC $(2) $$<
+	$(Q)$$(CC_$(2)) $$(call src_flags,$$<) $$(WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+		-MMD -MP -MF $$(@:.o=.d) -MT $$@ -c $$< -o $$@.main.o
+	$(Q)$$(CC_$(2)) -r -nostdlib -o $$@ $$@.main.o $(BUILD)/$(2)/ev3rt/libtest_$(1)/libtest_$(1).o
+endef
+$(foreach c,$(HOST_CONFIGS),$(foreach l,$(EV3RT_LIB_TESTS),\
+	$(eval $(call ev3rt_dir_app,libtest_$(l),$(c),tests/api/library/$(l)/app,LIBTEST_$(l)))\
+	$(foreach t,$(patsubst %.c,%,$(wildcard tests/api/library/$(l)/test_*.c)),\
+		$(eval $(call ev3rt_lib_test_rules,$(l),$(c),$(t))))))
 
 # ev3sim's own test apps, tests/ev3sim/apps/NAME (app.c alone): each linked
 # into tests/ev3sim/test_app_NAME.c as an example is into its test, as

@@ -50,7 +50,8 @@ HDRCHECK_FLAGS_api/ev3api.h := -DTOPPERS_CFG1_OUT
 HDRCHECK               := $(BUILD)/header-check
 
 # "path-of-header include-name" pairs of a layer: the name relative to its header directory.
-hdrcheck_pairs = $(foreach d,$(HDR_$(1)),$(foreach h,$(filter-out $(HDRCHECK_PARTS),$(sort $(shell find $(d) -name '*.h' 2>/dev/null))),$(h)@$(patsubst $(d)/%,%,$(h))))
+# (api/library holds SDK libraries in C++, checked by the C++ pass below)
+hdrcheck_pairs = $(foreach d,$(HDR_$(1)),$(foreach h,$(filter-out $(HDRCHECK_PARTS) api/library/%,$(sort $(shell find $(d) -name '*.h' 2>/dev/null))),$(h)@$(patsubst $(d)/%,%,$(h))))
 HDRCHECK_PAIRS_host   := $(foreach l,$(HDRCHECK_LAYERS_host),$(call hdrcheck_pairs,$(l)))
 HDRCHECK_PAIRS_am1808 := $(filter-out $(addsuffix @%,$(HDRCHECK_HOST_ONLY)),\
 	$(foreach l,$(HDRCHECK_LAYERS_am1808),$(call hdrcheck_pairs,$(l))))
@@ -73,12 +74,20 @@ HDRCHECK_OBJS := $(foreach c,host am1808,$(foreach p,$(HDRCHECK_PAIRS_$(c)),$(HD
 # functions with C linkage.
 HDRCHECK_CXX_HDRS := $(filter-out api/ev3api_brick_io.h,$(wildcard api/*.h api/syssvc/*.h)) \
 	$(addprefix rtos_stub/include/,kernel.h kernel_hrp3.h t_stddef.h t_syslog.h t_stdlib.h target_kernel.h ev3.h syssvc/syslog.h)
+# ev3lx's SDK libraries' headers (api/library/LIB/include) are an app's
+# too, included by name with the library's include/ on the path as the app's
+# build puts it; they are checked as EV3RT's app build compiles C++
+# (-std=gnu++11) as well.
+HDRCHECK_CXX_HDRS += $(sort $(wildcard api/library/*/include/*.h))
 HDRCHECK_CXX_OBJS := $(patsubst %.h,$(HDRCHECK)/cxx/%.o,$(HDRCHECK_CXX_HDRS))
 $(HDRCHECK)/cxx/%.o: %.h
 	@mkdir -p $(@D)
 	@printf '#include "%s"\n#include "%s"\n' '$(abspath $<)' '$(abspath $<)' > $(@:.o=.cpp)
 	$(Q)$(CCACHE) g++ -std=gnu++17 -Wall -Wextra -Werror -Wno-unused-parameter $(call layer_inc,api) \
 		$(HDRCHECK_FLAGS_$<) -DTOPPERS_CFG1_OUT $(CFLAGS_host) $(KERNEL_DEFS) -MMD -MP -c $(@:.o=.cpp) -o $@
+	$(Q)$(if $(filter api/library/%,$<),$(CCACHE) g++ -std=gnu++11 -Wall -Wextra -Werror -Wno-unused-parameter \
+		$(call layer_inc,api) -I$(dir $<) -DTOPPERS_CFG1_OUT $(CFLAGS_host) $(KERNEL_DEFS) \
+		-c $(@:.o=.cpp) -o $(@:.o=.gnu++11.o))
 -include $(HDRCHECK_CXX_OBJS:.o=.d)
 
 .PHONY: header-check

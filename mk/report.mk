@@ -42,9 +42,9 @@ hash_recording_objs = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(call is_hash_record
 REPORT_STAMP := $(REPORT_DIR)/reuse.stamp
 REPORT_BUILDS = $(foreach c,$(HOST_CONFIGS),$(call hash_recording_objs,$(c),$(HOST_SRCS) $(TEST_SRCS))) \
 	$(call hash_recording_objs,am1808,$(AM1808_SRCS)) $(KBUILD_OUT)/summary.txt
-REPORT_SRC_DIRS := linux_compat rtos_stub tests
+REPORT_SRC_DIRS := linux_compat rtos_stub tests api/library
 REPORT_SRCS = $(sort $(shell find $(REPORT_SRC_DIRS) $(EV3LX_HACK_DIRS) $(DRIVER_DIRS) -type f \
-	\( -name '*.c' -o -name '*.h' -o -name '*.S' \) 2>/dev/null))
+	\( -name '*.c' -o -name '*.cpp' -o -name '*.h' -o -name '*.S' \) 2>/dev/null))
 REPORT_KEY := $(BUILD)/report.key
 $(eval $(call key_file_rule,$(REPORT_KEY),$$(shell cloc --version) $$(EV3LX_HACK_DIRS) $$(DRIVER_DIRS) \
 	$$(REPORT_CONFIGS) $$(REPORT_SRCS)))

@@ -67,6 +67,12 @@ void api_serial_boot(void);
 void api_app_heap_boot(void);
 /* The LCD task's body (CRE_TSK EV3_LCD_TSKID in config.c): starts the panel at boot. */
 void api_lcd_task(intptr_t exinf);
+/* The app-init task's body (CRE_TSK EV3_APP_INIT_TSKID in config.c): runs
+ * the app's C++ global constructors at boot (app_init.c). */
+void api_app_init_task(intptr_t exinf);
+/* What the app's objects call for __cxa_atexit (renamed by the app's
+ * build): registers nothing, 0. */
+int ev3rt_app_cxa_atexit(void (*destructor)(void *), void *object, void *dso_handle);
 /* The apps' heap (app_heap.c): EV3LX_APP_HEAP_SIZE bytes in every user
  * domain's memory, as EV3RT's app heap is in the app's domain. */
 #ifndef EV3LX_APP_HEAP_SIZE

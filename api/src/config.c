@@ -22,12 +22,15 @@ static void api_boot(intptr_t exinf)
 static const struct rtos_ini_cfg api_inis[] = { { api_boot, 0 } };
 
 /* The button task runs click handlers (ev3lx_button_set_on_clicked) in task
- * context; the LCD task starts the panel at boot. */
+ * context; the LCD task starts the panel at boot; the app-init task runs the
+ * app's C++ global constructors. */
 static const struct rtos_task_cfg api_tasks[] = {
 	{ EV3_BUTTON_TSKID, TA_ACT, 0, api_button_task, EV3_BUTTON_TASK_PRIORITY,
 	  EV3_BUTTON_TASK_STACK, EV3_BUTTON_TASK_DOMAIN, "ev3api buttons" },
 	{ EV3_LCD_TSKID, TA_ACT, 0, api_lcd_task, EV3_BUTTON_TASK_PRIORITY,
 	  EV3_LCD_TASK_STACK, EV3_BUTTON_TASK_DOMAIN, "ev3api LCD start" },
+	{ EV3_APP_INIT_TSKID, TA_ACT, 0, api_app_init_task, EV3_BUTTON_TASK_PRIORITY,
+	  EV3_APP_INIT_TASK_STACK, EV3_BUTTON_TASK_DOMAIN, "ev3api app init" },
 };
 
 /* Guards the click-handler table (handler and exinf change together). */

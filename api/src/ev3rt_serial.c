@@ -8,6 +8,7 @@
 #include <string.h>
 #include "ev3api_brick_io.h"
 #include "syssvc/serial.h"
+#include "driver_interface_bluetooth.h"
 #include "api_internal.h"
 
 #define CHUNK 256U
@@ -36,8 +37,10 @@ static ER port_of(ID portid, serial_port_t *port)
 	case SIO_PORT_USB_CDC:
 		*port = EV3_SERIAL_USB_CDC;
 		return E_OK;
-	case SIO_PORT_LCD:
 	case SIO_PORT_SPP_MASTER_TEST:
+		*port = BRICK_IO_SERIAL_SPP_MASTER;
+		return E_OK;
+	case SIO_PORT_LCD:
 		return E_NOSPT;
 	default:
 		return E_ID;
@@ -153,6 +156,11 @@ ER serial_ctl_por(ID portid, uint_t ioctl)
 	return E_OK;
 }
 
+/* EV3RT opens a Bluetooth or USB port when its far end connects and closes
+ * it when the far end goes, so the port's state is E_OBJ (not open) while
+ * nothing is connected (ev3rt-git/ev3rt-hrp2,
+ * target/ev3_gcc/drivers/bluetooth/src/bluetooth_dri.c); the UART's port is
+ * open from boot. */
 ER serial_ref_por(ID portid, T_SERIAL_RPOR *pk_rpor)
 {
 	serial_port_t port;
@@ -160,7 +168,38 @@ ER serial_ref_por(ID portid, T_SERIAL_RPOR *pk_rpor)
 
 	if ((ercd = serial_check(portid, &port)) != E_OK || (ercd = API_CHECK_OUT(pk_rpor)) != E_OK)
 		return ercd;
+	if (port != EV3_SERIAL_UART && brick_io_serial_write(port, NULL, 0) != E_OK)
+		return E_OBJ;
 	pk_rpor->reacnt = 0;
 	pk_rpor->wricnt = 0;
 	return E_OK;
+}
+
+/* EV3RT starts the attempt and waits for its end 10 ms at a time
+ * (bluetooth_dri.c's _spp_master_test_connect).  The address and PIN are
+ * read in the caller's domain and cross the service call as copies on the
+ * stack, as serial_wri_dat's bytes do. */
+ER spp_master_test_connect(const uint8_t addr[6], const char *pin)
+{
+	uint8_t addr_copy[6];
+	char pin_copy[BRICK_IO_MAX_PIN + 1];
+	ER_UINT connecting;
+	size_t n;
+	ER ercd;
+
+	if ((ercd = api_may_wait()) != E_OK)
+		return ercd;
+	if (addr == NULL || pin == NULL)
+		return E_MACV;
+	for (n = 0; n <= BRICK_IO_MAX_PIN && pin[n] != '\0'; n++)
+		continue;
+	if (n == 0 || n > BRICK_IO_MAX_PIN)
+		return E_PAR;
+	memcpy(addr_copy, addr, sizeof(addr_copy));
+	memcpy(pin_copy, pin, n + 1);
+	if ((ercd = brick_io_spp_connect(addr_copy, pin_copy)) != E_OK)
+		return ercd == E_RSFN ? E_NOSPT : ercd;
+	while ((connecting = brick_io_spp_connecting()) > 0)
+		dly_tsk(10);
+	return connecting < 0 ? (ER)connecting : E_OK;
 }

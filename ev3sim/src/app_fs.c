@@ -22,6 +22,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "ev3sim/brick_io.h"
+#include "driver_interface_filesys.h"
 
 /* The app's functions under their renamed names (nothing but the renamed app calls them). */
 FILE *ev3rt_fs_fopen(const char *path, const char *mode);
@@ -140,6 +141,20 @@ FILE *ev3rt_fs_freopen64(const char *path, const char *mode, FILE *stream)
 		va_end(ap);                                             \
 	} while (0)
 
+/* A file's descriptor moved above EV3RT's serial file numbers
+ * (driver_interface_filesys.h), which the app's fdopen takes for the serial
+ * ports: the card's files never get them, as on the brick. */
+static int above_serial_filenos(int fd, int flags)
+{
+	int moved;
+
+	if (fd < 0 || fd > SIO_USB_CDC_FILENO)
+		return fd;
+	moved = fcntl(fd, (flags & O_CLOEXEC) ? F_DUPFD_CLOEXEC : F_DUPFD, SIO_USB_CDC_FILENO + 1);
+	close(fd);
+	return moved;
+}
+
 int ev3rt_fs_open(const char *path, int flags, ...)
 {
 	char *host;
@@ -150,7 +165,7 @@ int ev3rt_fs_open(const char *path, int flags, ...)
 	host = host_path(path, (flags & O_CREAT) ? BRICK_IO_CARD_CREATE : BRICK_IO_CARD_EXISTING);
 	fd = host ? open(host, flags, mode) : -1;
 	done(host);
-	return fd;
+	return above_serial_filenos(fd, flags);
 }
 
 int ev3rt_fs_open64(const char *path, int flags, ...)
@@ -163,7 +178,7 @@ int ev3rt_fs_open64(const char *path, int flags, ...)
 	host = host_path(path, (flags & O_CREAT) ? BRICK_IO_CARD_CREATE : BRICK_IO_CARD_EXISTING);
 	fd = host ? open64(host, flags, mode) : -1;
 	done(host);
-	return fd;
+	return above_serial_filenos(fd, flags);
 }
 
 /* _FORTIFY_SOURCE's open() without O_CREAT */

@@ -32,84 +32,198 @@ static struct {
 	int serial_write_errno;             /* the first failed write's errno since the setup, 0: none */
 } io = { .serial_fd = -1 };
 
-/* Bluetooth SPP's far end: a PC program connected to a Unix socket (--bt). */
-static struct {
+/* A serial link's far end (Bluetooth SPP, USB CDC): a connected socket to a host program. */
+struct peer_link {
+	int fd;                             /* -1: not connected */
+	bool hung_up;                       /* the far end left, and no read has seen the end yet */
+};
+
+/* A port whose far end is a program on the host that connects to a Unix
+ * socket: the PC paired over Bluetooth SPP (--bt) or plugged into the
+ * USB port as a CDC device (--usb). */
+struct peer_port {
+	const char *option;                 /* the command line's name for it */
 	char *path;                         /* the socket's path, NULL: no peer can come */
 	int listen_fd;                      /* -1: none */
-	int peer_fd;                        /* -1: no peer connected */
-	bool hung_up;                       /* a peer left, and no read has seen the end yet */
-} bt = { .listen_fd = -1, .peer_fd = -1 };
+	struct peer_link peer;
+};
 
-/* Closes the Bluetooth socket and its peer, and removes the socket's file. */
-static void bt_teardown(void)
+static struct peer_port bt = { .option = "--bt", .listen_fd = -1, .peer.fd = -1 };
+static struct peer_port usb = { .option = "--usb", .listen_fd = -1, .peer.fd = -1 };
+
+/*
+ * The brick as SPP master (SIO_PORT_SPP_MASTER_TEST): it connects to a
+ * program listening on a Unix socket (--bt-master), another ev3sim's --bt
+ * among them.  An attempt takes virtual time as paging does: a slave that
+ * is there answers after SPP_PAGE_ANSWER_MS, on average half the default
+ * page scan interval of 1.28 s (Bluetooth Core Specification, Vol 4 Part E,
+ * Write_Page_Scan_Activity); with none, the attempt fails after the default
+ * page timeout, 0x2000 slots of 0.625 ms (Write_Page_Timeout).
+ */
+#define SPP_PAGE_ANSWER_MS  640U
+#define SPP_PAGE_TIMEOUT_MS 5120U
+
+static struct {
+	bool has_slave;                     /* --bt-master gave the slave's socket */
+	struct sockaddr_un slave;           /* its address */
+	struct peer_link link;
+	int answer_fd;                      /* the socket of an attempt a slave answered, -1: none */
+	bool attempting;
+	SYSTIM attempt_ends;                /* when the attempt under way ends */
+} spp = { .link.fd = -1, .answer_fd = -1 };
+
+/* Closes a link's socket; the link is then as if never connected. */
+static void link_close(struct peer_link *link)
 {
-	if (bt.peer_fd >= 0)
-		close(bt.peer_fd);
-	if (bt.listen_fd >= 0)
-		close(bt.listen_fd);
-	if (bt.path != NULL)
-		unlink(bt.path);
-	free(bt.path);
-	bt.path = NULL;
-	bt.listen_fd = bt.peer_fd = -1;
-	bt.hung_up = false;
+	if (link->fd >= 0)
+		close(link->fd);
+	link->fd = -1;
+	link->hung_up = false;
 }
 
-ER brick_io_bt_listen(const char *path, char *err, size_t errlen)
+/* Closes a peer port's sockets and removes its socket's file. */
+static void peer_port_close(struct peer_port *port)
 {
-	struct sockaddr_un addr = { .sun_family = AF_UNIX };
-	struct stat st;
+	link_close(&port->peer);
+	if (port->listen_fd >= 0)
+		close(port->listen_fd);
+	if (port->path != NULL)
+		unlink(port->path);
+	free(port->path);
+	port->path = NULL;
+	port->listen_fd = -1;
+}
 
-	bt_teardown();
-	if (strlen(path) >= sizeof(addr.sun_path)) {
-		snprintf(err, errlen, "--bt: a socket path has at most %zu bytes (%zu given)",
-			 sizeof(addr.sun_path) - 1, strlen(path));
+/* Closes the peers' sockets, removes the listening sockets' files, forgets the SPP master's slave. */
+static void peers_teardown(void)
+{
+	peer_port_close(&bt);
+	peer_port_close(&usb);
+	link_close(&spp.link);
+	if (spp.answer_fd >= 0)
+		close(spp.answer_fd);
+	spp.answer_fd = -1;
+	spp.attempting = false;
+	spp.has_slave = false;
+}
+
+/* A Unix socket address for path, or E_PAR with the reason (naming option) in err. */
+static ER unix_address(const char *option, const char *path, struct sockaddr_un *addr, char *err, size_t errlen)
+{
+	memset(addr, 0, sizeof(*addr));
+	addr->sun_family = AF_UNIX;
+	if (strlen(path) >= sizeof(addr->sun_path)) {
+		snprintf(err, errlen, "%s: a socket path has at most %zu bytes (%zu given)", option,
+			 sizeof(addr->sun_path) - 1, strlen(path));
 		return E_PAR;
 	}
+	strcpy(addr->sun_path, path);
+	return E_OK;
+}
+
+/* Listens for port's peer on a Unix socket at path: E_OK, or E_PAR / E_OBJ
+ * with the reason (naming the option) in err. */
+static ER peer_port_listen(struct peer_port *port, const char *path, char *err, size_t errlen)
+{
+	struct sockaddr_un addr;
+	struct stat st;
+
+	peer_port_close(port);
+	if (unix_address(port->option, path, &addr, err, errlen) != E_OK)
+		return E_PAR;
 	/* a socket left by an earlier run is replaced; any other file is not */
 	if (lstat(path, &st) == 0) {
 		if (!S_ISSOCK(st.st_mode)) {
-			snprintf(err, errlen, "--bt %s: exists and is not a socket", path);
+			snprintf(err, errlen, "%s %s: exists and is not a socket", port->option, path);
 			return E_OBJ;
 		}
 		unlink(path);
 	}
-	strcpy(addr.sun_path, path);
-	bt.listen_fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
-	if (bt.listen_fd < 0 || bind(bt.listen_fd, (struct sockaddr *)&addr, sizeof(addr)) != 0 ||
-	    listen(bt.listen_fd, 1) != 0) {
-		snprintf(err, errlen, "--bt %s: %s", path, strerror(errno));
-		if (bt.listen_fd >= 0)
-			close(bt.listen_fd);
-		bt.listen_fd = -1;
+	port->listen_fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+	if (port->listen_fd < 0 || bind(port->listen_fd, (struct sockaddr *)&addr, sizeof(addr)) != 0 ||
+	    listen(port->listen_fd, 1) != 0) {
+		snprintf(err, errlen, "%s %s: %s", port->option, path, strerror(errno));
+		if (port->listen_fd >= 0)
+			close(port->listen_fd);
+		port->listen_fd = -1;
 		return E_OBJ;
 	}
-	bt.path = strdup(path);
+	port->path = strdup(path);
+	if (port->path == NULL) {
+		snprintf(err, errlen, "%s %s: out of memory", port->option, path);
+		peer_port_close(port);
+		unlink(path);
+		return E_NOMEM;
+	}
 	return E_OK;
 }
 
-/* The peer went away: Bluetooth is disconnected until another connects,
- * and the next read sees the end of the stream, as on EV3RT. */
-static void bt_drop_peer(void)
+ER brick_io_bt_listen(const char *path, char *err, size_t errlen)
 {
-	close(bt.peer_fd);
-	bt.peer_fd = -1;
-	bt.hung_up = true;
+	return peer_port_listen(&bt, path, err, errlen);
 }
 
-/* Whether a peer is connected: one that has hung up is dropped (its
- * socket reads as ended, what it sent before read first), one waiting to
- * connect is taken. */
-static bool bt_peer(void)
+ER brick_io_usb_listen(const char *path, char *err, size_t errlen)
+{
+	return peer_port_listen(&usb, path, err, errlen);
+}
+
+ER brick_io_bt_master(const char *path, char *err, size_t errlen)
+{
+	spp.has_slave = unix_address("--bt-master", path, &spp.slave, err, errlen) == E_OK;
+	return spp.has_slave ? E_OK : E_PAR;
+}
+
+/* The far end went away: the link is down until it connects again, and
+ * the next read sees the end of the stream, as on EV3RT. */
+static void link_drop(struct peer_link *link)
+{
+	close(link->fd);
+	link->fd = -1;
+	link->hung_up = true;
+}
+
+/* Whether the link's far end is still there (one that hung up is dropped;
+ * what it sent before is read first). */
+static bool link_up(struct peer_link *link)
 {
 	char byte;
 
-	if (bt.peer_fd >= 0 && recv(bt.peer_fd, &byte, 1, MSG_PEEK | MSG_DONTWAIT) == 0)
-		bt_drop_peer();
-	if (bt.peer_fd < 0 && bt.listen_fd >= 0)
+	if (link->fd >= 0 && recv(link->fd, &byte, 1, MSG_PEEK | MSG_DONTWAIT) == 0)
+		link_drop(link);
+	return link->fd >= 0;
+}
+
+/* Whether a program is connected to port's socket: one waiting to connect is taken. */
+static bool port_peer(struct peer_port *port)
+{
+	if (!link_up(&port->peer) && port->listen_fd >= 0)
 		/* cppcheck-suppress nullPointer ; accept4 takes NULL for a peer address it need not return (POSIX accept) */
-		bt.peer_fd = accept4(bt.listen_fd, NULL, NULL, SOCK_NONBLOCK | SOCK_CLOEXEC);
-	return bt.peer_fd >= 0;
+		port->peer.fd = accept4(port->listen_fd, NULL, NULL, SOCK_NONBLOCK | SOCK_CLOEXEC);
+	return port->peer.fd >= 0;
+}
+
+/* Ends the master's connection attempt once its time has come: the link is
+ * up if a slave answered. */
+static void spp_settle(void)
+{
+	SYSTIM now;
+
+	if (!spp.attempting || get_tim(&now) != E_OK || now < spp.attempt_ends)
+		return;
+	spp.attempting = false;
+	if (spp.answer_fd >= 0) {
+		link_close(&spp.link);
+		spp.link.fd = spp.answer_fd;
+		spp.answer_fd = -1;
+	}
+}
+
+/* Whether the master's link to its slave is up. */
+static bool spp_peer(void)
+{
+	spp_settle();
+	return link_up(&spp.link);
 }
 
 void brick_io_teardown(void)
@@ -127,7 +241,7 @@ void brick_io_teardown(void)
 		close(io.serial_fd);
 	io.serial_fd = -1;
 	io.serial_is_uart = false;
-	bt_teardown();
+	peers_teardown();
 }
 
 void brick_io_serial_to_uart(void)
@@ -453,49 +567,54 @@ static ER_UINT svc_dir_close(intptr_t dirid, intptr_t p2, intptr_t p3, intptr_t 
 }
 
 /* Whether port has a far end: the sensor-port UART when --serial gave one or
- * serial_log models it; Bluetooth while a peer is connected to --bt's
- * socket; USB never (no host peer). */
+ * serial_log models it; Bluetooth and USB while a program is connected to
+ * --bt's or --usb's socket; the SPP master while its link to the slave is up. */
 static bool serial_connected(intptr_t port)
 {
 	if (port == EV3_SERIAL_BT)
-		return bt_peer();
+		return port_peer(&bt);
+	if (port == EV3_SERIAL_USB_CDC)
+		return port_peer(&usb);
+	if (port == BRICK_IO_SERIAL_SPP_MASTER)
+		return spp_peer();
 	return (port == EV3_SERIAL_DEFAULT || port == EV3_SERIAL_UART) &&
 	       (io.serial_fd >= 0 || io.serial_is_uart);
 }
 
-/* Bluetooth's write: what the peer's socket takes (0: full); a peer gone
- * is a disconnection, and the bytes are lost as on the air. */
-static ER_UINT bt_write(const void *buf, size_t len)
+/* A Bluetooth link's write: what the far end's socket takes (0: full); a
+ * far end gone is a disconnection, and the bytes are lost as on the air. */
+static ER_UINT link_write(struct peer_link *link, const void *buf, size_t len)
 {
-	ssize_t put = send(bt.peer_fd, buf, len, MSG_NOSIGNAL);
+	ssize_t put = send(link->fd, buf, len, MSG_NOSIGNAL);
 
 	if (put >= 0)
 		return (ER_UINT)put;
 	if (errno == EAGAIN || errno == EWOULDBLOCK)
 		return 0;
-	bt_drop_peer();
+	link_drop(link);
 	return (ER_UINT)len;
 }
 
-/* Bluetooth's read: what the peer sent (0: nothing yet); once after a peer
- * left, the end of the stream (E_OBJ); with no peer, the reader waits. */
-static ER_UINT bt_read(void *buf, size_t len)
+/* A Bluetooth link's read: what the far end sent (0: nothing yet); once
+ * after the far end left, the end of the stream (E_OBJ); while it is not
+ * connected, the reader waits. */
+static ER_UINT link_read(struct peer_link *link, bool connected, void *buf, size_t len)
 {
 	ssize_t got;
 
-	if (!bt_peer()) {
-		if (!bt.hung_up)
+	if (!connected) {
+		if (!link->hung_up)
 			return 0;
-		bt.hung_up = false;
+		link->hung_up = false;
 		return E_OBJ;
 	}
-	got = recv(bt.peer_fd, buf, len, 0);
+	got = recv(link->fd, buf, len, 0);
 	if (got > 0)
 		return (ER_UINT)got;
 	if (got < 0 && (errno == EAGAIN || errno == EWOULDBLOCK))
 		return 0;
-	bt_drop_peer();
-	return bt_read(buf, len);
+	link_drop(link);
+	return link_read(link, false, buf, len);
 }
 
 /* The head of both directions: context, port, length and buffer. */
@@ -503,7 +622,7 @@ static ER serial_check(intptr_t port, intptr_t p_buf, intptr_t p_len, MODE acces
 {
 	if (sns_ctx())
 		return E_CTX;
-	if ((uintptr_t)port > EV3_SERIAL_USB_CDC)
+	if ((uintptr_t)port > BRICK_IO_SERIAL_LAST)
 		return E_ID;
 	if (p_len < 0 || p_len > (intptr_t)BRICK_IO_MAX_XFER)
 		return E_PAR;
@@ -526,7 +645,11 @@ static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, i
 	if (p_len == 0)
 		return E_OK;
 	if (port == EV3_SERIAL_BT)
-		return bt_write((const void *)p_buf, (size_t)p_len);
+		return link_write(&bt.peer, (const void *)p_buf, (size_t)p_len);
+	if (port == EV3_SERIAL_USB_CDC)
+		return link_write(&usb.peer, (const void *)p_buf, (size_t)p_len);
+	if (port == BRICK_IO_SERIAL_SPP_MASTER)
+		return link_write(&spp.link, (const void *)p_buf, (size_t)p_len);
 	if (io.serial_is_uart)
 		return serial_log_send((const char *)p_buf, (uint_t)p_len);
 	put = write(io.serial_fd, (const void *)p_buf, (size_t)p_len);
@@ -550,7 +673,11 @@ static ER_UINT svc_serial_read(intptr_t port, intptr_t p_buf, intptr_t p_len, in
 	if ((ercd = serial_check(port, p_buf, p_len, TPM_WRITE)) != E_OK || p_len == 0)
 		return ercd;
 	if (port == EV3_SERIAL_BT)
-		return bt_read((void *)p_buf, (size_t)p_len);
+		return link_read(&bt.peer, port_peer(&bt), (void *)p_buf, (size_t)p_len);
+	if (port == EV3_SERIAL_USB_CDC)
+		return link_read(&usb.peer, port_peer(&usb), (void *)p_buf, (size_t)p_len);
+	if (port == BRICK_IO_SERIAL_SPP_MASTER)
+		return link_read(&spp.link, spp_peer(), (void *)p_buf, (size_t)p_len);
 	if (!serial_connected(port))
 		return 0;           /* nothing arrives from no far end: the reader waits */
 	if (io.serial_is_file || io.serial_is_uart)
@@ -561,6 +688,60 @@ static ER_UINT svc_serial_read(intptr_t port, intptr_t p_buf, intptr_t p_len, in
 	return got == 0 ? E_OBJ : (ER_UINT)got;
 }
 
+/*
+ * Starts the SPP master's attempt to connect to the slave at addr with the
+ * PIN pin (1 to BRICK_IO_MAX_PIN bytes): E_OK, at once if the link is up;
+ * E_CTX while an attempt is under way or from a non-task context; E_MACV
+ * for memory the caller may not read; E_PAR for a bad PIN.  The slave is
+ * --bt-master's socket whatever addr says: the simulated air has one slave.
+ */
+static ER_UINT svc_spp_connect(intptr_t p_addr, intptr_t p_pin, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
+{
+	const char *pin = (const char *)p_pin;
+	SYSTIM now;
+	uint_t n;
+
+	(void)p3; (void)p4; (void)p5; (void)cdmid;
+	if (sns_ctx() || spp.attempting)
+		return E_CTX;
+	if ((void *)p_addr == NULL || prb_mem((void *)p_addr, 6, TSK_SELF, TPM_READ) != E_OK || pin == NULL)
+		return E_MACV;
+	for (n = 0; n <= BRICK_IO_MAX_PIN; n++) {
+		if (prb_mem(pin + n, 1, TSK_SELF, TPM_READ) != E_OK)
+			return E_MACV;
+		if (pin[n] == '\0')
+			break;
+	}
+	if (n == 0 || n > BRICK_IO_MAX_PIN)
+		return E_PAR;
+	if (spp_peer())
+		return E_OK;
+	if (get_tim(&now) != E_OK)
+		return E_CTX;
+	if (spp.has_slave) {
+		spp.answer_fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+		if (spp.answer_fd >= 0 && connect(spp.answer_fd, (struct sockaddr *)&spp.slave, sizeof(spp.slave)) != 0) {
+			close(spp.answer_fd);
+			spp.answer_fd = -1;
+		}
+		if (spp.answer_fd >= 0)
+			(void)fcntl(spp.answer_fd, F_SETFL, O_NONBLOCK);
+	}
+	spp.attempting = true;
+	spp.attempt_ends = now + (spp.answer_fd >= 0 ? SPP_PAGE_ANSWER_MS : SPP_PAGE_TIMEOUT_MS);
+	return E_OK;
+}
+
+/* 1 while the SPP master's connection attempt is under way, else 0. */
+static ER_UINT svc_spp_connecting(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
+{
+	(void)p1; (void)p2; (void)p3; (void)p4; (void)p5; (void)cdmid;
+	if (sns_ctx())
+		return E_CTX;
+	spp_settle();
+	return spp.attempting ? 1 : 0;
+}
+
 static const struct rtos_svc_cfg brick_io_svcs[] = {
 	{ BRICK_IO_FN_FILE_SIZE, svc_file_size, 1024 },
 	{ BRICK_IO_FN_FILE_READ, svc_file_read, 1024 },
@@ -569,6 +750,8 @@ static const struct rtos_svc_cfg brick_io_svcs[] = {
 	{ BRICK_IO_FN_DIR_CLOSE, svc_dir_close, 1024 },
 	{ BRICK_IO_FN_SERIAL_WRITE, svc_serial_write, 1024 },
 	{ BRICK_IO_FN_SERIAL_READ, svc_serial_read, 1024 },
+	{ BRICK_IO_FN_SPP_CONNECT, svc_spp_connect, 1024 },
+	{ BRICK_IO_FN_SPP_CONNECTING, svc_spp_connecting, 1024 },
 };
 
 const struct rtos_cfg brick_io_cfg = {

@@ -336,6 +336,7 @@ static ER start_world(const struct ev3sim_run_opts *o)
 		struct ev3sim_tribot_cfg cfg = {
 			.left_port = left, .right_port = right,
 			.color_port = o->in[2] == EV3SIM_IN_COLOR ? 2 : -1,
+			.placements = o->placements, .nplacements = o->nplacements,
 		};
 
 		return ev3sim_tribot_start(&cfg);
@@ -401,7 +402,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	memset(r, 0, sizeof(*r));
 	if (app == NULL || !(o->seconds > 0 && o->seconds <= EV3SIM_MAX_SECONDS) ||
 	    o->nfaults > EV3SIM_RUN_MAX_FAULTS || o->nactions > EV3SIM_RUN_MAX_ACTIONS ||
-	    o->npushes > EV3SIM_MAX_PUSHES || (unsigned)o->robot > EV3SIM_ROBOT_TRIBOT ||
+	    o->npushes > EV3SIM_MAX_PUSHES || o->nplacements > EV3SIM_MAX_PLACEMENTS ||
+	    (unsigned)o->robot > EV3SIM_ROBOT_TRIBOT ||
 	    fabs(o->start_tilt_deg) >= 30.0 || !(o->gyro_noise_dps >= 0)) {
 		snprintf(err, errlen, "bad run options");
 		return E_PAR;
@@ -418,7 +420,9 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	run_includes[0] = app;
 	if (brick_io_setup(o->sd_dir, o->serial_path, err, errlen) != E_OK)
 		return E_PAR;
-	if (o->bt_path != NULL && brick_io_bt_listen(o->bt_path, err, errlen) != E_OK) {
+	if ((o->bt_path != NULL && brick_io_bt_listen(o->bt_path, err, errlen) != E_OK) ||
+	    (o->usb_path != NULL && brick_io_usb_listen(o->usb_path, err, errlen) != E_OK) ||
+	    (o->bt_master_path != NULL && brick_io_bt_master(o->bt_master_path, err, errlen) != E_OK)) {
 		brick_io_teardown();
 		return E_PAR;
 	}

@@ -35,7 +35,8 @@ static const char run_usage[] =
 	"\n"
 	"  --lib-dir DIR        EV3RT SDK libraries the app's Makefile.inc includes from\n"
 	"                       $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile (e.g. the SDK's\n"
-	"                       common/library, with libcpp-ev3); before the others\n"
+	"                       common/library), beside ev3lx's own (libcpp-ev3), whose\n"
+	"                       library of the same name they replace; before the others\n"
 	"  --kernel K           the kernel profile the app is written for: hrp2 (EV3RT 0.x,\n"
 	"                       time in ms), hrp3 (EV3RT 1.x, time in us) or auto (default:\n"
 	"                       hrp3 when app.cfg has a CRE_CYC or CRE_ALM in HRP3's\n"
@@ -60,6 +61,9 @@ static const char run_usage[] =
 	"  --gyro-noise SIGMA   white noise on every gyro sample, deg/s (default 0.15, an EV3\n"
 	"                       gyro at rest, for the gyro boy's gyro; 0 for one --in names)\n"
 	"  --push T:NM          gyroboy: pitch torque NM (N m) for 100 ms at T; may repeat\n"
+	"  --place T:MM         tribot: the hand puts the robot down MM mm to its left\n"
+	"                       (negative: right) at T, same heading (e.g. to show a\n"
+	"                       calibrating app white, then black); may repeat\n"
 	"  --fault SPEC         inject a fault (as ev3sim balance --help lists; uart faults go to\n"
 	"                       the first UART sensor, times from power-on); may repeat\n"
 	"  --sd DIR             the SD card: ev3_memfile_load and ev3_sdcard_* see DIR (and\n"
@@ -70,6 +74,12 @@ static const char run_usage[] =
 	"  --bt PATH            Bluetooth SPP: a Unix socket at PATH; a program connected to it\n"
 	"                       is the paired PC or brick (EV3_SERIAL_BT, SIO_PORT_BT,\n"
 	"                       ev3_bluetooth_is_connected)\n"
+	"  --bt-master PATH     the remote slave the brick connects to as SPP master\n"
+	"                       (SIO_PORT_SPP_MASTER_TEST): a program listening on a Unix\n"
+	"                       socket at PATH, e.g. another ev3sim run's --bt\n"
+	"  --usb PATH           USB CDC: a Unix socket at PATH; a program connected to it is\n"
+	"                       the PC the brick is plugged into (EV3_SERIAL_USB_CDC,\n"
+	"                       SIO_PORT_USB_CDC, ev3_usb_cdc_is_connected)\n"
 	"  --trace FILE.vcd     host_sim's signal trace\n"
 	"  --audio FILE.wav     what the speaker played (32 kHz, 16-bit mono)\n"
 	"  --lcd FILE.png       the display's last frame (178 x 128, grey)\n"
@@ -191,6 +201,16 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		    !ev3sim_parse_double(tail, &nm) || fabs(nm) > MAX_PUSH_NM)
 			return usage("--push: bad value '%s' (T:NM, |NM| <= 5 N m)", v);
 		o->pushes[o->npushes++].torque_nm = nm;
+	} else if (strcmp(name, "--place") == 0) {
+		double mm;
+
+		if (o->nplacements == EV3SIM_MAX_PLACEMENTS)
+			return usage("%s: too many placements (16)", "--place");
+		if (!split_colon(v, head, sizeof(head), &tail) || tail == NULL ||
+		    !ev3sim_parse_time(head, &o->placements[o->nplacements].t_ns) ||
+		    !ev3sim_parse_double(tail, &mm) || !(fabs(mm) <= EV3SIM_MAX_PLACE_MM))
+			return usage("--place: bad value '%s' (T:MM, |MM| <= 2000)", v);
+		o->placements[o->nplacements++].left_mm = mm;
 	} else if (strcmp(name, "--fault") == 0) {
 		if (o->nfaults == EV3SIM_RUN_MAX_FAULTS)
 			return usage("%s: too many faults (16)", "--fault");
@@ -225,6 +245,10 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		o->serial_path = v;
 	} else if (strcmp(name, "--bt") == 0) {
 		o->bt_path = v;
+	} else if (strcmp(name, "--bt-master") == 0) {
+		o->bt_master_path = v;
+	} else if (strcmp(name, "--usb") == 0) {
+		o->usb_path = v;
 	} else if (strcmp(name, "--csv") == 0) {
 		*csv_path = v;
 	} else {

@@ -43,6 +43,8 @@ static struct tribot {
 	double angle_deg[2];            /* shaft angles at the last step */
 	double x, y, heading;           /* m, m, rad */
 	double last_s;                  /* arc position of the spot at the last step */
+	struct ev3sim_placement placements[EV3SIM_MAX_PLACEMENTS];  /* by time */
+	unsigned nplacements, next_placement;
 	struct ev3sim_tribot_sample now;
 } tb;
 
@@ -108,6 +110,21 @@ static double rolling_load(double dps)
 	return full * (s > 1.0 ? 1.0 : s < -1.0 ? -1.0 : s);
 }
 
+/* The hand's placements due by t: the robot moves sideways, and its
+ * progress along the line starts again from where it is put down (the hand
+ * carried it, it did not drive there). */
+static void apply_placements(uint64_t t)
+{
+	while (tb.next_placement < tb.nplacements && tb.placements[tb.next_placement].t_ns <= t) {
+		double left_m = tb.placements[tb.next_placement++].left_mm / 1000.0;
+
+		tb.x -= left_m * sin(tb.heading);
+		tb.y += left_m * cos(tb.heading);
+		tb.last_s = arc_position(tb.x + SENSOR_AHEAD_M * cos(tb.heading),
+					 tb.y + SENSOR_AHEAD_M * sin(tb.heading));
+	}
+}
+
 /* Event: one physics step. */
 static void tribot_step(void *arg)
 {
@@ -129,6 +146,7 @@ static void tribot_step(void *arg)
 	tb.x += ds * cos(tb.heading + dpsi / 2.0);
 	tb.y += ds * sin(tb.heading + dpsi / 2.0);
 	tb.heading += dpsi;
+	apply_placements(t);
 	sx = tb.x + SENSOR_AHEAD_M * cos(tb.heading);
 	sy = tb.y + SENSOR_AHEAD_M * sin(tb.heading);
 	err = line_error(sx, sy);
@@ -159,10 +177,26 @@ ER ev3sim_tribot_start(const struct ev3sim_tribot_cfg *cfg)
 	unsigned ports[2];
 
 	if (cfg == NULL || cfg->left_port >= 4 || cfg->right_port >= 4 ||
-	    cfg->left_port == cfg->right_port || cfg->color_port >= 4)
+	    cfg->left_port == cfg->right_port || cfg->color_port >= 4 ||
+	    cfg->nplacements > EV3SIM_MAX_PLACEMENTS || (cfg->nplacements > 0 && cfg->placements == NULL))
 		return E_PAR;
+	for (unsigned i = 0; i < cfg->nplacements; i++)
+		if (!(fabs(cfg->placements[i].left_mm) <= EV3SIM_MAX_PLACE_MM))
+			return E_PAR;
 	ev3sim_tribot_stop();
 	tb = (struct tribot){ .cfg = *cfg };
+	/* by time, placements at one time in their given order (insertion sort) */
+	for (unsigned i = 0; i < cfg->nplacements; i++) {
+		unsigned j = i;
+
+		while (j > 0 && tb.placements[j - 1].t_ns > cfg->placements[i].t_ns) {
+			tb.placements[j] = tb.placements[j - 1];
+			j--;
+		}
+		tb.placements[j] = cfg->placements[i];
+	}
+	tb.nplacements = cfg->nplacements;
+	tb.cfg.placements = NULL;       /* the caller's array need not outlive the call */
 	ports[0] = cfg->left_port;
 	ports[1] = cfg->right_port;
 	for (int i = 0; i < 2; i++) {

@@ -157,13 +157,32 @@ void hrtimer_restart(struct hrtimer *timer)
 		requeue_at(timer, timer->lx_expires);
 }
 
+/*
+ * False (after a report) if timer was never initialised: Linux's cancel reads
+ * timer->base, which hrtimer_init sets — NULL in a timer never initialised, an
+ * oops on 6.1 and an endless loop in 2.6's lock_hrtimer_base.  LEGO's exit
+ * code cancels its timer even when its init's misc_register failed and the
+ * timer was never set up.
+ */
+static bool cancellable(const struct hrtimer *timer, const char *what)
+{
+	if (timer == NULL)
+		return false;
+	if (timer->lx_magic != HRTIMER_MAGIC) {
+		lx_report(what, NULL, 0, "the timer was never initialised (hrtimer_init/hrtimer_setup): "
+			  "Linux dereferences its NULL base here and crashes (6.1) or spins for ever (2.6)");
+		return false;
+	}
+	return true;
+}
+
 /* Dequeues timer: 1 if it was queued, 0 if inactive, -1 while its callback runs. */
 int hrtimer_try_to_cancel(struct hrtimer *timer)
 {
 	int ret;
 	SIL_PRE_LOC;
 
-	if (timer == NULL || timer->lx_magic != HRTIMER_MAGIC)
+	if (!cancellable(timer, "hrtimer_try_to_cancel"))
 		return 0;
 	SIL_LOC_INT();
 	if (queue.running == timer) {
@@ -184,7 +203,7 @@ int lx_hrtimer_cancel_at(struct hrtimer *timer, const char *file, int line)
 	int ret;
 	SIL_PRE_LOC;
 
-	if (timer == NULL || timer->lx_magic != HRTIMER_MAGIC)
+	if (!cancellable(timer, "hrtimer_cancel"))
 		return 0;
 	SIL_LOC_INT();
 	if (queue.running != timer) {

@@ -71,11 +71,25 @@ static void line_mask(unsigned int irq)
 	lx_mach_irq_chip(irq)->irq_mask(irq);
 }
 
+int lx_irq_line_unmask(unsigned int irq)
+{
+	return lx_irq_valid(irq) ? line_unmask(irq) : -EINVAL;
+}
+
+void lx_irq_line_mask(unsigned int irq)
+{
+	if (lx_irq_valid(irq))
+		line_mask(irq);
+}
+
 bool lx_handle_irq(unsigned int irq)
 {
 	struct lx_irq_desc *desc = &irq_descs[irq];
 	struct irqaction *action = desc->action;
 	unsigned int ret = IRQ_NONE;
+
+	if (lx_fiq_take(irq))
+		return true;            /* a channel mapped to nFIQ: the FIQ handler ran (or is pending) */
 
 	if (unlikely(!action || desc->depth)) {
 		/* An edge latched just before the line was masked: enable_irq replays it. */
@@ -404,6 +418,7 @@ void lx_io_boot(intptr_t exinf)
 {
 	(void)exinf;
 	irq_boot();
+	lx_fiq_boot();
 	lx_mach_boot();
 	lx_resource_boot();
 	lx_devfs_boot();

@@ -125,6 +125,23 @@ static void apply_boot_args(const char *args)
 	}
 }
 
+/* True if a module other than mod with mod's name is loaded (its init ran or
+ * runs, and did not fail): Linux refuses a second module of one name. */
+static bool name_loaded(const struct module *mod)
+{
+	size_t i, n = initcall_count();
+
+	for (i = 0; i < n; i++) {
+		const struct module *other = __start_lx_initcalls[i]->module;
+
+		if (other != NULL && other != mod && strcmp(other->name, mod->name) == 0 &&
+		    (other->state == MODULE_STATE_COMING || other->state == MODULE_STATE_LIVE ||
+		     other->state == MODULE_STATE_GOING))
+			return true;
+	}
+	return false;
+}
+
 /* Runs each module_init once in order; the number that failed. */
 int lx_modules_init(void)
 {
@@ -139,6 +156,17 @@ int lx_modules_init(void)
 		mod = c->module;
 		if (mod == NULL || mod->state != MODULE_STATE_UNFORMED)
 			continue;
+		if (name_loaded(mod)) {
+			/* as insmod of a second module with one KBUILD_MODNAME
+			 * (load_module: "module is already loaded"); its
+			 * parameters stay the first one's */
+			mod->state = MODULE_STATE_FAILED;
+			mod->init_result = -EEXIST;
+			pr_err("module %s: a module of that name is already loaded; this one is refused (-EEXIST), "
+			       "its init and exit are not called\n", mod->name);
+			failed++;
+			continue;
+		}
 		mod->state = MODULE_STATE_COMING;
 		ret = c->init();
 		mod->init_result = ret;
@@ -154,8 +182,17 @@ int lx_modules_init(void)
 	/* Modules with only a module_exit are live from the start, as in Linux. */
 	for (i = 0; i < n; i++) {
 		mod = __start_lx_initcalls[i]->module;
-		if (mod != NULL && mod->state == MODULE_STATE_UNFORMED)
+		if (mod != NULL && mod->state == MODULE_STATE_UNFORMED) {
+			if (name_loaded(mod)) {
+				mod->state = MODULE_STATE_FAILED;
+				mod->init_result = -EEXIST;
+				pr_err("module %s: a module of that name is already loaded; this one is refused (-EEXIST)\n",
+				       mod->name);
+				failed++;
+				continue;
+			}
 			make_live(mod);
+		}
 	}
 	return failed;
 }
@@ -207,20 +244,25 @@ void lx_modules_reset(void)
 	}
 }
 
-/* The linked module called name, or NULL. */
+/* The linked module called name (the loaded one where several share it), or NULL. */
 struct module *lx_module_find(const char *name)
 {
 	size_t i, n = initcall_count();
+	struct module *found = NULL;
 
 	if (name == NULL)
 		return NULL;
 	for (i = 0; i < n; i++) {
 		struct module *mod = __start_lx_initcalls[i]->module;
 
-		if (mod != NULL && strcmp(mod->name, name) == 0)
+		if (mod == NULL || strcmp(mod->name, name) != 0)
+			continue;
+		if (mod->state == MODULE_STATE_LIVE || mod->state == MODULE_STATE_COMING)
 			return mod;
+		if (found == NULL)
+			found = mod;
 	}
-	return NULL;
+	return found;
 }
 
 /* The module's name; "kernel" for built-in code. */
@@ -333,6 +375,24 @@ static int store_param(const struct lx_module_param *p, const char *value)
 }
 
 /* Sets a module parameter from text before the module is initialised. */
+/* Sets the same parameter of every other module of p's name, as insmod's
+ * arguments reach whichever of them loads (the others are refused,
+ * -EEXIST): which one that is is only known at boot.  The value was valid
+ * for p, whose type they share when built from one driver. */
+static void store_in_namesakes(const struct lx_module_param *p, const char *value)
+{
+	size_t i, n = param_count();
+
+	for (i = 0; i < n; i++) {
+		const struct lx_module_param *q = __start_lx_module_params[i];
+
+		if (q != p && strcmp(q->module, p->module) == 0 && strcmp(q->name, p->name) == 0 &&
+		    store_param(q, value) != 0)
+			pr_err("module %s: bad value \"%s\" for parameter %s of a module of the same name\n",
+			       q->module, value, q->name);
+	}
+}
+
 ER lx_module_param_set(const char *module, const char *param, const char *value)
 {
 	const struct lx_module_param *p;
@@ -350,6 +410,7 @@ ER lx_module_param_set(const char *module, const char *param, const char *value)
 		pr_err("module %s: bad value \"%s\" for parameter %s\n", module, value, param);
 		return E_PAR;
 	}
+	store_in_namesakes(p, value);
 	return E_OK;
 }
 

@@ -29,12 +29,17 @@
 #   P_SLIBS     the SDK libraries it included, and P_SLIB_SRCS_<lib> each.
 # An SDK library is included from $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile and
 # includes $(EV3RT_SDK_LIB_DIR)/../Makefile.slib in turn: SDKDIR/library
-# holds a link to each library of EV3RT_LIB_DIR, SDKDIR/Makefile.slib is
-# ev3lx's (mk/ev3rt/Makefile.slib).  A library the app includes that
-# EV3RT_LIB_DIR lacks is an error naming it.
+# holds a link to each library of ev3lx's own (api/library: libcpp-ev3, as
+# EV3RT's release SDKs carry it) and of EV3RT_LIB_DIR, whose library of a
+# name ev3lx has replaces ev3lx's; SDKDIR/Makefile.slib is ev3lx's
+# (mk/ev3rt/Makefile.slib).  A library the app includes that neither has is
+# an error naming it.
 .SUFFIXES:
 MAKEFLAGS += --no-builtin-rules
 comma := ,
+
+# ev3lx's SDK libraries, beside this file's tree
+EV3LX_LIB_DIR := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))../../api/library)
 
 $(if $(APP),,$(error appinfo.mk: APP is not set))
 $(if $(and $(PREFIX),$(SDKDIR)),,$(error appinfo.mk: PREFIX and SDKDIR must be set))
@@ -67,8 +72,9 @@ EV3RT_SDK_LIBS :=
 # the examples; ev3sim runs of several apps run side by side), and the
 # build compiles the libraries' sources through these links: nothing is
 # removed that another make may be reading, every file and link is replaced
-# in one step (rename), and only links to libraries EV3RT_LIB_DIR no longer
-# has are dropped.  A link is made under a hidden name (.NAME.PID) before its
+# in one step (rename), and only links to libraries neither EV3LX_LIB_DIR
+# nor EV3RT_LIB_DIR has are dropped (a library of both is linked from
+# EV3RT_LIB_DIR only, so the link never changes between two makes).  A link is made under a hidden name (.NAME.PID) before its
 # rename: the sweep's glob never sees it, so one make's sweep cannot remove
 # the link another make is about to rename ('mv: cannot stat
 # .../library/running_average.3504' failed ev3sim-audio-check).
@@ -77,11 +83,20 @@ $(if $(shell set -e; mkdir -p '$(EV3RT_SDK_LIB_DIR)'; \
 	mv -f '$(SDKDIR)/Makefile.slib.'$$$$ '$(SDKDIR)/Makefile.slib'; \
 	for l in '$(EV3RT_SDK_LIB_DIR)'/*; do \
 		[ -L "$$l" ] || continue; \
+		[ -d '$(EV3LX_LIB_DIR)'/"$${l##*/}" ] || \
 		$(if $(EV3RT_LIB_DIR),[ -d '$(EV3RT_LIB_DIR)'/"$${l##*/}" ] ||) rm -f "$$l"; \
 	done; \
+	link_lib() { \
+		ln -sfn "$$1" '$(EV3RT_SDK_LIB_DIR)'/."$$2".$$$$; \
+		mv -fT '$(EV3RT_SDK_LIB_DIR)'/."$$2".$$$$ '$(EV3RT_SDK_LIB_DIR)'/"$$2"; \
+	}; \
+	for d in '$(EV3LX_LIB_DIR)'/*/; do \
+		[ -d "$$d" ] || continue; n=$$(basename "$$d"); \
+		$(if $(EV3RT_LIB_DIR),[ -d '$(EV3RT_LIB_DIR)'/"$$n" ] && continue;) \
+		link_lib "$$d" "$$n"; \
+	done; \
 	$(if $(EV3RT_LIB_DIR),for d in '$(EV3RT_LIB_DIR)'/*/; do \
-		n=$$(basename "$$d"); ln -sfn "$$d" '$(EV3RT_SDK_LIB_DIR)'/."$$n".$$$$; \
-		mv -fT '$(EV3RT_SDK_LIB_DIR)'/."$$n".$$$$ '$(EV3RT_SDK_LIB_DIR)'/"$$n"; \
+		link_lib "$$d" "$$(basename "$$d")"; \
 	done;) \
 	echo ok),,$(error cannot prepare $(SDKDIR)))
 wanted_libs := $(shell sed -n 's|.*$$(EV3RT_SDK_LIB_DIR)/\([^/]*\)/Makefile.*|\1|p' '$(APP)/Makefile.inc' 2>/dev/null)

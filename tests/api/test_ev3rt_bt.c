@@ -3,7 +3,8 @@
  * at the far end (ev3sim's --bt: a Unix socket): ev3_bluetooth_is_connected
  * follows the peer, ev3_serial_open_file(EV3_SERIAL_BT) and SIO_PORT_BT
  * carry its bytes both ways, and when the peer goes, the app's writes are
- * lost and it is disconnected until another connects.
+ * lost and it is disconnected until another connects.  USB CDC (--usb)
+ * the same way.
  */
 #define _GNU_SOURCE
 #include <stdlib.h>
@@ -42,6 +43,27 @@ static void alone_body(void)
 	   "the peer's leaving ends the stream once, as on EV3RT (an app's read loop ends)");
 	connected_seen = ev3_bluetooth_is_connected();
 	ok(bt != NULL && fprintf(bt, "nobody hears this\n") > 0, "writing with no peer takes the bytes");
+}
+
+static void usb_alone_body(void)
+{
+	T_SERIAL_RPOR rpor;
+
+	connected_seen = ev3_usb_cdc_is_connected();
+	is_int(serial_ref_por(SIO_PORT_USB_CDC, &rpor), E_OBJ, "SIO_PORT_USB_CDC is closed with no PC");
+}
+
+static void usb_body(void)
+{
+	FILE *usb = ev3_serial_open_file(EV3_SERIAL_USB_CDC);
+	T_SERIAL_RPOR rpor;
+	char line[32] = "";
+
+	connected_seen = ev3_usb_cdc_is_connected();
+	is_int(serial_ref_por(SIO_PORT_USB_CDC, &rpor), E_OK, "SIO_PORT_USB_CDC is open with the PC there");
+	ok(usb != NULL && fgets(line, sizeof(line), usb) != NULL, "the app reads the PC's line over USB");
+	strcpy(got_line, line);
+	ok(usb != NULL && fprintf(usb, "pong %s", line) > 0, "answers with fprintf");
 }
 
 static int connect_to(const char *path)
@@ -87,6 +109,22 @@ int main(void)
 	ok(!connected_seen, "ev3_bluetooth_is_connected: false once the peer is gone");
 	brick_io_teardown();
 	ok(access(sock_path, F_OK) != 0, "the socket's file is removed at the end");
+
+	is_int(brick_io_setup(NULL, NULL, err, sizeof(err)), E_OK, "setup again");
+	is_int(brick_io_usb_listen(sock_path, err, sizeof(err)), E_OK, "USB CDC listens at %s", sock_path);
+	ok(at_run(NULL, usb_alone_body, 1, 10), "the app ran with no PC on USB");
+	ok(!connected_seen, "ev3_usb_cdc_is_connected: false with no PC");
+	pc = connect_to(sock_path);
+	ok(pc >= 0 && write(pc, "usb\n", 4) == 4, "a PC connects to USB and sends a line");
+	ok(at_run(NULL, usb_body, 1, 10), "the app ran with the PC on USB");
+	ok(connected_seen, "ev3_usb_cdc_is_connected: true");
+	is_str(got_line, "usb\n", "the line arrived on EV3_SERIAL_USB_CDC");
+	n = pc >= 0 ? read(pc, answer, sizeof(answer) - 1) : -1;
+	answer[n > 0 ? n : 0] = '\0';
+	is_str(answer, "pong usb\n", "the PC reads the answer");
+	if (pc >= 0)
+		close(pc);
+	brick_io_teardown();
 
 	is_int(brick_io_setup(NULL, NULL, err, sizeof(err)), E_OK, "setup again");
 	is_int(brick_io_bt_listen(dir, err, sizeof(err)), E_OBJ, "--bt on a directory: E_OBJ");

@@ -41,10 +41,11 @@ said() {
 		tail -n 1 "$WORK/out.txt" | grep -q " warnings=0 errors=0 bugs=0 "
 }
 
-echo "1..13"
+echo "1..15"
 root=$(dirname "$(dirname "$(dirname "$EV3SIM")")")
 rm -rf "$WORK" "$root"/build/host/ev3rt/run_x__info_INJECTED_y-* "$root"/build/host/ev3rt/run_it_s_my_app___really_-* \
-	"$root"/build/host/ev3rt/run_pathcheck_* "$root"/build/host/ev3rt/run_uses_lib-*
+	"$root"/build/host/ev3rt/run_pathcheck_* "$root"/build/host/ev3rt/run_uses_lib-* \
+	"$root"/build/host/ev3rt/run_uses_libcpp-* "$root"/build/host/ev3rt/run_uses_own_libcpp-*
 mkdir -p "$WORK"
 
 dir="$WORK/x\$(info INJECTED)y"
@@ -74,6 +75,34 @@ sed 's|^#define SAY_WHAT .*|#include "greet.h"\n#define SAY_WHAT greeting()|' "$
 printf 'include $(EV3RT_SDK_LIB_DIR)/greet/Makefile\n' > "$dir/Makefile.inc"
 "$EV3SIM" run "$dir" --lib-dir "$lib" --seconds 1 > "$WORK/out.txt" 2>&1 && said "from greet"
 ok $? "--lib-dir with a space and a '\$' in its path"
+
+# ev3lx's own SDK libraries (api/library: libcpp-ev3) need no --lib-dir, and
+# --lib-dir's are seen beside them: a C++ app on libcpp-ev3's Clock and greet
+dir="$WORK/uses libcpp"
+mkdir -p "$dir"
+cp "$SAY/app.cfg" "$dir/"
+printf '#ifdef __cplusplus\nextern "C" {\n#endif\n#include "ev3api.h"\n#include "target_test.h"\n#define MAIN_PRIORITY (TMIN_APP_TPRI + 1)\n#ifndef TOPPERS_MACRO_ONLY\nextern void main_task(intptr_t exinf);\nextern const char *greeting(void);\n#endif\n#ifdef __cplusplus\n}\n#endif\n' \
+	> "$dir/app.h"
+printf '#include "app.h"\n#include "Clock.h"\nvoid main_task(intptr_t exinf)\n{\n\tev3api::Clock clock;\n\n\tclock.sleep(250);\n\tsyslog(LOG_NOTICE, "say: %%s after %%u ms", greeting(), (unsigned)clock.now());\n}\n' \
+	> "$dir/app.cpp"
+printf 'SRCLANG := c++\ninclude $(EV3RT_SDK_LIB_DIR)/greet/Makefile\ninclude $(EV3RT_SDK_LIB_DIR)/libcpp-ev3/Makefile\n' > "$dir/Makefile.inc"
+"$EV3SIM" run "$dir" --lib-dir "$lib" --seconds 1 > "$WORK/out.txt" 2>&1 && said "from greet after 250 ms"
+ok $? "ev3lx's libcpp-ev3 is there without --lib-dir, and --lib-dir's greet beside it"
+
+# a --lib-dir library named like one of ev3lx's replaces it
+lib2="$WORK/sdk2"
+mkdir -p "$lib2/libcpp-ev3/src" "$lib2/libcpp-ev3/include"
+printf 'THIS_LIB_NAME := libcpp-ev3\nTHIS_LIB_OBJS := mine.o\ninclude $(EV3RT_SDK_LIB_DIR)/../Makefile.slib\n' \
+	> "$lib2/libcpp-ev3/Makefile"
+printf 'const char *greeting(void);\n' > "$lib2/libcpp-ev3/include/greet.h"
+printf '#include "greet.h"\nconst char *greeting(void) { return "from the given libcpp-ev3"; }\n' \
+	> "$lib2/libcpp-ev3/src/mine.c"
+dir="$WORK/uses own libcpp"
+copy_say "$dir"
+sed 's|^#define SAY_WHAT .*|#include "greet.h"\n#define SAY_WHAT greeting()|' "$SAY/app.h" > "$dir/app.h"
+printf 'include $(EV3RT_SDK_LIB_DIR)/libcpp-ev3/Makefile\n' > "$dir/Makefile.inc"
+"$EV3SIM" run "$dir" --lib-dir "$lib2" --seconds 1 > "$WORK/out.txt" 2>&1 && said "from the given libcpp-ev3"
+ok $? "a --lib-dir library of the name of one of ev3lx's replaces it"
 
 copy_say "$WORK/a/pathcheck_twin" "from a"
 copy_say "$WORK/b/pathcheck_twin" "from b"

@@ -56,6 +56,19 @@ ER brick_io_card_path(const char *path, enum brick_io_card_use use, char **host)
  * or E_PAR / E_OBJ with the reason in err. */
 ER brick_io_bt_listen(const char *path, char *err, size_t errlen);
 
+/* After brick_io_setup: USB CDC's far end (the PC the brick is plugged
+ * into) is a Unix socket at path, as brick_io_bt_listen's for Bluetooth:
+ * while a program is connected, ev3_usb_cdc_is_connected is true and
+ * EV3_SERIAL_USB_CDC (and SIO_PORT_USB_CDC) carry its bytes. */
+ER brick_io_usb_listen(const char *path, char *err, size_t errlen);
+
+/* After brick_io_setup: the remote slave the brick's Bluetooth SPP master
+ * (SIO_PORT_SPP_MASTER_TEST) connects to is a program listening on a Unix
+ * socket at path (another ev3sim's --bt among them); the socket need not
+ * exist yet, each connection attempt looks for it.  E_OK, or E_PAR with
+ * the reason in err. */
+ER brick_io_bt_master(const char *path, char *err, size_t errlen);
+
 /* Closes what brick_io_setup opened (directories the app left open too). */
 void brick_io_teardown(void);
 

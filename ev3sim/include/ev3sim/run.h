@@ -25,6 +25,7 @@
 #include "ev3sim/apps.h"
 #include "ev3sim/fault_spec.h"
 #include "ev3sim/robot.h"
+#include "ev3sim/tribot.h"
 
 #define EV3SIM_RUN_MAX_FAULTS   16U
 #define EV3SIM_RUN_MAX_ACTIONS  16U
@@ -57,6 +58,8 @@ struct ev3sim_run_opts {
 	double gyro_noise_dps;      /* the gyro's sample noise (a gyro-noise fault overrides it) */
 	struct ev3sim_push pushes[EV3SIM_MAX_PUSHES];              /* gyroboy, t_ns from boot */
 	unsigned npushes;
+	struct ev3sim_placement placements[EV3SIM_MAX_PLACEMENTS]; /* tribot, t_ns from boot */
+	unsigned nplacements;
 	const char *trace_path;     /* VCD, NULL: none */
 	const char *audio_path;     /* WAV of what the speaker played, NULL: none */
 	const char *lcd_path;       /* PNG of the display's last frame, NULL: none */
@@ -64,6 +67,8 @@ struct ev3sim_run_opts {
 	const char *sd_dir;         /* the SD card's directory, NULL: no card (brick_io.h) */
 	const char *serial_path;    /* the serial port's far end, NULL: not connected */
 	const char *bt_path;        /* Bluetooth SPP's far end: a Unix socket there (brick_io.h), NULL: none */
+	const char *bt_master_path; /* the SPP master's remote slave: a Unix socket there, NULL: none */
+	const char *usb_path;       /* USB CDC's far end: a Unix socket there, NULL: none */
 	FILE *csv;                  /* the robot's state every 10 ms, NULL: none */
 	bool quiet;                 /* the console shows warnings and worse only */
 	/* every syslog line of the run ("WARNING: text"), NULL: none */

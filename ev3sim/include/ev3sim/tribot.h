@@ -32,9 +32,22 @@
 #define EV3SIM_MAT_WHITE_PCT    64
 #define EV3SIM_MAT_BLACK_PCT    5
 
+/* The hand lifts the robot and puts it down again, as a user does to show
+ * an app's calibration white and black: at t_ns (from boot) the robot moves
+ * left_mm to its left (negative: right), keeping its heading. */
+struct ev3sim_placement {
+	uint64_t t_ns;
+	double left_mm;
+};
+
+#define EV3SIM_MAX_PLACEMENTS   16U
+#define EV3SIM_MAX_PLACE_MM     2000.0      /* how far the hand moves the robot at most */
+
 struct ev3sim_tribot_cfg {
 	unsigned left_port, right_port;     /* output ports 0..3 of the wheel motors */
 	int color_port;                     /* input port 0..3 of the downward colour sensor, -1: none */
+	const struct ev3sim_placement *placements;  /* any order */
+	unsigned nplacements;               /* at most EV3SIM_MAX_PLACEMENTS */
 };
 
 /* One physics step's state. */
@@ -50,7 +63,7 @@ struct ev3sim_tribot_sample {
 };
 
 /* Starts the physics on a booted board whose wheel motors (and colour sensor)
- * are attached: E_OBJ if one is missing, E_PAR for bad ports. */
+ * are attached: E_OBJ if one is missing, E_PAR for bad ports or placements. */
 ER ev3sim_tribot_start(const struct ev3sim_tribot_cfg *cfg);
 /* Stops the physics events (before hs_sim_shutdown). */
 void ev3sim_tribot_stop(void);

@@ -57,6 +57,7 @@ struct hs_access {
 	uint32_t offset;            /* byte offset of this element in the region */
 	unsigned width;             /* width of the CPU access in bytes: 1, 2 or 4 */
 	bool write;                 /* direction */
+	unsigned lane;              /* byte of the element the access starts at (0: its low byte) */
 };
 
 /*

@@ -467,7 +467,7 @@ static bool region_build_routes(struct hs_region *r)
 						.wmask = width_mask(width),
 						.bits = write || e->kind == HS_COR ? lane_bits : 0U,
 						.shift = (uint8_t)(8U * lane),
-						.acc = { e->reg, e->index, e->offset, width, write != 0 },
+						.acc = { e->reg, e->index, e->offset, width, write != 0, lane },
 						.r = r,
 						.e = e,
 						.phys = r->cfg.phys + e->offset + lane,
@@ -698,6 +698,39 @@ static inline struct hs_elem *elem_any(const struct hs_region *r, uint32_t offse
 	else
 		rtos_host_bug("host_sim", "%s: no register at %s+0x%03" PRIx32, what, r->cfg.name, offset);
 	return NULL;
+}
+
+/* The widest of 4, 2, 1 bytes that is at most n and to which addr is aligned. */
+static unsigned piece_width(uintptr_t addr, unsigned n)
+{
+	unsigned w = n >= 4U ? 4U : n >= 2U ? 2U : 1U;
+
+	while (w > 1U && (addr & (w - 1U)))
+		w /= 2U;
+	return w;
+}
+
+unsigned hs_space_split(uintptr_t addr, unsigned width, bool write, struct hs_piece *pieces)
+{
+	unsigned count = 0, done = 0;
+
+	while (done < width) {
+		uintptr_t a = addr + done, phys = hs_space_to_phys(a);
+		struct hs_region *r = phys ? region_at(phys) : NULL;
+		struct hs_elem *e = NULL;
+		unsigned lane = 0, w, n = width - done;
+
+		if (r && phys - r->cfg.phys < r->map_len)
+			e = elem_lane_at(r, (uint32_t)(phys - r->cfg.phys), write, &lane);
+		if (e && done == 0 && lane + width <= e->width) {
+			pieces[0] = (struct hs_piece){ .addr = addr, .width = width };   /* inside one register */
+			return 1;
+		}
+		w = piece_width(a, e && e->width - lane < n ? e->width - lane : n);
+		pieces[count++] = (struct hs_piece){ .addr = a, .width = w };
+		done += w;
+	}
+	return count;
 }
 
 uint32_t hs_reg_get(const struct hs_region *r, uint32_t offset)

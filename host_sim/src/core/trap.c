@@ -14,9 +14,13 @@
  * (and, for arithmetic, the flags, computed by the same instruction on the
  * host) in the saved context and resumes after the instruction.  A read-
  * modify-write is one read and one write on the bus, as on the ARM (LDR,
- * ORR, STR); compares and bit tests only read.  Faults outside
- * the window space go to the handler installed before ours (ASan's, or the
- * default action).
+ * ORR, STR); compares and bit tests only read.  It also takes the 8-byte
+ * movs and the SSE moves gcc makes of adjacent stores through a non-volatile
+ * pointer (store merging, SLP vectorization).  An access wider than its
+ * register or spanning registers is performed as the per-register accesses
+ * an ARM926 issues, lowest address first (hs_space_split; the ARM path too).
+ * Faults outside the window space go to the handler installed before ours
+ * (ASan's, or the default action).
  *
  * On ARM Linux (the arm926 configuration under qemu-arm, whose `unsigned
  * long` and pointers are the target's 32 bits) the handler performs the
@@ -44,6 +48,61 @@
 
 static struct sigaction previous;
 static bool installed;
+
+#if defined(__linux__) && (defined(__x86_64__) || defined(__arm__))
+/* Stores width bytes (little-endian) at window address addr as the
+ * per-register stores an ARM926 issues for them, lowest address first: gcc
+ * merges adjacent register stores at -O2 (an 8-byte store over two 32-bit
+ * registers, a 4-byte one over two 16-bit registers, an SSE store over
+ * four), which the source wrote, and the ARM performs, one register each. */
+static void split_write(uintptr_t addr, unsigned width, const uint8_t *bytes)
+{
+	struct hs_piece pieces[HS_MAX_SPLIT_WIDTH];
+	unsigned n = hs_space_split(addr, width, true, pieces), at = 0;
+
+	for (unsigned i = 0; i < n; i++) {
+		uint32_t v = 0;
+
+		for (unsigned k = 0; k < pieces[i].width; k++)
+			v |= (uint32_t)bytes[at + k] << (8U * k);
+		sil_host_write((volatile void *)pieces[i].addr, pieces[i].width, v);
+		at += pieces[i].width;
+	}
+}
+
+/* Loads width bytes at window address addr as the per-register loads an
+ * ARM926 issues, lowest address first (split_write's reads). */
+static void split_read(uintptr_t addr, unsigned width, uint8_t *bytes)
+{
+	struct hs_piece pieces[HS_MAX_SPLIT_WIDTH];
+	unsigned n = hs_space_split(addr, width, false, pieces), at = 0;
+
+	for (unsigned i = 0; i < n; i++) {
+		uint32_t v = sil_host_read((const volatile void *)pieces[i].addr, pieces[i].width);
+
+		for (unsigned k = 0; k < pieces[i].width; k++)
+			bytes[at + k] = (uint8_t)(v >> (8U * k));
+		at += pieces[i].width;
+	}
+}
+
+/* split_write of a value of width 1, 2 or 4 bytes. */
+static void split_write32(uintptr_t addr, unsigned width, uint32_t value)
+{
+	uint8_t b[4] = { (uint8_t)value, (uint8_t)(value >> 8), (uint8_t)(value >> 16), (uint8_t)(value >> 24) };
+
+	split_write(addr, width, b);
+}
+
+/* split_read of a value of width 1, 2 or 4 bytes. */
+static uint32_t split_read32(uintptr_t addr, unsigned width)
+{
+	uint8_t b[4] = { 0 };
+
+	split_read(addr, width, b);
+	return (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
+}
+#endif
 
 #if defined(__x86_64__) && defined(__linux__)
 #define HS_TRAP_EMULATES 1
@@ -142,6 +201,9 @@ struct insn {
 	bool sign;             /* load: sign-extend */
 	enum alu_op alu;       /* ALU_NONE: a mov form */
 	bool reg_dst;          /* ALU form whose destination is the register (op r, r/m) */
+	bool xmm;              /* SSE move: reg is an xmm register */
+	unsigned xmm_at;       /* SSE move: byte of the xmm register the access starts at (movhps: 8) */
+	bool xmm_zero;         /* SSE load: the register's other bytes become 0 (movd, movq, movss, movsd) */
 };
 
 /* Length of the ModRM/SIB/displacement part starting at p. */
@@ -166,13 +228,15 @@ static bool decode(const uint8_t *p, struct insn *in)
 {
 	const uint8_t *start = p;
 	bool opsize = false, rex_w = false, rex_r = false;
-	unsigned op, mlen;
+	unsigned op, mlen, rep = 0;
 
 	memset(in, 0, sizeof(*in));
 	in->alu = ALU_NONE;
 	for (;; p++) {
 		if (*p == 0x66U)
 			opsize = true;
+		else if (*p == 0xF3U || *p == 0xF2U)
+			rep = *p;                   /* an SSE move's mandatory prefix */
 		else if (*p == 0xF0U || *p == 0x2EU || *p == 0x3EU || *p == 0x26U || *p == 0x36U || *p == 0x64U || *p == 0x65U)
 			continue;
 		else
@@ -283,6 +347,45 @@ static bool decode(const uint8_t *p, struct insn *in)
 		in->imm = p[mlen];
 		mlen += 1;
 		break;
+	case 0x0F10: case 0x0F11:                   /* movups/movupd, movss (F3), movsd (F2) */
+		in->xmm = true;
+		in->store = op == 0x0F11U;
+		in->width = rep == 0xF3U ? 4U : rep == 0xF2U ? 8U : 16U;
+		in->xmm_zero = rep != 0;
+		break;
+	case 0x0F28: case 0x0F29:                   /* movaps/movapd */
+	case 0x0F6F: case 0x0F7F:                   /* movdqa (66), movdqu (F3) */
+		if ((op == 0x0F6FU || op == 0x0F7FU) && !opsize && rep != 0xF3U)
+			return false;               /* MMX */
+		in->xmm = true;
+		in->store = op == 0x0F29U || op == 0x0F7FU;
+		in->width = 16;
+		break;
+	case 0x0F12: case 0x0F13: case 0x0F16: case 0x0F17:   /* movlps/movlpd, movhps/movhpd */
+		if (rep)
+			return false;               /* movsldup, movshdup: not moves of memory */
+		in->xmm = true;
+		in->store = op & 1U;
+		in->width = 8;
+		in->xmm_at = op >= 0x0F16U ? 8U : 0U;
+		break;
+	case 0x0F6E: case 0x0F7E:                   /* movd/movq r/m <-> xmm (66); movq xmm <- m64 (F3 0F 7E) */
+		if (op == 0x0F7EU && rep == 0xF3U) {
+			in->xmm = true; in->width = 8; in->xmm_zero = true;
+			break;
+		}
+		if (!opsize)
+			return false;               /* MMX */
+		in->xmm = true;
+		in->store = op == 0x0F7EU;
+		in->width = rex_w ? 8U : 4U;
+		in->xmm_zero = true;
+		break;
+	case 0x0FD6:                                /* movq m64 <- xmm (66) */
+		if (!opsize)
+			return false;
+		in->xmm = true; in->store = true; in->width = 8;
+		break;
 	default:
 		if (op < 0x40U && (op & 7U) < 4U) {  /* add/or/adc/sbb/and/sub/xor/cmp r/m<->r */
 			in->alu = (enum alu_op)(op >> 3);
@@ -295,25 +398,31 @@ static bool decode(const uint8_t *p, struct insn *in)
 		return false;
 	}
 	in->len = (unsigned)(p - start) + mlen;
-	return in->width == 1U || in->width == 2U || in->width == 4U;
+	if (in->xmm)
+		return true;
+	if (rep && op < 0x0F00U)
+		return false;                       /* a string instruction's prefix */
+	if (in->alu != ALU_NONE)
+		return in->width == 1U || in->width == 2U || in->width == 4U;
+	return in->width == 1U || in->width == 2U || in->width == 4U || in->width == 8U;
 }
 
 /* Value of a register operand of width bytes (byte registers 4..7 without REX are ah..bh). */
-static uint32_t reg_get(const mcontext_t *mc, const struct insn *in, unsigned width)
+static uint64_t reg_get(const mcontext_t *mc, const struct insn *in, unsigned width)
 {
 	if (width == 1U && !in->rex && in->reg >= 4U && in->reg < 8U)
-		return (uint32_t)(mc->gregs[greg_of[in->reg - 4U]] >> 8) & 0xFFU;
-	return (uint32_t)mc->gregs[greg_of[in->reg]];
+		return (uint64_t)(mc->gregs[greg_of[in->reg - 4U]] >> 8) & 0xFFU;
+	return (uint64_t)mc->gregs[greg_of[in->reg]];
 }
 
 /* Stores a loaded value into the destination register as the instruction would. */
-static void reg_put(mcontext_t *mc, const struct insn *in, uint32_t v)
+static void reg_put(mcontext_t *mc, const struct insn *in, uint64_t v)
 {
 	uint64_t x;
 
 	if (in->sign)
 		x = in->width == 1U ? (uint64_t)(int64_t)(int8_t)v :
-		    in->width == 2U ? (uint64_t)(int64_t)(int16_t)v : (uint64_t)(int64_t)(int32_t)v;
+		    in->width == 2U ? (uint64_t)(int64_t)(int16_t)v : (uint64_t)(int64_t)(int32_t)(uint32_t)v;
 	else
 		x = v;
 	switch (in->dst_width) {
@@ -347,8 +456,8 @@ static void reg_put(mcontext_t *mc, const struct insn *in, uint32_t v)
 static void emulate_alu(mcontext_t *mc, const struct insn *in, uintptr_t addr)
 {
 	uint64_t flags = (uint64_t)mc->gregs[REG_EFL];
-	uint32_t mem = sil_host_read((const volatile void *)addr, in->width);
-	uint32_t other = in->has_imm ? in->imm : reg_get(mc, in, in->width);
+	uint32_t mem = split_read32(addr, in->width);
+	uint32_t other = in->has_imm ? in->imm : (uint32_t)reg_get(mc, in, in->width);
 	uint32_t r;
 
 	if (in->reg_dst) {
@@ -358,9 +467,45 @@ static void emulate_alu(mcontext_t *mc, const struct insn *in, uintptr_t addr)
 	} else {
 		r = alu(in->alu, in->width, mem, other, &flags);
 		if (!alu_reads_only(in->alu))
-			sil_host_write((volatile void *)addr, in->width, r);
+			split_write32(addr, in->width, r);
 	}
 	mc->gregs[REG_EFL] = (greg_t)flags;
+}
+
+/* A mov form's store: the source register's (or immediate's) bytes, per register. */
+static void emulate_store(const mcontext_t *mc, const struct insn *in, uintptr_t addr)
+{
+	uint8_t b[HS_MAX_SPLIT_WIDTH];
+
+	if (in->xmm) {
+		memcpy(b, (const uint8_t *)mc->fpregs->_xmm[in->reg].element + in->xmm_at, in->width);
+	} else {
+		uint64_t v = in->has_imm ? (uint64_t)(int64_t)(int32_t)in->imm : reg_get(mc, in, in->width);
+
+		for (unsigned k = 0; k < in->width; k++)
+			b[k] = (uint8_t)(v >> (8U * k));
+	}
+	split_write(addr, in->width, b);
+}
+
+/* A mov form's load: the bytes, per register, into the destination as the instruction puts them. */
+static void emulate_load(mcontext_t *mc, const struct insn *in, uintptr_t addr)
+{
+	uint8_t b[HS_MAX_SPLIT_WIDTH];
+	uint64_t v = 0;
+
+	split_read(addr, in->width, b);
+	if (in->xmm) {
+		uint8_t *x = (uint8_t *)mc->fpregs->_xmm[in->reg].element;
+
+		if (in->xmm_zero)
+			memset(x, 0, 16);
+		memcpy(x + in->xmm_at, b, in->width);
+		return;
+	}
+	for (unsigned k = 0; k < in->width; k++)
+		v |= (uint64_t)b[k] << (8U * k);
+	reg_put(mc, in, v);
 }
 #elif defined(__arm__) && defined(__linux__)
 #define HS_TRAP_EMULATES 1
@@ -368,13 +513,13 @@ static void emulate_alu(mcontext_t *mc, const struct insn *in, uintptr_t addr)
 static uint32_t bus_read(void *ctx, uint32_t addr, unsigned width)
 {
 	(void)ctx;
-	return sil_host_read((const volatile void *)(uintptr_t)addr, width);
+	return split_read32(addr, width);
 }
 
 static void bus_write(void *ctx, uint32_t addr, unsigned width, uint32_t value)
 {
 	(void)ctx;
-	sil_host_write((volatile void *)(uintptr_t)addr, width, value);
+	split_write32(addr, width, value);
 }
 
 /* Performs the faulting ARM instruction on the saved context; false (why set) if it is not a load/store form. */
@@ -435,8 +580,8 @@ static void trap_handler(int sig, siginfo_t *si, void *uctx)
 
 		if (!decode(ip, &in)) {
 			rtos_host_bug("host_sim", "plain pointer access to register window address %p (physical 0x%08lx): "
-				      "instruction %02x %02x %02x %02x %02x %02x at %p is not an emulated 8/16/32-bit access form "
-				      "(mov, movzx/movsx, add/or/adc/sbb/and/sub/xor/cmp/test, inc/dec/not/neg, bt*)",
+				      "instruction %02x %02x %02x %02x %02x %02x at %p is not an emulated access form "
+				      "(mov, movzx/movsx, SSE moves, add/or/adc/sbb/and/sub/xor/cmp/test, inc/dec/not/neg, bt*)",
 				      (void *)addr, (unsigned long)hs_space_to_phys(addr), ip[0], ip[1], ip[2], ip[3],
 				      ip[4], ip[5], (const void *)ip);
 			abort();
@@ -444,10 +589,9 @@ static void trap_handler(int sig, siginfo_t *si, void *uctx)
 		if (in.alu != ALU_NONE)
 			emulate_alu(mc, &in, addr);
 		else if (in.store)
-			sil_host_write((volatile void *)addr, in.width,
-				       in.has_imm ? in.imm : reg_get(mc, &in, in.width));
+			emulate_store(mc, &in, addr);
 		else
-			reg_put(mc, &in, sil_host_read((const volatile void *)addr, in.width));
+			emulate_load(mc, &in, addr);
 		mc->gregs[REG_RIP] += (greg_t)in.len;
 	}
 #elif HS_TRAP_EMULATES

@@ -375,7 +375,7 @@ ER ev3_attach_nxt_iic(unsigned port, enum nxt_iic_kind kind, const struct nxt_ii
 		return E_OBJ;
 	if (port >= EV3_INPUT_PORTS)
 		return E_ID;
-	if (kind < NXT_IIC_HT_ACCEL || kind > NXT_IIC_TEMP)
+	if (kind < NXT_IIC_HT_ACCEL || kind > NXT_IIC_US)
 		return E_PAR;
 	p = &brick.in[port];
 	input_clear(p);

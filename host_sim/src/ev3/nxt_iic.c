@@ -67,6 +67,19 @@ static void put_string(uint8_t *regs, unsigned at, const char *s)
 	memcpy(regs + at, s, strlen(s) < 8 ? strlen(s) : 8);
 }
 
+/* The NXT ultrasonic sensor's commands (register 0x41). */
+enum { US_OFF = 0x00, US_SINGLE_SHOT = 0x01, US_CONTINUOUS = 0x02, US_EVENT_CAPTURE = 0x03, US_WARM_RESET = 0x04 };
+
+/* The ultrasonic sensor's identification and settings at power-up (and warm reset). */
+static void us_identify(uint8_t *regs)
+{
+	put_string(regs, 0x00, "V1.0");
+	put_string(regs, 0x08, "LEGO");
+	put_string(regs, 0x10, "Sonar");
+	regs[0x40] = 0x01;              /* continuous measurement interval */
+	regs[0x41] = US_CONTINUOUS;
+}
+
 /* Refreshes the data registers from the scene (at each START: a consistent snapshot). */
 static void sensor_sample(struct bus *b)
 {
@@ -103,6 +116,13 @@ static void sensor_sample(struct bus *b)
 		r[0x47] = (uint8_t)((s->rgb[0] >> 6) << 4 | (s->rgb[1] >> 6) << 2 | (s->rgb[2] >> 6));
 		for (unsigned i = 0; i < 3; i++)
 			r[0x48 + i] = s->rgb[i];
+		break;
+	case NXT_IIC_US:
+		/* continuous: byte 0 follows the scene; a single shot (or off) holds its bytes */
+		if (r[0x41] == US_CONTINUOUS) {
+			r[0x42] = s->distance_cm;
+			memset(r + 0x43, 0, 7);
+		}
 		break;
 	case NXT_IIC_TEMP: {
 		/* resolution from configuration bits 6:5: 9 + R bits; 1/16 degree units */
@@ -143,6 +163,9 @@ static void sensor_reset(struct bus *b)
 		break;
 	case NXT_IIC_TEMP:
 		break;
+	case NXT_IIC_US:
+		us_identify(b->regs);
+		break;
 	}
 	sensor_sample(b);
 }
@@ -161,6 +184,19 @@ static void sensor_write(struct bus *b, uint8_t byte)
 			b->regs[0x01] = byte & 0x7FU;    /* configuration (bit 7 one-shot reads 0) */
 		else if (b->pointer >= 2U)
 			b->regs[0x82 + 2U * (b->pointer - 2U) + (b->byte_in_reg++ & 1U)] = byte;
+		return;
+	}
+	if (b->kind == NXT_IIC_US && (b->pointer == 0x40U || b->pointer == 0x41U)) {
+		if (b->pointer == 0x41U && byte == US_WARM_RESET) {
+			us_identify(b->regs);
+		} else if (b->pointer == 0x41U && byte == US_SINGLE_SHOT) {
+			b->regs[0x41] = byte;
+			b->regs[0x42] = b->scene.distance_cm;   /* one measurement, held */
+			memset(b->regs + 0x43, 0, 7);
+		} else {
+			b->regs[b->pointer] = byte;
+		}
+		b->pointer++;
 		return;
 	}
 	/* HiTechnic: 0x41 is the command/mode register; the rest is read-only. */

@@ -26,8 +26,12 @@ const struct ev3_ui_pins ev3_ui_pins = {
 		[EV3_UI_BUTTON_DOWN] = HS_GPIO(7, 14), [EV3_UI_BUTTON_RIGHT] = HS_GPIO(7, 12),
 		[EV3_UI_BUTTON_LEFT] = HS_GPIO(6, 6), [EV3_UI_BUTTON_BACK] = HS_GPIO(6, 10),
 	},
-	.red = { [EV3_UI_LED_LEFT] = HS_GPIO(6, 7), [EV3_UI_LED_RIGHT] = HS_GPIO(6, 12) },
-	.green = { [EV3_UI_LED_LEFT] = HS_GPIO(6, 13), [EV3_UI_LED_RIGHT] = HS_GPIO(6, 14) },
+	/* Red GP6_12 and GP6_13, green GP6_7 and GP6_14: EV3RT's brick driver
+	 * (ev3rt-git/ev3rt-hrp2, target/ev3_gcc/drivers/brick/src/brick_dri.c,
+	 * MISCCMD_SET_LED) and LEGO's d_ui pin table (mindboards/ev3sources,
+	 * lms2012/d_ui, EP2_UiLedPin: right red, right green, left red, left green). */
+	.red = { [EV3_UI_LED_LEFT] = HS_GPIO(6, 13), [EV3_UI_LED_RIGHT] = HS_GPIO(6, 12) },
+	.green = { [EV3_UI_LED_LEFT] = HS_GPIO(6, 7), [EV3_UI_LED_RIGHT] = HS_GPIO(6, 14) },
 };
 
 static const char *const button_signal[EV3_UI_BUTTONS] = {

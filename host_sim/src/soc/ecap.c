@@ -127,7 +127,12 @@ static void ecap_write(void *ctx, const struct hs_access *a, uint32_t old, uint3
 	bool apwm = hs_reg_get(c->r, ECCTL2) & ECCTL2_APWM;
 
 	switch (a->offset) {
-	case TSCTR:
+	case TSCTR:     /* a 16-bit half replaces that half of the running count */
+		if (a->width < 4U) {
+			uint32_t lanes = (0xFFFFFFFFU >> (32U - 8U * a->width)) << (8U * a->lane);
+
+			nv = (ecap_counter(c) & ~lanes) | (nv & lanes);
+		}
 		c->cnt_ref = nv;
 		c->t_ref = hs_now();
 		break;
@@ -151,9 +156,13 @@ static void ecap_write(void *ctx, const struct hs_access *a, uint32_t old, uint3
 }
 
 static const struct hs_reg ecap_regs[] = {
-	{ .name = "TSCTR", .offset = TSCTR, .kind = HS_RW, .before_read = ecap_read_tsctr,
+	/* TSCTR and CTRPHS take 16-bit halves, as CAP1..4 do: the eCAP's registers
+	 * sit on a 32-bit peripheral bus with byte enables (AM1808 TRM, eCAP
+	 * chapter, register map: 32-bit TSCTR/CTRPHS/CAPx beside the 16-bit
+	 * ECCTLx; LEGO's d_pwm clears their low halves through a UWORD pointer). */
+	{ .name = "TSCTR", .offset = TSCTR, .widths = HS_W16, .kind = HS_RW, .before_read = ecap_read_tsctr,
 	  .after_write = ecap_write },
-	{ .name = "CTRPHS", .offset = CTRPHS, .kind = HS_RW },
+	{ .name = "CTRPHS", .offset = CTRPHS, .widths = HS_W16, .kind = HS_RW },
 	{ .name = "CAP1", .offset = CAP1, .widths = HS_W16, .kind = HS_RW, .after_write = ecap_write },
 	{ .name = "CAP2", .offset = CAP2, .widths = HS_W16, .kind = HS_RW, .after_write = ecap_write },
 	{ .name = "CAP3", .offset = CAP3, .widths = HS_W16, .kind = HS_RW, .after_write = ecap_write },

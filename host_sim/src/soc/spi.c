@@ -373,6 +373,16 @@ static void write_dat1(void *ctx, const struct hs_access *a, uint32_t old, uint3
 	polled_update(s);
 	if (a->width == 1)
 		return;                 /* a byte write to the control half does not start a transfer */
+	/* Before SPIGCR1.ENABLE is set a write only latches the fields (CSHOLD,
+	 * WDEL, DFSEL, CSNR): the AM1808 TRM's SPI initialization procedure
+	 * configures SPIDAT1 and sets ENABLE last, and with ENABLE=0 the SPI "is
+	 * not activated for transfers" (SPIGCR1 field description).  LEGO's
+	 * d_analog selects its data format that way. */
+	if ((*s->gcr0 & 1U) && !(*s->gcr1 & (1U << 24))) {
+		rtos_host_trace(s->inst->name, "SPIDAT1 = 0x%08x with SPIGCR1.ENABLE=0: fields latched, no transfer",
+				(unsigned)nv);
+		return;
+	}
 	spi_send(s, (uint16_t)(nv & 0xFFFFU));
 }
 

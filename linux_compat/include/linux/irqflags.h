@@ -32,4 +32,11 @@ void arch_local_irq_enable(void);
 #define raw_local_irq_save(flags)	local_irq_save(flags)
 #define raw_local_irq_restore(flags)	local_irq_restore(flags)
 
+/* The ARM's FIQ mask (the CPSR F bit; asm/fiq.h): a FIQ that comes while it
+ * is masked runs when it is unmasked.  Non-nesting, as in Linux. */
+void lx_local_fiq_disable(void);
+void lx_local_fiq_enable(void);
+#define local_fiq_disable()	lx_local_fiq_disable()
+#define local_fiq_enable()	lx_local_fiq_enable()
+
 #endif /* _LINUX_IRQFLAGS_H */

@@ -66,6 +66,16 @@ bool lx_handle_irq(unsigned int irq);
  * it latched when masking its line): enable_irq replays it (Linux's IRQS_PENDING). */
 void lx_irq_set_pending(unsigned int irq);
 
+/* Unmasks irq's line through its chip (IRQ_TYPE_NONE) / masks it (asm/fiq.h's enable_fiq). */
+int lx_irq_line_unmask(unsigned int irq);
+void lx_irq_line_mask(unsigned int irq);
+
+/* If irq is routed to the FIQ (enable_fiq): runs the FIQ handler (or, while
+ * the FIQ is masked, leaves it pending) and returns true; false otherwise. */
+bool lx_fiq_take(unsigned int irq);
+/* Forgets the FIQ's owner, handler, routes and mask (boot). */
+void lx_fiq_boot(void);
+
 /* True if drivers may request irq (the machine has a chip for it). */
 bool lx_irq_valid(unsigned int irq);
 

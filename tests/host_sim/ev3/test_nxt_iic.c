@@ -244,6 +244,43 @@ static void test_unplug(void)
 	ok(read_regs(0x01, 0x08, id, 8, false) && !memcmp(id, "HiTechnc", 8), "manufacturer HiTechnc");
 }
 
+/* Writes one register: START, address, pointer, value, STOP; 1 if all were ACKed. */
+static int write_reg(uint8_t addr, uint8_t reg, uint8_t value)
+{
+	int acked;
+
+	start();
+	acked = send((uint8_t)(addr << 1)) && send(reg) && send(value);
+	stop();
+	return acked;
+}
+
+/* LEGO's NXT ultrasonic sensor (NXT Hardware Developer Kit's I2C register map). */
+static void test_us(void)
+{
+	uint8_t id[8];
+	struct nxt_iic_scene scene = { .distance_cm = 42 };
+
+	ok(ev3_attach_nxt_iic(3, NXT_IIC_US, &scene) == E_OK, "ultrasonic sensor on port 4");
+	bus_on(3);
+	ok(read_regs(NXT_IIC_US_ADDRESS, 0x00, id, 8, true) && !memcmp(id, "V1.0    ", 8), "version V1.0 at 0x00");
+	ok(read_regs(NXT_IIC_US_ADDRESS, 0x08, id, 8, true) && !memcmp(id, "LEGO    ", 8), "manufacturer LEGO at 0x08");
+	ok(read_regs(NXT_IIC_US_ADDRESS, 0x10, id, 8, true) && !memcmp(id, "Sonar   ", 8), "type Sonar at 0x10");
+	ok(read_regs(NXT_IIC_US_ADDRESS, 0x41, id, 3, true) && id[0] == 0x02 && id[1] == 42 && id[2] == 0,
+	   "continuous at power-up (0x41 = 2); measurement byte 0 at 0x42 = 42 cm");
+	scene.distance_cm = 100;
+	ev3_set_nxt_iic_scene(3, &scene);
+	ok(read_regs(NXT_IIC_US_ADDRESS, 0x42, id, 1, true) && id[0] == 100, "continuous: follows the scene (100 cm)");
+	ok(write_reg(NXT_IIC_US_ADDRESS, 0x41, 0x01), "single-shot command written to 0x41");
+	scene.distance_cm = 7;
+	ev3_set_nxt_iic_scene(3, &scene);
+	ok(read_regs(NXT_IIC_US_ADDRESS, 0x42, id, 1, true) && id[0] == 100, "single shot: the measurement is held");
+	ok(write_reg(NXT_IIC_US_ADDRESS, 0x41, 0x04) &&
+	   read_regs(NXT_IIC_US_ADDRESS, 0x41, id, 2, true) && id[0] == 0x02 && id[1] == 7,
+	   "warm reset: continuous again, 7 cm");
+	ev3_detach_input(3);
+}
+
 static void test_timer64p1(void)
 {
 	const uint32_t t1 = HS_TIMER64P1_BASE;
@@ -277,12 +314,13 @@ static void test_timer64p1(void)
 
 int main(void)
 {
-	tap_plan(52);
+	tap_plan(61);
 	devtest_boot(3, NULL);
 	test_ids();
 	test_nacks();
 	test_temp();
 	test_unplug();
+	test_us();
 	test_timer64p1();
 	hs_sim_shutdown();
 	return tap_done();

@@ -131,6 +131,21 @@ static void test_leds(void)
 	is_int(ev3_ui_led_color(EV3_UI_LED_RIGHT), EV3_UI_LED_GREEN, "right green");
 	ok(right && hs_signal_value(right) == EV3_UI_LED_GREEN, "trace ui.led_right = green");
 	is_int(ev3_ui_led_changes(EV3_UI_LED_LEFT), 4, "left LED: four colour changes");
+	/* the pins by number: red GP6_12/GP6_13, green GP6_7/GP6_14 (EV3RT's brick
+	 * driver and LEGO's d_ui pin table) */
+	gpio_out(pins->green[EV3_UI_LED_RIGHT], 0);
+	gpio_out(HS_GPIO(6, 13), 1);
+	is_int(ev3_ui_led_color(EV3_UI_LED_LEFT), EV3_UI_LED_RED, "GP6_13 high: the left LED is red");
+	gpio_out(HS_GPIO(6, 13), 0);
+	gpio_out(HS_GPIO(6, 7), 1);
+	is_int(ev3_ui_led_color(EV3_UI_LED_LEFT), EV3_UI_LED_GREEN, "GP6_7 high: the left LED is green");
+	gpio_out(HS_GPIO(6, 7), 0);
+	gpio_out(HS_GPIO(6, 12), 1);
+	is_int(ev3_ui_led_color(EV3_UI_LED_RIGHT), EV3_UI_LED_RED, "GP6_12 high: the right LED is red");
+	gpio_out(HS_GPIO(6, 12), 0);
+	gpio_out(HS_GPIO(6, 14), 1);
+	is_int(ev3_ui_led_color(EV3_UI_LED_RIGHT), EV3_UI_LED_GREEN, "GP6_14 high: the right LED is green");
+	gpio_out(HS_GPIO(6, 14), 0);
 }
 
 static void test_errors(void)
@@ -145,7 +160,7 @@ static void test_errors(void)
 
 int main(void)
 {
-	tap_plan(38);
+	tap_plan(42);
 	devtest_boot(1, NULL);
 	hs_sim_run_for(MS);
 	test_boot_state();

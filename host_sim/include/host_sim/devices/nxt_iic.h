@@ -45,6 +45,22 @@
  *                        of the low byte), 1 configuration (bits 6:5 the
  *                        resolution, 9..12 bits; 0 at power-up), 2 and 3
  *                        T_LOW and T_HIGH.
+ *   NXT_IIC_US           LEGO NXT ultrasonic sensor 9846, address 0x01 (0x02
+ *                        as the 8-bit write address; register map from LEGO's
+ *                        NXT Hardware Developer Kit, the ultrasonic sensor's
+ *                        I2C appendix): "V1.0", "LEGO", "Sonar" at 0x00,
+ *                        0x08, 0x10 (the kit's factory and units registers
+ *                        at 0x11..0x14 are not modelled: the register file
+ *                        here is linear, there they are not); 0x40 the
+ *                        continuous measurement interval; 0x41 the command
+ *                        (0x00 off, 0x01 single shot, 0x02 continuous — the
+ *                        power-up state, 0x03 event capture, 0x04 warm reset);
+ *                        0x42..0x49 measurement bytes 0..7 in cm (255: no
+ *                        echo).  Continuous: byte 0 is the distance now,
+ *                        1..7 are 0; a single shot measures once at the
+ *                        command (byte 0, the rest 0) and then holds; off
+ *                        holds the last bytes; warm reset returns to
+ *                        continuous.
  */
 #ifndef HOST_SIM_DEVICES_NXT_IIC_H
 #define HOST_SIM_DEVICES_NXT_IIC_H
@@ -58,9 +74,11 @@ enum nxt_iic_kind {
 	NXT_IIC_HT_COLOR,
 	NXT_IIC_HT_COLOR_V2,
 	NXT_IIC_TEMP,
+	NXT_IIC_US,
 };
 
 #define NXT_IIC_HT_ADDRESS   0x01U
+#define NXT_IIC_US_ADDRESS   0x01U
 #define NXT_IIC_TEMP_ADDRESS 0x4CU
 
 /* What a sensor measures. */
@@ -70,6 +88,7 @@ struct nxt_iic_scene {
 	uint8_t rgb[3];             /* HT_COLOR*: red, green, blue 0..255 */
 	uint8_t white;              /* HT_COLOR_V2 */
 	double temp_c;              /* TEMP: degrees Celsius, -55..128 */
+	uint8_t distance_cm;        /* US: the nearest echo, cm (255: none) */
 };
 
 /* Protocol counters of one port's slave (what it saw on the bus). */

@@ -13,6 +13,19 @@
 #include <linux/compiler.h>
 #include <mach/irqs.h>
 #include <mach/hardware.h>
+/*
+ * What TI's DaVinci PSP 2.6.33 da8xx.h makes visible through its includes
+ * (LEGO's kernel, mindboards/ev3sources extra/linux-03.20.00.13), and 2.6-era
+ * board code relies on: <linux/module.h> (da8xx.h -> linux/platform_device.h
+ * -> linux/device.h -> linux/module.h: EXPORT_SYMBOL, THIS_MODULE),
+ * <linux/interrupt.h> (-> mach/mmc.h -> linux/mmc/host.h -> linux/mmc/core.h
+ * -> linux/interrupt.h: irqreturn_t, request_irq) and <linux/sched.h>
+ * (linux/mmc/host.h).  LEGO's d_pwm declares its irqreturn_t handlers after
+ * am1808.h, which includes only this header, and before its own includes.
+ */
+#include <linux/module.h>
+#include <linux/interrupt.h>
+#include <linux/sched.h>
 
 extern void __iomem *da8xx_syscfg0_base;
 extern void __iomem *da8xx_syscfg1_base;
