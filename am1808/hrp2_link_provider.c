@@ -79,6 +79,14 @@ ER unl_mtx(ID mtxid) { (void)mtxid; return E_NOSPT; }
 ER ini_mtx(ID mtxid) { (void)mtxid; return E_NOSPT; }
 ER ref_mtx(ID mtxid, T_RMTX *pk_rmtx) { (void)mtxid; (void)pk_rmtx; return E_NOSPT; }
 
+ER ini_sem(ID semid) { (void)semid; return E_NOSPT; }
+ER ref_sem(ID semid, T_RSEM *pk_rsem) { (void)semid; (void)pk_rsem; return E_NOSPT; }
+ER ini_flg(ID flgid) { (void)flgid; return E_NOSPT; }
+ER ref_flg(ID flgid, T_RFLG *pk_rflg) { (void)flgid; (void)pk_rflg; return E_NOSPT; }
+ER ref_cyc(ID cycid, T_RCYC *pk_rcyc) { (void)cycid; (void)pk_rcyc; return E_NOSPT; }
+ER ref_alm(ID almid, T_RALM *pk_ralm) { (void)almid; (void)pk_ralm; return E_NOSPT; }
+ER get_inf(intptr_t *p_exinf) { (void)p_exinf; return E_NOSPT; }
+
 ER get_tim(SYSTIM *p_systim) { (void)p_systim; return E_NOSPT; }
 ER get_utm(SYSUTM *p_sysutm) { (void)p_sysutm; return E_NOSPT; }
 ER sta_cyc(ID cycid) { (void)cycid; return E_NOSPT; }

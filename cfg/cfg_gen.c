@@ -54,8 +54,8 @@ static const struct api_desc apis[API_COUNT] = {
 	[API_CRE_DTQ] = { "CRE_DTQ", true, false, 3, 3, "dtqatr, dtqcnt, dtqmb" },
 	[API_CRE_PDQ] = { "CRE_PDQ", true, false, 4, 4, "pdqatr, pdqcnt, maxdpri, pdqmb" },
 	[API_CRE_MTX] = { "CRE_MTX", true, false, 1, 2, "mtxatr[, ceilpri]" },
-	[API_CRE_CYC] = { "CRE_CYC", true, false, 5, 5, "cycatr, exinf, cychdr, cyctim, cycphs" },
-	[API_CRE_ALM] = { "CRE_ALM", true, false, 3, 3, "almatr, exinf, almhdr" },
+	[API_CRE_CYC] = { "CRE_CYC", true, false, 4, 5, "cycatr, exinf, cychdr, cyctim, cycphs" },
+	[API_CRE_ALM] = { "CRE_ALM", true, false, 2, 3, "almatr, exinf, almhdr" },
 	[API_EV3_CRE_CYC] = { "EV3_CRE_CYC", true, false, 5, 5, "cycatr, exinf, cychdr, cyctim, cycphs" },
 	[API_ATT_MOD] = { "ATT_MOD", false, false, 0, 0, NULL },
 	[API_ATT_INI] = { "ATT_INI", false, false, 3, 3, "iniatr, exinf, inirtn" },
@@ -105,11 +105,48 @@ static const struct { const char *name, *what; } unsupported_apis[] = {
 };
 
 /* Static APIs of other TOPPERS kernels that EV3RT app authors meet, and what
- * HRP2 offers instead (ASP's and HRP3's specifications). */
+ * HRP2 offers instead (ASP's specification). */
 static const struct { const char *name, *why; } foreign_apis[] = {
 	{ "CRE_MBX", "TOPPERS/HRP2 has no mailboxes (CRE_MBX is TOPPERS/ASP's); a data queue, CRE_DTQ, carries data" },
-	{ "ACV_DOM", "ACV_DOM (a domain's access vector) is TOPPERS/HRP3's, not HRP2's" },
 };
+
+/* The static APIs only TOPPERS/HRP3 has (ev3rt-git/ev3rt-hrp3,
+ * kernel/kernel_api.def), which ev3lx does not implement, with what they
+ * configure.  Each says the configuration is an HRP3 one. */
+static const struct { const char *name, *what; } hrp3_only_apis[] = {
+	{ "ACV_DOM", "a domain's access vector" },
+	{ "CRE_ISR", "interrupt service routines created by ID (HRP2's ATT_ISR attaches one)" },
+	{ "DEF_SCY", "the system cycle of time-window scheduling" },
+	{ "CRE_SOM", "system operating modes" },
+	{ "ATT_TWD", "time windows" },
+	{ "DEF_MPK", "the kernel's memory pool" },
+};
+
+/* HRP3's notification modes (include/kernel.h of ev3rt-git/ev3rt-hrp3): the
+ * low four bits say what a time event does, the next four what is done when
+ * that fails (TENFY_*). */
+static const struct { const char *name; unsigned value; } nfy_names[] = {
+	{ "TNFY_HANDLER", 0x00 }, { "TNFY_SETVAR", 0x01 }, { "TNFY_INCVAR", 0x02 }, { "TNFY_ACTTSK", 0x03 },
+	{ "TNFY_WUPTSK", 0x04 }, { "TNFY_SIGSEM", 0x05 }, { "TNFY_SETFLG", 0x06 }, { "TNFY_SNDDTQ", 0x07 },
+	{ "TENFY_SETVAR", 0x10 }, { "TENFY_INCVAR", 0x20 }, { "TENFY_ACTTSK", 0x30 }, { "TENFY_WUPTSK", 0x40 },
+	{ "TENFY_SIGSEM", 0x50 }, { "TENFY_SETFLG", 0x60 }, { "TENFY_SNDDTQ", 0x70 },
+};
+#define NFY_HANDLER 0x00U
+#define NFY_SETVAR  0x01U
+#define NFY_INCVAR  0x02U
+#define NFY_ACTTSK  0x03U
+#define NFY_WUPTSK  0x04U
+#define NFY_SIGSEM  0x05U
+#define NFY_SETFLG  0x06U
+#define NFY_SNDDTQ  0x07U
+#define ENFY_SETVAR 0x10U
+#define ENFY_INCVAR 0x20U
+#define ENFY_ACTTSK 0x30U
+#define ENFY_WUPTSK 0x40U
+#define ENFY_SIGSEM 0x50U
+#define ENFY_SETFLG 0x60U
+#define ENFY_SNDDTQ 0x70U
+#define MAX_NFY_ELEMS 5
 
 /* Bounds of pass 2 on sizes, from the EV3's 64 MB of RAM (LEGO MINDSTORMS
  * EV3 hardware developer kit: 64 MB DDR RAM): one stack may take an eighth of
@@ -133,6 +170,17 @@ struct obj {
 	int number;              /* assigned object ID (or module index) */
 	int task_number;         /* EV3_CRE_CYC: the ID of its handler task */
 	const char *path;        /* ATT_MOD: the object it names (cfg_bind_modules) */
+	bool nfy;                /* CRE_CYC/CRE_ALM in HRP3's form: elem[1] is the notification */
+	unsigned nfymode;        /* its mode (TNFY_* | TENFY_*) */
+	char *nfy_elem[MAX_NFY_ELEMS];   /* nfymode, par1[, par2[, par3[, par4]]] */
+	int nnfy;
+};
+
+/* Where a configuration first showed which kernel it is written for. */
+struct profile_mark {
+	const char *file;        /* NULL: nowhere yet */
+	int line;
+	char what[160];          /* the static API, e.g. "CRE_CYC(CYC1)" */
 };
 
 struct cfg_ctx {
@@ -156,6 +204,9 @@ struct cfg_ctx {
 	int ntoks, captoks, pos;
 	int dom_stack[16];
 	int dom_depth;
+	/* the kernel profile: CFG_PROFILE_AUTO until given (cfg_set_profile) */
+	int profile;
+	struct profile_mark hrp2_mark, hrp3_mark;
 };
 
 /* ---- small helpers ---- */
@@ -255,6 +306,8 @@ void cfg_free(struct cfg_ctx *ctx)
 		free(ctx->objs[i].id);
 		for (int e = 0; e < ctx->objs[i].nelem; e++)
 			free(ctx->objs[i].elem[e]);
+		for (int e = 0; e < ctx->objs[i].nnfy; e++)
+			free(ctx->objs[i].nfy_elem[e]);
 	}
 	free(ctx->objs);
 	for (int i = 0; i < ctx->ndomains; i++)
@@ -269,6 +322,18 @@ void cfg_free(struct cfg_ctx *ctx)
 		free(ctx->names[i]);
 	free(ctx->names);
 	free(ctx);
+}
+
+void cfg_set_profile(struct cfg_ctx *ctx, int profile)
+{
+	ctx->profile = profile;
+}
+
+int cfg_profile(const struct cfg_ctx *ctx)
+{
+	if (ctx->profile != CFG_PROFILE_AUTO)
+		return ctx->profile;
+	return ctx->hrp3_mark.file != NULL ? CFG_PROFILE_HRP3 : CFG_PROFILE_HRP2;
 }
 
 void cfg_add_c_include(struct cfg_ctx *ctx, const char *directive)
@@ -718,6 +783,188 @@ static bool is_null_expr(const char *e)
 	       strcmp(e, "((void*)0)") == 0;
 }
 
+/* Notes that the static API what at file:line, in form form, is written for
+ * HRP3 (hrp3) or HRP2; reports a configuration that mixes the two, or that
+ * contradicts the profile it is built for (cfg_set_profile). */
+static void mark_profile(struct cfg_ctx *ctx, bool hrp3, const char *file, int line, const char *what,
+			 const char *form)
+{
+	struct profile_mark *mine = hrp3 ? &ctx->hrp3_mark : &ctx->hrp2_mark;
+	const struct profile_mark *other = hrp3 ? &ctx->hrp2_mark : &ctx->hrp3_mark;
+	const char *kernel = hrp3 ? "HRP3" : "HRP2", *other_kernel = hrp3 ? "HRP2" : "HRP3";
+
+	if (ctx->profile == (hrp3 ? CFG_PROFILE_HRP2 : CFG_PROFILE_HRP3))
+		report(ctx, file, line, what, "%s is TOPPERS/%s's, but the app is built for the %s profile "
+		       "(--kernel %s) (E_PAR)", form, kernel, other_kernel, hrp3 ? "hrp2" : "hrp3");
+	else if (other->file != NULL)
+		report(ctx, file, line, what, "%s is TOPPERS/%s's, but %s at %s:%d is TOPPERS/%s's: a configuration "
+		       "is written for one kernel profile (E_PAR)", form, kernel, other->what, other->file, other->line,
+		       other_kernel);
+	if (mine->file == NULL) {
+		mine->file = file;
+		mine->line = line;
+		snprintf(mine->what, sizeof(mine->what), "%s", what);
+	}
+}
+
+/* The value of a notification mode as written: TNFY_ and TENFY_ names, or
+ * the integer constants a preprocessed header gives (0x03U), joined by | or
+ * +, with parentheses; false for anything else. */
+static bool eval_nfymode(const char *e, unsigned *value)
+{
+	unsigned v = 0;
+	bool want_term = true;
+
+	for (const char *p = e; *p != '\0';) {
+		if (*p == ' ' || *p == '(' || *p == ')') {
+			p++;
+		} else if (!want_term && (*p == '|' || *p == '+')) {
+			want_term = true;
+			p++;
+		} else if (want_term && (isalpha((unsigned char)*p) || *p == '_')) {
+			const char *q = p;
+			bool found = false;
+
+			while (isalnum((unsigned char)*q) || *q == '_')
+				q++;
+			for (size_t i = 0; i < sizeof(nfy_names) / sizeof(nfy_names[0]); i++)
+				if (strlen(nfy_names[i].name) == (size_t)(q - p) && strncmp(nfy_names[i].name, p, (size_t)(q - p)) == 0) {
+					v |= nfy_names[i].value;
+					found = true;
+				}
+			if (!found)
+				return false;
+			p = q;
+			want_term = false;
+		} else if (want_term && isdigit((unsigned char)*p)) {
+			char *end;
+
+			v |= (unsigned)strtoul(p, &end, 0);
+			while (*end == 'u' || *end == 'U' || *end == 'l' || *end == 'L')
+				end++;
+			p = end;
+			want_term = false;
+		} else {
+			return false;
+		}
+	}
+	*value = v;
+	return !want_term;
+}
+
+/* Splits HRP3's notification block "{ nfymode, par1, ... }" into o->nfy_elem
+ * at its top-level commas; false if it has more than MAX_NFY_ELEMS. */
+static bool split_nfy(struct obj *o, const char *block)
+{
+	const char *p = block + 1, *end = block + strlen(block) - 1, *start;
+	int depth = 0;
+	char quote = 0;
+
+	while (end > p && *end == ' ')
+		end--;
+	for (start = p; p <= end; p++) {
+		if (quote != 0) {
+			if (*p == '\\' && p < end)
+				p++;
+			else if (*p == quote)
+				quote = 0;
+			continue;
+		}
+		if (*p == '"' || *p == '\'')
+			quote = *p;
+		else if (*p == '(' || *p == '[' || *p == '{')
+			depth++;
+		else if (*p == ')' || *p == ']' || (*p == '}' && p < end))
+			depth--;
+		if ((*p == ',' && depth == 0) || p == end) {
+			const char *a = start, *b = p;
+
+			while (a < b && *a == ' ')
+				a++;
+			while (b > a && b[-1] == ' ')
+				b--;
+			if (o->nnfy == MAX_NFY_ELEMS)
+				return false;
+			o->nfy_elem[o->nnfy++] = xstrndup(a, (size_t)(b - a));
+			start = p + 1;
+		}
+	}
+	return true;
+}
+
+/* CRE_CYC and CRE_ALM come in HRP2's form, a handler (cycatr, exinf, cychdr,
+ * cyctim, cycphs; almatr, exinf, almhdr; times in ms), and HRP3's, a
+ * notification (cycatr, { nfymode, par1[, par2[, par3[, par4]]] }, cyctim,
+ * cycphs; almatr, { ... }; times in us), whose parameters are checked as
+ * HRP3's configurator checks them (ev3rt-git/ev3rt-hrp3, kernel/kernel.trb,
+ * generateNotifyHandler).  Marks the configuration's profile by the form. */
+static void check_time_event(struct cfg_ctx *ctx, struct obj *o, const char *what)
+{
+	bool cyc = o->api == API_CRE_CYC;
+	int hrp2_n = cyc ? 5 : 3, hrp3_n = cyc ? 4 : 2, braces = -1;
+	unsigned m, mode1, mode2;
+	int numpar, need;
+
+	for (int i = 0; i < o->nelem; i++)
+		if (o->elem[i][0] == '{' && braces < 0)
+			braces = i;
+	if (o->nelem == hrp2_n && braces < 0) {
+		mark_profile(ctx, false, o->file, o->line, what, "the handler form (times in ms)");
+		return;
+	}
+	if (o->nelem != hrp3_n || braces != 1) {
+		if (braces >= 0 || o->nelem == hrp3_n)
+			report(ctx, o->file, o->line, what, "malformed notification form: expected { %s, { nfymode, par1"
+			       "[, par2...] }%s } as in TOPPERS/HRP3, the notification second (E_PAR)",
+			       cyc ? "cycatr" : "almatr", cyc ? ", cyctim, cycphs" : "");
+		else
+			report(ctx, o->file, o->line, what, "%d parameters in { }, expected %d (HRP2: %s) or %d (HRP3: "
+			       "%s, { nfymode, par1[, par2...] }%s) (E_PAR)", o->nelem, hrp2_n, apis[o->api].elems, hrp3_n,
+			       cyc ? "cycatr" : "almatr", cyc ? ", cyctim, cycphs" : "");
+		return;
+	}
+	o->nfy = true;
+	mark_profile(ctx, true, o->file, o->line, what, "the notification form { nfymode, ... } (times in us)");
+	if (!split_nfy(o, o->elem[1]) || o->nnfy < 2) {
+		report(ctx, o->file, o->line, what, "the notification %s has %s parameters: expected nfymode and 1 to 4 "
+		       "more (E_PAR)", o->elem[1], o->nnfy < 2 ? "too few" : "too many");
+		return;
+	}
+	if (!eval_nfymode(o->nfy_elem[0], &m)) {
+		report(ctx, o->file, o->line, what, "nfymode '%s' is not TNFY_* or TNFY_* | TENFY_* (E_PAR)",
+		       o->nfy_elem[0]);
+		return;
+	}
+	o->nfymode = m;
+	mode1 = m & 0x0fU;
+	mode2 = m & ~0x0fU;
+	if (mode1 > NFY_SNDDTQ || (mode2 & 0x0fU) != 0 || mode2 > ENFY_SNDDTQ ||
+	    (mode2 != 0 && (mode1 == NFY_HANDLER || mode1 == NFY_SETVAR || mode1 == NFY_INCVAR))) {
+		report(ctx, o->file, o->line, what, "illegal nfymode %s (0x%x): the error notifications TENFY_* go "
+		       "with TNFY_ACTTSK, TNFY_WUPTSK, TNFY_SIGSEM, TNFY_SETFLG and TNFY_SNDDTQ only (E_PAR)",
+		       o->nfy_elem[0], m);
+		return;
+	}
+	numpar = mode1 == NFY_HANDLER || mode1 == NFY_SETVAR || mode1 == NFY_SETFLG || mode1 == NFY_SNDDTQ ? 2 : 1;
+	need = 1 + numpar + (mode2 == 0 ? 0 : mode2 == ENFY_SETFLG ? 2 : 1);
+	if (o->nnfy != need) {
+		report(ctx, o->file, o->line, what, "too %s parameters for nfymode %s: %d, expected %d (E_PAR)",
+		       o->nnfy < need ? "few" : "many", o->nfy_elem[0], o->nnfy - 1, need - 1);
+		return;
+	}
+	if (mode1 == NFY_HANDLER && o->domain != 0)
+		report(ctx, o->file, o->line, what, "TNFY_HANDLER is not permitted in a user domain (DOMAIN(%s)): "
+		       "HRP3 runs time-event handlers in the kernel domain; TNFY_ACTTSK or TNFY_WUPTSK hands the "
+		       "work to a task (E_OACV)", ctx->domains[o->domain - 1]);
+}
+
+/* A static API only HRP2 (EV3RT 0.x) has marks the configuration HRP2's. */
+static void mark_hrp2_api(struct cfg_ctx *ctx, const struct obj *o, const char *what)
+{
+	if (o->api == API_EV3_CRE_CYC)
+		mark_profile(ctx, false, o->file, o->line, what, "EV3_CRE_CYC (EV3RT's HRP2 API, times in ms)");
+}
+
 /* Shape checks of pass 1 that need no values. */
 static void check_obj(struct cfg_ctx *ctx, struct obj *o, const char *what)
 {
@@ -725,6 +972,11 @@ static void check_obj(struct cfg_ctx *ctx, struct obj *o, const char *what)
 	bool kernel_only = o->api == API_ATT_INI || o->api == API_ATT_TER || o->api == API_DEF_SVC ||
 			   o->api == API_CFG_INT || o->api == API_ATT_ISR;
 
+	if (o->api == API_CRE_CYC || o->api == API_CRE_ALM) {
+		check_time_event(ctx, o, what);
+		return;
+	}
+	mark_hrp2_api(ctx, o, what);
 	if (d->max_elems > 0 && (o->nelem < d->min_elems || o->nelem > d->max_elems)) {
 		if (d->min_elems == d->max_elems)
 			report(ctx, o->file, o->line, what, "%d parameters in { } (%s), expected %d (E_PAR)",
@@ -777,6 +1029,10 @@ static void parse_api(struct cfg_ctx *ctx, enum api a)
 		else
 			next(ctx);
 		if (a == API_INCLUDE) {
+			/* TECS's generated configuration: an app of TOPPERS's third-generation kernels */
+			if (strcmp(s, "tecsgen.cfg") == 0)
+				mark_profile(ctx, true, name->file, name->line, "INCLUDE(\"tecsgen.cfg\")",
+					     "INCLUDE(\"tecsgen.cfg\") (TECS's components, of a third-generation kernel)");
 			if (ctx->include == NULL)
 				report(ctx, name->file, name->line, what, "INCLUDE is not available here");
 			else
@@ -947,6 +1203,15 @@ static const char *unsupported_api(const char *name)
 	return NULL;
 }
 
+/* What an HRP3-only static API configures; NULL for other names. */
+static const char *hrp3_only_api(const char *name)
+{
+	for (size_t i = 0; i < sizeof(hrp3_only_apis) / sizeof(hrp3_only_apis[0]); i++)
+		if (strcmp(hrp3_only_apis[i].name, name) == 0)
+			return hrp3_only_apis[i].what;
+	return NULL;
+}
+
 /* Why a static API of another TOPPERS kernel is not HRP2's; NULL for other names. */
 static const char *foreign_api(const char *name)
 {
@@ -1074,6 +1339,11 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name)
 			}
 			if ((what = unsupported_api(t->text)) != NULL) {
 				report_at(ctx, t, t->text, "a static API of TOPPERS/HRP2 (%s) not supported by ev3lx", what);
+				skip_statement(ctx);
+				continue;
+			}
+			if ((what = hrp3_only_api(t->text)) != NULL) {
+				report_at(ctx, t, t->text, "a static API of TOPPERS/HRP3 (%s) not supported by ev3lx", what);
 				skip_statement(ctx);
 				continue;
 			}
@@ -1370,6 +1640,17 @@ static void emit_checks(const struct cfg_ctx *ctx, struct out *o, const struct o
 		}
 		break;
 	case API_CRE_CYC:
+		if (ob->nfy) {
+			/* HRP3: TA_STA only; times in us up to HRP3's TMAX_RELTIM (kernel/cyclic.trb) */
+			snprintf(c, sizeof(c), "((%s) & ~(ATR)TA_STA) == 0", ob->elem[0]);
+			check(o, ob, c, "CRE_CYC(%s): illegal cycatr: HRP3 has TA_STA only (E_RSATR)", id);
+			snprintf(c, sizeof(c), "(%s) > 0 && (%s) <= TMAX_RELTIM", ob->elem[2], ob->elem[2]);
+			check(o, ob, c, "CRE_CYC(%s): cyctim out of range 1..TMAX_RELTIM (E_PAR)", id);
+			snprintf(c, sizeof(c), "(%s) >= 0 && (%s) <= TMAX_RELTIM", ob->elem[3], ob->elem[3]);
+			check(o, ob, c, "CRE_CYC(%s): cycphs out of range 0..TMAX_RELTIM (E_PAR)", id);
+			break;
+		}
+		/* fall through */
 	case API_EV3_CRE_CYC:
 		snprintf(c, sizeof(c), "((%s) & ~(ATR)(TA_STA | TA_PHS)) == 0", ob->elem[0]);
 		check(o, ob, c, "%s(%s): illegal cycatr (E_RSATR)", apis[ob->api].name, id);
@@ -1430,6 +1711,74 @@ static int count_api(const struct cfg_ctx *ctx, enum api a, enum api b)
 	return n;
 }
 
+/* The handler a notification's row names: TNFY_HANDLER's own, else the one
+ * emit_nfy_handler writes (a static buffer, used at once). */
+static const char *nfy_handler(const struct obj *ob)
+{
+	static char name[200];
+
+	if (ob->nfymode == NFY_HANDLER)
+		snprintf(name, sizeof(name), "(%s)(%s)", ob->api == API_CRE_CYC ? "CYCHDR" : "ALMHDR", ob->nfy_elem[2]);
+	else
+		snprintf(name, sizeof(name), "ev3cfg_nfy_%s", ob->id);
+	return name;
+}
+
+/* Writes the handler of an HRP3 notification other than TNFY_HANDLER, as
+ * HRP3's configurator generates it (kernel/kernel.trb): it runs in non-task
+ * context with par1 as exinf, does the notification and, when that fails and
+ * a TENFY_* is given, the error notification. */
+static void emit_nfy_handler(struct out *o, const struct obj *ob)
+{
+	unsigned mode1 = ob->nfymode & 0x0fU, mode2 = ob->nfymode & ~0x0fU;
+	int epar = mode1 == NFY_SETFLG || mode1 == NFY_SNDDTQ ? 3 : 2;
+	const char *call = NULL;
+	char *const *p = ob->nfy_elem;
+
+	at_api(o, ob);
+	emit(o, "static void ev3cfg_nfy_%s(intptr_t exinf)\n{\n", ob->id);
+	switch (mode1) {
+	case NFY_SETVAR:
+		emit(o, "\t*((intptr_t *)exinf) = (intptr_t)(%s);\n}\n", p[2]);
+		return;
+	case NFY_INCVAR:
+		emit(o, "\t(void)iloc_cpu();\n\t*((intptr_t *)exinf) += 1;\n\t(void)iunl_cpu();\n}\n");
+		return;
+	case NFY_ACTTSK: call = "iact_tsk((ID)exinf)"; break;
+	case NFY_WUPTSK: call = "iwup_tsk((ID)exinf)"; break;
+	case NFY_SIGSEM: call = "isig_sem((ID)exinf)"; break;
+	default: break;
+	}
+	if (mode2 == 0) {
+		if (call != NULL)
+			emit(o, "\t(void)%s;\n}\n", call);
+		else if (mode1 == NFY_SETFLG)
+			emit(o, "\t(void)iset_flg((ID)exinf, (FLGPTN)(%s));\n}\n", p[2]);
+		else
+			emit(o, "\t(void)ipsnd_dtq((ID)exinf, (intptr_t)(%s));\n}\n", p[2]);
+		return;
+	}
+	if (call != NULL)
+		emit(o, "\tER ercd = %s;\n", call);
+	else if (mode1 == NFY_SETFLG)
+		emit(o, "\tER ercd = iset_flg((ID)exinf, (FLGPTN)(%s));\n", p[2]);
+	else
+		emit(o, "\tER ercd = ipsnd_dtq((ID)exinf, (intptr_t)(%s));\n", p[2]);
+	emit(o, "\n\tif (ercd != E_OK) {\n");
+	switch (mode2) {
+	case ENFY_SETVAR: emit(o, "\t\t*(intptr_t *)(%s) = (intptr_t)ercd;\n", p[epar]); break;
+	case ENFY_INCVAR:
+		emit(o, "\t\t(void)iloc_cpu();\n\t\t*(intptr_t *)(%s) += 1;\n\t\t(void)iunl_cpu();\n", p[epar]);
+		break;
+	case ENFY_ACTTSK: emit(o, "\t\t(void)iact_tsk(%s);\n", p[epar]); break;
+	case ENFY_WUPTSK: emit(o, "\t\t(void)iwup_tsk(%s);\n", p[epar]); break;
+	case ENFY_SIGSEM: emit(o, "\t\t(void)isig_sem(%s);\n", p[epar]); break;
+	case ENFY_SETFLG: emit(o, "\t\t(void)iset_flg(%s, (FLGPTN)(%s));\n", p[epar], p[epar + 1]); break;
+	default: emit(o, "\t\t(void)ipsnd_dtq(%s, (intptr_t)ercd);\n", p[epar]); break;
+	}
+	emit(o, "\t}\n}\n");
+}
+
 static void emit_row(const struct cfg_ctx *ctx, struct out *o, const struct obj *ob)
 {
 	const char *const *e = (const char *const *)ob->elem;
@@ -1460,11 +1809,19 @@ static void emit_row(const struct cfg_ctx *ctx, struct out *o, const struct obj 
 		emit(o, "\t{ %s, %s, %s, \"%s\" },\n", ob->id, e[0], ob->nelem == 2 ? e[1] : "0", ob->id);
 		break;
 	case API_CRE_CYC:
-		emit(o, "\t{ %s, %s, (intptr_t)(%s), %s, %s, %s, \"%s\" },\n", ob->id, e[0], e[1], e[2], e[3], e[4],
-		     ob->id);
+		if (ob->nfy)
+			emit(o, "\t{ %s, %s, (intptr_t)(%s), %s, %s, %s, \"%s\" },\n", ob->id, e[0], ob->nfy_elem[1],
+			     nfy_handler(ob), e[2], e[3], ob->id);
+		else
+			emit(o, "\t{ %s, %s, (intptr_t)(%s), %s, %s, %s, \"%s\" },\n", ob->id, e[0], e[1], e[2], e[3],
+			     e[4], ob->id);
 		break;
 	case API_CRE_ALM:
-		emit(o, "\t{ %s, %s, (intptr_t)(%s), %s, \"%s\" },\n", ob->id, e[0], e[1], e[2], ob->id);
+		if (ob->nfy)
+			emit(o, "\t{ %s, %s, (intptr_t)(%s), %s, \"%s\" },\n", ob->id, e[0], ob->nfy_elem[1],
+			     nfy_handler(ob), ob->id);
+		else
+			emit(o, "\t{ %s, %s, (intptr_t)(%s), %s, \"%s\" },\n", ob->id, e[0], e[1], e[2], ob->id);
 		break;
 	case API_ATT_INI:
 	case API_ATT_TER:
@@ -1523,6 +1880,8 @@ void cfg_write_source(const struct cfg_ctx *ctx, FILE *f, const char *symbol, co
 	int nmods = 0, nev3cyc = count_api(ctx, API_EV3_CRE_CYC, API_COUNT), ntables = 0;
 
 	emit(&o, "/* %s — the configuration's tables; generated by ev3cfg, do not edit. */\n", source_name);
+	if (cfg_profile(ctx) == CFG_PROFILE_HRP3)
+		emit(&o, "#ifndef EV3LX_KERNEL_HRP3\n#define EV3LX_KERNEL_HRP3 1\n#endif\n");
 	emit(&o, "#include \"kernel.h\"\n#include \"rtos_cfg.h\"\n#include \"kernel_cfg.h\"\n");
 	for (int i = 0; i < ctx->nc_includes; i++)
 		emit(&o, "%s\n", ctx->c_includes[i]);
@@ -1552,6 +1911,13 @@ void cfg_write_source(const struct cfg_ctx *ctx, FILE *f, const char *symbol, co
 		}
 		at_self(&o);
 	}
+	for (int i = 0; i < ctx->nobjs; i++)
+		if (ctx->objs[i].nfy && ctx->objs[i].nfymode != NFY_HANDLER) {
+			if (i == 0 || !ctx->objs[i - 1].nfy)
+				emit(&o, "\n/* HRP3's notifications, as its configurator writes them. */\n");
+			emit_nfy_handler(&o, &ctx->objs[i]);
+		}
+	at_self(&o);
 	for (size_t t = 0; t < sizeof(tables) / sizeof(tables[0]); t++) {
 		if (tables[t].a == API_CRE_CYC) {
 			/* kernel cyclic handlers: CRE_CYC rows, then one per EV3_CRE_CYC */
@@ -1637,5 +2003,17 @@ void cfg_write_source(const struct cfg_ctx *ctx, FILE *f, const char *symbol, co
 		emit(&o, "\t.mems = RTOS_TABLE(ev3cfg_mems),\n");
 	if (ntables > 0)
 		emit(&o, "\t.includes = ev3cfg_includes,\n");
+	if (cfg_profile(ctx) == CFG_PROFILE_HRP3)
+		emit(&o, "\t.profile = RTOS_PROFILE_HRP3,\n");
 	emit(&o, "};\n");
+}
+
+void cfg_write_profile(const struct cfg_ctx *ctx, FILE *f)
+{
+	fputs("/* The kernel profile the app is built for; generated by ev3cfg, do not edit. */\n", f);
+	if (cfg_profile(ctx) == CFG_PROFILE_HRP3)
+		fputs("/* TOPPERS/HRP3 (EV3RT 1.x): time in us, HRP3's calls (kernel_hrp3.h). */\n"
+		      "#define EV3LX_KERNEL_HRP3 1\n", f);
+	else
+		fputs("/* TOPPERS/HRP2 (EV3RT 0.x): time in ms. */\n", f);
 }

@@ -32,6 +32,26 @@ int cfg_parse(struct cfg_ctx *ctx, const char *text, const char *name);
 /* Errors reported so far. */
 int cfg_errors(const struct cfg_ctx *ctx);
 
+/* The kernel profile a configuration is written for: TOPPERS/HRP2 (EV3RT
+ * 0.x; times in ms, CRE_CYC with a handler) or TOPPERS/HRP3 (EV3RT 1.x;
+ * times in us, CRE_CYC with a notification); AUTO: told by its static APIs. */
+#define CFG_PROFILE_AUTO 0
+#define CFG_PROFILE_HRP2 2
+#define CFG_PROFILE_HRP3 3
+
+/* Builds the configuration for profile (CFG_PROFILE_*), before cfg_parse: a
+ * static API of the other kernel's form is then an error. */
+void cfg_set_profile(struct cfg_ctx *ctx, int profile);
+
+/* The profile given, or told by the static APIs parsed (HRP3 if any is in
+ * HRP3's form, else HRP2). */
+int cfg_profile(const struct cfg_ctx *ctx);
+
+/* Writes the header every source of the app is compiled with first (the
+ * build's -include): it defines EV3LX_KERNEL_HRP3 for the HRP3 profile, so
+ * that kernel.h gives HRP3's names, types and calls. */
+void cfg_write_profile(const struct cfg_ctx *ctx, FILE *out);
+
 /* Records an #include directive of a .cfg file, copied into kernel_cfg.c. */
 void cfg_add_c_include(struct cfg_ctx *ctx, const char *directive);
 

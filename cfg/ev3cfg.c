@@ -3,7 +3,7 @@
  * TOPPERS-style configuration file into kernel tables.
  *
  *   ev3cfg -o OUTDIR [-I dir]... [-D name[=value]]... [--cpp CMD] [--symbol NAME]
- *          [--object path.o]... app.cfg
+ *          [--kernel auto|hrp2|hrp3] [--object path.o]... app.cfg
  *
  * app.cfg is run through the C preprocessor (CMD, default "cpp", with
  * -DTOPPERS_MACRO_ONLY -DTOPPERS_CFG1 -DTOPPERS_CFG1_OUT and the -I/-D options:
@@ -16,6 +16,11 @@
  * else in a .cfg file's text is an error, HRP2's other static APIs by name;
  * so is a NUL byte.  It writes:
  *
+ *   OUTDIR/kernel_profile.h  the kernel profile the app is built for, which the
+ *                          build includes first in every source of the app:
+ *                          EV3LX_KERNEL_HRP3 for TOPPERS/HRP3 (EV3RT 1.x, time in us),
+ *                          from --kernel, or (auto, the default) HRP3 when a CRE_CYC
+ *                          or CRE_ALM is in HRP3's notification form
  *   OUTDIR/kernel_cfg.h    #define of every object ID and domain; the apps include it
  *   OUTDIR/kernel_cfg.c    the rtos_cfg tables and `const struct rtos_cfg NAME`
  *                          (default ev3rt_app_cfg), INCLUDEing the tables named
@@ -281,7 +286,10 @@ static int write_outputs(const struct cfg_ctx *ctx, const char *outdir, const ch
 {
 	FILE *f, *ld;
 
-	if ((f = open_out(outdir, "kernel_cfg.h")) == NULL)
+	if ((f = open_out(outdir, "kernel_profile.h")) == NULL)
+		return 2;
+	cfg_write_profile(ctx, f);
+	if (close_out(f, outdir, "kernel_profile.h") != 0 || (f = open_out(outdir, "kernel_cfg.h")) == NULL)
 		return 2;
 	cfg_write_header(ctx, f, symbol);
 	if (close_out(f, outdir, "kernel_cfg.h") != 0 || (f = open_out(outdir, "kernel_cfg.c")) == NULL)
@@ -310,7 +318,7 @@ static int write_outputs(const struct cfg_ctx *ctx, const char *outdir, const ch
 static int usage(void)
 {
 	fputs("usage: ev3cfg -o OUTDIR [-I dir]... [-D name[=value]]... [--cpp CMD] [--symbol NAME]\n"
-	      "              [--object path.o]... app.cfg\n", stderr);
+	      "              [--kernel auto|hrp2|hrp3] [--object path.o]... app.cfg\n", stderr);
 	return 2;
 }
 
@@ -319,7 +327,7 @@ int main(int argc, char **argv)
 	struct tool tool = { .cpp = "cpp" };
 	const char *outdir = NULL, *symbol = "ev3rt_app_cfg", *input = NULL;
 	struct cfg_ctx *ctx;
-	int errors, status;
+	int errors, status, profile = CFG_PROFILE_AUTO;
 
 	for (int i = 1; i < argc; i++) {
 		const char *a = argv[i];
@@ -328,7 +336,8 @@ int main(int argc, char **argv)
 		if ((strncmp(a, "-I", 2) == 0 || strncmp(a, "-D", 2) == 0) && a[2] != '\0') {
 			val = a + 2;
 		} else if (strcmp(a, "-I") == 0 || strcmp(a, "-D") == 0 || strcmp(a, "-o") == 0 ||
-			   strcmp(a, "--cpp") == 0 || strcmp(a, "--symbol") == 0 || strcmp(a, "--object") == 0) {
+			   strcmp(a, "--cpp") == 0 || strcmp(a, "--symbol") == 0 || strcmp(a, "--object") == 0 ||
+			   strcmp(a, "--kernel") == 0) {
 			if (++i == argc)
 				return usage();
 			val = argv[i];
@@ -350,12 +359,24 @@ int main(int argc, char **argv)
 			symbol = val;
 		else if (strcmp(a, "--object") == 0 && tool.nobjects < MAX_ARGS)
 			tool.objects[tool.nobjects++] = val;
-		else
+		else if (strcmp(a, "--kernel") == 0 && strcmp(val, "auto") == 0)
+			profile = CFG_PROFILE_AUTO;
+		else if (strcmp(a, "--kernel") == 0 && strcmp(val, "hrp2") == 0)
+			profile = CFG_PROFILE_HRP2;
+		else if (strcmp(a, "--kernel") == 0 && strcmp(val, "hrp3") == 0 && tool.ndefs < MAX_ARGS) {
+			/* the configuration is read as the app's sources are compiled */
+			profile = CFG_PROFILE_HRP3;
+			tool.defs[tool.ndefs++] = "EV3LX_KERNEL_HRP3=1";
+		} else if (strcmp(a, "--kernel") == 0) {
+			fprintf(stderr, "ev3cfg: --kernel %s: expected auto, hrp2 or hrp3\n", val);
+			return 2;
+		} else
 			return usage();
 	}
 	if (input == NULL || outdir == NULL)
 		return usage();
 	ctx = cfg_new(stderr, include_file, &tool);
+	cfg_set_profile(ctx, profile);
 	tool.included[tool.nincluded++] = strdup(input);
 	errors = process_file(ctx, &tool, input);
 	cfg_finish(ctx);

@@ -17,7 +17,10 @@
 #           then also linked as the program $(BUILD)/CONFIG/ev3rt/NAME/NAME
 #
 # EV3RT_SYMBOL_NAME (optional, set before the call) names the configuration
-# symbol instead of ev3rt_app_cfg.  EV3RT_PLATFORM_NAME_CONFIG (optional):
+# symbol instead of ev3rt_app_cfg.  EV3RT_KERNEL_NAME (optional): the kernel
+# profile, hrp2 or hrp3 (ev3cfg --kernel); by default ev3cfg tells it from
+# the configuration (docs/ev3rt-apps.md, "Two kernel profiles") and writes
+# gen/kernel_profile.h, which every source of the app includes first.  EV3RT_PLATFORM_NAME_CONFIG (optional):
 # what the program links the app against instead of libev3lx.a.  EV3RT_LIBS_NAME_CONFIG (optional): static
 # libraries the program links after the app (an EV3RT SDK library's archive,
 # Makefile.inc's APPL_LIBS).
@@ -32,7 +35,10 @@
 # relocatable object holding the app's objects, every ATT_MOD object relinked
 # into its domain's sections, and kernel_cfg.o — link it with a runner and
 # libev3lx.a.  App sources get EV3RT_APP_WARN (no -Werror: apps build
-# unchanged); configuration errors stop the build with "app.cfg:LINE: ...".
+# unchanged; none under the app's OMIT_WARNING_ALL, EV3RT_OMIT_WALL_NAME_CONFIG)
+# and, last, the app's own flags (EV3RT_APPFLAGS_NAME_CONFIG: its COPTS, CDEFS,
+# APPL_CFLAGS); the program is linked with its EV3RT_LDFLAGS_NAME_CONFIG;
+# configuration errors stop the build with "app.cfg:LINE: ...".
 EV3RT_APP_WARN ?= -Wall -Wno-unused-parameter
 
 # The app's C library file calls (fopen, open, mkdir, rename, remove, stat,
@@ -63,28 +69,34 @@ EV3RT_DIR_$(1)_$(2)  := $(BUILD)/$(2)/ev3rt/$(1)
 EV3RT_OBJS_$(1)_$(2) := $$(patsubst %,$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o,$$(basename $(4)))
 EV3RT_LINK_$(1)_$(2) := $$(if $$(filter %.cpp,$(4)),$$(CXX_$(2)),$$(CC_$(2)))
 EV3RT_INC_$(1)_$(2)  := -I$(BUILD)/$(2)/ev3rt/$(1)/gen -I$(patsubst %/,%,$(dir $(3))) -Icfg $(call layer_inc,api)
+EV3RT_PROFILE_$(1)_$(2) := -include $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_profile.h
+$(eval $(call key_file_rule,$(BUILD)/$(2)/ev3rt/$(1)/kernel.key,$(or $(EV3RT_KERNEL_$(1)),auto)))
 
-$(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg $$(wildcard $(dir $(3))*.h $(dir $(3))*.cfg)
+$(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg cfg/tecsgen.cfg \
+		$$(wildcard $(dir $(3))*.h $(dir $(3))*.cfg) $(BUILD)/$(2)/ev3rt/$(1)/kernel.key
 	@mkdir -p $$(@D)
 	$$(quiet) CFG $(2) $(3)
 	$(Q)$$(EV3CFG) -o $$(@D) --cpp '$$(CC_$(2)) -E' $$(EV3RT_INC_$(1)_$(2)) $(KERNEL_DEFS) \
-		$(if $(EV3RT_SYMBOL_$(1)),--symbol $(EV3RT_SYMBOL_$(1))) \
+		$(if $(EV3RT_SYMBOL_$(1)),--symbol $(EV3RT_SYMBOL_$(1))) --kernel $(or $(EV3RT_KERNEL_$(1)),auto) \
 		$$(addprefix --object ,$$(EV3RT_OBJS_$(1)_$(2))) $(3)
 
-$(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c ;
+$(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_profile.h: \
+	$(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c ;
 
 $(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.c $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h $(BUILD)/$(2)/compile.key \
 		$(BUILD)/$(2)/ev3rt/app.key
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(2) $$<
-	$(Q)$$(CC_$(2)) $$(EV3RT_APP_CSTD) $$(EV3RT_APP_CPU) $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+	$(Q)$$(CC_$(2)) $$(EV3RT_APP_CSTD) $$(EV3RT_APP_CPU) $$(EV3RT_PROFILE_$(1)_$(2)) $$(EV3RT_INC_$(1)_$(2)) \
+		$$(if $$(EV3RT_OMIT_WALL_$(1)_$(2)),,$$(EV3RT_APP_WARN)) $$(CFLAGS_$(2)) $(KERNEL_DEFS) $$(EV3RT_APPFLAGS_$(1)_$(2)) \
 		-MMD -MP -c $$< -o $$@
 
 $(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.cpp $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h $(BUILD)/$(2)/compile.key \
 		$(BUILD)/$(2)/ev3rt/app.key
 	@mkdir -p $$(@D)
 	$$(quiet) CXX $(2) $$<
-	$(Q)$$(CXX_$(2)) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CPU) $$(EV3RT_INC_$(1)_$(2)) $$(EV3RT_APP_WARN) $$(CFLAGS_$(2)) $(KERNEL_DEFS) \
+	$(Q)$$(CXX_$(2)) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CPU) $$(EV3RT_PROFILE_$(1)_$(2)) $$(EV3RT_INC_$(1)_$(2)) \
+		$$(if $$(EV3RT_OMIT_WALL_$(1)_$(2)),,$$(EV3RT_APP_WARN)) $$(CFLAGS_$(2)) $(KERNEL_DEFS) $$(EV3RT_APPFLAGS_$(1)_$(2)) \
 		-MMD -MP -c $$< -o $$@
 
 $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c $(BUILD)/$(2)/compile.key
@@ -134,7 +146,7 @@ ifneq ($(strip $(5)),)
 EV3RT_PLATFORM_$(1)_$(2) ?= $(BUILD)/$(2)/libev3lx.a
 $(BUILD)/$(2)/ev3rt/$(1)/$(1): $(BUILD)/$(2)/ev3rt/$(1)/$(1).o $(5) $$(EV3RT_PLATFORM_$(1)_$(2)) $$(EV3RT_LIBS_$(1)_$(2))
 	$$(quiet) LD $(2) $$@
-	$(Q)$$(EV3RT_LINK_$(1)_$(2)) $$(CFLAGS_$(2)) $$(LDFLAGS_$(2)) -o $$@ $$< $(5) \
+	$(Q)$$(EV3RT_LINK_$(1)_$(2)) $$(CFLAGS_$(2)) $$(LDFLAGS_$(2)) $$(EV3RT_LDFLAGS_$(1)_$(2)) -o $$@ $$< $(5) \
 		-Wl,--start-group $$(EV3RT_LIBS_$(1)_$(2)) $$(EV3RT_PLATFORM_$(1)_$(2)) -Wl,--end-group -lm \
 		$$(EV3RT_LDLIBS_$(1)_$(2))
 endif

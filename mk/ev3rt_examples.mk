@@ -57,6 +57,9 @@ define ev3rt_dir_app
 EV3RT_LIBS_$(1)_$(2) := $$(filter-out -l%,$$($(4)_LDLIBS))
 EV3RT_LDLIBS_$(1)_$(2) := $$(filter -l%,$$($(4)_LDLIBS))
 EV3RT_DOMLIBS_$(1)_$(2) := $$(patsubst %,$(BUILD)/$(2)/ev3rt/$(1)/lib/%.a,$$($(4)_SLIBS))
+EV3RT_APPFLAGS_$(1)_$(2) := $$($(4)_CFLAGS)
+EV3RT_OMIT_WALL_$(1)_$(2) := $$($(4)_OMIT_WALL)
+EV3RT_LDFLAGS_$(1)_$(2) := $$($(4)_LDFLAGS)
 $(call ev3rt_app,$(1),$(2),$(3)/app.cfg,$$($(4)_SRCS),$(5))
 EV3RT_INC_$(1)_$(2) += $$($(4)_INCLUDES)
 $$(foreach l,$$($(4)_SLIBS),$$(eval $$(call ev3rt_slib_rules,$$(l),$(1),$(2),$(4))))
@@ -73,7 +76,8 @@ $(foreach e,$(EXAMPLES),$(call ev3rt_read_app,examples/$(e),EXAMPLE_$(e),$(CURDI
 define ev3rt_example_rules
 $(call ev3rt_dir_app,$(1),$(2),examples/$(1),EXAMPLE_$(1))
 # a C++ example's test links libstdc++, as the app's program would
-TEST_LDLIBS_examples/test_$(1) := $$(if $$(filter %.cpp,$$(EXAMPLE_$(1)_SRCS)),-lstdc++)
+TEST_LDLIBS_examples/test_$(1) := $$(if $$(filter %.cpp,$$(EXAMPLE_$(1)_SRCS)),-lstdc++) \
+	$$(EXAMPLE_$(1)_LDFLAGS) $$(EXAMPLE_$(1)_LDLIBS)
 
 $(BUILD)/$(2)/obj/tests/examples/test_$(1).o: tests/examples/test_$(1).c $(BUILD)/$(2)/ev3rt/$(1)/$(1).o
 	@mkdir -p $$(@D)
@@ -187,6 +191,12 @@ $(error EV3RT_RUN_CONFIG=$(EV3RT_RUN_CONFIG): ev3sim runs apps in $(EV3SIM_CONFI
 endif
 EV3RT_RUN_DIR  := $(BUILD)/$(EV3RT_RUN_CONFIG)/ev3rt/$(EV3RT_RUN_NAME)
 EV3RT_LIB_DIR ?=
+# the kernel profile (ev3sim run --kernel): auto, hrp2 or hrp3
+EV3RT_KERNEL ?= auto
+ifeq ($(filter auto hrp2 hrp3,$(EV3RT_KERNEL)),)
+$(error EV3RT_KERNEL=$(EV3RT_KERNEL): expected auto, hrp2 or hrp3)
+endif
+EV3RT_KERNEL_$(EV3RT_RUN_NAME) := $(EV3RT_KERNEL)
 $(call ev3rt_read_app,$(APP),EV3RT_RUN,$(EV3RT_LIB_DIR),$(EV3RT_RUN_DIR)/sdk)
 
 $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
@@ -208,7 +218,10 @@ endif
 # `make ev3sim-run-check` (in make test): `ev3sim run` builds an app directory
 # and runs it, ending with its summary line: examples/blink, an app whose
 # Makefile.inc adds a source from another directory (APPL_COBJS, APPL_DIRS,
-# INCLUDES, mkfile_path) with its own ATT_MOD, an app with a main() and
+# INCLUDES, mkfile_path) with its own ATT_MOD, one whose Makefile.inc sets
+# COPTS, CDEFS, APPL_CFLAGS, SRCDIRS, LDFLAGS, APPL_LIBS, LIBS and OMIT_*
+# (tests/ev3sim/apps/makeinc, an ET Robocon-style HRP3 app: INCLUDE("tecsgen.cfg")), an HRP3 app and an HRP2 app side by side
+# (examples/notify, examples/dtq), an app with a main() and
 # global names ev3lx uses inside (tests/ev3sim/apps/namespace); then
 # tests/ev3sim/apps/misbehave crashes (status 4) and stalls (status 3), each
 # reported with its source line from the runner `ev3sim run` built.
@@ -228,6 +241,19 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=multisrc .* warnings=0 errors=0 bugs=0 " || \
 		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
 	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
+	+$(Q)out=$$($(BUILD)/host/ev3sim run tests/ev3sim/apps/makeinc --seconds 1) || \
+		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/makeinc exited $$?"; exit 1; }; \
+	printf '%s\n' "$$out" | grep -q "NOTICE: makeinc: gain 150, CDEFS and APPL_CFLAGS, not optimized, zlib [0-9.]*, sqrt 7, dly_tsk(250000) 250 ms" && \
+	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=makeinc .* warnings=0 errors=0 bugs=0 " || \
+		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
+	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
+	+$(Q)for app in notify dtq; do \
+		out=$$($(BUILD)/host/ev3sim run examples/$$app --seconds 4 --quiet) || \
+			{ echo "ev3sim-run-check: FAILED: ev3sim run examples/$$app exited $$?"; exit 1; }; \
+		printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=$$app .* warnings=0 errors=0 bugs=0 " || \
+			{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
+		echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"; \
+	done
 	+$(Q)out=$$($(BUILD)/host/ev3sim run tests/ev3sim/apps/namespace --seconds 1) || \
 		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/namespace exited $$?"; exit 1; }; \
 	printf '%s\n' "$$out" | grep -q "NOTICE: namespace: main() says 22" && \

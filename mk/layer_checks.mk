@@ -73,7 +73,7 @@ HDRCHECK_OBJS := $(foreach c,host am1808,$(foreach p,$(HDRCHECK_PAIRS_$(c)),$(HD
 # EV3RT's apps may be C++ (app.cpp), and every one of these declares its
 # functions with C linkage.
 HDRCHECK_CXX_HDRS := $(filter-out api/ev3api_brick_io.h,$(wildcard api/*.h api/syssvc/*.h)) \
-	$(addprefix rtos_stub/include/,kernel.h t_stddef.h t_syslog.h t_stdlib.h target_kernel.h ev3.h syssvc/syslog.h)
+	$(addprefix rtos_stub/include/,kernel.h kernel_hrp3.h t_stddef.h t_syslog.h t_stdlib.h target_kernel.h ev3.h syssvc/syslog.h)
 # ev3lx's SDK libraries' headers (api/library/LIB/include) are an app's
 # too, included by name with the library's include/ on the path as the app's
 # build puts it; they are checked as EV3RT's app build compiles C++

@@ -162,12 +162,13 @@ static int run_program(char *const argv[], char *err, size_t err_len)
 	return WEXITSTATUS(wstatus);
 }
 
-int ev3sim_app_build(const char *root, const char *config, const char *app, const char *lib_dir, char *runner,
-		     size_t runner_len, char *err, size_t err_len)
+int ev3sim_app_build(const char *root, const char *config, const char *app, const char *lib_dir, const char *kernel,
+		     char *runner, size_t runner_len, char *err, size_t err_len)
 {
 	char key[APP_NAME_MAX + 32], name[APP_NAME_MAX + 1], dir[PATH_MAX], lock[PATH_MAX + 8];
 	char app_arg[PATH_MAX + 8], lib_arg[PATH_MAX + 24] = "EV3RT_LIB_DIR=";
 	char name_arg[APP_NAME_MAX + 32], key_arg[APP_NAME_MAX + 48], config_arg[APP_NAME_MAX + 32];
+	char kernel_arg[32];
 	int lock_fd, fd = -1, status;
 
 	ev3sim_app_name(app, name, sizeof(name));
@@ -184,6 +185,7 @@ int ev3sim_app_build(const char *root, const char *config, const char *app, cons
 		snprintf(lib_arg, sizeof(lib_arg), "EV3RT_LIB_DIR=%s/libdir", dir);
 	snprintf(name_arg, sizeof(name_arg), "EV3RT_APP_NAME=%s", name);
 	snprintf(key_arg, sizeof(key_arg), "EV3RT_RUN_KEY=%s", key);
+	snprintf(kernel_arg, sizeof(kernel_arg), "EV3RT_KERNEL=%s", kernel != NULL ? kernel : "auto");
 	if (make_dirs(dir) != 0) {
 		snprintf(err, err_len, "cannot create %s: %s", dir, strerror(errno));
 		return -1;
@@ -205,7 +207,7 @@ int ev3sim_app_build(const char *root, const char *config, const char *app, cons
 		snprintf(err, err_len, "cannot link %s/libdir to %s: %s", dir, lib_dir, strerror(errno));
 	} else {
 		char *make_argv[] = { "make", "-s", "--no-print-directory", "-C", (char *)root, app_arg, lib_arg,
-				      name_arg, key_arg, config_arg, "ev3rt-app", NULL };
+				      name_arg, key_arg, config_arg, kernel_arg, "ev3rt-app", NULL };
 		char why[PATH_MAX + 64] = "";
 
 		status = run_program(make_argv, why, sizeof(why));

@@ -20,10 +20,10 @@
 #include "ev3sim/plot.h"
 #include "ev3sim/run.h"
 #include "ev3sim/serial_log.h"
+#include "host_sim/devices/uart_sensor.h"
 
 #define MAX_PUSH_NM		5.0       /* largest push torque, N m */
 #define MAX_START_TILT_DEG	30.0      /* tilt when let go, exclusive */
-#define MAX_GYRO_NOISE_DPS	1000.0
 #define MIN_LOG_BAUD		300U
 #define MAX_LOG_BAUD		4000000U
 
@@ -58,7 +58,7 @@ static const char balance_usage[] =
 	"  --push T:NM          pitch torque NM (N m, |NM| <= 5) on the body for 100 ms at\n"
 	"                       time T (e.g. 5s:0.2); may repeat (up to 16)\n"
 	"  --tilt DEG           tilt when let go (default 0.5)\n"
-	"  --gyro-noise SIGMA   gyro sample noise, deg/s (default 0.3)\n"
+	"  --gyro-noise SIGMA   gyro sample noise, deg/s (default 0.15: an EV3 gyro at rest)\n"
 	"  --fault SPEC         inject a fault; may repeat (up to 16):\n"
 	"                         gyro-noise:SIGMA  gyro-drift:DPS\n"
 	"                         uart-bit-errors:P[:T[:D]]  uart-drop:P[:T[:D]]  uart-dup:P[:T[:D]]\n"
@@ -310,7 +310,7 @@ static int opt_tilt(struct args *a, const char *v, struct balance_cli *c)
 static int opt_gyro_noise(struct args *a, const char *v, struct balance_cli *c)
 {
 	if (!ev3sim_parse_double(v, &c->o.gyro_noise_dps) || c->o.gyro_noise_dps < 0 ||
-	    c->o.gyro_noise_dps > MAX_GYRO_NOISE_DPS)
+	    c->o.gyro_noise_dps > EV3SIM_MAX_GYRO_NOISE_DPS)
 		return usage_error(a, "--gyro-noise: bad value '%s' (0..1000 deg/s)", v);
 	return EV3SIM_EXIT_OK;
 }
@@ -372,7 +372,8 @@ static int cmd_balance(struct args *a)
 {
 	struct balance_cli c = {
 		.o = { .seconds = 10.0, .seed = 1, .app = { .balancer = true, .logger_hz = 1000 },
-		       .start_tilt_deg = 0.5, .gyro_noise_dps = 0.3, .progress = true },
+		       .start_tilt_deg = 0.5, .gyro_noise_dps = UART_SENSOR_GYRO_NOISE_AT_REST_DPS,
+		       .progress = true },
 	};
 	struct ev3sim_balance_opts o;
 	struct ev3sim_balance_result r;

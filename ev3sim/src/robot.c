@@ -77,6 +77,15 @@ static double push_torque(uint64_t t)
 	return sum;
 }
 
+/* True once the app runs a motor: its bridge drives or brakes (a motor the
+ * app has not started, or has floated, coasts). */
+static bool bridge_engaged(struct hs_motor *m)
+{
+	struct hbridge_drive d = hs_motor_drive(m);
+
+	return d.fwd != 0.0 || d.rev != 0.0 || d.brake != 0.0;
+}
+
 /* Bridge drive of a motor as a signed fraction. */
 static double duty_of(struct hs_motor *m)
 {
@@ -145,7 +154,7 @@ static void robot_step(void *arg)
 	double omega, phi, theta, a, b, c, h, roll;
 
 	/* the hand waits for the app to drive the wheels, where asked to */
-	if (!rb.driven && (duty_of(rb.motor[0]) != 0.0 || duty_of(rb.motor[1]) != 0.0))
+	if (!rb.driven && (bridge_engaged(rb.motor[0]) || bridge_engaged(rb.motor[1])))
 		rb.driven = true;
 	held = t < rb.cfg.release_ns || (rb.cfg.release_on_drive && !rb.driven);
 

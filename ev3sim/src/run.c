@@ -111,7 +111,7 @@ void ev3sim_run_defaults(struct ev3sim_run_opts *o, enum ev3sim_robot_kind robot
 		o->out[3] = EV3SIM_OUT_LARGE;
 		o->in[1] = EV3SIM_IN_GYRO;
 		o->start_tilt_deg = 0.5;
-		o->gyro_noise_dps = 0.3;
+		o->gyro_noise_dps = UART_SENSOR_GYRO_NOISE_AT_REST_DPS;
 		break;
 	case EV3SIM_ROBOT_TRIBOT:
 		o->out[1] = EV3SIM_OUT_LARGE;

@@ -36,7 +36,11 @@ static const char run_usage[] =
 	"  --lib-dir DIR        EV3RT SDK libraries the app's Makefile.inc includes from\n"
 	"                       $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile (e.g. the SDK's\n"
 	"                       common/library), beside ev3lx's own (libcpp-ev3), whose\n"
-	"                       library of the same name they replace; first option only\n"
+	"                       library of the same name they replace; before the others\n"
+	"  --kernel K           the kernel profile the app is written for: hrp2 (EV3RT 0.x,\n"
+	"                       time in ms), hrp3 (EV3RT 1.x, time in us) or auto (default:\n"
+	"                       hrp3 when app.cfg has a CRE_CYC or CRE_ALM in HRP3's\n"
+	"                       notification form); before the others\n"
 	"  --robot R            bare, gyroboy or tribot (default bare):\n"
 	"                         gyroboy: large motors A (left), D (right), gyro on 2; held\n"
 	"                                  upright until --release (when the app drives\n"
@@ -54,6 +58,8 @@ static const char run_usage[] =
 	"                       first drives a wheel motor, so a balancer calibrates first)\n"
 	"                       or a time T (let go at T, driven or not)\n"
 	"  --tilt DEG           gyroboy: tilt when let go (default 0.5)\n"
+	"  --gyro-noise SIGMA   white noise on every gyro sample, deg/s (default 0.15, an EV3\n"
+	"                       gyro at rest, for the gyro boy's gyro; 0 for one --in names)\n"
 	"  --push T:NM          gyroboy: pitch torque NM (N m) for 100 ms at T; may repeat\n"
 	"  --place T:MM         tribot: the hand puts the robot down MM mm to its left\n"
 	"                       (negative: right) at T, same heading (e.g. to show a\n"
@@ -181,6 +187,10 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 	} else if (strcmp(name, "--tilt") == 0) {
 		if (!ev3sim_parse_double(v, &o->start_tilt_deg) || fabs(o->start_tilt_deg) >= 30.0)
 			return usage("--tilt: bad value '%s' (|DEG| < 30)", v);
+	} else if (strcmp(name, "--gyro-noise") == 0) {
+		if (!ev3sim_parse_double(v, &o->gyro_noise_dps) || !(o->gyro_noise_dps >= 0) ||
+		    o->gyro_noise_dps > EV3SIM_MAX_GYRO_NOISE_DPS)
+			return usage("--gyro-noise: bad value '%s' (0..1000 deg/s)", v);
 	} else if (strcmp(name, "--push") == 0) {
 		double nm;
 
@@ -347,6 +357,7 @@ int ev3sim_run_command(int argc, char **argv)
 	char root[PATH_MAX], app[PATH_MAX], runner[2 * PATH_MAX + 64], err[2 * PATH_MAX + 128];
 	char cfg_path[PATH_MAX + 16], lib_dir[PATH_MAX];
 	const char *config;
+	const char *kernel = NULL;
 	bool have_lib_dir = false;
 	struct stat st;
 	char **args;
@@ -365,16 +376,25 @@ int ev3sim_run_command(int argc, char **argv)
 		fprintf(stderr, "ev3sim run: cannot find the ev3lx source tree\n");
 		return EV3SIM_EXIT_FAIL;
 	}
-	if (argc >= 3 && strcmp(argv[1], "--lib-dir") == 0) {
-		if (realpath(argv[2], lib_dir) == NULL || stat(lib_dir, &st) != 0 || !S_ISDIR(st.st_mode))
-			return usage("--lib-dir '%s' is not a directory", argv[2]);
-		have_lib_dir = true;
-		argv[2] = argv[0];      /* the runner gets APP_DIR's options only */
+	/* the build's options; the runner gets the others */
+	while (argc >= 2 && (strcmp(argv[1], "--lib-dir") == 0 || strcmp(argv[1], "--kernel") == 0)) {
+		if (argc < 3)
+			return usage("%s needs a value", argv[1]);
+		if (strcmp(argv[1], "--lib-dir") == 0) {
+			if (realpath(argv[2], lib_dir) == NULL || stat(lib_dir, &st) != 0 || !S_ISDIR(st.st_mode))
+				return usage("--lib-dir '%s' is not a directory", argv[2]);
+			have_lib_dir = true;
+		} else if (strcmp(argv[2], "auto") == 0 || strcmp(argv[2], "hrp2") == 0 || strcmp(argv[2], "hrp3") == 0) {
+			kernel = argv[2];
+		} else {
+			return usage("--kernel '%s': expected hrp2, hrp3 or auto", argv[2]);
+		}
+		argv[2] = argv[0];
 		argv += 2;
 		argc -= 2;
 	}
-	runner_fd = ev3sim_app_build(root, config, app, have_lib_dir ? lib_dir : NULL, runner, sizeof(runner), err,
-				     sizeof(err));
+	runner_fd = ev3sim_app_build(root, config, app, have_lib_dir ? lib_dir : NULL, kernel, runner, sizeof(runner),
+				     err, sizeof(err));
 	if (runner_fd < 0) {
 		fprintf(stderr, "ev3sim run: %s\n", err);
 		return EV3SIM_EXIT_FAIL;

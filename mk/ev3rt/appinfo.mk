@@ -1,6 +1,8 @@
 # appinfo.mk — an EV3RT app's Makefile.inc read as EV3RT's app build reads
-# it (public source: ev3rt-git/ev3rt-hrp2-sdk, common/Makefile.app and
-# Makefile.prj.common), in a make of its own so that nothing it sets meets
+# it (public sources: ev3rt-git/ev3rt-hrp2-sdk, common/Makefile.app and
+# Makefile.prj.common; ev3rt-git/ev3rt-hrp3-sdk, common/Makefile.app and
+# Makefile.img, with ev3rt-git/ev3rt-hrp3, target/ev3_gcc/dmloader/app/
+# Makefile.lum), in a make of its own so that nothing it sets meets
 # ev3lx's build, and what it says written as assignments for that build:
 #
 #   make -s -f mk/ev3rt/appinfo.mk APP=/abs/app PREFIX=P SDKDIR=dir \
@@ -9,10 +11,21 @@
 # writes SDKDIR/appinfo.mk defining
 #   P_SRCS      the app's sources: app.c (app.cpp if SRCLANG is c++), each
 #               APPL_COBJS as .c and APPL_CXXOBJS as .cpp, looked for in the
-#               app's directory, its APPL_DIRS and every src/ below it
+#               app's directory, its APPL_DIRS and SRCDIRS and every src/
+#               below it
 #   P_INCLUDES  INCLUDES, with every include/ below the app and the SDK
 #               libraries' include/
+#   P_CFLAGS    COPTS, CDEFS and APPL_CFLAGS (EV3RT gives them to every
+#               compile of the app), less the ARM target's machine options
+#               (-m...), which mean nothing to the simulator's compiler; -O0
+#               under OMIT_OPTIMIZATION (EV3RT then gives no -O2)
+#   P_OMIT_WALL OMIT_WARNING_ALL (EV3RT then compiles without -Wall)
+#   P_LDFLAGS   LDFLAGS' library paths and linker options (-L, -Wl,), not
+#               the loader's placement (-T, -Wl,-T..., TEXT_START_ADDRESS)
 #   P_LDLIBS    APPL_LIBS and LIBS (but -lc, always linked)
+# APPL_ASMOBJS (assembly sources: ARM code, which the simulator's host cannot
+# run) is an error naming them.  OMIT_DEBUG_INFO is read and left: ev3lx
+# keeps the app's debug information, which its crash reports use.
 #   P_SLIBS     the SDK libraries it included, and P_SLIB_SRCS_<lib> each.
 # An SDK library is included from $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile and
 # includes $(EV3RT_SDK_LIB_DIR)/../Makefile.slib in turn: SDKDIR/library
@@ -23,6 +36,7 @@
 # an error naming it.
 .SUFFIXES:
 MAKEFLAGS += --no-builtin-rules
+comma := ,
 
 # ev3lx's SDK libraries, beside this file's tree
 EV3LX_LIB_DIR := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))../../api/library)
@@ -41,6 +55,15 @@ APPL_DIRS :=
 APPL_LIBS :=
 LIBS :=
 INCLUDES :=
+COPTS :=
+CDEFS :=
+APPL_CFLAGS :=
+LDFLAGS :=
+SRCDIRS :=
+APPL_ASMOBJS :=
+OMIT_WARNING_ALL :=
+OMIT_OPTIMIZATION :=
+OMIT_DEBUG_INFO :=
 CONFIG_EV3RT_APPLICATION := 1
 EV3RT_SDK_LIB_DIR := $(SDKDIR)/library
 EV3RT_SDK_LIBS :=
@@ -84,7 +107,9 @@ $(foreach l,$(wanted_libs),$(if $(wildcard $(EV3RT_SDK_LIB_DIR)/$(l)/Makefile),,
 -include $(APP)/Makefile.inc
 
 main_src := $(APP)/$(if $(filter c++,$(SRCLANG)),app.cpp,app.c)
-src_dirs := $(APP) $(foreach d,$(APPL_DIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d))) \
+$(if $(strip $(APPL_ASMOBJS)),$(error $(APP)/Makefile.inc: APPL_ASMOBJS ($(strip $(APPL_ASMOBJS))): \
+	assembly sources are ARM code for the brick, which the simulator's host cannot run))
+src_dirs := $(APP) $(foreach d,$(APPL_DIRS) $(SRCDIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d))) \
 	$(shell find -H '$(APP)' -type d -name src)
 # the source of object $(1) with extension $(2): the first directory that has it
 src_of = $(firstword $(wildcard $(addsuffix /$(basename $(1))$(2),$(src_dirs))) $(APP)/$(basename $(1))$(2))
@@ -96,6 +121,9 @@ info:
 	$(file >$(OUT),# $(APP)/Makefile.inc as read by mk/ev3rt/appinfo.mk)
 	$(file >>$(OUT),$(PREFIX)_SRCS := $(srcs))
 	$(file >>$(OUT),$(PREFIX)_INCLUDES := $(INCLUDES) $(patsubst %,-I%,$(shell find -H '$(APP)' -type d -name include)))
+	$(file >>$(OUT),$(PREFIX)_CFLAGS := $(filter-out -m%,$(COPTS) $(CDEFS) $(APPL_CFLAGS)) $(if $(OMIT_OPTIMIZATION),-O0))
+	$(file >>$(OUT),$(PREFIX)_OMIT_WALL := $(if $(OMIT_WARNING_ALL),1))
+	$(file >>$(OUT),$(PREFIX)_LDFLAGS := $(filter -L% -Wl$(comma)%,$(filter-out -Wl$(comma)-T% -Wl$(comma)--section-start%,$(LDFLAGS))))
 	$(file >>$(OUT),$(PREFIX)_LDLIBS := $(APPL_LIBS) $(filter-out -lc,$(LIBS)))
 	$(file >>$(OUT),$(PREFIX)_SLIBS := $(EV3RT_SDK_LIBS))
 	$(foreach l,$(EV3RT_SDK_LIBS),$(file >>$(OUT),$(PREFIX)_SLIB_SRCS_$(l) := $(EV3RT_SLIB_SRCS_$(l))))

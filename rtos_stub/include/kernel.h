@@ -1,5 +1,7 @@
 /*
- * kernel.h — the TOPPERS/HRP2 service-call subset ev3lx stands on.
+ * kernel.h — the TOPPERS/HRP2 service-call subset ev3lx stands on, and for
+ * an app built in the HRP3 profile (EV3LX_KERNEL_HRP3) TOPPERS/HRP3's forms
+ * of them (kernel_hrp3.h, docs/ev3rt-apps.md "Two kernel profiles").
  *
  * Signatures, constants and error codes are those of TOPPERS/HRP2, so that
  * everything above rtos_stub links unchanged against the real kernel on the
@@ -61,7 +63,9 @@ typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 /* ---- Limits ---- */
 #define TMAX_ACTCNT  1U           /* queued activations per task */
 #define TMAX_WUPCNT  1U           /* queued wakeups per task */
-#define TMAX_RELTIM  0x7fffffffU  /* largest relative time (ms) */
+#ifndef EV3LX_KERNEL_HRP3
+#define TMAX_RELTIM  0x7fffffffU  /* largest relative time (ms); HRP3's is in t_stddef.h */
+#endif
 #define TBIT_FLGPTN  ((uint_t)(sizeof(FLGPTN) * 8U))
 
 /* ---- Special IDs and values ---- */
@@ -81,7 +85,9 @@ typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 #define TA_INHERIT   0x02U  /* mutex: priority inheritance (uITRON 4.0) */
 #define TA_CEILING   0x03U  /* mutex: priority ceiling protocol */
 #define TA_STA       0x02U  /* cyclic: started at boot */
-#define TA_PHS       0x04U  /* cyclic: keep phase */
+#ifndef EV3LX_KERNEL_HRP3
+#define TA_PHS       0x04U  /* cyclic: keep phase (HRP2; HRP3 has no TA_PHS) */
+#endif
 #define TA_ENAINT    0x01U  /* interrupt: enabled at boot */
 #define TA_EDGE      0x02U  /* interrupt: edge triggered */
 
@@ -119,92 +125,139 @@ typedef struct t_rmtx {    /* ref_mtx */
 	ID     wtskid;         /* first task waiting for it, TSK_NONE if none */
 } T_RMTX;
 
+typedef struct t_rsem {    /* ref_sem */
+	ID     wtskid;         /* first task waiting, TSK_NONE if none */
+	uint_t semcnt;         /* resources available */
+} T_RSEM;
+
+typedef struct t_rflg {    /* ref_flg */
+	ID     wtskid;         /* first task waiting, TSK_NONE if none */
+	FLGPTN flgptn;         /* the current pattern */
+} T_RFLG;
+
+typedef struct t_rcyc {    /* ref_cyc */
+	STAT   cycstat;        /* TCYC_STA or TCYC_STP */
+	RELTIM lefttim;        /* time to the next activation (ms; HRP3: us) */
+} T_RCYC;
+
+typedef struct t_ralm {    /* ref_alm */
+	STAT   almstat;        /* TALM_STA or TALM_STP */
+	RELTIM lefttim;        /* time until the handler runs (ms; HRP3: us) */
+} T_RALM;
+
+/* ---- Object states (ref_cyc, ref_alm) ---- */
+#define TCYC_STP     0x01U
+#define TCYC_STA     0x02U
+#define TALM_STP     0x01U
+#define TALM_STA     0x02U
+
+/*
+ * A service call whose HRP3 form differs from HRP2's (time in us, or callable
+ * from non-task context too) is bound, in the HRP3 profile, to the host
+ * kernel's HRP3 entry point ev3lx_hrp3_NAME (rtos_stub/src/host/hrp3.c);
+ * in the HRP2 profile the declaration is HRP2's.
+ */
+#ifdef EV3LX_KERNEL_HRP3
+#define EV3LX_HRP3_SVC(name) __asm__("ev3lx_hrp3_" #name)
+#else
+#define EV3LX_HRP3_SVC(name)
+#endif
+
 /* ---- Task management ---- */
-ER      act_tsk(ID tskid);                 /* activate (queue one activation if not dormant) */
+ER      act_tsk(ID tskid) EV3LX_HRP3_SVC(act_tsk); /* activate (queue one activation if not dormant) */
 ER      iact_tsk(ID tskid);                /* act_tsk from non-task context */
 ER_UINT can_act(ID tskid);                 /* cancel queued activations, return their count */
 ER      ext_tsk(void);                     /* end the calling task; returns only on error (E_CTX: not a task) */
 ER      chg_pri(ID tskid, PRI tskpri);     /* change base priority */
 ER      get_pri(ID tskid, PRI *p_tskpri);  /* read current priority */
-ER      get_tid(ID *p_tskid);              /* ID of the running task */
+ER      get_tid(ID *p_tskid) EV3LX_HRP3_SVC(get_tid); /* ID of the running task */
 ER      iget_tid(ID *p_tskid);             /* ID of the task interrupted (TSK_NONE if idle) */
 
 /* ---- Task-dependent synchronisation ---- */
 ER      slp_tsk(void);                     /* sleep until woken */
-ER      tslp_tsk(TMO tmout);               /* sleep with timeout (E_TMOUT) */
-ER      wup_tsk(ID tskid);                 /* wake, or queue one wakeup */
+ER      tslp_tsk(TMO tmout) EV3LX_HRP3_SVC(tslp_tsk); /* sleep with timeout (E_TMOUT) */
+ER      wup_tsk(ID tskid) EV3LX_HRP3_SVC(wup_tsk); /* wake, or queue one wakeup */
 ER      iwup_tsk(ID tskid);
 ER_UINT can_wup(ID tskid);
-ER      rel_wai(ID tskid);                 /* force a waiting task out with E_RLWAI */
+ER      rel_wai(ID tskid) EV3LX_HRP3_SVC(rel_wai); /* force a waiting task out with E_RLWAI */
 ER      irel_wai(ID tskid);
-ER      dly_tsk(RELTIM dlytim);            /* delay for at least dlytim ms */
+ER      dly_tsk(RELTIM dlytim) EV3LX_HRP3_SVC(dly_tsk); /* delay for at least dlytim ms (HRP3: us) */
 ER      sus_tsk(ID tskid);                 /* suspend (a waiting task becomes waiting-suspended) */
 ER      rsm_tsk(ID tskid);                 /* resume a suspended task */
 ER      ter_tsk(ID tskid);                 /* terminate another task (releases its mutexes) */
 
 /* ---- Semaphores ---- */
-ER      sig_sem(ID semid);                 /* release one resource (E_QOVR at maximum) */
+ER      sig_sem(ID semid) EV3LX_HRP3_SVC(sig_sem); /* release one resource (E_QOVR at maximum) */
 ER      isig_sem(ID semid);
 ER      wai_sem(ID semid);                 /* acquire, waiting */
 ER      pol_sem(ID semid);                 /* acquire, E_TMOUT if none */
-ER      twai_sem(ID semid, TMO tmout);     /* acquire with timeout */
+ER      twai_sem(ID semid, TMO tmout) EV3LX_HRP3_SVC(twai_sem); /* acquire with timeout */
 
 /* ---- Eventflags ---- */
-ER      set_flg(ID flgid, FLGPTN setptn);
+ER      set_flg(ID flgid, FLGPTN setptn) EV3LX_HRP3_SVC(set_flg);
 ER      iset_flg(ID flgid, FLGPTN setptn);
 ER      clr_flg(ID flgid, FLGPTN clrptn);  /* AND the pattern with clrptn */
 ER      wai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn);
 ER      pol_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn);
-ER      twai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn, TMO tmout);
+ER      twai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn, TMO tmout) EV3LX_HRP3_SVC(twai_flg);
 
 /* ---- Data queues (intptr_t elements, FIFO) ---- */
 ER      snd_dtq(ID dtqid, intptr_t data);  /* send, waiting while full */
-ER      psnd_dtq(ID dtqid, intptr_t data); /* send, E_TMOUT if full */
+ER      psnd_dtq(ID dtqid, intptr_t data) EV3LX_HRP3_SVC(psnd_dtq); /* send, E_TMOUT if full */
 ER      ipsnd_dtq(ID dtqid, intptr_t data);
-ER      tsnd_dtq(ID dtqid, intptr_t data, TMO tmout);
-ER      fsnd_dtq(ID dtqid, intptr_t data); /* send, dropping the oldest element if full */
+ER      tsnd_dtq(ID dtqid, intptr_t data, TMO tmout) EV3LX_HRP3_SVC(tsnd_dtq);
+ER      fsnd_dtq(ID dtqid, intptr_t data) EV3LX_HRP3_SVC(fsnd_dtq); /* send, dropping the oldest element if full */
 ER      ifsnd_dtq(ID dtqid, intptr_t data);
 ER      rcv_dtq(ID dtqid, intptr_t *p_data);   /* receive, waiting while empty */
 ER      prcv_dtq(ID dtqid, intptr_t *p_data);  /* receive, E_TMOUT if empty */
-ER      trcv_dtq(ID dtqid, intptr_t *p_data, TMO tmout);
+ER      trcv_dtq(ID dtqid, intptr_t *p_data, TMO tmout) EV3LX_HRP3_SVC(trcv_dtq);
 ER      ini_dtq(ID dtqid);                 /* empty it; waiting tasks get E_DLT */
 ER      ref_dtq(ID dtqid, T_RDTQ *pk_rdtq);
 
 /* ---- Priority data queues (ordered by data priority, FIFO within one) ---- */
 ER      snd_pdq(ID pdqid, intptr_t data, PRI datapri);
-ER      psnd_pdq(ID pdqid, intptr_t data, PRI datapri);
+ER      psnd_pdq(ID pdqid, intptr_t data, PRI datapri) EV3LX_HRP3_SVC(psnd_pdq);
 ER      ipsnd_pdq(ID pdqid, intptr_t data, PRI datapri);
-ER      tsnd_pdq(ID pdqid, intptr_t data, PRI datapri, TMO tmout);
+ER      tsnd_pdq(ID pdqid, intptr_t data, PRI datapri, TMO tmout) EV3LX_HRP3_SVC(tsnd_pdq);
 ER      rcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri);
 ER      prcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri);
-ER      trcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri, TMO tmout);
+ER      trcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri, TMO tmout) EV3LX_HRP3_SVC(trcv_pdq);
 ER      ini_pdq(ID pdqid);
 ER      ref_pdq(ID pdqid, T_RPDQ *pk_rpdq);
 
 /* ---- Mutexes (TA_CEILING: priority ceiling; TA_INHERIT: priority inheritance) ---- */
 ER      loc_mtx(ID mtxid);                 /* lock, waiting while another task holds it */
 ER      ploc_mtx(ID mtxid);                /* lock, E_TMOUT if held */
-ER      tloc_mtx(ID mtxid, TMO tmout);
+ER      tloc_mtx(ID mtxid, TMO tmout) EV3LX_HRP3_SVC(tloc_mtx);
 ER      unl_mtx(ID mtxid);                 /* unlock; mutexes unlock in reverse order of locking */
 ER      ini_mtx(ID mtxid);                 /* unlock; waiting tasks get E_DLT */
 ER      ref_mtx(ID mtxid, T_RMTX *pk_rmtx);
 
+/* ---- Initialisation and reference (HRP2 and HRP3) ---- */
+ER      ini_sem(ID semid);                 /* back to isemcnt; waiting tasks get E_DLT */
+ER      ref_sem(ID semid, T_RSEM *pk_rsem);
+ER      ini_flg(ID flgid);                 /* back to iflgptn; waiting tasks get E_DLT */
+ER      ref_flg(ID flgid, T_RFLG *pk_rflg);
+ER      ref_cyc(ID cycid, T_RCYC *pk_rcyc) EV3LX_HRP3_SVC(ref_cyc);
+ER      ref_alm(ID almid, T_RALM *pk_ralm) EV3LX_HRP3_SVC(ref_alm);
+ER      get_inf(intptr_t *p_exinf);        /* the calling task's exinf */
+
 /* ---- Time management ---- */
-ER      get_tim(SYSTIM *p_systim);         /* system time in ms since boot */
+ER      get_tim(SYSTIM *p_systim) EV3LX_HRP3_SVC(get_tim); /* system time in ms since boot (HRP3: us, 64 bits) */
 ER      get_utm(SYSUTM *p_sysutm);         /* performance time in us since boot */
 ER      sta_cyc(ID cycid);                 /* start a cyclic handler */
 ER      stp_cyc(ID cycid);
-ER      sta_alm(ID almid, RELTIM almtim);  /* start an alarm, almtim ms from now */
+ER      sta_alm(ID almid, RELTIM almtim) EV3LX_HRP3_SVC(sta_alm); /* start an alarm, almtim ms (HRP3: us) from now */
 ER      ista_alm(ID almid, RELTIM almtim);
-ER      stp_alm(ID almid);
+ER      stp_alm(ID almid) EV3LX_HRP3_SVC(stp_alm);
 ER      istp_alm(ID almid);
 
 /* ---- System state ---- */
-ER      rot_rdq(PRI tskpri);               /* rotate the ready queue of a priority */
+ER      rot_rdq(PRI tskpri) EV3LX_HRP3_SVC(rot_rdq); /* rotate the ready queue of a priority */
 ER      irot_rdq(PRI tskpri);
-ER      loc_cpu(void);                     /* CPU lock: mask all interrupts and dispatch */
+ER      loc_cpu(void) EV3LX_HRP3_SVC(loc_cpu); /* CPU lock: mask all interrupts and dispatch */
 ER      iloc_cpu(void);
-ER      unl_cpu(void);
+ER      unl_cpu(void) EV3LX_HRP3_SVC(unl_cpu);
 ER      iunl_cpu(void);
 ER      dis_dsp(void);                     /* disable dispatching */
 ER      ena_dsp(void);
@@ -226,6 +279,11 @@ ER      prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode);
 
 #ifdef __cplusplus
 }
+#endif
+
+#ifdef EV3LX_KERNEL_HRP3
+/* HRP3's own names: notification, the high-resolution timer, the i-names. */
+#include "kernel_hrp3.h"
 #endif
 
 /* The target's part of the interface (the EV3), as HRP2's kernel.h includes it. */

@@ -91,9 +91,9 @@ struct rtos_mtx_cfg {       /* CRE_MTX */
 	const char *name;
 };
 
-struct rtos_cyc_cfg {       /* CRE_CYC: period and phase in ms, like HRP2 */
+struct rtos_cyc_cfg {       /* CRE_CYC: period and phase in ms (HRP2), in us (the HRP3 profile) */
 	ID       cycid;
-	ATR      cycatr;         /* TA_STA | TA_PHS */
+	ATR      cycatr;         /* TA_STA | TA_PHS (HRP2); TA_STA (HRP3) */
 	intptr_t exinf;
 	CYCHDR   cychdr;
 	RELTIM   cyctim;
@@ -172,7 +172,13 @@ struct rtos_cfg {
 	uint_t svc_count;
 	/* INCLUDE(): other configurations merged in, e.g. linux_compat's. NULL-terminated. */
 	const struct rtos_cfg *const *includes;
+	/* The kernel profile the configuration is written for: its CRE_CYC times are
+	 * ms (RTOS_PROFILE_HRP2, the default) or us (RTOS_PROFILE_HRP3). */
+	uint_t profile;
 };
+
+#define RTOS_PROFILE_HRP2 0U
+#define RTOS_PROFILE_HRP3 1U
 
 #ifdef __cplusplus
 }

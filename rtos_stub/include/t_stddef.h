@@ -46,15 +46,38 @@ typedef uint_t          STAT;    /* object state */
 typedef uint_t          MODE;    /* service call mode */
 typedef int_t           PRI;     /* priority */
 typedef size_t          SIZE;    /* memory area size */
+#ifdef EV3LX_KERNEL_HRP3
+/* The HRP3 profile (an app written for TOPPERS/HRP3, EV3RT 1.x: the build
+ * defines EV3LX_KERNEL_HRP3, docs/ev3rt-apps.md): time in microseconds, with
+ * HRP3's types (public source: ev3rt-git/ev3rt-hrp3, include/t_stddef.h). */
+typedef uint32_t        TMO;     /* timeout, in us */
+typedef uint32_t        RELTIM;  /* relative time, in us */
+typedef uint64_t        SYSTIM;  /* system time, in us */
+typedef uint32_t        PRCTIM;  /* processor time, in us */
+typedef uint32_t        HRTCNT;  /* high-resolution timer count, in us */
+#else
 typedef int_t           TMO;     /* timeout, in ms */
 typedef uint_t          RELTIM;  /* relative time, in ms */
 typedef ulong_t         SYSTIM;  /* system time, in ms */
+#endif
 typedef uint32_t        SYSUTM;  /* performance time, in us */
 typedef uintptr_t       FP;      /* program start address */
 typedef int_t           ER_BOOL; /* error code or boolean */
 typedef int_t           ER_ID;   /* error code or ID */
 typedef int_t           ER_UINT; /* error code or unsigned value */
 typedef uint32_t        ACPTN;   /* access permission pattern */
+
+#ifndef __KERNEL__
+/* IEEE 754 single and double precision, as TOPPERS's GCC tool header gives
+ * them (public source: ev3rt-git/ev3rt-hrp2 and ev3rt-hrp3,
+ * arch/gcc/tool_stddef.h, TOPPERS_STDFLOAT_TYPE1); apps use them. */
+typedef float           float32_t;
+typedef double          double64_t;
+#define FLOAT32_MIN     1.17549435e-38F
+#define FLOAT32_MAX     3.40282347e+38F
+#define DOUBLE64_MIN    2.2250738585072014e-308
+#define DOUBLE64_MAX    1.7976931348623157e+308
+#endif
 
 typedef struct acvct {
 	ACPTN acptn1;   /* normal operations */
@@ -94,6 +117,10 @@ typedef struct acvct {
 #define E_CLS    (-52)
 #define E_WBLK   (-57)
 #define E_BOVR   (-58)
+#ifdef EV3LX_KERNEL_HRP3
+#define E_RASTER (-53)  /* HRP3: the task's termination was requested */
+#define E_COMM   (-65)  /* HRP3: communication error */
+#endif
 
 /* The main error code is the low byte, sign-extended; the sub code the rest. */
 #define MERCD(ercd)        ((ER)((int8_t)(ercd)))
@@ -102,9 +129,17 @@ typedef struct acvct {
 
 #define TA_NULL  0U
 
+#ifdef EV3LX_KERNEL_HRP3
+#define TMO_POL  0U
+#define TMO_FEVR 0xffffffffU   /* HRP3: UINT32_MAX */
+#define TMO_NBLK 0xfffffffeU   /* HRP3: UINT32_MAX - 1 */
+/* HRP3's largest relative time: 4 000 000 000 us (66 min 40 s). */
+#define TMAX_RELTIM 4000000000U
+#else
 #define TMO_POL  0
 #define TMO_FEVR (-1)
 #define TMO_NBLK (-2)
+#endif
 
 /* Integer constants of a TOPPERS type, as apps write them (ULONG_C(1000)). */
 #ifndef INT_C

@@ -72,12 +72,29 @@ static void expect_error(const char *text, const char *message, const char *name
 		tap_diag("got %d error(s): %s", n, errbuf);
 }
 
+/* An INCLUDE that reads nothing: the configuration's own text is what is tested. */
+static int include_nothing(struct cfg_ctx *ctx, const char *file, const char *from_file, int from_line, void *arg)
+{
+	(void)ctx; (void)file; (void)from_file; (void)from_line; (void)arg;
+	return 0;
+}
+
+/* The profile text (with INCLUDE available) is configured for, or -1 on errors. */
+static int profile_of(const char *text)
+{
+	struct cfg_ctx *ctx = cfg_new(stderr, include_nothing, NULL);
+	int profile = cfg_parse(ctx, text, "app.cfg") == 0 ? cfg_profile(ctx) : -1;
+
+	cfg_free(ctx);
+	return profile;
+}
+
 int main(void)
 {
 	struct cfg_ctx *ctx;
 	char *h, *c;
 
-	tap_plan(46);
+	tap_plan(73);
 
 	/* A configuration as the preprocessor leaves it: line markers, header declarations. */
 	is_int(run("# 1 \"app.cfg\"\n"
@@ -182,8 +199,85 @@ int main(void)
 		     "access control vectors are refused, not ignored");
 	expect_error("CRE_MBX(M, { 0U, 1, NULL });\n", "app.cfg:1:1: error: CRE_MBX: unknown static API: TOPPERS/HRP2 has no mailboxes",
 		     "a mailbox (ASP's) is named as not HRP2's");
-	expect_error("ACV_DOM({ 1, 1, 1, 1 });\n", "app.cfg:1:1: error: ACV_DOM: unknown static API: ACV_DOM (a domain's access vector) is TOPPERS/HRP3's",
-		     "HRP3's ACV_DOM is named as not HRP2's");
+	expect_error("ACV_DOM({ 1, 1, 1, 1 });\n",
+		     "app.cfg:1:1: error: ACV_DOM: a static API of TOPPERS/HRP3 (a domain's access vector) not supported by ev3lx",
+		     "HRP3's ACV_DOM is named as HRP3's");
+	expect_error("CRE_ISR(I, { 0U, 0, 5, isr, 1 });\n", "CRE_ISR: a static API of TOPPERS/HRP3 (interrupt service routines",
+		     "HRP3's CRE_ISR is named as HRP3's");
+
+	/* The two kernel profiles: HRP2's CRE_CYC/CRE_ALM (a handler, ms), HRP3's (a notification, us). */
+	is_int(run("# 1 \"app.cfg\"\n"
+		   "CRE_TSK(T, { 0U, 0, t, 8, 4096, NULL });\n"
+		   "DOMAIN(TDOM_APP) {\n"
+		   "CRE_CYC(C1, { TA_STA, { TNFY_ACTTSK, T }, 1000U * 1000U, 0U });\n"
+		   "CRE_CYC(C2, { 0U, { 0x06U, F, 0x01U }, (500 * 1000), 10 });\n"
+		   "CRE_CYC(C3, { 0U, { TNFY_SNDDTQ | TENFY_SETVAR, Q, 7, &err }, 100, 0 });\n"
+		   "CRE_CYC(C4, { 0U, { TNFY_WUPTSK | TENFY_SETFLG, T, F, 0x2 }, 100, 0 });\n"
+		   "CRE_ALM(A1, { 0U, { TNFY_SIGSEM | TENFY_INCVAR, S, &misses } });\n"
+		   "CRE_ALM(A2, { 0U, { TNFY_SETVAR, &flag, 1 } });\n"
+		   "}\n"
+		   "CRE_ALM(A3, { 0U, { TNFY_HANDLER, 5, handler } });\n", &ctx), 0,
+	       "HRP3's notification forms of CRE_CYC and CRE_ALM parse, every mode and error mode");
+	is_int(cfg_profile(ctx), CFG_PROFILE_HRP3, "a notification form makes the configuration HRP3's");
+	c = generate(ctx, true);
+	ok(strstr(c, "#define EV3LX_KERNEL_HRP3 1") && strstr(c, ".profile = RTOS_PROFILE_HRP3,"),
+	   "its kernel_cfg.c is compiled in the HRP3 profile and tells the kernel so");
+	ok(strstr(c, "{ C1, TA_STA, (intptr_t)(T), ev3cfg_nfy_C1, 1000U * 1000U, 0U, \"C1\" }") &&
+	   strstr(c, "static void ev3cfg_nfy_C1(intptr_t exinf)\n{\n\t(void)iact_tsk((ID)exinf);\n}"),
+	   "TNFY_ACTTSK: the row passes the task as exinf to a handler that activates it");
+	ok(strstr(c, "\t(void)iset_flg((ID)exinf, (FLGPTN)(0x01U));") && strstr(c, "(500 * 1000), 10, \"C2\""),
+	   "a numeric nfymode (as a preprocessed header gives it) is read: TNFY_SETFLG");
+	ok(strstr(c, "ER ercd = ipsnd_dtq((ID)exinf, (intptr_t)(7));\n\n\tif (ercd != E_OK) {\n"
+		     "\t\t*(intptr_t *)(&err) = (intptr_t)ercd;"), "TNFY_SNDDTQ | TENFY_SETVAR: the error code is stored");
+	ok(strstr(c, "\t\t(void)iset_flg(F, (FLGPTN)(0x2));"), "TENFY_SETFLG takes a flag and a pattern");
+	ok(strstr(c, "ER ercd = isig_sem((ID)exinf);") && strstr(c, "\t\t*(intptr_t *)(&misses) += 1;"),
+	   "CRE_ALM: TNFY_SIGSEM | TENFY_INCVAR");
+	ok(strstr(c, "\t*((intptr_t *)exinf) = (intptr_t)(1);"), "TNFY_SETVAR sets the variable par1 points to");
+	ok(strstr(c, "{ A3, 0U, (intptr_t)(5), (ALMHDR)(handler), \"A3\" }"),
+	   "TNFY_HANDLER (kernel domain): the handler itself, with its exinf");
+	ok(strstr(c, "((0U) & ~(ATR)TA_STA) == 0") && strstr(c, "(100) > 0 && (100) <= TMAX_RELTIM"),
+	   "HRP3's value rules: TA_STA only, cyctim within HRP3's TMAX_RELTIM");
+	free(c);
+	cfg_free(ctx);
+	is_int(run("CRE_CYC(C, { TA_STA, 0, h, 10, 0 });\n", &ctx), 0, "HRP2's form parses");
+	is_int(cfg_profile(ctx), CFG_PROFILE_HRP2, "and makes the configuration HRP2's");
+	c = generate(ctx, true);
+	ok(strstr(c, "EV3LX_KERNEL_HRP3") == NULL && strstr(c, ".profile") == NULL, "whose kernel_cfg.c stays HRP2's");
+	free(c);
+	cfg_free(ctx);
+	expect_error("CRE_CYC(A, { TA_STA, 0, h, 10, 0 });\nCRE_CYC(B, { TA_STA, { TNFY_ACTTSK, T }, 10, 0 });\n",
+		     "app.cfg:2: error: CRE_CYC(B): the notification form { nfymode, ... } (times in us) is TOPPERS/HRP3's, "
+		     "but CRE_CYC(A) at app.cfg:1 is TOPPERS/HRP2's: a configuration is written for one kernel profile (E_PAR)",
+		     "mixing HRP2's and HRP3's forms is refused, naming both");
+	expect_error("CRE_ALM(B, { 0U, { TNFY_ACTTSK, T } });\nEV3_CRE_CYC(C, { 0U, 0, h, 10, 0 });\n",
+		     "app.cfg:2: error: EV3_CRE_CYC(C): EV3_CRE_CYC (EV3RT's HRP2 API, times in ms) is TOPPERS/HRP2's, "
+		     "but CRE_ALM(B) at app.cfg:1 is TOPPERS/HRP3's", "EV3_CRE_CYC in an HRP3 configuration");
+	expect_error("CRE_CYC(C, { TA_STA, 0, h });\n",
+		     "app.cfg:1: error: CRE_CYC(C): 3 parameters in { }, expected 5 (HRP2: cycatr, exinf, cychdr, cyctim, "
+		     "cycphs) or 4 (HRP3: cycatr, { nfymode, par1[, par2...] }, cyctim, cycphs) (E_PAR)",
+		     "a wrong count names both forms");
+	expect_error("CRE_CYC(C, { TA_STA, 0, h, 10 });\n",
+		     "app.cfg:1: error: CRE_CYC(C): malformed notification form: expected { cycatr, { nfymode, par1[, par2...] }, "
+		     "cyctim, cycphs } as in TOPPERS/HRP3", "four parameters without a notification");
+	expect_error("CRE_CYC(C, { TA_STA, { TNFY_ACTTSK, T }, h, 10, 0 });\n", "CRE_CYC(C): malformed notification form",
+		     "a notification in HRP2's five");
+	expect_error("CRE_CYC(C, { TA_STA, { TNFY_SETFLG, F }, 10, 0 });\n",
+		     "app.cfg:1: error: CRE_CYC(C): too few parameters for nfymode TNFY_SETFLG: 1, expected 2 (E_PAR)",
+		     "TNFY_SETFLG needs a pattern");
+	expect_error("CRE_CYC(C, { TA_STA, { TNFY_ACTTSK, T, U }, 10, 0 });\n",
+		     "too many parameters for nfymode TNFY_ACTTSK: 2, expected 1 (E_PAR)", "TNFY_ACTTSK takes one");
+	expect_error("CRE_ALM(A, { 0U, { TNFY_SETVAR | TENFY_SETVAR, &x, 1, &e } });\n",
+		     "illegal nfymode TNFY_SETVAR | TENFY_SETVAR (0x11): the error notifications TENFY_* go with",
+		     "an error notification of a notification that cannot fail");
+	expect_error("CRE_ALM(A, { 0U, { TNFY_FOO, T } });\n", "nfymode 'TNFY_FOO' is not TNFY_* or TNFY_* | TENFY_* (E_PAR)",
+		     "an unknown nfymode");
+	is_int(profile_of("INCLUDE(\"app_common.cfg\");\nINCLUDE(\"tecsgen.cfg\");\nCRE_TSK(T, { 0U, 0, t, 8, 4096, NULL });\n"),
+	       CFG_PROFILE_HRP3, "INCLUDE(\"tecsgen.cfg\") (TECS, of the third-generation kernels) makes it HRP3's");
+	is_int(profile_of("INCLUDE(\"app_common.cfg\");\nCRE_TSK(T, { 0U, 0, t, 8, 4096, NULL });\n"), CFG_PROFILE_HRP2,
+	       "tasks alone say nothing: HRP2's, unless the build says otherwise");
+	expect_error("DOMAIN(TDOM_APP) {\nCRE_CYC(C, { TA_STA, { TNFY_HANDLER, 0, h }, 10, 0 });\n}\n",
+		     "app.cfg:2: error: CRE_CYC(C): TNFY_HANDLER is not permitted in a user domain (DOMAIN(TDOM_APP))",
+		     "TNFY_HANDLER in a user domain is HRP3's E_OACV");
 	expect_error("# 1 \"app.h\" 1\nextern int x;\nFOO_BAR(1);\n# 3 \"app.cfg\" 2\n",
 		     "app.h:2:1: error: FOO_BAR: unknown static API", "a static-API-shaped call in a header is still refused");
 

@@ -38,7 +38,7 @@ bad_cfg() {
 	sed "s|^DOMAIN(TDOM_APP) {|DOMAIN(TDOM_APP) {\n$2|" "$SAY/app.cfg" > "$WORK/$1/app.cfg"
 }
 
-echo "1..18"
+echo "1..23"
 rm -rf "$WORK" && mkdir -p "$WORK"
 
 # -- the configurator refuses what TOPPERS's would, naming file and line
@@ -62,6 +62,23 @@ check 1 "CRE_TSK(HUGE_TASK): stksz out of range" "a 1 GiB stack"
 bad_cfg one_name 'CRE_SEM(SAME_NAME, { TA_NULL, 0, 1 });\nCRE_FLG(SAME_NAME, { TA_NULL, 0 });'
 run run "$WORK/one_name" --seconds 1
 check 1 "SAME_NAME" "one name for a semaphore and an eventflag"
+
+# -- the two kernel profiles: a configuration is one kernel's, an option is checked
+bad_cfg mixed 'CRE_CYC(OLD_CYC, { TA_STA, 0, main_task, 100, 0 });\nCRE_CYC(NEW_CYC, { TA_STA, { TNFY_ACTTSK, MAIN_TASK }, 100000U, 0U });'
+run run "$WORK/mixed" --seconds 1
+check 1 "app.cfg:[0-9]*: error: CRE_CYC(NEW_CYC): the notification form .* is TOPPERS/HRP3's, but CRE_CYC(OLD_CYC) at .*app.cfg:[0-9]* is TOPPERS/HRP2's" \
+	"HRP2's and HRP3's CRE_CYC in one app.cfg"
+bad_cfg nfy 'CRE_CYC(SET_CYC, { TA_STA, { TNFY_SETFLG, MAIN_TASK }, 100000U, 0U });'
+run run "$WORK/nfy" --seconds 1
+check 1 "app.cfg:[0-9]*: error: CRE_CYC(SET_CYC): too few parameters for nfymode TNFY_SETFLG" "a notification short of a parameter"
+run run "$ROOT/examples/notify" --kernel hrp2 --seconds 1
+check 1 "is TOPPERS/HRP3's, but the app is built for the HRP2 profile (--kernel hrp2)" "an HRP3 app built as HRP2's"
+run run "$SAY" --kernel hrp4 --seconds 1
+check 2 "--kernel 'hrp4': expected hrp2, hrp3 or auto" "an unknown kernel profile"
+mkdir -p "$WORK/asm" && cp "$SAY/app.c" "$SAY/app.h" "$SAY/app.cfg" "$WORK/asm/"
+echo 'APPL_ASMOBJS += start.o' > "$WORK/asm/Makefile.inc"
+run run "$WORK/asm" --seconds 1
+check 1 "APPL_ASMOBJS (start.o): assembly sources are ARM code" "an app with assembly sources"
 
 # -- an app that misbehaves ends the run with its own status, naming the task
 for case in "stall 3 stall" "null 4 main_task" "recurse 5 stack.overflow:.task.MAIN_TASK" "big-locals 5 task.MAIN_TASK.used"; do

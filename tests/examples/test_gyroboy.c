@@ -2,14 +2,16 @@
  * test_gyroboy.c — examples/gyroboy in the gyro boy robot: it calibrates
  * while held, balances with EV3RT's regulated set_power through pushes and
  * a drifting gyro, and falls when let go too early to have calibrated.  The
- * hand lets go when the app first drives the wheels (--release drive, the
- * default), so a balancer that calibrates first is let go when ready; or at
- * a time given, driven or not.
+ * hand lets go when the app first runs the wheels (--release drive, the
+ * default: a motor's bridge drives or brakes, power 0 included), so a
+ * balancer that calibrates first is let go when ready, however still its
+ * gyro reads; or at a time given, driven or not.
  */
 #include "example_test.h"
+#include "host_sim/devices/uart_sensor.h"
 
 /* The time of the first CSV row (every 10 ms) in which the robot is not held, or -1. */
-static double first_unheld_s(bool on_drive, uint64_t release_ns)
+static double first_unheld_s(bool on_drive, uint64_t release_ns, double gyro_noise_dps)
 {
 	struct ev3sim_run_opts o;
 	struct ev3sim_run_result r;
@@ -22,6 +24,7 @@ static double first_unheld_s(bool on_drive, uint64_t release_ns)
 	o.seconds = 5;
 	o.release_on_drive = on_drive;
 	o.release_ns = release_ns;
+	o.gyro_noise_dps = gyro_noise_dps;
 	o.csv = tmpfile();
 	if (o.csv == NULL || !ex_run(&o, &r))
 		return -1.0;
@@ -38,7 +41,7 @@ int main(void)
 	struct ev3sim_run_opts o;
 	struct ev3sim_run_result r;
 	const char *line;
-	double on_drive_s, at_4s_s;
+	double on_drive_s, at_4s_s, still_s;
 
 	ev3sim_run_defaults(&o, EV3SIM_ROBOT_GYROBOY);
 	o.app_name = "gyroboy";
@@ -73,11 +76,15 @@ int main(void)
 	ok(ex_logged("gyroboy: fell over") != NULL, "and the app noticed");
 
 	/* when the hand lets go: the first row of the robot's state with held = 0 */
-	on_drive_s = first_unheld_s(true, 0);
-	at_4s_s = first_unheld_s(false, 4000000000ULL);
+	on_drive_s = first_unheld_s(true, 0, UART_SENSOR_GYRO_NOISE_AT_REST_DPS);
+	at_4s_s = first_unheld_s(false, 4000000000ULL, UART_SENSOR_GYRO_NOISE_AT_REST_DPS);
+	still_s = first_unheld_s(true, 0, 0.0);
 	in_range(on_drive_s, 2.55, 2.75,
 		 "--release drive: let go when the balancer first drives the wheels, after calibrating (%.2f s)",
 		 on_drive_s);
 	in_range(at_4s_s, 3.99, 4.01, "--release 4s: let go at 4 s (%.2f s)", at_4s_s);
+	/* a balancer held still computes power 0 until the gyro moves: running
+	 * the wheels at 0 (the bridge braking) is driving them too */
+	in_range(still_s, 2.55, 2.75, "with a noiseless gyro too, when the balancer starts (%.2f s)", still_s);
 	return tap_done();
 }

@@ -19,6 +19,9 @@
 #define EV3SIM_EXIT_CRASH  RTOS_HOST_EXIT_CRASH
 #define EV3SIM_EXIT_STACK  RTOS_HOST_EXIT_STACK
 
+/* The largest --gyro-noise (deg/s) balance and run accept. */
+#define EV3SIM_MAX_GYRO_NOISE_DPS 1000.0
+
 /* Runs ev3sim with its arguments (argv[0] is the program name). */
 int ev3sim_main(int argc, char **argv);
 

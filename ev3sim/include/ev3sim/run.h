@@ -107,7 +107,7 @@ extern const struct ev3sim_lcd_video *ev3sim_lcd_video;
 
 /* The robot's devices on the ports, no faults, actions or pushes; for the
  * tribot a touch press at 3 s; the gyro boy let go at 4 s with a 0.5 degree
- * tilt, its gyro's noise 0.3 deg/s. */
+ * tilt, its gyro's noise an EV3 gyro's at rest (UART_SENSOR_GYRO_NOISE_AT_REST_DPS). */
 void ev3sim_run_defaults(struct ev3sim_run_opts *o, enum ev3sim_robot_kind robot);
 
 /* Boots app (a configuration INCLUDEing ev3api_cfg), plugs in the robot,

@@ -256,8 +256,15 @@ static ER check_dtqs_pdqs_mtxs(const struct rtos_cfg *cfg)
 /* Checks the CRE_CYC and CRE_ALM rows and registers the handlers. */
 static ER check_cycs_alms(const struct rtos_cfg *cfg)
 {
-	const ATR known = TA_STA | TA_PHS;
+	/* HRP3 has no TA_PHS and counts in us up to its own TMAX_RELTIM
+	 * (ev3rt-git/ev3rt-hrp3, kernel/cyclic.trb and include/t_stddef.h). */
+	bool hrp3 = cfg->profile == RTOS_PROFILE_HRP3;
+	const ATR known = hrp3 ? TA_STA : TA_STA | TA_PHS;
+	const uint32_t max = hrp3 ? HRP3_TMAX_RELTIM : TMAX_RELTIM;
+	const char *unit = hrp3 ? "us" : "ms";
 
+	if (cfg->profile > RTOS_PROFILE_HRP3)
+		return boot_fail(cfg, "profile", 0, cfg->name, E_PAR, "unknown kernel profile %u", cfg->profile);
 	for (uint_t i = 0; i < cfg->ncycs; i++) {
 		const struct rtos_cyc_cfg *r = &cfg->cycs[i];
 
@@ -271,13 +278,13 @@ static ER check_cycs_alms(const struct rtos_cfg *cfg)
 					 r->cycatr & ~known);
 		if (r->cychdr == NULL)
 			return boot_fail(cfg, "CRE_CYC", i, r->name, E_PAR, "NULL handler");
-		if (r->cyctim == 0 || r->cyctim > TMAX_RELTIM)
-			return boot_fail(cfg, "CRE_CYC", i, r->name, E_PAR, "cyctim %u out of range 1..%u ms",
-					 r->cyctim, TMAX_RELTIM);
-		if (r->cycphs > TMAX_RELTIM)
-			return boot_fail(cfg, "CRE_CYC", i, r->name, E_PAR, "cycphs %u out of range 0..%u ms",
-					 r->cycphs, TMAX_RELTIM);
-		if (cyc_register(r) != E_OK)
+		if (r->cyctim == 0 || r->cyctim > max)
+			return boot_fail(cfg, "CRE_CYC", i, r->name, E_PAR, "cyctim %u out of range 1..%u %s",
+					 r->cyctim, max, unit);
+		if (r->cycphs > max)
+			return boot_fail(cfg, "CRE_CYC", i, r->name, E_PAR, "cycphs %u out of range 0..%u %s",
+					 r->cycphs, max, unit);
+		if (cyc_register(r, hrp3 ? 1000U : 1000000U) != E_OK)
 			return boot_fail(cfg, "CRE_CYC", i, r->name, E_NOMEM, "out of memory");
 	}
 	for (uint_t i = 0; i < cfg->nalms; i++) {

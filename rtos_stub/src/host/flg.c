@@ -148,3 +148,40 @@ ER twai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn, TMO tmout)
 	svc_charge();
 	return flg_wait("twai_flg", flgid, waiptn, wfmode, p_flgptn, tmout, false);
 }
+
+/* Returns the eventflag to its initial pattern; its waiters get E_DLT. */
+ER ini_flg(ID flgid)
+{
+	struct flgcb *f;
+	ER ercd = E_OK;
+
+	svc_charge();
+	if (!ctx_task_unlocked())
+		return svc_result("ini_flg", E_CTX);
+	if ((f = flg_lookup(flgid, &ercd)) == NULL)
+		return svc_result("ini_flg", ercd);
+	f->ptn = f->cfg->iflgptn;
+	while (!queue_empty(&f->wq))
+		wait_release(container_of_kernel(f->wq.next, struct tcb, node), E_DLT);
+	dispatch_if_needed();
+	return E_OK;
+}
+
+/* Reports the first waiting task and the pattern. */
+ER ref_flg(ID flgid, T_RFLG *pk_rflg)
+{
+	struct flgcb *f;
+	ER ercd = E_OK;
+
+	svc_charge();
+	if (!ctx_task_unlocked())
+		return svc_result("ref_flg", E_CTX);
+	if ((f = flg_lookup(flgid, &ercd)) == NULL)
+		return svc_result("ref_flg", ercd);
+	if (check_out_ptr(pk_rflg, sizeof(*pk_rflg)) != E_OK)
+		return svc_result("ref_flg", E_MACV);
+	pk_rflg->wtskid = queue_empty(&f->wq) ? TSK_NONE :
+		container_of_kernel(f->wq.next, struct tcb, node)->id;
+	pk_rflg->flgptn = f->ptn;
+	return E_OK;
+}

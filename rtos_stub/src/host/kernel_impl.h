@@ -153,6 +153,7 @@ struct tcb {
 	FLGPTN   flgptn;                 /* pattern at release */
 	struct tmevt tmevt;
 	struct coroutine co;
+	bool     call_us;                /* inside an HRP3-profile service call: its times are in us (hrp3.c) */
 	uintptr_t stack_entry;           /* the stack pointer where the task's code starts (task_entry) */
 	size_t   stack_used;             /* the deepest use below stack_entry seen since boot */
 };
@@ -263,7 +264,20 @@ extern uint64_t now_ns;        /* the virtual clock */
 extern uint64_t tick_done;     /* last tick index processed by the tick handler */
 
 /* Tick index of a relative time of ms from now (at least ms later, after tick_done). */
-uint64_t tick_after_ms(RELTIM ms);
+uint64_t tick_after_ns(uint64_t ns);
+/* The largest relative time of the running call's profile: TMAX_RELTIM ms
+ * (HRP2), HRP3_TMAX_RELTIM us inside an HRP3-profile call. */
+uint32_t svc_reltim_max(void);
+/* A relative time of the running call's profile (ms; us inside an HRP3-profile
+ * call of a task) in ns. */
+uint64_t svc_reltim_ns(uint32_t reltim);
+/* sta_alm's body for any context: the alarm runs ns from now (E_ID, E_NOEXS). */
+ER alm_start_ns(const char *svc, ID almid, uint64_t ns);
+/* The time left until cyclic handler cycid's next activation (*left_ns) and
+ * whether it runs (E_ID, E_NOEXS). */
+ER cyc_state(ID cycid, bool *started, uint64_t *left_ns);
+/* The time left until alarm almid runs (*left_ns) and whether it is armed. */
+ER alm_state(ID almid, bool *started, uint64_t *left_ns);
 void tmevt_enqueue(struct tmevt *ev, uint64_t tick);
 void tmevt_dequeue(struct tmevt *ev);
 static inline bool tmevt_queued(const struct tmevt *ev)
@@ -353,7 +367,7 @@ extern bool kernel_exited;        /* ext_ker was called: nothing runs until the 
 void pause_to_harness(void);
 
 /* ---- Cyclic and alarm handlers, service calls, memory regions ---- */
-ER   cyc_register(const struct rtos_cyc_cfg *cfg);
+ER   cyc_register(const struct rtos_cyc_cfg *cfg, uint64_t unit_ns);
 ER   alm_register(const struct rtos_alm_cfg *cfg);
 bool cyc_exists(ID cycid);
 bool alm_exists(ID almid);
@@ -453,10 +467,54 @@ static inline bool ctx_may_block(void)
 {
 	return cpu.kind == EXEC_TASK && !cpu.locked && !cpu.dsp_disabled;
 }
-/* Valid timeout value (CHECK_TMOUT). */
+/* HRP3's largest relative time, in us (ev3rt-git/ev3rt-hrp3, include/t_stddef.h:
+ * TMAX_RELTIM 4000000000U, 66 min 40 s). */
+#define HRP3_TMAX_RELTIM 4000000000U
+/* HRP3's TMO_FEVR and TMO_NBLK as an HRP2 TMO holds them (UINT32_MAX, UINT32_MAX - 1). */
+#define HRP3_TMO_FEVR ((uint32_t)UINT32_MAX)
+
+/* True while the running task is inside an HRP3-profile call (times in us). */
+static inline bool svc_in_us(void)
+{
+	return cpu.kind == EXEC_TASK && runtsk != NULL && runtsk->call_us;
+}
+/* Valid timeout value (CHECK_TMOUT): HRP2's TMO_FEVR or 0..TMAX_RELTIM ms, or inside
+ * an HRP3-profile call HRP3's TMO_FEVR or 0..HRP3_TMAX_RELTIM us (TMO_NBLK: E_PAR,
+ * ev3lx has no non-blocking calls). */
 static inline bool tmout_valid(TMO tmout)
 {
+	if (svc_in_us())
+		return (uint32_t)tmout == HRP3_TMO_FEVR || (uint32_t)tmout <= HRP3_TMAX_RELTIM;
 	return tmout >= TMO_FEVR;
 }
+
+/* ---- The HRP3 profile's entry points (hrp3.c; kernel_hrp3.h binds an app's calls to them) ---- */
+ER ev3lx_hrp3_tslp_tsk(TMO tmout);
+ER ev3lx_hrp3_dly_tsk(RELTIM dlytim);
+ER ev3lx_hrp3_twai_sem(ID semid, TMO tmout);
+ER ev3lx_hrp3_twai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn, TMO tmout);
+ER ev3lx_hrp3_tsnd_dtq(ID dtqid, intptr_t data, TMO tmout);
+ER ev3lx_hrp3_trcv_dtq(ID dtqid, intptr_t *p_data, TMO tmout);
+ER ev3lx_hrp3_tsnd_pdq(ID pdqid, intptr_t data, PRI datapri, TMO tmout);
+ER ev3lx_hrp3_trcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri, TMO tmout);
+ER ev3lx_hrp3_tloc_mtx(ID mtxid, TMO tmout);
+ER ev3lx_hrp3_ref_cyc(ID cycid, T_RCYC *pk_rcyc);
+ER ev3lx_hrp3_ref_alm(ID almid, T_RALM *pk_ralm);
+ER ev3lx_hrp3_sta_alm(ID almid, RELTIM almtim);
+ER ev3lx_hrp3_get_tim(uint64_t *p_systim);
+uint32_t ev3lx_hrp3_fch_hrt(void);
+ER ev3lx_hrp3_act_tsk(ID tskid);
+ER ev3lx_hrp3_wup_tsk(ID tskid);
+ER ev3lx_hrp3_rel_wai(ID tskid);
+ER ev3lx_hrp3_sig_sem(ID semid);
+ER ev3lx_hrp3_set_flg(ID flgid, FLGPTN setptn);
+ER ev3lx_hrp3_psnd_dtq(ID dtqid, intptr_t data);
+ER ev3lx_hrp3_fsnd_dtq(ID dtqid, intptr_t data);
+ER ev3lx_hrp3_psnd_pdq(ID pdqid, intptr_t data, PRI datapri);
+ER ev3lx_hrp3_stp_alm(ID almid);
+ER ev3lx_hrp3_rot_rdq(PRI tskpri);
+ER ev3lx_hrp3_get_tid(ID *p_tskid);
+ER ev3lx_hrp3_loc_cpu(void);
+ER ev3lx_hrp3_unl_cpu(void);
 
 #endif /* RTOS_HOST_KERNEL_IMPL_H */

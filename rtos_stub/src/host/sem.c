@@ -107,3 +107,40 @@ ER twai_sem(ID semid, TMO tmout)
 	svc_charge();
 	return sem_wait("twai_sem", semid, tmout, false);
 }
+
+/* Returns the semaphore to its initial count; its waiters get E_DLT. */
+ER ini_sem(ID semid)
+{
+	struct semcb *s;
+	ER ercd = E_OK;
+
+	svc_charge();
+	if (!ctx_task_unlocked())
+		return svc_result("ini_sem", E_CTX);
+	if ((s = sem_lookup(semid, &ercd)) == NULL)
+		return svc_result("ini_sem", ercd);
+	s->cnt = s->cfg->isemcnt;
+	while (!queue_empty(&s->wq))
+		wait_release(container_of_kernel(s->wq.next, struct tcb, node), E_DLT);
+	dispatch_if_needed();
+	return E_OK;
+}
+
+/* Reports the first waiting task and the count. */
+ER ref_sem(ID semid, T_RSEM *pk_rsem)
+{
+	struct semcb *s;
+	ER ercd = E_OK;
+
+	svc_charge();
+	if (!ctx_task_unlocked())
+		return svc_result("ref_sem", E_CTX);
+	if ((s = sem_lookup(semid, &ercd)) == NULL)
+		return svc_result("ref_sem", ercd);
+	if (check_out_ptr(pk_rsem, sizeof(*pk_rsem)) != E_OK)
+		return svc_result("ref_sem", E_MACV);
+	pk_rsem->wtskid = queue_empty(&s->wq) ? TSK_NONE :
+		container_of_kernel(s->wq.next, struct tcb, node)->id;
+	pk_rsem->semcnt = s->cnt;
+	return E_OK;
+}

@@ -20,6 +20,7 @@ static const struct error_name error_names[] = {
 	{ E_NOEXS, "E_NOEXS" },   { E_QOVR, "E_QOVR" },     { E_RLWAI, "E_RLWAI" },
 	{ E_TMOUT, "E_TMOUT" },   { E_DLT, "E_DLT" },       { E_CLS, "E_CLS" },
 	{ E_WBLK, "E_WBLK" },     { E_BOVR, "E_BOVR" },
+	{ -53, "E_RASTER" },      { -65, "E_COMM" },      /* HRP3's (t_stddef.h, EV3LX_KERNEL_HRP3) */
 };
 
 /* The name of ercd's main error code, or "unknown error". */
@@ -41,6 +42,10 @@ void t_perror(uint_t prio, const char *file, int_t line, const char *expr, ER er
 
 	syslog(prio, "%s (%d) reported by `%s' in line %d of `%s'.", itron_strerror(ercd), sub, expr, (int)line, file);
 }
+
+/* EV3RT's default serial port (ev3.h): ev3lx's is the UART of sensor port 1,
+ * SIO_PORT_UART (target_serial.h). */
+int SIO_PORT_DEFAULT = 1;
 
 /* Logs a failed service call (ercd < 0) at LOG_ERROR, as EV3RT's platform does. */
 void svc_perror(const char *file, int_t line, const char *expr, ER ercd)

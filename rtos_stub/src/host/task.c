@@ -165,6 +165,7 @@ void task_activate(struct tcb *t)
 	t->wupcnt = 0;
 	t->wait = WAIT_NONE;
 	t->co.restart = true;
+	t->call_us = false;
 	trace_task("activate", t);
 	ready_insert_tail(t);
 }
@@ -191,7 +192,7 @@ void wait_enter(enum wait_kind kind, ID objid, struct queue *wq, bool tpri, TMO 
 	if (wq != NULL)
 		wait_requeue(t, tpri);
 	if (tmout != TMO_FEVR)
-		tmevt_enqueue(&t->tmevt, tick_after_ms((RELTIM)tmout));
+		tmevt_enqueue(&t->tmevt, tick_after_ns(svc_reltim_ns((uint32_t)tmout)));
 	trace_task("wait", t);
 }
 
@@ -502,6 +503,18 @@ ER get_tid(ID *p_tskid)
 	return E_OK;
 }
 
+/* The calling task's extended information (its CRE_TSK exinf). */
+ER get_inf(intptr_t *p_exinf)
+{
+	svc_charge();
+	if (!ctx_task_unlocked())
+		return svc_result("get_inf", E_CTX);
+	if (check_out_ptr(p_exinf, sizeof(*p_exinf)) != E_OK)
+		return svc_result("get_inf", E_MACV);
+	*p_exinf = runtsk->cfg->exinf;
+	return E_OK;
+}
+
 /* ID of the task the interrupt came on top of, TSK_NONE if the CPU was idle. */
 ER iget_tid(ID *p_tskid)
 {
@@ -658,7 +671,7 @@ ER dly_tsk(RELTIM dlytim)
 	svc_charge();
 	if (!ctx_may_block())
 		return svc_result("dly_tsk", E_CTX);
-	if (dlytim > TMAX_RELTIM)
+	if (dlytim > svc_reltim_max())
 		return svc_result("dly_tsk", E_PAR);
 	return svc_result("dly_tsk", wait_block(WAIT_DLY, 0, NULL, false, (TMO)dlytim));
 }

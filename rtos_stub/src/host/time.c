@@ -16,6 +16,7 @@
 #include "kernel_impl.h"
 
 #define NS_PER_MS 1000000ULL
+#define NS_PER_US 1000ULL
 
 uint64_t now_ns;
 uint64_t tick_done;
@@ -29,6 +30,7 @@ static bool tick_every;
 
 struct cyccb {
 	const struct rtos_cyc_cfg *cfg;
+	uint64_t unit_ns;     /* cyctim and cycphs are in ms (HRP2) or us (HRP3) */
 	bool     started;
 	uint64_t origin_ns;   /* activation k is due at origin + cycphs + k * cyctim */
 	uint64_t k;
@@ -140,14 +142,26 @@ void tmevt_dequeue(struct tmevt *ev)
 	tm_sift_up(last->heap_index);
 }
 
-/* Tick index of a relative time of ms from now: the first boundary at or after
- * now + ms, and at least the next tick not yet processed. */
-uint64_t tick_after_ms(RELTIM ms)
+/* Tick index of a relative time of ns from now: the first boundary at or after
+ * now + ns, and at least the next tick not yet processed. */
+uint64_t tick_after_ns(uint64_t ns)
 {
-	uint64_t due = now_ns + (uint64_t)ms * NS_PER_MS;
+	uint64_t due = now_ns + ns;
 	uint64_t tick = (due + RTOS_HOST_TICK_NS - 1) / RTOS_HOST_TICK_NS;
 
 	return tick > tick_done ? tick : tick_done + 1;
+}
+
+/* The running call's largest relative time: ms for HRP2, us for HRP3. */
+uint32_t svc_reltim_max(void)
+{
+	return svc_in_us() ? HRP3_TMAX_RELTIM : TMAX_RELTIM;
+}
+
+/* A relative time in the running call's unit, in ns. */
+uint64_t svc_reltim_ns(uint32_t reltim)
+{
+	return (uint64_t)reltim * (svc_in_us() ? NS_PER_US : NS_PER_MS);
 }
 
 /* ---- The tick ---- */
@@ -207,8 +221,8 @@ void time_start(void)
 /* Virtual time activation k is due (from k: no accumulated drift). */
 static uint64_t cyc_due_ns(const struct cyccb *c, uint64_t k)
 {
-	return c->origin_ns + (uint64_t)c->cfg->cycphs * NS_PER_MS +
-	       k * (uint64_t)c->cfg->cyctim * NS_PER_MS;
+	return c->origin_ns + (uint64_t)c->cfg->cycphs * c->unit_ns +
+	       k * (uint64_t)c->cfg->cyctim * c->unit_ns;
 }
 
 /* Tick at which activation k runs: the first boundary at or after its due time. */
@@ -236,7 +250,7 @@ static void cyc_start(struct cyccb *c, uint64_t origin, bool keep_phase)
 	c->origin_ns = origin;
 	c->k = 0;
 	if (keep_phase && now_ns > cyc_due_ns(c, 0)) {
-		uint64_t period = (uint64_t)c->cfg->cyctim * NS_PER_MS;
+		uint64_t period = (uint64_t)c->cfg->cyctim * c->unit_ns;
 
 		c->k = (now_ns - cyc_due_ns(c, 0) + period - 1) / period;
 	}
@@ -324,20 +338,30 @@ static struct almcb *alm_lookup(ID almid, ER *ercd)
 	return alm_table[almid];
 }
 
-/* Common body of sta_alm/ista_alm. */
-static ER alm_start(const char *svc, ID almid, RELTIM almtim)
+/* Common body of sta_alm/ista_alm and HRP3's sta_alm: (re)arms the alarm ns from now. */
+ER alm_start_ns(const char *svc, ID almid, uint64_t ns)
 {
 	struct almcb *a;
 	ER ercd = E_OK;
 
 	if ((a = alm_lookup(almid, &ercd)) == NULL)
 		return svc_result(svc, ercd);
-	if (almtim > TMAX_RELTIM)
-		return svc_result(svc, E_PAR);
 	if (tmevt_queued(&a->ev))
 		tmevt_dequeue(&a->ev);
-	tmevt_enqueue(&a->ev, tick_after_ms(almtim));
+	tmevt_enqueue(&a->ev, tick_after_ns(ns));
 	return E_OK;
+}
+
+/* sta_alm/ista_alm's body: almtim in ms (E_PAR beyond TMAX_RELTIM). */
+static ER alm_start(const char *svc, ID almid, RELTIM almtim)
+{
+	ER ercd = E_OK;
+
+	if (alm_lookup(almid, &ercd) == NULL)
+		return svc_result(svc, ercd);
+	if (almtim > TMAX_RELTIM)
+		return svc_result(svc, E_PAR);
+	return alm_start_ns(svc, almid, (uint64_t)almtim * NS_PER_MS);
 }
 
 /* Common body of stp_alm/istp_alm. */
@@ -391,14 +415,15 @@ ER istp_alm(ID almid)
 
 /* ---- Creation (boot) ---- */
 
-/* Registers a checked CRE_CYC row. */
-ER cyc_register(const struct rtos_cyc_cfg *cfg)
+/* Registers a checked CRE_CYC row whose times are in units of unit_ns. */
+ER cyc_register(const struct rtos_cyc_cfg *cfg, uint64_t unit_ns)
 {
 	struct cyccb *c = calloc(1, sizeof(*c));
 
 	if (c == NULL)
 		return E_NOMEM;
 	c->cfg = cfg;
+	c->unit_ns = unit_ns;
 	c->ev.heap_index = UINT32_MAX;
 	c->ev.callback = cyc_fire;
 	cyc_table[cfg->cycid] = c;
@@ -416,6 +441,40 @@ ER alm_register(const struct rtos_alm_cfg *cfg)
 	a->ev.heap_index = UINT32_MAX;
 	a->ev.callback = alm_fire;
 	alm_table[cfg->almid] = a;
+	return E_OK;
+}
+
+/* The time left until the event ev runs: its tick's boundary less now. */
+static uint64_t tmevt_left_ns(const struct tmevt *ev)
+{
+	uint64_t at = ev->tick * RTOS_HOST_TICK_NS;
+
+	return at > now_ns ? at - now_ns : 0;
+}
+
+/* Whether cycid runs and the time to its next activation. */
+ER cyc_state(ID cycid, bool *started, uint64_t *left_ns)
+{
+	struct cyccb *c;
+	ER ercd = E_OK;
+
+	if ((c = cyc_lookup(cycid, &ercd)) == NULL)
+		return ercd;
+	*started = tmevt_queued(&c->ev);
+	*left_ns = *started ? tmevt_left_ns(&c->ev) : 0;
+	return E_OK;
+}
+
+/* Whether almid is armed and the time until it runs. */
+ER alm_state(ID almid, bool *started, uint64_t *left_ns)
+{
+	struct almcb *a;
+	ER ercd = E_OK;
+
+	if ((a = alm_lookup(almid, &ercd)) == NULL)
+		return ercd;
+	*started = tmevt_queued(&a->ev);
+	*left_ns = *started ? tmevt_left_ns(&a->ev) : 0;
 	return E_OK;
 }
 
@@ -481,4 +540,48 @@ ER get_utm(SYSUTM *p_sysutm)
 uint64_t rtos_host_now(void)
 {
 	return now_ns;
+}
+
+/* ns as a relative time of the running call's profile (ms, or us), rounded down. */
+static RELTIM svc_reltim_of_ns(uint64_t ns)
+{
+	return (RELTIM)(ns / (svc_in_us() ? NS_PER_US : NS_PER_MS));
+}
+
+/* Reports whether a cyclic handler runs and the time to its next activation. */
+ER ref_cyc(ID cycid, T_RCYC *pk_rcyc)
+{
+	bool started;
+	uint64_t left;
+	ER ercd;
+
+	svc_charge();
+	if (!ctx_task_unlocked())
+		return svc_result("ref_cyc", E_CTX);
+	if ((ercd = cyc_state(cycid, &started, &left)) != E_OK)
+		return svc_result("ref_cyc", ercd);
+	if (check_out_ptr(pk_rcyc, sizeof(*pk_rcyc)) != E_OK)
+		return svc_result("ref_cyc", E_MACV);
+	pk_rcyc->cycstat = started ? TCYC_STA : TCYC_STP;
+	pk_rcyc->lefttim = svc_reltim_of_ns(left);
+	return E_OK;
+}
+
+/* Reports whether an alarm is armed and the time until it runs. */
+ER ref_alm(ID almid, T_RALM *pk_ralm)
+{
+	bool started;
+	uint64_t left;
+	ER ercd;
+
+	svc_charge();
+	if (!ctx_task_unlocked())
+		return svc_result("ref_alm", E_CTX);
+	if ((ercd = alm_state(almid, &started, &left)) != E_OK)
+		return svc_result("ref_alm", ercd);
+	if (check_out_ptr(pk_ralm, sizeof(*pk_ralm)) != E_OK)
+		return svc_result("ref_alm", E_MACV);
+	pk_ralm->almstat = started ? TALM_STA : TALM_STP;
+	pk_ralm->lefttim = svc_reltim_of_ns(left);
+	return E_OK;
 }

@@ -95,6 +95,19 @@ struct uart_sensor_scene {
 
 /* Behaviour options (all off/zero is a perfect sensor with the real quirks of
  * its firmware left on, see .no_quirks). */
+/*
+ * An EV3 gyro at rest: its rate (GYRO-RATE, whole deg/s) reads a steady 0,
+ * now and then one count off ("reads 0 continually, occasionally -1",
+ * microsoft/pxt-ev3 issue 865), steady enough that LEGO's Gyro Boy program
+ * takes 200 readings 4 ms apart as its offset only when they span less than
+ * 2 deg/s (EV3RT's port of it: ev3rt-git/ev3rt-hrp2-sdk, workspace/gyroboy,
+ * calibrate_gyro_sensor).  White noise of 0.15 deg/s before the rounding
+ * gives that: a reading one count off about once in 1200 (|noise| >= 0.5 is
+ * 3.3 sigma), and 200 readings spanning 2 counts (one +1 and one -1) in
+ * fewer than 1 calibration in 100.  ev3sim's default for a robot's gyro.
+ */
+#define UART_SENSOR_GYRO_NOISE_AT_REST_DPS 0.15
+
 struct uart_sensor_options {
 	const char *name;           /* random stream name (hs_rng_stream), e.g. "in1.gyro"; NULL: the model */
 	uint64_t seed;              /* non-zero: seed the noise with this instead of the scenario stream */
