@@ -39,6 +39,7 @@ extern "C" {
 #define BRICK_IO_FN_SERIAL_READ (BRICK_IO_FN_FIRST + 6)  /* (serial_port_t, void *buf, uint_t len): returns bytes, 0 none yet, E_OBJ at end */
 #define BRICK_IO_FN_SPP_CONNECT (BRICK_IO_FN_FIRST + 7)  /* (const uint8_t addr[6], const char *pin): starts the SPP master's connection attempt; E_OK (at once if connected), E_CTX while one is under way */
 #define BRICK_IO_FN_SPP_CONNECTING (BRICK_IO_FN_FIRST + 8) /* (): 1 while the attempt is under way, else 0 */
+#define BRICK_IO_FN_SPP_RESET   (BRICK_IO_FN_FIRST + 9)  /* (): closes the SPP master's link, ends an attempt: idle */
 
 /* The Bluetooth SPP master link (the brick connects to a remote slave,
  * SIO_PORT_SPP_MASTER_TEST): a port of the serial service calls beyond
@@ -97,6 +98,11 @@ static inline ER brick_io_spp_connect(const uint8_t addr[6], const char *pin)
 static inline ER_UINT brick_io_spp_connecting(void)
 {
 	return cal_svc(BRICK_IO_FN_SPP_CONNECTING, 0, 0, 0, 0, 0);
+}
+
+static inline ER brick_io_spp_reset(void)
+{
+	return (ER)cal_svc(BRICK_IO_FN_SPP_RESET, 0, 0, 0, 0, 0);
 }
 
 #ifdef __cplusplus

@@ -219,6 +219,25 @@ FILE *ev3_serial_open_file(serial_port_t port)
 	return f;
 }
 
+/* EV3RT 1.x's numbering (the HRP3 profile's serial_port_t, which binds
+ * ev3_serial_open_file here): 3 is the Bluetooth SPP master's port. */
+FILE *ev3lx_hrp3_ev3_serial_open_file(int port);
+
+FILE *ev3lx_hrp3_ev3_serial_open_file(int port)
+{
+	FILE *f;
+
+	if (port < 0 || port > 3) {
+		api_warn("ev3_serial_open_file", port, E_ID);
+		return NULL;
+	}
+	if (port != 3)
+		return ev3_serial_open_file((serial_port_t)port);
+	if ((f = serial_stream(BRICK_IO_SERIAL_SPP_MASTER)) == NULL)
+		api_warn("ev3_serial_open_file", port, E_NOMEM);
+	return f;
+}
+
 /*
  * Writes to a serial stream.  EV3RT's newlib has no stream locks and writes
  * an unbuffered stream straight to its port, so one task may write a

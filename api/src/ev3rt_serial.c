@@ -175,20 +175,16 @@ ER serial_ref_por(ID portid, T_SERIAL_RPOR *pk_rpor)
 	return E_OK;
 }
 
-/* EV3RT starts the attempt and waits for its end 10 ms at a time
- * (bluetooth_dri.c's _spp_master_test_connect).  The address and PIN are
- * read in the caller's domain and cross the service call as copies on the
- * stack, as serial_wri_dat's bytes do. */
-ER spp_master_test_connect(const uint8_t addr[6], const char *pin)
+/* Starts an SPP master connection attempt; the address and PIN are read in
+ * the caller's domain and cross the service call as copies on the stack,
+ * as serial_wri_dat's bytes do. */
+static ER spp_start(const uint8_t addr[6], const char *pin)
 {
 	uint8_t addr_copy[6];
 	char pin_copy[BRICK_IO_MAX_PIN + 1];
-	ER_UINT connecting;
 	size_t n;
 	ER ercd;
 
-	if ((ercd = api_may_wait()) != E_OK)
-		return ercd;
 	if (addr == NULL || pin == NULL)
 		return E_MACV;
 	for (n = 0; n <= BRICK_IO_MAX_PIN && pin[n] != '\0'; n++)
@@ -197,9 +193,59 @@ ER spp_master_test_connect(const uint8_t addr[6], const char *pin)
 		return E_PAR;
 	memcpy(addr_copy, addr, sizeof(addr_copy));
 	memcpy(pin_copy, pin, n + 1);
-	if ((ercd = brick_io_spp_connect(addr_copy, pin_copy)) != E_OK)
-		return ercd == E_RSFN ? E_NOSPT : ercd;
+	ercd = brick_io_spp_connect(addr_copy, pin_copy);
+	return ercd == E_RSFN ? E_NOSPT : ercd;
+}
+
+/* EV3RT starts the attempt and waits for its end 10 ms at a time
+ * (bluetooth_dri.c's _spp_master_test_connect). */
+ER spp_master_test_connect(const uint8_t addr[6], const char *pin)
+{
+	ER_UINT connecting;
+	ER ercd;
+
+	if ((ercd = api_may_wait()) != E_OK || (ercd = spp_start(addr, pin)) != E_OK)
+		return ercd;
 	while ((connecting = brick_io_spp_connecting()) > 0)
 		dly_tsk(10);
 	return connecting < 0 ? (ER)connecting : E_OK;
+}
+
+/* EV3RT 1.x's SPP master (the HRP3 profile's ev3api_fs.h declares these for
+ * apps; the library is built once for both profiles). */
+ER ev3_spp_master_reset(void);
+ER ev3_spp_master_connect(const uint8_t *addr, const char *pin, const char *service);
+bool_t ev3_spp_master_is_connected(void);
+
+ER ev3_spp_master_reset(void)
+{
+	ER ercd = api_may_wait();
+
+	if (ercd != E_OK)
+		return ercd;
+	ercd = brick_io_spp_reset();
+	return ercd == E_RSFN ? E_NOSPT : ercd;
+}
+
+/* EV3RT 1.x starts the attempt and returns; a master that is not idle
+ * (connecting, or connected) refuses with E_CTX.  Every service has the
+ * name ev3sim's slave is reached by: the name is read, not matched. */
+ER ev3_spp_master_connect(const uint8_t *addr, const char *pin, const char *service)
+{
+	ER ercd;
+
+	if ((ercd = api_may_wait()) != E_OK)
+		return ercd;
+	if (service == NULL)
+		return E_MACV;
+	if (ev3_spp_master_is_connected() || brick_io_spp_connecting() > 0)
+		return E_CTX;
+	return spp_start(addr, pin);
+}
+
+bool_t ev3_spp_master_is_connected(void)
+{
+	T_SERIAL_RPOR rpor;
+
+	return serial_ref_por(SIO_PORT_SPP_MASTER_TEST, &rpor) == E_OK;
 }

@@ -742,6 +742,21 @@ static ER_UINT svc_spp_connecting(intptr_t p1, intptr_t p2, intptr_t p3, intptr_
 	return spp.attempting ? 1 : 0;
 }
 
+/* The SPP master back to idle: its link closed (the slave sees it go), an
+ * attempt under way ended. */
+static ER_UINT svc_spp_reset(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
+{
+	(void)p1; (void)p2; (void)p3; (void)p4; (void)p5; (void)cdmid;
+	if (sns_ctx())
+		return E_CTX;
+	link_close(&spp.link);
+	if (spp.answer_fd >= 0)
+		close(spp.answer_fd);
+	spp.answer_fd = -1;
+	spp.attempting = false;
+	return E_OK;
+}
+
 static const struct rtos_svc_cfg brick_io_svcs[] = {
 	{ BRICK_IO_FN_FILE_SIZE, svc_file_size, 1024 },
 	{ BRICK_IO_FN_FILE_READ, svc_file_read, 1024 },
@@ -752,6 +767,7 @@ static const struct rtos_svc_cfg brick_io_svcs[] = {
 	{ BRICK_IO_FN_SERIAL_READ, svc_serial_read, 1024 },
 	{ BRICK_IO_FN_SPP_CONNECT, svc_spp_connect, 1024 },
 	{ BRICK_IO_FN_SPP_CONNECTING, svc_spp_connecting, 1024 },
+	{ BRICK_IO_FN_SPP_RESET, svc_spp_reset, 1024 },
 };
 
 const struct rtos_cfg brick_io_cfg = {

@@ -6,6 +6,8 @@
  * attempt succeeds after the page answer and the port's stream (fdopen on
  * its file number) carries bytes both ways.  Writes to a serial stream go
  * straight to the port; on other streams they stay the C library's.
+ * EV3RT 1.x's form: ev3_spp_master_connect starts an attempt and returns,
+ * refusing while the master is not idle; reset closes the link.
  */
 #define _GNU_SOURCE
 #include <stdarg.h>
@@ -26,6 +28,12 @@ FILE *ev3rt_fs_fdopen(int fd, const char *mode);
 int ev3rt_fs_fprintf(FILE *f, const char *fmt, ...);
 int ev3rt_fs_fputs(const char *s, FILE *f);
 size_t ev3rt_fs_fwrite(const void *p, size_t size, size_t n, FILE *f);
+/* EV3RT 1.x's SPP master and port numbering, which ev3api_fs.h declares
+ * for apps built in the HRP3 profile. */
+ER ev3_spp_master_reset(void);
+ER ev3_spp_master_connect(const uint8_t *addr, const char *pin, const char *service);
+bool_t ev3_spp_master_is_connected(void);
+FILE *ev3lx_hrp3_ev3_serial_open_file(int port);
 
 static const uint8_t addr[6] = { 0x00, 0x16, 0x53, 0x01, 0x02, 0x03 };
 static char dir[64], sock_path[96], got[32];
@@ -69,6 +77,28 @@ static void slave_body(void)
 	ok(spp_stream != NULL && ev3rt_fs_fprintf(spp_stream, "SENSOR %d\n", 2) == 9, "fprintf sends 9 bytes");
 	ok(spp_stream != NULL && ev3rt_fs_fputs("ab", spp_stream) == 0 && ev3rt_fs_fwrite("cd", 1, 2, spp_stream) == 2,
 	   "fputs and fwrite send theirs");
+}
+
+static void hrp3_body(void)
+{
+	SYSTIM t0, t1;
+
+	ok(!ev3_spp_master_is_connected(), "EV3RT 1.x: the master starts idle");
+	is_int(ev3_spp_master_connect(addr, "1234", NULL), E_MACV, "no service name: E_MACV");
+	get_tim(&t0);
+	is_int(ev3_spp_master_connect(addr, "1234", "Serial Port"), E_OK, "connect starts the attempt and returns");
+	is_int(ev3_spp_master_connect(addr, "1234", "Serial Port"), E_CTX, "a second while it connects: E_CTX");
+	while (!ev3_spp_master_is_connected())
+		dly_tsk(10);
+	get_tim(&t1);
+	took = t1 - t0;
+	is_int(ev3_spp_master_connect(addr, "1234", "Serial Port"), E_CTX, "and while connected: E_CTX");
+	ok(ev3lx_hrp3_ev3_serial_open_file(3) == ev3rt_fs_fdopen(SIO_PORT_SPP_MASTER_TEST_FILENO, "r"),
+	   "port 3 (EV3_SERIAL_SPP_MASTER) is the master's stream");
+	ok(ev3lx_hrp3_ev3_serial_open_file(2) == ev3_serial_open_file(EV3_SERIAL_BT), "port 2 is Bluetooth's");
+	ok(ev3lx_hrp3_ev3_serial_open_file(4) == NULL, "there is no port 4");
+	is_int(ev3_spp_master_reset(), E_OK, "reset: E_OK");
+	ok(!ev3_spp_master_is_connected(), "the master is idle again, its link closed");
 }
 
 static void answer_body(void)
@@ -130,6 +160,21 @@ int main(void)
 		close(peer);
 	if (srv >= 0)
 		close(srv);
+
+	unlink(sock_path);
+	srv = listen_at(sock_path);
+	is_int(brick_io_setup(NULL, NULL, err, sizeof(err)), E_OK, "setup again");
+	is_int(brick_io_bt_master(sock_path, err, sizeof(err)), E_OK, "the slave is at %s", sock_path);
+	ok(srv >= 0 && at_run(NULL, hrp3_body, 1, 20), "EV3RT 1.x's SPP master calls ran");
+	ok(took >= 640 && took < 660, "connected once the slave answered the page (%lu ms)", (unsigned long)took);
+	peer = srv >= 0 ? accept(srv, NULL, NULL) : -1;
+	n = peer >= 0 ? read(peer, heard, sizeof(heard)) : -1;
+	is_int((int)n, 0, "the slave saw the reset close the link");
+	if (peer >= 0)
+		close(peer);
+	if (srv >= 0)
+		close(srv);
+	brick_io_teardown();
 
 	is_int(brick_io_setup(NULL, NULL, err, sizeof(err)), E_OK, "setup again");
 	memset(err, 0, sizeof(err));
