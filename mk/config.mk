@@ -116,10 +116,19 @@ $(filter %.mod.o,$(call module_objs,$(2))): %.mod.o: %.o
 	$(Q)$$(call module_link,$(1),$$@,$$<)
 endef
 
+# The kernel domain — the host kernel, linux_compat and the hacks with their
+# drivers — calls the kernel's service calls by function call under their
+# _kernel_ names, as HRP2 compiles its kernel and system services
+# (TOPPERS_SVC_CALL, rtos_stub/include/svc_call.h); everything else (the EV3
+# API, applications, tests) is user-domain code, whose calls are
+# target_svc.h's software interrupts on the brick.
+KERNEL_DOMAIN_DIRS := rtos_stub/src linux_compat hacks
+kernel_domain_flags = $(if $(filter $(addsuffix /%,$(KERNEL_DOMAIN_DIRS)),$(1)),-DTOPPERS_SVC_CALL)
+
 # The one compile command of configuration $(1) for source (or header) $(2):
 # every object, firmware file and header check is compiled through it.
 compile = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(call src_flags,$(2)) \
-	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2))) $(CFLAGS_$(1)) $(KERNEL_DEFS)
+	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2)) $(call kernel_domain_flags,$(2))) $(CFLAGS_$(1)) $(KERNEL_DEFS)
 
 # Flags of configuration $(1)'s compiler: clang (the fuzzing build) has no
 # -fno-allow-store-data-races (it never invents stores the source lacks).

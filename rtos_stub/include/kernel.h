@@ -50,7 +50,8 @@ typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 /* ---- Priorities ---- */
 #define TMIN_TPRI    1      /* highest task priority */
 #define TMAX_TPRI    16     /* lowest task priority */
-#define TMIN_INTPRI  (-7)   /* highest interrupt priority */
+#define TMIN_INTPRI  (-31)  /* highest interrupt priority: the AM1808 AINTC's channel 2
+			    * (ev3rt-git/ev3rt-hrp2, arch/arm_gcc/am1808/am1808.h) */
 #define TMAX_INTPRI  (-1)   /* lowest interrupt priority */
 #define TIPM_ENAALL  0      /* interrupt priority mask: all enabled */
 #define TMIN_DPRI    1      /* highest data priority (priority data queues) */
@@ -119,110 +120,12 @@ typedef struct t_rmtx {    /* ref_mtx */
 	ID     wtskid;         /* first task waiting for it, TSK_NONE if none */
 } T_RMTX;
 
-/* ---- Task management ---- */
-ER      act_tsk(ID tskid);                 /* activate (queue one activation if not dormant) */
-ER      iact_tsk(ID tskid);                /* act_tsk from non-task context */
-ER_UINT can_act(ID tskid);                 /* cancel queued activations, return their count */
-ER      ext_tsk(void);                     /* end the calling task; returns only on error (E_CTX: not a task) */
-ER      chg_pri(ID tskid, PRI tskpri);     /* change base priority */
-ER      get_pri(ID tskid, PRI *p_tskpri);  /* read current priority */
-ER      get_tid(ID *p_tskid);              /* ID of the running task */
-ER      iget_tid(ID *p_tskid);             /* ID of the task interrupted (TSK_NONE if idle) */
-
-/* ---- Task-dependent synchronisation ---- */
-ER      slp_tsk(void);                     /* sleep until woken */
-ER      tslp_tsk(TMO tmout);               /* sleep with timeout (E_TMOUT) */
-ER      wup_tsk(ID tskid);                 /* wake, or queue one wakeup */
-ER      iwup_tsk(ID tskid);
-ER_UINT can_wup(ID tskid);
-ER      rel_wai(ID tskid);                 /* force a waiting task out with E_RLWAI */
-ER      irel_wai(ID tskid);
-ER      dly_tsk(RELTIM dlytim);            /* delay for at least dlytim ms */
-ER      sus_tsk(ID tskid);                 /* suspend (a waiting task becomes waiting-suspended) */
-ER      rsm_tsk(ID tskid);                 /* resume a suspended task */
-ER      ter_tsk(ID tskid);                 /* terminate another task (releases its mutexes) */
-
-/* ---- Semaphores ---- */
-ER      sig_sem(ID semid);                 /* release one resource (E_QOVR at maximum) */
-ER      isig_sem(ID semid);
-ER      wai_sem(ID semid);                 /* acquire, waiting */
-ER      pol_sem(ID semid);                 /* acquire, E_TMOUT if none */
-ER      twai_sem(ID semid, TMO tmout);     /* acquire with timeout */
-
-/* ---- Eventflags ---- */
-ER      set_flg(ID flgid, FLGPTN setptn);
-ER      iset_flg(ID flgid, FLGPTN setptn);
-ER      clr_flg(ID flgid, FLGPTN clrptn);  /* AND the pattern with clrptn */
-ER      wai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn);
-ER      pol_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn);
-ER      twai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn, TMO tmout);
-
-/* ---- Data queues (intptr_t elements, FIFO) ---- */
-ER      snd_dtq(ID dtqid, intptr_t data);  /* send, waiting while full */
-ER      psnd_dtq(ID dtqid, intptr_t data); /* send, E_TMOUT if full */
-ER      ipsnd_dtq(ID dtqid, intptr_t data);
-ER      tsnd_dtq(ID dtqid, intptr_t data, TMO tmout);
-ER      fsnd_dtq(ID dtqid, intptr_t data); /* send, dropping the oldest element if full */
-ER      ifsnd_dtq(ID dtqid, intptr_t data);
-ER      rcv_dtq(ID dtqid, intptr_t *p_data);   /* receive, waiting while empty */
-ER      prcv_dtq(ID dtqid, intptr_t *p_data);  /* receive, E_TMOUT if empty */
-ER      trcv_dtq(ID dtqid, intptr_t *p_data, TMO tmout);
-ER      ini_dtq(ID dtqid);                 /* empty it; waiting tasks get E_DLT */
-ER      ref_dtq(ID dtqid, T_RDTQ *pk_rdtq);
-
-/* ---- Priority data queues (ordered by data priority, FIFO within one) ---- */
-ER      snd_pdq(ID pdqid, intptr_t data, PRI datapri);
-ER      psnd_pdq(ID pdqid, intptr_t data, PRI datapri);
-ER      ipsnd_pdq(ID pdqid, intptr_t data, PRI datapri);
-ER      tsnd_pdq(ID pdqid, intptr_t data, PRI datapri, TMO tmout);
-ER      rcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri);
-ER      prcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri);
-ER      trcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri, TMO tmout);
-ER      ini_pdq(ID pdqid);
-ER      ref_pdq(ID pdqid, T_RPDQ *pk_rpdq);
-
-/* ---- Mutexes (TA_CEILING: priority ceiling; TA_INHERIT: priority inheritance) ---- */
-ER      loc_mtx(ID mtxid);                 /* lock, waiting while another task holds it */
-ER      ploc_mtx(ID mtxid);                /* lock, E_TMOUT if held */
-ER      tloc_mtx(ID mtxid, TMO tmout);
-ER      unl_mtx(ID mtxid);                 /* unlock; mutexes unlock in reverse order of locking */
-ER      ini_mtx(ID mtxid);                 /* unlock; waiting tasks get E_DLT */
-ER      ref_mtx(ID mtxid, T_RMTX *pk_rmtx);
-
-/* ---- Time management ---- */
-ER      get_tim(SYSTIM *p_systim);         /* system time in ms since boot */
-ER      get_utm(SYSUTM *p_sysutm);         /* performance time in us since boot */
-ER      sta_cyc(ID cycid);                 /* start a cyclic handler */
-ER      stp_cyc(ID cycid);
-ER      sta_alm(ID almid, RELTIM almtim);  /* start an alarm, almtim ms from now */
-ER      ista_alm(ID almid, RELTIM almtim);
-ER      stp_alm(ID almid);
-ER      istp_alm(ID almid);
-
-/* ---- System state ---- */
-ER      rot_rdq(PRI tskpri);               /* rotate the ready queue of a priority */
-ER      irot_rdq(PRI tskpri);
-ER      loc_cpu(void);                     /* CPU lock: mask all interrupts and dispatch */
-ER      iloc_cpu(void);
-ER      unl_cpu(void);
-ER      iunl_cpu(void);
-ER      dis_dsp(void);                     /* disable dispatching */
-ER      ena_dsp(void);
-bool_t  sns_ctx(void);                     /* TRUE in non-task context */
-bool_t  sns_loc(void);                     /* TRUE with the CPU locked */
-bool_t  sns_dsp(void);                     /* TRUE with dispatching disabled */
-bool_t  sns_dpn(void);                     /* TRUE when dispatching is pending/not possible */
-ER      ext_ker(void);                     /* end the kernel: ATT_TER routines, then stop */
-
-/* ---- Interrupts ---- */
-ER      dis_int(INTNO intno);              /* mask one interrupt line */
-ER      ena_int(INTNO intno);              /* unmask one interrupt line */
-
-/* ---- Extended service calls and memory protection (HRP2) ---- */
-ER_UINT cal_svc(FN fncd, intptr_t par1, intptr_t par2, intptr_t par3,
-		intptr_t par4, intptr_t par5);
-/* E_OK if the task's protection domain may access [base, base+size) with pmmode, else E_MACV. */
-ER      prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode);
+/* ---- Service calls ---- */
+/* Their function codes, their kernel-domain names (_kernel_*, TOPPERS_SVC_CALL)
+ * and their user-domain traps with cal_svc, in HRP2's three headers. */
+#include "kernel_fncode.h"
+#include "svc_call.h"
+#include "target_svc.h"
 
 #ifdef __cplusplus
 }
