@@ -33,8 +33,16 @@ LINUX_CODEGEN := -fno-strict-aliasing -fno-common -fno-delete-null-pointer-check
 # configuration alike).
 TIC_NUME ?= 1
 TIC_DENO ?= 5
-TNUM_FNCD ?= 128
-KERNEL_DEFS := -DTIC_NUME=$(TIC_NUME)U -DTIC_DENO=$(TIC_DENO)U -DTNUM_FNCD=$(TNUM_FNCD)
+TNUM_FNCD ?= 256
+# EV3LX_FNCD_BASE: the library's first function code (hacks/hack_interface.h);
+# its modules take EV3LX_FNCD_BASE .. EV3LX_FNCD_BASE + 126 (the hacks,
+# then the brick I/O service).
+EV3LX_FNCD_BASE ?= 64
+# INTPRI_TICK: the tick's interrupt priority, which every Linux line shares
+# (EV3RT's INTPRI_TIMER, -28, by default).
+INTPRI_TICK ?= -28
+KERNEL_DEFS := -DTIC_NUME=$(TIC_NUME)U -DTIC_DENO=$(TIC_DENO)U -DTNUM_FNCD=$(TNUM_FNCD) \
+	-DEV3LX_FNCD_BASE=$(EV3LX_FNCD_BASE) '-DINTPRI_TICK=($(INTPRI_TICK))'
 
 # A compiler cache where the machine has one (`make deps` installs ccache): a
 # clean clone recompiles nothing the cache has already compiled.  Objects do not

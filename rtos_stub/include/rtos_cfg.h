@@ -34,14 +34,20 @@ extern "C" {
  * (make TNUM_FNCD=n passes -DTNUM_FNCD=n to every unit, library and
  * configurations alike), as the TOPPERS configurator sets it for HRP2. */
 #ifndef TNUM_FNCD
-#define TNUM_FNCD    128
+#define TNUM_FNCD    256
 #endif
 #define TNUM_DOMID   4      /* user protection domains 1..TNUM_DOMID */
 #define TMAX_INTNO   127U   /* interrupt numbers 0..TMAX_INTNO (AINTC system interrupts) */
 
-/* The host tick is an interrupt line too, as on the AM1808 (TIMER64P0 TINT12). */
+/* The host tick is an interrupt line too, as on the AM1808 (TIMER64P0 TINT12).
+ * Its priority is a build setting (make INTPRI_TICK=n), EV3RT's by default:
+ * INTPRI_TIMER, TMIN_INTPRI + 3 = -28 (ev3rt-git/ev3rt-hrp2, target/ev3_gcc/ev3.h);
+ * every Linux line takes it too (LX_IRQ_PRIORITY), so Linux handlers and the
+ * tick's hrtimer callbacks never nest. */
 #define INTNO_TICK   21U
-#define INTPRI_TICK  (-6)
+#ifndef INTPRI_TICK
+#define INTPRI_TICK  (-28)
+#endif
 
 struct rtos_task_cfg {      /* CRE_TSK */
 	ID       tskid;
