@@ -135,8 +135,11 @@ kernel_domain_flags = $(if $(filter $(addsuffix /%,$(KERNEL_DOMAIN_DIRS)),$(1)),
 
 # The one compile command of configuration $(1) for source (or header) $(2):
 # every object, firmware file and header check is compiled through it.
-compile = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(call src_flags,$(2)) \
+# A configuration may rewrite its command (compile_adjust_<config>: the AM1808
+# against a real HRP2 tree takes the kernel's headers for rtos_stub's).
+compile_cmd = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(call src_flags,$(2)) \
 	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2)) $(call kernel_domain_flags,$(2))) $(CFLAGS_$(1)) $(KERNEL_DEFS)
+compile = $(if $(compile_adjust_$(1)),$(call compile_adjust_$(1),$(call compile_cmd,$(1),$(2))),$(call compile_cmd,$(1),$(2)))
 
 # Flags of configuration $(1)'s compiler: clang (the fuzzing build) has no
 # -fno-allow-store-data-races (it never invents stores the source lacks).
