@@ -6,6 +6,12 @@
  * renames; a user domain reaches the same calls through target_svc.h's
  * software interrupts.  Signatures are HRP2's; the set is the subset ev3lx uses.
  */
+/* Included alone, the kernel's types come first: kernel.h defines them and
+ * then includes this header. */
+#ifndef TOPPERS_SVC_CALL_H
+#include "kernel.h"
+#endif
+
 #ifndef TOPPERS_SVC_CALL_H
 #define TOPPERS_SVC_CALL_H
 

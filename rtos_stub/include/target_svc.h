@@ -15,6 +15,12 @@
  * extended service dispatcher (rtos_host_cal_svc): no trap, the same names
  * and results.
  */
+/* Included alone, the kernel's types come first: kernel.h defines them and
+ * then includes this header. */
+#ifndef TOPPERS_TARGET_SVC_H
+#include "kernel.h"
+#endif
+
 #ifndef TOPPERS_TARGET_SVC_H
 #define TOPPERS_TARGET_SVC_H
 
