@@ -20,12 +20,13 @@ extern "C" {
 #include <stdint.h>
 #include "kernel.h"
 #include "ev3api_fs.h"
+#include "hack_interface.h"
 
 /* The function codes this module owns: BRICK_IO_FN_FIRST .. + BRICK_IO_FN_COUNT - 1
- * (a build may move the range with -DBRICK_IO_FN_FIRST=n; boot rejects ranges
+ * (after the hacks' ranges, EV3LX_FNCD_BASE moves it with them, -DBRICK_IO_FN_FIRST=n alone; boot rejects ranges
  * that overlap another module's). */
 #ifndef BRICK_IO_FN_FIRST
-#define BRICK_IO_FN_FIRST 112
+#define BRICK_IO_FN_FIRST (EV3LX_FNCD_BASE + 111)
 #endif
 #define BRICK_IO_FN_COUNT 16
 #define BRICK_IO_FN_LAST  (BRICK_IO_FN_FIRST + BRICK_IO_FN_COUNT - 1)

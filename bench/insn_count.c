@@ -23,7 +23,7 @@
  *   api, hack, driver, linux_compat    api/src/, hacks/, ev3_drivers/ (the
  *            drivers' code, compiled inside the hacks), linux_compat/   counted
  *   kernel   the kernel's service calls (rtos_stub svc/system/sem/flg/task/
- *            time/interrupt.c, rtos_host_now)                   counted
+ *            time/interrupt.c, rtos_host_now, rtos_host_cal_svc) counted
  *   libc     the C library (memcpy, division helpers)          counted
  *   access   sil_host_read/sil_host_write: one register access, counted as
  *            1 instruction, everything below them excluded
@@ -154,7 +154,9 @@ static enum fn_class classify(const char *name, const char *path, unsigned *cost
 		*cost = 1;
 		return CL_LOCK;
 	}
-	if (strcmp(name, "rtos_host_now") == 0)
+	/* the clock, and the extended service call's dispatch (HRP2's trap handler
+	 * on the brick; cal_svc is an inline trap there, this function on the host) */
+	if (strcmp(name, "rtos_host_now") == 0 || strcmp(name, "rtos_host_cal_svc") == 0)
 		return CL_KERNEL;
 	if (path == NULL)
 		return CL_LIBC;

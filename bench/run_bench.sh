@@ -202,7 +202,8 @@ done
 # the ARM926 exception path, HRP2_TRAP_MIN..MAX instructions each (docs/bench.md).
 # The traps of a call are its kernel service calls in the production breakdown. ----
 HRP2_TRAP_MIN=30 HRP2_TRAP_MAX=70
-hrp2_svcs=" cal_svc prb_mem sns_ctx sns_loc sns_dsp sns_dpn sns_ker get_tid get_utm loc_cpu unl_cpu dis_dsp ena_dsp "
+# (the host's functions: the extended service dispatcher and the kernel's _kernel_ entries)
+hrp2_svcs=" rtos_host_cal_svc _kernel_prb_mem _kernel_sns_ctx _kernel_sns_loc _kernel_sns_dsp _kernel_sns_dpn _kernel_sns_ker _kernel_get_tid _kernel_get_utm _kernel_loc_cpu _kernel_unl_cpu _kernel_dis_dsp _kernel_ena_dsp "
 awk -F, -v svcs="$hrp2_svcs" '$1 == "fn" && index(svcs, " " $3 " ") && $6 + 0 > 0 { n[$2]++ }
 	END { for (k in n) print "traps," k "," n[k] }' "$out/arm_prod.txt" > "$out/traps.txt"
 

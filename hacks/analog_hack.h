@@ -20,10 +20,10 @@
 #include "lms_analog.h"
 
 /* The function codes this module owns: ANALOG_FN_FIRST .. + ANALOG_FN_COUNT - 1
- * (a build may move the range with -DANALOG_FN_FIRST=n; boot rejects ranges
+ * (EV3LX_FNCD_BASE moves every module's range, -DANALOG_FN_FIRST=n this one; boot rejects ranges
  * that overlap another module's). */
 #ifndef ANALOG_FN_FIRST
-#define ANALOG_FN_FIRST 16
+#define ANALOG_FN_FIRST (EV3LX_FNCD_BASE + 15)
 #endif
 #define ANALOG_FN_COUNT 16
 #define ANALOG_FN_LAST  (ANALOG_FN_FIRST + ANALOG_FN_COUNT - 1)

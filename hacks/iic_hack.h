@@ -26,10 +26,10 @@
 #include "lms_iic.h"
 
 /* The function codes this module owns: IIC_FN_FIRST .. + IIC_FN_COUNT - 1
- * (a build may move the range with -DIIC_FN_FIRST=n; boot rejects ranges
+ * (EV3LX_FNCD_BASE moves every module's range, -DIIC_FN_FIRST=n this one; boot rejects ranges
  * that overlap another module's). */
 #ifndef IIC_FN_FIRST
-#define IIC_FN_FIRST 96
+#define IIC_FN_FIRST (EV3LX_FNCD_BASE + 95)
 #endif
 #define IIC_FN_COUNT 16
 #define IIC_FN_LAST  (IIC_FN_FIRST + IIC_FN_COUNT - 1)

@@ -27,7 +27,7 @@
 
 /* The function codes this module owns: LCD_FN_FIRST .. + LCD_FN_COUNT - 1. */
 #ifndef LCD_FN_FIRST
-#define LCD_FN_FIRST 88
+#define LCD_FN_FIRST (EV3LX_FNCD_BASE + 87)
 #endif
 #define LCD_FN_COUNT 8
 #define LCD_FN_LAST  (LCD_FN_FIRST + LCD_FN_COUNT - 1)

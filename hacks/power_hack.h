@@ -20,10 +20,10 @@
 #include "lms_power.h"
 
 /* The function codes this module owns: POWER_FN_FIRST .. + POWER_FN_COUNT - 1
- * (a build may move the range with -DPOWER_FN_FIRST=n; boot rejects ranges
+ * (EV3LX_FNCD_BASE moves every module's range, -DPOWER_FN_FIRST=n this one; boot rejects ranges
  * that overlap another module's). */
 #ifndef POWER_FN_FIRST
-#define POWER_FN_FIRST 64
+#define POWER_FN_FIRST (EV3LX_FNCD_BASE + 63)
 #endif
 #define POWER_FN_COUNT 8
 #define POWER_FN_LAST  (POWER_FN_FIRST + POWER_FN_COUNT - 1)

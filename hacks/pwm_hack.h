@@ -18,10 +18,10 @@
 #include "lms_pwm.h"
 
 /* The function codes this module owns: PWM_FN_FIRST .. + PWM_FN_COUNT - 1
- * (a build may move the range with -DPWM_FN_FIRST=n; boot rejects ranges
+ * (EV3LX_FNCD_BASE moves every module's range, -DPWM_FN_FIRST=n this one; boot rejects ranges
  * that overlap another module's). */
 #ifndef PWM_FN_FIRST
-#define PWM_FN_FIRST 1
+#define PWM_FN_FIRST (EV3LX_FNCD_BASE + 0)
 #endif
 #define PWM_FN_COUNT 15
 #define PWM_FN_LAST  (PWM_FN_FIRST + PWM_FN_COUNT - 1)

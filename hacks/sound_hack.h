@@ -23,10 +23,10 @@
 #include "lms_sound.h"
 
 /* The function codes this module owns: SOUND_FN_FIRST .. + SOUND_FN_COUNT - 1
- * (a build may move the range with -DSOUND_FN_FIRST=n; boot rejects ranges
+ * (EV3LX_FNCD_BASE moves every module's range, -DSOUND_FN_FIRST=n this one; boot rejects ranges
  * that overlap another module's). */
 #ifndef SOUND_FN_FIRST
-#define SOUND_FN_FIRST 72
+#define SOUND_FN_FIRST (EV3LX_FNCD_BASE + 71)
 #endif
 #define SOUND_FN_COUNT 8
 #define SOUND_FN_LAST  (SOUND_FN_FIRST + SOUND_FN_COUNT - 1)

@@ -25,10 +25,10 @@
 #include "lms_uart.h"
 
 /* The function codes this module owns: UART_FN_FIRST .. + UART_FN_COUNT - 1
- * (a build may move the range with -DUART_FN_FIRST=n; boot rejects ranges
+ * (EV3LX_FNCD_BASE moves every module's range, -DUART_FN_FIRST=n this one; boot rejects ranges
  * that overlap another module's). */
 #ifndef UART_FN_FIRST
-#define UART_FN_FIRST 32
+#define UART_FN_FIRST (EV3LX_FNCD_BASE + 31)
 #endif
 #define UART_FN_COUNT 16
 #define UART_FN_LAST  (UART_FN_FIRST + UART_FN_COUNT - 1)

@@ -24,10 +24,10 @@
 #include "lms_ui.h"
 
 /* The function codes this module owns: UI_FN_FIRST .. + UI_FN_COUNT - 1
- * (a build may move the range with -DUI_FN_FIRST=n; boot rejects ranges
+ * (EV3LX_FNCD_BASE moves every module's range, -DUI_FN_FIRST=n this one; boot rejects ranges
  * that overlap another module's). */
 #ifndef UI_FN_FIRST
-#define UI_FN_FIRST 48
+#define UI_FN_FIRST (EV3LX_FNCD_BASE + 47)
 #endif
 #define UI_FN_COUNT 16
 #define UI_FN_LAST  (UI_FN_FIRST + UI_FN_COUNT - 1)

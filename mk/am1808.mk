@@ -12,6 +12,32 @@ LX_DEBUG_OFF  := -DLX_DEBUG_ATOMIC_SLEEP=0 -DLX_DEBUG_SPINLOCK=0
 CFLAGS_am1808 := -mcpu=arm926ej-s -marm -Os -g $(DEBUG_PREFIX_MAP) -ffreestanding -ffunction-sections \
 	-fdata-sections -DEV3LX_AM1808=1 $(LX_DEBUG_OFF)
 AM1808        := $(BUILD)/am1808
+
+# Against a real kernel: make am1808 HRP2_DIR=<an HRP2 tree> compiles every
+# library file with that kernel's headers and settings in place of rtos_stub's
+# (its kernel.h, t_stddef.h, sil.h, t_syslog.h, syssvc/syslog.h, the AM1808
+# chip and EV3 target headers with their tick and kernel limits): the kernel's
+# directories come first as system headers, rtos_stub/include only after them
+# for what the kernel lacks (rtos_cfg.h), the compiler's include-fixed gives
+# limits.h under -nostdinc (HRP2's tool_stddef.h needs it), and no tick or
+# kernel limit of ev3lx's own is defined.  Kernel-domain code keeps
+# TOPPERS_SVC_CALL, the API its user-domain traps.  The library goes to
+# build/am1808-hrp2/; the link-check image is rtos_stub's (make am1808).
+ifneq ($(HRP2_DIR),)
+ifeq ($(wildcard $(HRP2_DIR)/include/kernel.h),)
+$(error HRP2_DIR=$(HRP2_DIR): no include/kernel.h there; give the root of an HRP2 source tree)
+endif
+ifeq ($(wildcard $(HRP2_DIR)/arch/arm_gcc/am1808/am1808.h),)
+$(error HRP2_DIR=$(HRP2_DIR): no arch/arm_gcc/am1808/am1808.h there; the tree must have the AM1808 chip (EV3RT's HRP2))
+endif
+AM1808        := $(BUILD)/am1808-hrp2
+HRP2_TARGET   ?= ev3_gcc
+HRP2_INC      := $(addprefix -isystem $(HRP2_DIR)/,include arch . target/$(HRP2_TARGET) \
+	arch/arm_gcc/am1808 arch/arm_gcc/common arch/gcc) \
+	-isystem $(shell arm-none-eabi-gcc -print-file-name=include-fixed)
+KERNEL_DEFS   := -DEV3LX_FNCD_BASE=$(EV3LX_FNCD_BASE) '-DINTPRI_TICK=($(INTPRI_TICK))' -D__TARGET_ARCH_ARM=5
+compile_adjust_am1808 = $(subst -Irtos_stub/include,$(HRP2_INC) -idirafter rtos_stub/include,$(1))
+endif
 AM1808_OBJS   := $(patsubst %.c,$(AM1808)/obj/%.o,$(AM1808_SRCS))
 AM1808_LIB    := $(AM1808)/libev3lx.a
 FW_OBJS := $(AM1808)/startup.o $(AM1808)/fw_main.o $(AM1808)/hrp2_link_provider.o \
@@ -64,8 +90,13 @@ $(AM1808)/uImage: $(AM1808)/ev3lx.bin
 		-a 0xC0008000 -e 0xC0008000 -n "ev3lx" -d $< $@ > /dev/null
 
 .PHONY: am1808 am1808-link-check am1808-uimage-check size
+ifeq ($(HRP2_DIR),)
 am1808: deps-check $(AM1808_LIB) $(AM1808)/uImage
 	@echo "am1808: $(AM1808_LIB) ($(words $(AM1808_OBJS)) objects), $(AM1808)/uImage"
+else
+am1808: deps-check $(AM1808_LIB)
+	@echo "am1808: $(AM1808_LIB) ($(words $(AM1808_OBJS)) objects) against the kernel headers of $(HRP2_DIR)"
+endif
 
 am1808-link-check: $(FW_OBJS) $(AM1808_LIB)
 	@bash am1808/check_link.sh $(AM1808)

@@ -45,8 +45,16 @@ LINUX_CODEGEN := -funsigned-char -fno-strict-aliasing -fno-common -fno-delete-nu
 # configuration alike).
 TIC_NUME ?= 1
 TIC_DENO ?= 5
-TNUM_FNCD ?= 128
-KERNEL_DEFS := -DTIC_NUME=$(TIC_NUME)U -DTIC_DENO=$(TIC_DENO)U -DTNUM_FNCD=$(TNUM_FNCD)
+TNUM_FNCD ?= 256
+# EV3LX_FNCD_BASE: the library's first function code (hacks/hack_interface.h);
+# its modules take EV3LX_FNCD_BASE .. EV3LX_FNCD_BASE + 126 (the hacks,
+# then the brick I/O service).
+EV3LX_FNCD_BASE ?= 64
+# INTPRI_TICK: the tick's interrupt priority, which every Linux line shares
+# (EV3RT's INTPRI_TIMER, -28, by default).
+INTPRI_TICK ?= -28
+KERNEL_DEFS := -DTIC_NUME=$(TIC_NUME)U -DTIC_DENO=$(TIC_DENO)U -DTNUM_FNCD=$(TNUM_FNCD) \
+	-DEV3LX_FNCD_BASE=$(EV3LX_FNCD_BASE) '-DINTPRI_TICK=($(INTPRI_TICK))'
 
 # A compiler cache where the machine has one (`make deps` installs ccache): a
 # clean clone recompiles nothing the cache has already compiled.  Objects do not
@@ -159,10 +167,22 @@ $(filter %.mod.o,$(call module_objs,$(2))): %.mod.o: %.o
 	$(Q)$$(call module_link,$(1),$$@,$$<)
 endef
 
+# The kernel domain — the host kernel, linux_compat and the hacks with their
+# drivers — calls the kernel's service calls by function call under their
+# _kernel_ names, as HRP2 compiles its kernel and system services
+# (TOPPERS_SVC_CALL, rtos_stub/include/svc_call.h); everything else (the EV3
+# API, applications, tests) is user-domain code, whose calls are
+# target_svc.h's software interrupts on the brick.
+KERNEL_DOMAIN_DIRS := rtos_stub/src linux_compat hacks
+kernel_domain_flags = $(if $(filter $(addsuffix /%,$(KERNEL_DOMAIN_DIRS)),$(1)),-DTOPPERS_SVC_CALL)
+
 # The one compile command of configuration $(1) for source (or header) $(2):
 # every object, firmware file and header check is compiled through it.
-compile = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(call src_flags,$(2)) \
-	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2))) $(CFLAGS_$(1)) $(KERNEL_DEFS)
+# A configuration may rewrite its command (compile_adjust_<config>: the AM1808
+# against a real HRP2 tree takes the kernel's headers for rtos_stub's).
+compile_cmd = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(call src_flags,$(2)) \
+	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2)) $(call kernel_domain_flags,$(2))) $(CFLAGS_$(1)) $(KERNEL_DEFS)
+compile = $(if $(compile_adjust_$(1)),$(call compile_adjust_$(1),$(call compile_cmd,$(1),$(2))),$(call compile_cmd,$(1),$(2)))
 
 # Flags of configuration $(1)'s compiler: clang (the fuzzing build) has no
 # -fno-allow-store-data-races (it never invents stores the source lacks) nor

@@ -7,6 +7,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include "kernel.h"
+#include "t_syslog.h"
 
 /*
  * The API's context rules (docs/api.md, "Context"), checked before a call does

@@ -3,7 +3,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <time.h>
-#include "t_syslog.h"
+#include "syssvc/syslog.h"
 #include "ev3sim/apps.h"
 
 void ev3sim_quiet_console(void)

@@ -52,7 +52,8 @@ typedef ER_UINT (*EXTSVC)(intptr_t par1, intptr_t par2, intptr_t par3,
 /* ---- Priorities ---- */
 #define TMIN_TPRI    1      /* highest task priority */
 #define TMAX_TPRI    16     /* lowest task priority */
-#define TMIN_INTPRI  (-7)   /* highest interrupt priority */
+#define TMIN_INTPRI  (-31)  /* highest interrupt priority: the AM1808 AINTC's channel 2
+			    * (ev3rt-git/ev3rt-hrp2, arch/arm_gcc/am1808/am1808.h) */
 #define TMAX_INTPRI  (-1)   /* lowest interrupt priority */
 #define TIPM_ENAALL  0      /* interrupt priority mask: all enabled */
 #define TMIN_DPRI    1      /* highest data priority (priority data queues) */
@@ -152,130 +153,23 @@ typedef struct t_ralm {    /* ref_alm */
 #define TALM_STA     0x02U
 
 /*
- * A service call whose HRP3 form differs from HRP2's (time in us, or callable
- * from non-task context too) is bound, in the HRP3 profile, to the host
- * kernel's HRP3 entry point ev3lx_hrp3_NAME (rtos_stub/src/host/hrp3.c);
- * in the HRP2 profile the declaration is HRP2's.
+ * In the HRP3 profile (EV3LX_KERNEL_HRP3, host only) a service call whose
+ * HRP3 form differs from HRP2's (time in us, or callable from non-task
+ * context too) reaches the host kernel's HRP3 entry point ev3lx_hrp3_NAME
+ * (rtos_stub/src/host/hrp3.c) instead of _kernel_NAME (target_svc.h); an API
+ * call whose EV3RT 1.x form differs is bound to its HRP3 entry by name.
  */
 #ifdef EV3LX_KERNEL_HRP3
 #define EV3LX_HRP3_SVC(name) __asm__("ev3lx_hrp3_" #name)
 #else
 #define EV3LX_HRP3_SVC(name)
 #endif
-
-/* ---- Task management ---- */
-ER      act_tsk(ID tskid) EV3LX_HRP3_SVC(act_tsk); /* activate (queue one activation if not dormant) */
-ER      iact_tsk(ID tskid);                /* act_tsk from non-task context */
-ER_UINT can_act(ID tskid);                 /* cancel queued activations, return their count */
-ER      ext_tsk(void);                     /* end the calling task; returns only on error (E_CTX: not a task) */
-ER      chg_pri(ID tskid, PRI tskpri);     /* change base priority */
-ER      get_pri(ID tskid, PRI *p_tskpri);  /* read current priority */
-ER      get_tid(ID *p_tskid) EV3LX_HRP3_SVC(get_tid); /* ID of the running task */
-ER      iget_tid(ID *p_tskid);             /* ID of the task interrupted (TSK_NONE if idle) */
-
-/* ---- Task-dependent synchronisation ---- */
-ER      slp_tsk(void);                     /* sleep until woken */
-ER      tslp_tsk(TMO tmout) EV3LX_HRP3_SVC(tslp_tsk); /* sleep with timeout (E_TMOUT) */
-ER      wup_tsk(ID tskid) EV3LX_HRP3_SVC(wup_tsk); /* wake, or queue one wakeup */
-ER      iwup_tsk(ID tskid);
-ER_UINT can_wup(ID tskid);
-ER      rel_wai(ID tskid) EV3LX_HRP3_SVC(rel_wai); /* force a waiting task out with E_RLWAI */
-ER      irel_wai(ID tskid);
-ER      dly_tsk(RELTIM dlytim) EV3LX_HRP3_SVC(dly_tsk); /* delay for at least dlytim ms (HRP3: us) */
-ER      sus_tsk(ID tskid);                 /* suspend (a waiting task becomes waiting-suspended) */
-ER      rsm_tsk(ID tskid);                 /* resume a suspended task */
-ER      ter_tsk(ID tskid);                 /* terminate another task (releases its mutexes) */
-
-/* ---- Semaphores ---- */
-ER      sig_sem(ID semid) EV3LX_HRP3_SVC(sig_sem); /* release one resource (E_QOVR at maximum) */
-ER      isig_sem(ID semid);
-ER      wai_sem(ID semid);                 /* acquire, waiting */
-ER      pol_sem(ID semid);                 /* acquire, E_TMOUT if none */
-ER      twai_sem(ID semid, TMO tmout) EV3LX_HRP3_SVC(twai_sem); /* acquire with timeout */
-
-/* ---- Eventflags ---- */
-ER      set_flg(ID flgid, FLGPTN setptn) EV3LX_HRP3_SVC(set_flg);
-ER      iset_flg(ID flgid, FLGPTN setptn);
-ER      clr_flg(ID flgid, FLGPTN clrptn);  /* AND the pattern with clrptn */
-ER      wai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn);
-ER      pol_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn);
-ER      twai_flg(ID flgid, FLGPTN waiptn, MODE wfmode, FLGPTN *p_flgptn, TMO tmout) EV3LX_HRP3_SVC(twai_flg);
-
-/* ---- Data queues (intptr_t elements, FIFO) ---- */
-ER      snd_dtq(ID dtqid, intptr_t data);  /* send, waiting while full */
-ER      psnd_dtq(ID dtqid, intptr_t data) EV3LX_HRP3_SVC(psnd_dtq); /* send, E_TMOUT if full */
-ER      ipsnd_dtq(ID dtqid, intptr_t data);
-ER      tsnd_dtq(ID dtqid, intptr_t data, TMO tmout) EV3LX_HRP3_SVC(tsnd_dtq);
-ER      fsnd_dtq(ID dtqid, intptr_t data) EV3LX_HRP3_SVC(fsnd_dtq); /* send, dropping the oldest element if full */
-ER      ifsnd_dtq(ID dtqid, intptr_t data);
-ER      rcv_dtq(ID dtqid, intptr_t *p_data);   /* receive, waiting while empty */
-ER      prcv_dtq(ID dtqid, intptr_t *p_data);  /* receive, E_TMOUT if empty */
-ER      trcv_dtq(ID dtqid, intptr_t *p_data, TMO tmout) EV3LX_HRP3_SVC(trcv_dtq);
-ER      ini_dtq(ID dtqid);                 /* empty it; waiting tasks get E_DLT */
-ER      ref_dtq(ID dtqid, T_RDTQ *pk_rdtq);
-
-/* ---- Priority data queues (ordered by data priority, FIFO within one) ---- */
-ER      snd_pdq(ID pdqid, intptr_t data, PRI datapri);
-ER      psnd_pdq(ID pdqid, intptr_t data, PRI datapri) EV3LX_HRP3_SVC(psnd_pdq);
-ER      ipsnd_pdq(ID pdqid, intptr_t data, PRI datapri);
-ER      tsnd_pdq(ID pdqid, intptr_t data, PRI datapri, TMO tmout) EV3LX_HRP3_SVC(tsnd_pdq);
-ER      rcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri);
-ER      prcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri);
-ER      trcv_pdq(ID pdqid, intptr_t *p_data, PRI *p_datapri, TMO tmout) EV3LX_HRP3_SVC(trcv_pdq);
-ER      ini_pdq(ID pdqid);
-ER      ref_pdq(ID pdqid, T_RPDQ *pk_rpdq);
-
-/* ---- Mutexes (TA_CEILING: priority ceiling; TA_INHERIT: priority inheritance) ---- */
-ER      loc_mtx(ID mtxid);                 /* lock, waiting while another task holds it */
-ER      ploc_mtx(ID mtxid);                /* lock, E_TMOUT if held */
-ER      tloc_mtx(ID mtxid, TMO tmout) EV3LX_HRP3_SVC(tloc_mtx);
-ER      unl_mtx(ID mtxid);                 /* unlock; mutexes unlock in reverse order of locking */
-ER      ini_mtx(ID mtxid);                 /* unlock; waiting tasks get E_DLT */
-ER      ref_mtx(ID mtxid, T_RMTX *pk_rmtx);
-
-/* ---- Initialisation and reference (HRP2 and HRP3) ---- */
-ER      ini_sem(ID semid);                 /* back to isemcnt; waiting tasks get E_DLT */
-ER      ref_sem(ID semid, T_RSEM *pk_rsem);
-ER      ini_flg(ID flgid);                 /* back to iflgptn; waiting tasks get E_DLT */
-ER      ref_flg(ID flgid, T_RFLG *pk_rflg);
-ER      ref_cyc(ID cycid, T_RCYC *pk_rcyc) EV3LX_HRP3_SVC(ref_cyc);
-ER      ref_alm(ID almid, T_RALM *pk_ralm) EV3LX_HRP3_SVC(ref_alm);
-ER      get_inf(intptr_t *p_exinf);        /* the calling task's exinf */
-
-/* ---- Time management ---- */
-ER      get_tim(SYSTIM *p_systim) EV3LX_HRP3_SVC(get_tim); /* system time in ms since boot (HRP3: us, 64 bits) */
-ER      get_utm(SYSUTM *p_sysutm);         /* performance time in us since boot */
-ER      sta_cyc(ID cycid);                 /* start a cyclic handler */
-ER      stp_cyc(ID cycid);
-ER      sta_alm(ID almid, RELTIM almtim) EV3LX_HRP3_SVC(sta_alm); /* start an alarm, almtim ms (HRP3: us) from now */
-ER      ista_alm(ID almid, RELTIM almtim);
-ER      stp_alm(ID almid) EV3LX_HRP3_SVC(stp_alm);
-ER      istp_alm(ID almid);
-
-/* ---- System state ---- */
-ER      rot_rdq(PRI tskpri) EV3LX_HRP3_SVC(rot_rdq); /* rotate the ready queue of a priority */
-ER      irot_rdq(PRI tskpri);
-ER      loc_cpu(void) EV3LX_HRP3_SVC(loc_cpu); /* CPU lock: mask all interrupts and dispatch */
-ER      iloc_cpu(void);
-ER      unl_cpu(void) EV3LX_HRP3_SVC(unl_cpu);
-ER      iunl_cpu(void);
-ER      dis_dsp(void);                     /* disable dispatching */
-ER      ena_dsp(void);
-bool_t  sns_ctx(void);                     /* TRUE in non-task context */
-bool_t  sns_loc(void);                     /* TRUE with the CPU locked */
-bool_t  sns_dsp(void);                     /* TRUE with dispatching disabled */
-bool_t  sns_dpn(void);                     /* TRUE when dispatching is pending/not possible */
-ER      ext_ker(void);                     /* end the kernel: ATT_TER routines, then stop */
-
-/* ---- Interrupts ---- */
-ER      dis_int(INTNO intno);              /* mask one interrupt line */
-ER      ena_int(INTNO intno);              /* unmask one interrupt line */
-
-/* ---- Extended service calls and memory protection (HRP2) ---- */
-ER_UINT cal_svc(FN fncd, intptr_t par1, intptr_t par2, intptr_t par3,
-		intptr_t par4, intptr_t par5);
-/* E_OK if the task's protection domain may access [base, base+size) with pmmode, else E_MACV. */
-ER      prb_mem(const void *base, SIZE size, ID tskid, MODE pmmode);
+/* ---- Service calls ---- */
+/* Their function codes, their kernel-domain names (_kernel_*, TOPPERS_SVC_CALL)
+ * and their user-domain traps with cal_svc, in HRP2's three headers. */
+#include "kernel_fncode.h"
+#include "svc_call.h"
+#include "target_svc.h"
 
 #ifdef __cplusplus
 }

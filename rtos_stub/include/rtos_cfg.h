@@ -20,28 +20,62 @@
 extern "C" {
 #endif
 
-#include "kernel.h"
+/* The kernel's own header, wherever the build finds it (angle brackets: not
+ * this directory's first), so that against a real HRP2 tree its kernel.h is
+ * the one, and nothing here redefines a name the kernel supplies. */
+#include <kernel.h>
 
+/* The object counts: the configurator's (kernel_cfg.h) when a firmware's
+ * configuration came first, the host kernel's table sizes otherwise. */
+#ifndef TNUM_TSKID
 #define TNUM_TSKID   32
+#endif
+#ifndef TNUM_SEMID
 #define TNUM_SEMID   32
+#endif
+#ifndef TNUM_FLGID
 #define TNUM_FLGID   16
+#endif
+#ifndef TNUM_CYCID
 #define TNUM_CYCID   16
+#endif
+#ifndef TNUM_ALMID
 #define TNUM_ALMID   16
+#endif
+#ifndef TNUM_DTQID
 #define TNUM_DTQID   16
+#endif
+#ifndef TNUM_PDQID
 #define TNUM_PDQID   16
+#endif
+#ifndef TNUM_MTXID
 #define TNUM_MTXID   16
+#endif
 /* Extended service calls: function codes 1..TNUM_FNCD.  A build setting
  * (make TNUM_FNCD=n passes -DTNUM_FNCD=n to every unit, library and
  * configurations alike), as the TOPPERS configurator sets it for HRP2. */
 #ifndef TNUM_FNCD
-#define TNUM_FNCD    128
+#define TNUM_FNCD    256
 #endif
+#ifndef TNUM_DOMID
 #define TNUM_DOMID   4      /* user protection domains 1..TNUM_DOMID */
-#define TMAX_INTNO   127U   /* interrupt numbers 0..TMAX_INTNO (AINTC system interrupts) */
+#endif
+/* Interrupt numbers 0..TMAX_INTNO.  The AM1808's AINTC has 0..100, HRP2's
+ * value (arch/arm_gcc/am1808/am1808.h), which wins against a real kernel;
+ * the host model keeps 101..127 as spare lines for tests. */
+#ifndef TMAX_INTNO
+#define TMAX_INTNO   127U
+#endif
 
-/* The host tick is an interrupt line too, as on the AM1808 (TIMER64P0 TINT12). */
+/* The host tick is an interrupt line too, as on the AM1808 (TIMER64P0 TINT12).
+ * Its priority is a build setting (make INTPRI_TICK=n), EV3RT's by default:
+ * INTPRI_TIMER, TMIN_INTPRI + 3 = -28 (ev3rt-git/ev3rt-hrp2, target/ev3_gcc/ev3.h);
+ * every Linux line takes it too (LX_IRQ_PRIORITY), so Linux handlers and the
+ * tick's hrtimer callbacks never nest. */
 #define INTNO_TICK   21U
-#define INTPRI_TICK  (-6)
+#ifndef INTPRI_TICK
+#define INTPRI_TICK  (-28)
+#endif
 
 struct rtos_task_cfg {      /* CRE_TSK */
 	ID       tskid;

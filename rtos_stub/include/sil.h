@@ -39,8 +39,12 @@ static inline void     sil_wrh_mem(uint16_t *mem, uint16_t data) { *(volatile ui
 static inline uint32_t sil_rew_mem(const uint32_t *mem) { return *(const volatile uint32_t *)mem; }
 static inline void     sil_wrw_mem(uint32_t *mem, uint32_t data) { *(volatile uint32_t *)mem = data; }
 
-/* Busy-waits at least dlytim ns (calibrated loop supplied by the target). */
-void sil_dly_nse(ulong_t dlytim);
+/* The kernel's calibrated busy loop (HRP2's ARM core: core_support.S's
+ * _sil_dly_nse, which sil_dly_nse calls, arch/arm_gcc/common/core_sil.h). */
+void _sil_dly_nse(ulong_t dlytim);
+
+/* Busy-waits at least dlytim ns. */
+static inline void sil_dly_nse(ulong_t dlytim) { _sil_dly_nse(dlytim); }
 
 #else /* host */
 

@@ -152,6 +152,11 @@ typedef struct acvct {
 #define ULONG_C(val) (val ## UL)
 #endif
 
+/* TOPPERS's inline functions (the GCC tool's tool_stddef.h: static inline). */
+#ifndef Inline
+#define Inline static __inline__
+#endif
+
 /* TOPPERS's headers declare their C functions `throw()` for C++ callers;
  * in C the specification is empty. */
 #if !defined(__cplusplus) && !defined(__KERNEL__) && !defined(throw)

@@ -26,9 +26,6 @@ extern "C" {
 void syslog(uint_t prio, const char *format, ...)
 	__attribute__((format(printf, 2, 3)));
 
-/* Sets which priorities reach the log (logmask) and the console (lowmask). */
-ER syslog_msk_log(uint_t logmask, uint_t lowmask);
-
 /* The log line of a failed assert (t_stddef.h): at LOG_EMERG, as TOPPERS's. */
 #ifndef TOPPERS_assert_fail
 #define TOPPERS_assert_fail(exp, file, line) \

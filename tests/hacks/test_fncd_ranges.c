@@ -5,6 +5,9 @@
  * boots beside all of them with no edit to theirs, and boot rejects a range
  * that overlaps another module's naming both, a DEF_SVC row outside its own
  * range, a range beyond TNUM_FNCD, and a code defined twice naming its owner.
+ * By default every range is clear of the codes EV3RT's own drivers and
+ * system services define, 1..42 (ev3rt-git/ev3rt-hrp2's .cfg files), so the
+ * library configures beside them.
  */
 #include <stdio.h>
 #include <string.h>
@@ -21,8 +24,11 @@
 #include "sound_hack.h"
 #include "iic_hack.h"
 
+/* The highest function code EV3RT's own configuration defines. */
+#define EV3RT_FNCD_LAST 42
+
 /* A new module, as a user adds one: its own header's range, nothing else touched. */
-#define NEWDRV_FN_FIRST 80
+#define NEWDRV_FN_FIRST (EV3LX_FNCD_BASE + 127)
 #define NEWDRV_FN_COUNT 8
 #define NEWDRV_FN_ECHO  (NEWDRV_FN_FIRST + 0)
 
@@ -56,13 +62,15 @@ static const struct rtos_task_cfg app_tasks[] = { { 1, TA_ACT, 0, app_task, 5, 4
 static const struct rtos_cfg app_cfg = { .name = "app", .tasks = RTOS_TABLE(app_tasks), .includes = modules };
 
 /* Bad modules, each booted beside the project's. */
-static const struct rtos_svc_cfg overlap_svcs[] = { { 20, svc_echo, 1024 } };
+#define OVERLAP_FIRST (ANALOG_FN_FIRST + 4)
+static const struct rtos_svc_cfg overlap_svcs[] = { { OVERLAP_FIRST, svc_echo, 1024 } };
 static const struct rtos_cfg overlap_cfg = {
-	.name = "overlapper", .svcs = RTOS_TABLE(overlap_svcs), .svc_first = 20, .svc_count = 4,
+	.name = "overlapper", .svcs = RTOS_TABLE(overlap_svcs), .svc_first = OVERLAP_FIRST, .svc_count = 4,
 };
-static const struct rtos_svc_cfg outside_svcs[] = { { 90, svc_echo, 1024 } };
+#define OUTSIDE_ROW (NEWDRV_FN_FIRST + 10)
+static const struct rtos_svc_cfg outside_svcs[] = { { OUTSIDE_ROW, svc_echo, 1024 } };
 static const struct rtos_cfg outside_cfg = {
-	.name = "outsider", .svcs = RTOS_TABLE(outside_svcs), .svc_first = 80, .svc_count = 8,
+	.name = "outsider", .svcs = RTOS_TABLE(outside_svcs), .svc_first = NEWDRV_FN_FIRST, .svc_count = 8,
 };
 static const struct rtos_cfg beyond_cfg = { .name = "beyond", .svc_first = TNUM_FNCD, .svc_count = 2 };
 static const struct rtos_svc_cfg squatter_svcs[] = { { PWM_FN_COMMAND, svc_echo, 1024 } };
@@ -86,16 +94,19 @@ static ER boot_with(const struct rtos_cfg *bad)
 int main(void)
 {
 	unsigned int i, j;
-	bool disjoint = true, inside = true;
+	bool disjoint = true, inside = true, clear_of_ev3rt = true;
+	char want[64];
 	int saved_stderr;
 	FILE *devnull;
 
-	tap_plan(13);
+	tap_plan(14);
 	for (i = 0; modules[i] != NULL; i++) {
 		const struct rtos_cfg *a = modules[i];
 
 		if (a->svc_count == 0 || a->svc_first < 1 || a->svc_first + (FN)a->svc_count - 1 > TNUM_FNCD)
 			inside = false;
+		if (a != &newdrv_cfg && a->svc_first <= EV3RT_FNCD_LAST)
+			clear_of_ev3rt = false;
 		for (j = 0; j < i; j++) {
 			const struct rtos_cfg *b = modules[j];
 
@@ -105,9 +116,12 @@ int main(void)
 	}
 	ok(inside, "every module declares its range, inside 1..TNUM_FNCD (%d)", TNUM_FNCD);
 	ok(disjoint, "the ranges are disjoint");
+	ok(clear_of_ev3rt, "the library's ranges start at %d, clear of EV3RT's codes 1..%d",
+	   EV3LX_FNCD_BASE, EV3RT_FNCD_LAST);
 	is_int(PWM_FN_COMMAND, PWM_FN_FIRST, "a module's codes count from its FIRST");
 
-	is_int(rtos_host_boot(&app_cfg), E_OK, "a new module at 80..87 boots beside the six, none edited");
+	is_int(rtos_host_boot(&app_cfg), E_OK, "a new module at %d..%d boots beside the six, none edited",
+	       NEWDRV_FN_FIRST, NEWDRV_FN_FIRST + NEWDRV_FN_COUNT - 1);
 	rtos_host_run_for(1000000);
 	is_int((int)echo_result, 4242, "and its service call works");
 	rtos_host_shutdown();
@@ -118,11 +132,13 @@ int main(void)
 	if (devnull != NULL)
 		dup2(fileno(devnull), 2);
 	is_int(boot_with(&overlap_cfg), E_OBJ, "a range overlapping another module's fails the boot");
+	(void)snprintf(want, sizeof(want), "%d..%d", ANALOG_FN_FIRST, ANALOG_FN_LAST);
 	ok(strstr(rtos_host_boot_error(), "\"overlapper\"") && strstr(rtos_host_boot_error(), "\"analog_hack\"") &&
-	   strstr(rtos_host_boot_error(), "20..23") && strstr(rtos_host_boot_error(), "16..31"),
+	   strstr(rtos_host_boot_error(), want),
 	   "naming both modules and ranges: %s", rtos_host_boot_error());
 	is_int(boot_with(&outside_cfg), E_PAR, "a DEF_SVC row outside its module's range fails");
-	ok(strstr(rtos_host_boot_error(), "fncd 90 outside") != NULL, "%s", rtos_host_boot_error());
+	(void)snprintf(want, sizeof(want), "fncd %d outside", OUTSIDE_ROW);
+	ok(strstr(rtos_host_boot_error(), want) != NULL, "%s", rtos_host_boot_error());
 	is_int(boot_with(&beyond_cfg), E_PAR, "a range beyond TNUM_FNCD fails");
 	ok(strstr(rtos_host_boot_error(), "TNUM_FNCD") != NULL, "%s", rtos_host_boot_error());
 	is_int(boot_with(&squatter_cfg), E_OBJ, "a code another module defined fails");

@@ -72,10 +72,10 @@ static void life_cycle_body(void)
 	struct hbridge_drive d;
 	int undefined = 0;
 
-	for (FN fn = 9; fn <= PWM_FN_LAST; fn++)
+	for (FN fn = PWM_FN_FIRST + 8; fn <= PWM_FN_LAST; fn++)
 		if (cal_svc(fn, 0, 0, 0, 0, 0) == E_RSFN)
 			undefined++;
-	is_int(undefined, PWM_FN_LAST - 8, "function codes 9..15 are reserved: E_RSFN");
+	is_int(undefined, PWM_FN_COUNT - 8, "function codes %d..%d are reserved: E_RSFN", PWM_FN_FIRST + 8, PWM_FN_LAST);
 	ok(lx_dev_exists("/dev/lms_pwm") && lx_dev_exists("/dev/lms_motor"), "both devices registered");
 
 	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 0x0F, 50);

@@ -26,8 +26,13 @@
 #include <stdbool.h>
 #include <mach/irqs.h>
 
-/* Interrupt priority of every Linux line: the tick's (INTPRI_TICK, rtos_cfg.h). */
-#define LX_IRQ_PRIORITY		(-6)
+/* Interrupt priority of every Linux line: the tick's (INTPRI_TICK, a build
+ * setting: rtos_cfg.h), so Linux handlers and hrtimer callbacks never nest. */
+#ifdef INTPRI_TICK
+#define LX_IRQ_PRIORITY		(INTPRI_TICK)
+#else
+#define LX_IRQ_PRIORITY		(-28)
+#endif
 
 /* Handler records (struct irqaction) available to request_irq in total. */
 #ifndef LX_NR_IRQ_ACTIONS

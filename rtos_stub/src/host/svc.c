@@ -17,7 +17,7 @@ static struct mem_region *regions[TNUM_DOMID + 1];
 static uint_t nregions[TNUM_DOMID + 1];
 
 /* Calls extended service routine fncd in the caller's context with the caller's domain. */
-ER_UINT cal_svc(FN fncd, intptr_t par1, intptr_t par2, intptr_t par3, intptr_t par4, intptr_t par5)
+ER_UINT rtos_host_cal_svc(FN fncd, intptr_t par1, intptr_t par2, intptr_t par3, intptr_t par4, intptr_t par5)
 {
 	EXTSVC fn;
 	struct tcb *caller;

@@ -7,6 +7,7 @@
 #include <stdio.h>
 
 #include "kernel_impl.h"
+#include "syssvc/syslog.h"
 
 #define DEFAULT_LOGMASK LOG_UPTO(LOG_DEBUG)
 #define DEFAULT_LOWMASK LOG_UPTO(LOG_NOTICE)
@@ -40,9 +41,10 @@ void syslog(uint_t prio, const char *format, ...)
 		rtos_host_trace("syslog", "%s: %s", level_names[prio], msg);
 }
 
-/* Sets which priorities reach the trace (logmask) and the console (lowmask). */
-ER syslog_msk_log(uint_t logmask, uint_t lowmask)
+/* Sets which priorities reach the trace (logmask) and the console (lowmask); any domain may. */
+ER _syslog_msk_log(uint_t logmask, uint_t lowmask, ID cdmid)
 {
+	(void)cdmid;
 	svc_charge();
 	log_mask = logmask;
 	low_mask = lowmask;

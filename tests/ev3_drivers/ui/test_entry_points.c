@@ -48,7 +48,7 @@ static void service_calls(void)
 
 	for (FN fn = UI_FN_WAIT_CLICK + 1; fn <= UI_FN_LAST; fn++)
 		reserved += cal_svc(fn, 0, 0, 0, 0, 0) == E_RSFN;
-	is_int(reserved, UI_FN_LAST - UI_FN_WAIT_CLICK, "function codes 51..63 are reserved: E_RSFN");
+	is_int(reserved, UI_FN_LAST - UI_FN_WAIT_CLICK, "function codes %d..%d are reserved: E_RSFN", UI_FN_WAIT_CLICK + 1, UI_FN_LAST);
 	is_int(ui_svc_map(NULL), E_MACV, "map: NULL is E_MACV");
 	is_int(ui_svc_map(&foreign_map), E_MACV, "map: foreign memory is E_MACV");
 	ok(ui_svc_map(&map) == E_OK && map == uit_shm, "map: the shared page");

@@ -57,7 +57,7 @@ static const struct rtos_flg_cfg flg_atr[] = { { 1, 0x80, 0, "atr" } };
 static const struct rtos_cyc_cfg cyc_tim[] = { { 1, 0, 0, handler, 0, 0, "zero" } };
 static const struct rtos_cyc_cfg cyc_fn[] = { { 1, 0, 0, NULL, 5, 0, "nofn" } };
 static const struct rtos_alm_cfg alm_id[] = { { 17, 0, 0, handler, "big" } };
-static const struct rtos_int_cfg int_pri[] = { { 30, TA_ENAINT, -8 } };
+static const struct rtos_int_cfg int_pri[] = { { 30, TA_ENAINT, TMIN_INTPRI - 1 } };
 static const struct rtos_int_cfg int_no[] = { { 128, TA_ENAINT, -2 } };
 static const struct rtos_int_cfg int_dup[] = { { 30, TA_ENAINT, -2 }, { 30, TA_ENAINT, -3 } };
 static const struct rtos_int_cfg int_tick[] = { { INTNO_TICK, TA_ENAINT, -2 } };
@@ -88,7 +88,7 @@ static const struct bad_case cases[] = {
 	{ CFG1(cycs, cyc_tim), E_PAR, "cyctim 0" },
 	{ CFG1(cycs, cyc_fn), E_PAR, "NULL handler" },
 	{ CFG1(alms, alm_id), E_ID, "almid 17" },
-	{ CFG1(ints, int_pri), E_PAR, "intpri -8" },
+	{ CFG1(ints, int_pri), E_PAR, "intpri -32" },
 	{ CFG1(ints, int_no), E_PAR, "intno 128" },
 	{ CFG1(ints, int_dup), E_OBJ, "intno 30 configured twice" },
 	{ CFG1(ints, int_tick), E_OBJ, "kernel tick" },

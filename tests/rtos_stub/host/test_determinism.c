@@ -7,6 +7,7 @@
 
 #include "tap.h"
 #include "kernel.h"
+#include "syssvc/syslog.h"
 #include "rtos_test.h"
 
 #define IRQ_A 100U

@@ -8,6 +8,7 @@
 
 #include "tap.h"
 #include "kernel.h"
+#include "syssvc/syslog.h"
 #include "rtos_test.h"
 
 static char traced[2048];
