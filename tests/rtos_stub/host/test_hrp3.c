@@ -18,8 +18,8 @@
 #define US 1000ULL
 #define MS 1000000ULL
 
-/* HRP2's tslp_tsk (ms), as the platform's code in the same task calls it. */
-extern ER hrp2_tslp_tsk(int_t tmout) __asm__("tslp_tsk");
+/* HRP2's tslp_tsk (ms), the kernel's entry as the platform's code in the same task calls it. */
+extern ER hrp2_tslp_tsk(int_t tmout) __asm__("_kernel_tslp_tsk");
 
 static uint64_t t_slp, t_dly, t_twai, t_hrp2, t_alm;
 static ER r_slp, r_nblk, r_big, r_par, r_twai, r_long, r_hrp2, r_ini_sem, r_ini_flg;
