@@ -74,6 +74,21 @@ int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
 int request_threaded_irq(unsigned int irq, irq_handler_t handler, irq_handler_t thread_fn,
 			 unsigned long flags, const char *name, void *dev);
 
+struct device;
+
+/* request_threaded_irq whose free_irq runs when dev's driver unbinds (or its
+ * probe fails); devname NULL names the line after dev. */
+int devm_request_threaded_irq(struct device *dev, unsigned int irq, irq_handler_t handler,
+			      irq_handler_t thread_fn, unsigned long irqflags, const char *devname,
+			      void *dev_id);
+static inline int devm_request_irq(struct device *dev, unsigned int irq, irq_handler_t handler,
+				   unsigned long irqflags, const char *devname, void *dev_id)
+{
+	return devm_request_threaded_irq(dev, irq, handler, NULL, irqflags, devname, dev_id);
+}
+/* Frees a devm-requested IRQ now (reported if dev does not manage it). */
+void devm_free_irq(struct device *dev, unsigned int irq, void *dev_id);
+
 /* Detaches the (irq, dev_id) handler; returns its name, or NULL (with a warning) if absent. */
 const void *free_irq(unsigned int irq, void *dev_id);
 
