@@ -31,7 +31,7 @@ static inline bool dc_logged(const char *text)
 	return strstr(dc_log, text) != NULL;
 }
 
-static char dc_bug[320];
+static char dc_bug[320] __attribute__((unused));
 
 /* Runs stmt, which must report exactly one bug; its text is in dc_bug and
  * the statement's value is the count of bugs it reported. */
