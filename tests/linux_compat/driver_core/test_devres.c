@@ -7,7 +7,7 @@
  * memory the device does not manage, a NULL action, removing an action
  * never added, and a GFP_KERNEL devm allocation under a spin lock.
  */
-#include "dc_test.h"
+#include "lx_log_test.h"
 #include <linux/device.h>
 #include <linux/errno.h>
 #include <linux/slab.h>

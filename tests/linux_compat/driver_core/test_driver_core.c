@@ -7,7 +7,7 @@
  * the most recent binding undone first, a probe registering a child,
  * dev_err_probe, reference counting, and the misuse reported.
  */
-#include "dc_test.h"
+#include "lx_log_test.h"
 #include <linux/device.h>
 #include <linux/errno.h>
 #include <linux/slab.h>

@@ -9,7 +9,7 @@
  * allocated devices freed by their last reference.
  */
 #define KBUILD_MODNAME "pltest"
-#include "dc_test.h"
+#include "lx_log_test.h"
 #include <linux/platform_device.h>
 #include <linux/interrupt.h>
 #include <linux/io.h>

@@ -1,9 +1,9 @@
 /*
- * dc_test.h — what the driver-core tests share: the kernel log captured
+ * lx_log_test.h — what linux_compat tests of logged and reported behaviour share: the kernel log captured
  * line by line, and running a statement that must report exactly one bug.
  */
-#ifndef EV3LX_TESTS_DC_TEST_H
-#define EV3LX_TESTS_DC_TEST_H
+#ifndef EV3LX_TESTS_LX_LOG_TEST_H
+#define EV3LX_TESTS_LX_LOG_TEST_H
 
 #include "lx_test.h"
 #include <string.h>
@@ -44,4 +44,4 @@ static char dc_bug[320] __attribute__((unused));
 	rtos_host_bug_count() - before_;				\
 })
 
-#endif /* EV3LX_TESTS_DC_TEST_H */
+#endif /* EV3LX_TESTS_LX_LOG_TEST_H */
