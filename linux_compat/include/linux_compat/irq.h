@@ -100,6 +100,8 @@ struct bus_type;
 void lx_bus_register_boot(struct bus_type *bus);
 /* Registers the platform bus afresh, its auto ids free (lx_io_boot). */
 void lx_platform_boot(void);
+/* Frees every GPIO descriptor and forgets the lookup tables (lx_io_boot). */
+void lx_gpiolib_boot(void);
 /* Forgets SPI controllers, devices, drivers and board info (lx_io_boot). */
 void lx_spi_boot(void);
 /* Forgets registered frame buffers (lx_io_boot). */
