@@ -80,7 +80,7 @@ static void test_kfifo(void)
 {
 	static DEFINE_KFIFO(small, unsigned char, 8);
 	struct kfifo dyn;
-	unsigned char out[16];
+	unsigned char out[16] = { 0 };
 	unsigned int i;
 
 	is_int((int)kfifo_in(&small, (const unsigned char *)"abcdefghij", 10), 8, "kfifo_in into 8 bytes takes 8");

@@ -41,7 +41,7 @@ static irqreturn_t producer(int irq, void *dev)
 
 static void typed_tests(void)
 {
-	struct sample s, out[8];
+	struct sample s, out[8] = { { 0 } };
 	unsigned int i;
 
 	INIT_KFIFO(h.fifo);
@@ -80,7 +80,7 @@ static void ptr_tests(void)
 {
 	DECLARE_KFIFO_PTR(dyn, struct sample);
 	struct kfifo bytes;
-	unsigned char store[10], b[4];
+	unsigned char store[10], b[4] = { 0 };
 	struct sample s = { .seq = 5 };
 
 	is_int(kfifo_alloc(&dyn, 5, GFP_KERNEL), 0, "kfifo_alloc of 5 structs");
@@ -115,7 +115,7 @@ static void user_tests(void)
 
 static void spinlocked_tests(void)
 {
-	struct sample s;
+	struct sample s = { 0 };
 	unsigned int taken = 0, i;
 
 	INIT_KFIFO(h.fifo);
