@@ -26,6 +26,22 @@ static const struct rtos_task_cfg lx_tasks[] = {
 	{ LX_POOL_WORKER_TSKID_BASE + 3, TA_ACT, 4, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
 	  TDOM_KERNEL, "lx_pool_worker4" },
 #endif
+#if LX_NR_IRQ_THREADS >= 1
+	{ LX_IRQ_THREAD_TSKID_BASE, TA_ACT, 0, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
+	  TDOM_KERNEL, "lx_irq_thread1" },
+#endif
+#if LX_NR_IRQ_THREADS >= 2
+	{ LX_IRQ_THREAD_TSKID_BASE + 1, TA_ACT, 1, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
+	  TDOM_KERNEL, "lx_irq_thread2" },
+#endif
+#if LX_NR_IRQ_THREADS >= 3
+	{ LX_IRQ_THREAD_TSKID_BASE + 2, TA_ACT, 2, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
+	  TDOM_KERNEL, "lx_irq_thread3" },
+#endif
+#if LX_NR_IRQ_THREADS >= 4
+	{ LX_IRQ_THREAD_TSKID_BASE + 3, TA_ACT, 3, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
+	  TDOM_KERNEL, "lx_irq_thread4" },
+#endif
 };
 #if LX_NR_POOL_WORKERS > 4
 #error "config.c configures at most 4 pool workers"

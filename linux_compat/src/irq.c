@@ -26,6 +26,9 @@
 #include <linux/kernel.h>
 #include <linux/errno.h>
 #include <linux/string.h>
+#include <linux/sched.h>
+#include <linux/wait.h>
+#include <linux_compat/config.h>
 #include <linux_compat/context.h>
 #include <linux_compat/irq.h>
 #include <linux_compat/machine.h>
@@ -42,6 +45,7 @@ struct lx_irq_desc {
 	unsigned int type;          /* IRQ_TYPE_* as last set */
 	bool in_handler;            /* its handlers are running */
 	bool pending;               /* an interrupt came while disabled (IRQS_PENDING) */
+	unsigned int threads_oneshot;   /* IRQ threads of IRQF_ONESHOT handlers still to finish */
 	unsigned long count;        /* dispatches */
 	unsigned long unhandled;    /* dispatches nobody answered */
 	unsigned int unanswered_run;
@@ -49,6 +53,16 @@ struct lx_irq_desc {
 
 static struct lx_irq_desc irq_descs[NR_IRQS];
 static struct irqaction action_pool[LX_NR_IRQ_ACTIONS];
+
+/* An IRQ thread: one task, bound to one threaded handler at a time. */
+struct lx_irq_thread {
+	struct irqaction *action;   /* its handler, NULL while free */
+	bool running;               /* inside thread_fn */
+	wait_queue_head_t wake;     /* the task waits here for its handler to wake it */
+	wait_queue_head_t idle;     /* free_irq waits here for thread_fn to return */
+};
+
+static struct lx_irq_thread irq_threads[LX_NR_IRQ_THREADS > 0 ? LX_NR_IRQ_THREADS : 1];
 
 /* The IRQs enable_irq queued for a replay, and the timer that replays them. */
 static unsigned long resend_queued[BITS_TO_LONGS(NR_IRQS)];
@@ -82,6 +96,24 @@ void lx_irq_line_mask(unsigned int irq)
 		line_mask(irq);
 }
 
+/* Marks action's thread to run and wakes it (kernel/irq/handle.c's
+ * __irq_wake_thread); an IRQF_ONESHOT handler's line is held masked until the
+ * thread has run.  Interrupt context, or interrupts locked. */
+static void wake_thread(struct lx_irq_desc *desc, struct irqaction *action)
+{
+	if (action->lx_thread < 0) {
+		pr_warn("IRQ %u device %s returned IRQ_WAKE_THREAD but no thread function available.\n",
+			action->irq, action->name ? action->name : "?");
+		return;
+	}
+	if (action->thread_flags & 1UL)
+		return;         /* already to run: one run serves both interrupts, as in Linux */
+	action->thread_flags |= 1UL;
+	if (action->flags & IRQF_ONESHOT)
+		desc->threads_oneshot |= 1U << action->lx_thread;
+	wake_up(&irq_threads[action->lx_thread].wake);
+}
+
 bool lx_handle_irq(unsigned int irq)
 {
 	struct lx_irq_desc *desc = &irq_descs[irq];
@@ -101,11 +133,18 @@ bool lx_handle_irq(unsigned int irq)
 	lx_irq_enter((int)irq);
 	desc->in_handler = true;
 	do {
-		ret |= (unsigned int)action->handler((int)irq, action->dev_id);
+		irqreturn_t res = action->handler((int)irq, action->dev_id);
+
+		if (res == IRQ_WAKE_THREAD)
+			wake_thread(desc, action);
+		ret |= (unsigned int)res;
 		action = action->next;
 	} while (action);
 	desc->in_handler = false;
 	lx_irq_exit();
+	/* IRQF_ONESHOT (kernel/irq/chip.c's cond_unmask): masked until the threads are done */
+	if (desc->threads_oneshot)
+		line_mask(irq);
 
 	desc->count++;
 	if (likely(ret != IRQ_NONE)) {
@@ -171,17 +210,39 @@ static int check_type(unsigned int irq, unsigned int type)
 	return lx_mach_irq_chip(irq)->irq_check_type(type);
 }
 
-int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
-		const char *name, void *dev)
+/* The primary handler of a threaded IRQ requested without one. */
+static irqreturn_t irq_default_primary_handler(int irq, void *dev_id)
+{
+	return IRQ_WAKE_THREAD;
+}
+
+/* Binds a free IRQ thread to action; its index or -1.  Interrupts locked. */
+static int thread_bind_locked(struct irqaction *action)
+{
+	int i;
+
+	for (i = 0; i < LX_NR_IRQ_THREADS; i++) {
+		if (!irq_threads[i].action) {
+			irq_threads[i].action = action;
+			return i;
+		}
+	}
+	return -1;
+}
+
+/* Attaches handler (and thread_fn with a thread, if not NULL) to irq:
+ * request_irq's and request_threaded_irq's common part. */
+static int setup_irq(unsigned int irq, irq_handler_t handler, irq_handler_t thread_fn,
+		     unsigned long flags, const char *name, void *dev)
 {
 	struct lx_irq_desc *desc;
 	struct irqaction *action, **tail;
 	unsigned int type = (unsigned int)(flags & IRQF_TRIGGER_MASK);
 	bool first;
-	int err = 0;
+	int err = 0, thread;
 	SIL_PRE_LOC;
 
-	lx_might_sleep("request_irq()", __FILE__, __LINE__);
+	lx_might_sleep(thread_fn ? "request_threaded_irq()" : "request_irq()", __FILE__, __LINE__);
 	if (!handler || !lx_irq_valid(irq))
 		return -EINVAL;
 	if ((flags & IRQF_SHARED) && !dev)
@@ -196,6 +257,8 @@ int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
 			err = -EBUSY;
 		else if (type && desc->type && type != desc->type)
 			err = -EBUSY;   /* Linux: "type mismatch" for a shared line */
+		else if (((*tail)->flags ^ flags) & IRQF_ONESHOT)
+			err = -EBUSY;   /* Linux: all handlers of a shared line agree on ONESHOT */
 		else if ((*tail)->dev_id == dev)
 			err = -EINVAL;
 		if (err)
@@ -204,9 +267,18 @@ int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
 	action = err ? NULL : action_alloc_locked();
 	if (!err && !action)
 		err = -ENOMEM;
+	thread = -1;
+	if (!err && thread_fn) {
+		thread = thread_bind_locked(action);
+		if (thread < 0)
+			err = -ENOSPC;
+	}
 	first = !desc->action;
 	if (!err) {
 		action->handler = handler;
+		action->thread_fn = thread_fn;
+		action->thread_flags = 0;
+		action->lx_thread = thread;
 		action->dev_id = dev;
 		action->next = NULL;
 		action->irq = irq;
@@ -227,6 +299,11 @@ int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
 		if (err == -ENOMEM)
 			pr_err("request_irq %u (%s): all %d handler records in use (raise LX_NR_IRQ_ACTIONS)\n",
 			       irq, name ? name : "?", LX_NR_IRQ_ACTIONS);
+		if (err == -ENOSPC) {
+			pr_err("request_threaded_irq %u (%s): all %d IRQ threads in use (raise LX_NR_IRQ_THREADS)\n",
+			       irq, name ? name : "?", LX_NR_IRQ_THREADS);
+			err = -ENOMEM;
+		}
 		return err;
 	}
 	if (first && desc->depth == 0) {
@@ -234,6 +311,8 @@ int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
 		if (err) {
 			SIL_LOC_INT();
 			desc->action = NULL;
+			if (thread >= 0)
+				irq_threads[thread].action = NULL;
 			memset(action, 0, sizeof(*action));
 			SIL_UNL_INT();
 		}
@@ -241,15 +320,100 @@ int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
 	return err;
 }
 
+int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
+		const char *name, void *dev)
+{
+	return setup_irq(irq, handler, NULL, flags, name, dev);
+}
+
 int request_threaded_irq(unsigned int irq, irq_handler_t handler, irq_handler_t thread_fn,
 			 unsigned long flags, const char *name, void *dev)
 {
-	if (thread_fn) {
-		pr_err("request_threaded_irq %u (%s): threaded handlers are not supported\n",
-		       irq, name ? name : "?");
-		return -EINVAL;
+	if (!thread_fn)
+		return request_irq(irq, handler, flags, name, dev);
+	if (!handler) {
+		if (!(flags & IRQF_ONESHOT)) {
+			pr_err("Threaded irq requested with handler=NULL and !ONESHOT for %s (irq %u)\n",
+			       name ? name : "?", irq);
+			return -EINVAL;
+		}
+		handler = irq_default_primary_handler;
 	}
-	return request_irq(irq, handler, flags, name, dev);
+	return setup_irq(irq, handler, thread_fn, flags, name, dev);
+}
+
+void irq_wake_thread(unsigned int irq, void *dev_id)
+{
+	struct irqaction *action;
+	SIL_PRE_LOC;
+
+	if (irq >= NR_IRQS || !dev_id)
+		return;
+	SIL_LOC_INT();
+	for (action = irq_descs[irq].action; action; action = action->next) {
+		if (action->dev_id == dev_id) {
+			if (action->thread_fn)
+				wake_thread(&irq_descs[irq], action);
+			break;
+		}
+	}
+	SIL_UNL_INT();
+}
+
+/* Runs the handler bound to thread t once it is woken: thread_fn in process
+ * context, then (IRQF_ONESHOT) unmasks the line when no other oneshot thread
+ * of it is pending (kernel/irq/manage.c's irq_thread and irq_finalize_oneshot). */
+void lx_irq_thread_task(intptr_t exinf)
+{
+	struct lx_irq_thread *t = &irq_threads[exinf];
+	struct irqaction *action;
+	struct lx_irq_desc *desc;
+	bool unmask;
+	SIL_PRE_LOC;
+
+	for (;;) {
+		wait_event(t->wake, t->action && (t->action->thread_flags & 1UL));
+		SIL_LOC_INT();
+		action = t->action;
+		action->thread_flags &= ~1UL;
+		t->running = true;
+		SIL_UNL_INT();
+
+		action->thread_fn((int)action->irq, action->dev_id);
+
+		desc = &irq_descs[action->irq];
+		SIL_LOC_INT();
+		t->running = false;
+		unmask = false;
+		if (desc->threads_oneshot & (1U << exinf)) {
+			desc->threads_oneshot &= ~(1U << exinf);
+			unmask = !desc->threads_oneshot && desc->depth == 0 && desc->action;
+		}
+		SIL_UNL_INT();
+		if (unmask)
+			(void)line_unmask(action->irq);
+		wake_up(&t->idle);
+	}
+}
+
+/* Waits until action's thread has no run pending or running (process context). */
+static void wait_thread_idle(struct irqaction *action)
+{
+	struct lx_irq_thread *t = &irq_threads[action->lx_thread];
+
+	wait_event(t->idle, !t->running && !(action->thread_flags & 1UL));
+}
+
+/* The IRQ thread the calling task is, or NULL. */
+static struct lx_irq_thread *current_irq_thread(void)
+{
+	int i;
+	int tid = in_task() ? (int)current->pid : 0;
+
+	for (i = 0; i < LX_NR_IRQ_THREADS; i++)
+		if (tid == LX_IRQ_THREAD_TSKID_BASE + i)
+			return &irq_threads[i];
+	return NULL;
 }
 
 const void *free_irq(unsigned int irq, void *dev_id)
@@ -289,6 +453,15 @@ const void *free_irq(unsigned int irq, void *dev_id)
 	for (link = &desc->action; *link != action; link = &(*link)->next)
 		;
 	*link = action->next;
+	SIL_UNL_INT();
+	/* Linux's free_irq waits for the thread to finish a run already asked for */
+	if (action->lx_thread >= 0)
+		wait_thread_idle(action);
+	SIL_LOC_INT();
+	if (action->lx_thread >= 0) {
+		irq_threads[action->lx_thread].action = NULL;
+		desc->threads_oneshot &= ~(1U << action->lx_thread);
+	}
 	name = action->name;
 	memset(action, 0, sizeof(*action));
 	if (!desc->action) {
@@ -317,9 +490,30 @@ void disable_irq_nosync(unsigned int irq)
 
 void synchronize_irq(unsigned int irq)
 {
-	if (irq < NR_IRQS && irq_descs[irq].in_handler && lx_current_irq() == (int)irq)
+	struct lx_irq_thread *self = current_irq_thread();
+	struct irqaction *action, *next;
+
+	if (irq >= NR_IRQS)
+		return;
+	if (irq_descs[irq].in_handler && lx_current_irq() == (int)irq) {
 		lx_report("synchronize_irq from the IRQ's own handler", __FILE__, __LINE__,
 			  "irq %u: waiting for its own handler deadlocks in Linux", irq);
+		return;
+	}
+	if (self && self->action && self->action->irq == irq) {
+		lx_report("synchronize_irq from the IRQ's own thread", __FILE__, __LINE__,
+			  "irq %u: waiting for its own threaded handler deadlocks in Linux; "
+			  "use disable_irq_nosync", irq);
+		return;
+	}
+	if (!in_task())
+		return;
+	/* kernel/irq/manage.c: also wait for the threaded handlers */
+	for (action = irq_descs[irq].action; action; action = next) {
+		next = action->next;
+		if (action->lx_thread >= 0)
+			wait_thread_idle(action);
+	}
 }
 
 void disable_irq(unsigned int irq)
@@ -329,6 +523,8 @@ void disable_irq(unsigned int irq)
 			  "irq %u: disable_irq waits for the handler and deadlocks in Linux; "
 			  "use disable_irq_nosync", irq);
 	disable_irq_nosync(irq);
+	if (irq < NR_IRQS && !(irq_descs[irq].in_handler && lx_current_irq() == (int)irq))
+		synchronize_irq(irq);
 }
 
 void enable_irq(unsigned int irq)
@@ -344,7 +540,7 @@ void enable_irq(unsigned int irq)
 	if (desc->depth == 0)
 		unbalanced = true;
 	else
-		unmask = --desc->depth == 0 && desc->action;
+		unmask = --desc->depth == 0 && desc->action && !desc->threads_oneshot;
 	if (unmask) {
 		desc->unanswered_run = 0;
 		/* Linux drops a pending level interrupt: the level, if still there, fires again. */
@@ -406,8 +602,15 @@ unsigned long lx_irq_count(unsigned int irq)
 /* Forgets every handler and IRQ state (part of lx_io_boot). */
 static void irq_boot(void)
 {
+	unsigned int i;
+
 	memset(irq_descs, 0, sizeof(irq_descs));
 	memset(action_pool, 0, sizeof(action_pool));
+	memset(irq_threads, 0, sizeof(irq_threads));
+	for (i = 0; i < ARRAY_SIZE(irq_threads); i++) {
+		init_waitqueue_head(&irq_threads[i].wake);
+		init_waitqueue_head(&irq_threads[i].idle);
+	}
 	memset(resend_queued, 0, sizeof(resend_queued));
 	/* a previous boot's timer belongs to a queue the tick's boot empties */
 	memset(&resend_timer, 0, sizeof(resend_timer));
@@ -422,6 +625,9 @@ void lx_io_boot(intptr_t exinf)
 	lx_mach_boot();
 	lx_resource_boot();
 	lx_devfs_boot();
+	lx_driver_core_boot();
+	lx_platform_boot();
+	lx_gpiolib_boot();
 	lx_spi_boot();
 	lx_fb_boot();
 	lx_uaccess_boot();

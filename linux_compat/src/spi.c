@@ -58,6 +58,7 @@ static void spi_bind(struct spi_device *spi, struct spi_driver *sdrv)
 	err = sdrv->probe ? sdrv->probe(spi) : 0;
 	if (err) {
 		pr_warn("spi %s: probe of %s failed with error %d\n", sdrv->driver.name, dev_name(&spi->dev), err);
+		devres_release_all(&spi->dev);
 		spi->dev.driver = NULL;
 		dev_set_drvdata(&spi->dev, NULL);
 	}
@@ -72,6 +73,7 @@ static void spi_unbind(struct spi_device *spi)
 		return;
 	if (sdrv->remove)
 		sdrv->remove(spi);
+	devres_release_all(&spi->dev);
 	spi->dev.driver = NULL;
 	dev_set_drvdata(&spi->dev, NULL);
 }

@@ -15,8 +15,8 @@
  *   disables the line.  No handler can be running then: one CPU.
  * - enable_irq/disable_irq nest (a depth count) as in Linux; disable_irq from
  *   the line's own handler would deadlock in Linux and is reported here.
- * Threaded handlers (request_threaded_irq with a thread_fn) are not
- * supported: -EINVAL with a message.
+ * Threaded handlers: request_threaded_irq below; the threads are
+ * statically configured tasks (linux_compat/config.h, LX_NR_IRQ_THREADS).
  */
 #ifndef _LINUX_INTERRUPT_H
 #define _LINUX_INTERRUPT_H
@@ -60,6 +60,9 @@ typedef irqreturn_t (*irq_handler_t)(int irq, void *dev_id);
 struct irqaction {
 	irq_handler_t handler;
 	void *dev_id;
+	irq_handler_t thread_fn;
+	unsigned long thread_flags;     /* bit 0: the thread is to run (IRQTF_RUNTHREAD) */
+	int lx_thread;                  /* ev3lx: its IRQ thread's index, -1 without one */
 	struct irqaction *next;
 	unsigned int irq;
 	unsigned int flags;
@@ -70,9 +73,35 @@ struct irqaction {
 int request_irq(unsigned int irq, irq_handler_t handler, unsigned long flags,
 		const char *name, void *dev);
 
-/* request_irq with an optional thread_fn, which is not supported (-EINVAL). */
+/* request_irq with a thread function (kernel/irq/manage.c): handler runs in
+ * interrupt context and returns IRQ_WAKE_THREAD to run thread_fn in the
+ * IRQ's kernel thread (a task of its own, process context: it may sleep);
+ * handler NULL wakes the thread on every interrupt and then requires
+ * IRQF_ONESHOT (-EINVAL otherwise, as Linux).  With IRQF_ONESHOT the line
+ * stays masked from the interrupt until thread_fn returns.  -ENOMEM when
+ * all LX_NR_IRQ_THREADS threads are taken; on a shared line every handler
+ * must agree on IRQF_ONESHOT (-EBUSY). */
 int request_threaded_irq(unsigned int irq, irq_handler_t handler, irq_handler_t thread_fn,
 			 unsigned long flags, const char *name, void *dev);
+
+/* Runs the thread of the (irq, dev_id) handler as if its handler had
+ * returned IRQ_WAKE_THREAD.  Any context. */
+void irq_wake_thread(unsigned int irq, void *dev_id);
+
+struct device;
+
+/* request_threaded_irq whose free_irq runs when dev's driver unbinds (or its
+ * probe fails); devname NULL names the line after dev. */
+int devm_request_threaded_irq(struct device *dev, unsigned int irq, irq_handler_t handler,
+			      irq_handler_t thread_fn, unsigned long irqflags, const char *devname,
+			      void *dev_id);
+static inline int devm_request_irq(struct device *dev, unsigned int irq, irq_handler_t handler,
+				   unsigned long irqflags, const char *devname, void *dev_id)
+{
+	return devm_request_threaded_irq(dev, irq, handler, NULL, irqflags, devname, dev_id);
+}
+/* Frees a devm-requested IRQ now (reported if dev does not manage it). */
+void devm_free_irq(struct device *dev, unsigned int irq, void *dev_id);
 
 /* Detaches the (irq, dev_id) handler; returns its name, or NULL (with a warning) if absent. */
 const void *free_irq(unsigned int irq, void *dev_id);

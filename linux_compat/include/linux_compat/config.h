@@ -19,7 +19,8 @@
  *     linux_compat/irq.h) - do not include it a second time.
  *   - LX_NR_POOL_WORKERS pool workers (below), which serve the workqueues
  *     with it, so a work item that sleeps does not hold up the others;
- * Reserved IDs: task TNUM_TSKID and the pool workers' IDs.  No semaphores, eventflags, cyclics or
+ *   - LX_NR_IRQ_THREADS IRQ threads (below) for threaded interrupt handlers;
+ * Reserved IDs: task TNUM_TSKID, the pool workers' and the IRQ threads' IDs.  No semaphores, eventflags, cyclics or
  * alarms are used (linux_compat's primitives are native).
  *
  * LX_WORKER_PRIORITY and LX_WORKER_STACK may be overridden at build time
@@ -51,6 +52,29 @@
 #error "the pool workers' task IDs must lie in 1..TNUM_TSKID-1"
 #endif
 
+/*
+ * The IRQ threads: LX_NR_IRQ_THREADS tasks with IDs LX_IRQ_THREAD_TSKID_BASE..
+ * (default just below the pool workers' range) at LX_IRQ_THREAD_PRIORITY,
+ * above the workers as Linux runs IRQ threads SCHED_FIFO.  Each
+ * request_threaded_irq with a thread function takes one until its free_irq.
+ */
+#ifndef LX_NR_IRQ_THREADS
+#define LX_NR_IRQ_THREADS	2
+#endif
+#ifndef LX_IRQ_THREAD_TSKID_BASE
+#define LX_IRQ_THREAD_TSKID_BASE	(LX_POOL_WORKER_TSKID_BASE - LX_NR_IRQ_THREADS)
+#endif
+#if LX_NR_IRQ_THREADS < 0 || LX_NR_IRQ_THREADS > 4 || LX_IRQ_THREAD_TSKID_BASE < 1 || \
+    LX_IRQ_THREAD_TSKID_BASE + LX_NR_IRQ_THREADS > LX_POOL_WORKER_TSKID_BASE
+#error "the IRQ threads (at most 4) need task IDs in 1..LX_POOL_WORKER_TSKID_BASE-1"
+#endif
+#ifndef LX_IRQ_THREAD_PRIORITY
+#define LX_IRQ_THREAD_PRIORITY	3
+#endif
+#ifndef LX_IRQ_THREAD_STACK
+#define LX_IRQ_THREAD_STACK	(16 * 1024)
+#endif
+
 #ifndef LX_WORKER_PRIORITY
 #define LX_WORKER_PRIORITY	4
 #endif
@@ -72,6 +96,8 @@ void lx_compat_terminate(intptr_t exinf);
 void lx_worker_task(intptr_t exinf);
 /* A pool worker's body: the workqueues. */
 void lx_pool_worker_task(intptr_t exinf);
+/* IRQ thread exinf's body: runs its threaded handler each time it is woken. */
+void lx_irq_thread_task(intptr_t exinf);
 
 /* The boot command line, passed before the kernel starts as a boot loader
  * passes Linux's (the string must stay valid): its "module.param=value" words

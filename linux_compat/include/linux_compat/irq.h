@@ -98,6 +98,15 @@ void lx_io_boot(intptr_t exinf);
 void lx_resource_boot(void);
 /* Resets the device registry (lx_io_boot). */
 void lx_devfs_boot(void);
+/* Forgets buses, the deferred-probe list and the core lock (lx_io_boot). */
+void lx_driver_core_boot(void);
+struct bus_type;
+/* Registers bus at boot (lx_platform_boot), before any task runs: no lock. */
+void lx_bus_register_boot(struct bus_type *bus);
+/* Registers the platform bus afresh, its auto ids free (lx_io_boot). */
+void lx_platform_boot(void);
+/* Frees every GPIO descriptor and forgets the lookup tables (lx_io_boot). */
+void lx_gpiolib_boot(void);
 /* Forgets SPI controllers, devices, drivers and board info (lx_io_boot). */
 void lx_spi_boot(void);
 /* Forgets registered frame buffers (lx_io_boot). */

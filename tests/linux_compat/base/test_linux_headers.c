@@ -80,13 +80,13 @@ static void test_kfifo(void)
 {
 	static DEFINE_KFIFO(small, unsigned char, 8);
 	struct kfifo dyn;
-	unsigned char out[16];
+	unsigned char out[16] = { 0 };
 	unsigned int i;
 
-	is_int((int)kfifo_in(&small, "abcdefghij", 10), 8, "kfifo_in into 8 bytes takes 8");
+	is_int((int)kfifo_in(&small, (const unsigned char *)"abcdefghij", 10), 8, "kfifo_in into 8 bytes takes 8");
 	ok(kfifo_is_full(&small) && kfifo_len(&small) == 8, "full, length 8");
 	is_int((int)kfifo_out(&small, out, 3), 3, "kfifo_out 3");
-	is_int((int)kfifo_in(&small, "XYZ", 3), 3, "kfifo_in wraps around");
+	is_int((int)kfifo_in(&small, (const unsigned char *)"XYZ", 3), 3, "kfifo_in wraps around");
 	is_int((int)kfifo_out(&small, out, sizeof(out)), 8, "kfifo_out takes the 8 left");
 	ok(memcmp(out, "defghXYZ", 8) == 0, "in FIFO order across the wrap");
 	is_int(kfifo_alloc(&dyn, 100, GFP_KERNEL), 0, "kfifo_alloc(100)");
