@@ -114,8 +114,10 @@ $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c
 # configuration's, nor a sanitizer's, whose sections have a priority in
 # their names) go to ev3rt_app_init_array, which the platform's app-init task
 # runs at boot as EV3RT's does (api/src/app_init.c), and its __cxa_atexit is
-# the platform's, which registers no destructor, as EV3RT runs none.  (The
-# recipe is a prerequisite: an object linked by an older one would construct
+# the platform's, which registers no destructor, as EV3RT runs none.  An
+# app's own __dso_handle (ET Robocon's C++ apps define `void *__dso_handle`
+# for EV3RT's toolchain, which had none) stays the app's: it would clash with
+# the host C library's start-up file.  (The recipe is a prerequisite: an object linked by an older one would construct
 # its globals before boot.)
 $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o \
 		$$(EV3RT_DOMLIBS_$(1)_$(2)) $(EV3RT_APP_FS_SYMS) mk/ev3rt_app.mk
@@ -140,7 +142,7 @@ $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(
 	$$(OBJCOPY_$(2)) --rename-section .init_array=ev3rt_app_init_array $$@.app.o; \
 	$$(CC_$(2)) -r -nostdlib -o $$@ $$@.app.o $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o; \
 	$$(OBJCOPY_$(2)) --redefine-sym main=ev3rt_app_main --redefine-sym __cxa_atexit=ev3rt_app_cxa_atexit \
-		--redefine-syms=$(EV3RT_APP_FS_SYMS) $$@
+		--localize-symbol=__dso_handle --redefine-syms=$(EV3RT_APP_FS_SYMS) $$@
 
 ifneq ($(strip $(5)),)
 EV3RT_PLATFORM_$(1)_$(2) ?= $(BUILD)/$(2)/libev3lx.a

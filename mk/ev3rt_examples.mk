@@ -221,7 +221,9 @@ endif
 # INCLUDES, mkfile_path) with its own ATT_MOD, one whose Makefile.inc sets
 # COPTS, CDEFS, APPL_CFLAGS, SRCDIRS, LDFLAGS, APPL_LIBS, LIBS and OMIT_*
 # (tests/ev3sim/apps/makeinc, an ET Robocon-style HRP3 app: INCLUDE("tecsgen.cfg")), an HRP3 app and an HRP2 app side by side
-# (examples/notify, examples/dtq), an app with a main() and
+# (examples/notify, examples/dtq), an ET Robocon-style C++ app
+# (tests/ev3sim/apps/etstyle: EV3RT 0.x's APPL_DIR under `ifdef app`, its own
+# __dso_handle, ten modules' writable data), an app with a main() and
 # global names ev3lx uses inside (tests/ev3sim/apps/namespace); then
 # tests/ev3sim/apps/misbehave crashes (status 4) and stalls (status 3), each
 # reported with its source line from the runner `ev3sim run` built.
@@ -254,6 +256,12 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 			{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
 		echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"; \
 	done
+	+$(Q)out=$$($(BUILD)/host/ev3sim run tests/ev3sim/apps/etstyle --seconds 1) || \
+		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/etstyle exited $$?"; exit 1; }; \
+	printf '%s\n' "$$out" | grep -q "NOTICE: etstyle: 9 units stepped, sum 459" && \
+	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=etstyle .* warnings=0 errors=0 bugs=0 " || \
+		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
+	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
 	+$(Q)out=$$($(BUILD)/host/ev3sim run tests/ev3sim/apps/namespace --seconds 1) || \
 		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/namespace exited $$?"; exit 1; }; \
 	printf '%s\n' "$$out" | grep -q "NOTICE: namespace: main() says 22" && \

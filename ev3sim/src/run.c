@@ -33,8 +33,6 @@ static const enum ev3_ui_button ui_button_of[] = {
 	EV3_UI_BUTTON_DOWN, EV3_UI_BUTTON_ENTER, EV3_UI_BUTTON_BACK,
 };
 
-#define MAX_IMAGE_REGIONS 8
-
 /*
  * The app's writable memory as loaded (the regions of its ATT_MOD modules):
  * copied before its first boot and put back before every later one, as a
@@ -44,7 +42,7 @@ static const enum ev3_ui_button ui_button_of[] = {
 static struct {
 	const struct rtos_cfg *app;
 	unsigned n;
-	struct { void *base, *copy; SIZE size; } region[MAX_IMAGE_REGIONS];
+	struct image_region { void *base, *copy; SIZE size; } *region;   /* one per writable region */
 } image;
 
 /*
@@ -153,14 +151,16 @@ static ER load_image(const struct rtos_cfg *app)
 	}
 	for (unsigned i = 0; i < image.n; i++)
 		free(image.region[i].copy);
+	free(image.region);
 	memset(&image, 0, sizeof(image));
+	/* at most one region per memory object: an app attaches as many modules as it likes */
+	if (app->nmems > 0 && (image.region = calloc(app->nmems, sizeof(*image.region))) == NULL)
+		return E_NOMEM;
 	for (uint_t i = 0; i < app->nmems; i++) {
 		const struct rtos_mem_cfg *m = &app->mems[i];
 
 		if (!(m->access & TPM_WRITE) || m->size == 0)
 			continue;
-		if (image.n == MAX_IMAGE_REGIONS)
-			return E_NOMEM;
 		image.region[image.n].base = (void *)(uintptr_t)m->base;
 		image.region[image.n].size = m->size;
 		image.region[image.n].copy = malloc(m->size);

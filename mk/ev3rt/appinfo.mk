@@ -11,7 +11,7 @@
 # writes SDKDIR/appinfo.mk defining
 #   P_SRCS      the app's sources: app.c (app.cpp if SRCLANG is c++), each
 #               APPL_COBJS as .c and APPL_CXXOBJS as .cpp, looked for in the
-#               app's directory, its APPL_DIRS and SRCDIRS and every src/
+#               app's directory, its APPL_DIRS (APPL_DIR, EV3RT 0.x's name) and SRCDIRS and every src/
 #               below it
 #   P_INCLUDES  INCLUDES, with every include/ below the app and the SDK
 #               libraries' include/
@@ -52,6 +52,7 @@ SRCLANG := c
 APPL_COBJS :=
 APPL_CXXOBJS :=
 APPL_DIRS :=
+APPL_DIR :=
 APPL_LIBS :=
 LIBS :=
 INCLUDES :=
@@ -65,6 +66,9 @@ OMIT_WARNING_ALL :=
 OMIT_OPTIMIZATION :=
 OMIT_DEBUG_INFO :=
 CONFIG_EV3RT_APPLICATION := 1
+# EV3RT builds an app with `make app=DIR` from its workspace: some apps'
+# Makefile.inc test it (ev3rt-git/ev3rt-hrp2-sdk, common/Makefile.workspace)
+app := $(notdir $(patsubst %/,%,$(APP)))
 EV3RT_SDK_LIB_DIR := $(SDKDIR)/library
 EV3RT_SDK_LIBS :=
 
@@ -109,7 +113,7 @@ $(foreach l,$(wanted_libs),$(if $(wildcard $(EV3RT_SDK_LIB_DIR)/$(l)/Makefile),,
 main_src := $(APP)/$(if $(filter c++,$(SRCLANG)),app.cpp,app.c)
 $(if $(strip $(APPL_ASMOBJS)),$(error $(APP)/Makefile.inc: APPL_ASMOBJS ($(strip $(APPL_ASMOBJS))): \
 	assembly sources are ARM code for the brick, which the simulator's host cannot run))
-src_dirs := $(APP) $(foreach d,$(APPL_DIRS) $(SRCDIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d))) \
+src_dirs := $(APP) $(foreach d,$(APPL_DIRS) $(APPL_DIR) $(SRCDIRS),$(if $(filter /%,$(d)),$(d),$(APP)/$(d))) \
 	$(shell find -H '$(APP)' -type d -name src)
 # the source of object $(1) with extension $(2): the first directory that has it
 src_of = $(firstword $(wildcard $(addsuffix /$(basename $(1))$(2),$(src_dirs))) $(APP)/$(basename $(1))$(2))
