@@ -94,16 +94,22 @@ static void peer_port_close(struct peer_port *port)
 	port->listen_fd = -1;
 }
 
-/* Closes the peers' sockets, removes the listening sockets' files, forgets the SPP master's slave. */
-static void peers_teardown(void)
+/* The SPP master idle: its link closed (the slave sees it go), an attempt under way ended. */
+static void spp_idle(void)
 {
-	peer_port_close(&bt);
-	peer_port_close(&usb);
 	link_close(&spp.link);
 	if (spp.answer_fd >= 0)
 		close(spp.answer_fd);
 	spp.answer_fd = -1;
 	spp.attempting = false;
+}
+
+/* Closes the peers' sockets, removes the listening sockets' files, forgets the SPP master's slave. */
+static void peers_teardown(void)
+{
+	peer_port_close(&bt);
+	peer_port_close(&usb);
+	spp_idle();
 	spp.has_slave = false;
 }
 
@@ -742,18 +748,13 @@ static ER_UINT svc_spp_connecting(intptr_t p1, intptr_t p2, intptr_t p3, intptr_
 	return spp.attempting ? 1 : 0;
 }
 
-/* The SPP master back to idle: its link closed (the slave sees it go), an
- * attempt under way ended. */
+/* The SPP master back to idle (EV3RT 1.x's ev3_spp_master_reset). */
 static ER_UINT svc_spp_reset(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
 {
 	(void)p1; (void)p2; (void)p3; (void)p4; (void)p5; (void)cdmid;
 	if (sns_ctx())
 		return E_CTX;
-	link_close(&spp.link);
-	if (spp.answer_fd >= 0)
-		close(spp.answer_fd);
-	spp.answer_fd = -1;
-	spp.attempting = false;
+	spp_idle();
 	return E_OK;
 }
 
