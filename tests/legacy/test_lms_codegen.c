@@ -10,20 +10,11 @@
  */
 #include <stdio.h>
 
-#include "tap.h"
+#include "legacy_test.h"
 #include "sil.h"
-#include "rtos_host.h"
-#include "host_sim/board.h"
 #include "host_sim/psc.h"
-#include "host_sim/scenario.h"
-#include "host_sim/devices/ev3_brick.h"
-#include <linux_compat/config.h>
 
 #include "lms_codegen_hack.h"
-
-#define MS 1000000ULL
-
-static volatile bool started, done;
 
 static uint32_t reg(uint32_t phys, unsigned width)
 {
@@ -36,8 +27,6 @@ static void body(void)
 {
 	static const char tone_440[] = { 1, 50, (char)0xB8, 0x01 };
 
-	while (!started)
-		dly_tsk(1);
 	is_int(lms_codegen_load(), 0, "lms_codegen's init succeeds");
 	is_int((int)reg(HS_EHRPWM1_BASE + 0x16, 2), 0x0021, "eHRPWM1.AQCTLA = 0x0021 (merged with AQCTLB by gcc)");
 	is_int((int)reg(HS_EHRPWM1_BASE + 0x18, 2), 0x0201, "eHRPWM1.AQCTLB = 0x0201");
@@ -50,44 +39,24 @@ static void body(void)
 	is_int((int)lms_codegen_frequency(), 440, "its `char` bytes 0xB8 0x01 are 440 Hz (-funsigned-char), not 184");
 	is_int((int)reg(HS_EHRPWM0_BASE + 0x0A, 2), 132000000 / 32 / 440 - 1, "eHRPWM0.TBPRD is 440 Hz's period");
 	lms_codegen_unload();
-	done = true;
 }
 
-static void test_task(intptr_t exinf)
+/* The boot loader's part on the brick: PSC power for the modules. */
+static void power_on(void)
 {
-	(void)exinf;
-	body();
+	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_EHRPWM), HS_PSC_ENABLE);
+	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_ECAP), HS_PSC_ENABLE);
+	hs_psc_force(HS_PSC0_MODULE(HS_LPSC0_SPI0), HS_PSC_ENABLE);
 }
 
 int main(void)
 {
-	const struct rtos_task_cfg tasks[] = {
-		{ 1, TA_ACT, 0, test_task, 8, 64 * 1024, TDOM_KERNEL, "codegen_test" },
+	static const struct lt_test test = {
+		.name = "lms_codegen", .power_on = power_on, .body = body, .after_boot = 12, .plain_pointers = true,
 	};
-	static const struct rtos_cfg *const includes[] = { &linux_compat_cfg, NULL };
-	const struct rtos_cfg cfg = { .name = "lms_codegen", .tasks = tasks, .ntasks = 1, .includes = includes };
-	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
-	struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 1 };
 
 	tap_plan(12);
-	if (hs_sim_boot(&scn) != E_OK)
-		tap_bail_out(rtos_host_boot_error());
-	if (!hs_board_traps_pointers()) {
-		char why[200];
-
-		snprintf(why, sizeof(why), "%s", hs_board_trap_unavailable_reason());
-		hs_sim_shutdown();
-		tap_skip(12, why);
-		return tap_done();
-	}
-	/* The boot loader's part on the brick: PSC power for the modules. */
-	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_EHRPWM), HS_PSC_ENABLE);
-	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_ECAP), HS_PSC_ENABLE);
-	hs_psc_force(HS_PSC0_MODULE(HS_LPSC0_SPI0), HS_PSC_ENABLE);
-	started = true;
-	for (int i = 0; i < 100 && !done; i++)
-		hs_sim_run_for(10 * MS);
-	ok(done, "the test body ran to its end");
-	hs_sim_shutdown();
+	if (lt_run(&test))
+		ok(lt_done, "the test body ran to its end");
 	return tap_done();
 }

@@ -14,15 +14,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "tap.h"
+#include "legacy_test.h"
 #include "sil.h"
-#include "rtos_host.h"
-#include "host_sim/board.h"
 #include "host_sim/gpio.h"
 #include "host_sim/psc.h"
-#include "host_sim/scenario.h"
-#include "host_sim/devices/ev3_brick.h"
-#include <linux_compat/config.h>
 #include <linux_compat/modparam.h>
 
 #include "lms_gpio_hack.h"
@@ -30,13 +25,10 @@
 #include "lms_serial_hack.h"
 #include "host_sim/devices/spi_adc.h"
 
-#define MS            1000000ULL
 #define GPIO_OUT_EP2  HS_GPIO(3, 13)   /* lms_gpio's output on board EP2 */
 #define GPIO_IN_EP2   HS_GPIO(0, 3)    /* and its edge input */
 #define MOTOR_EN      HS_GPIO(2, 1)    /* lms_motor's enable pin on board FINAL */
 #define PWM1_PHYS     0x01F02000U
-
-static volatile bool started, done;
 
 static bool output(unsigned pin)
 {
@@ -52,8 +44,6 @@ static uint16_t pwm_reg(unsigned offset)
 
 static void body(void)
 {
-	while (!started)
-		dly_tsk(1);
 	is_int(lx_module_param_set("lms_gpio", "HwId", "1"), E_OK, "lms_gpio.HwId=1 (board EP2) before init");
 	is_int(lms_gpio_load(), 0, "lms_gpio's init succeeds");
 	is_int(lms_motor_load(), 0, "lms_motor's init succeeds");
@@ -104,45 +94,25 @@ static void body(void)
 	}
 	is_int((int)lms_serial_pwm_period(), 0x12345, "eCAP0 CAP1 written as two 16-bit halves reads back whole");
 	lms_serial_unload();
-	done = true;
 }
 
-static void test_task(intptr_t exinf)
+/* The boot loader's part on the brick: PSC1 powers eHRPWM1 and eCAP, PSC0 SPI0 and UART0. */
+static void power_on(void)
 {
-	(void)exinf;
-	body();
-}
-
-int main(void)
-{
-	const struct rtos_task_cfg tasks[] = {
-		{ 1, TA_ACT, 0, test_task, 8, 64 * 1024, TDOM_KERNEL, "lms_test" },
-	};
-	static const struct rtos_cfg *const includes[] = { &linux_compat_cfg, NULL };
-	const struct rtos_cfg cfg = { .name = "lms_modules", .tasks = tasks, .ntasks = 1, .includes = includes };
-	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
-	struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 1 };
-
-	tap_plan(24);
-	if (hs_sim_boot(&scn) != E_OK)
-		tap_bail_out(rtos_host_boot_error());
-	if (!hs_board_traps_pointers()) {
-		char why[200];
-
-		snprintf(why, sizeof(why), "%s", hs_board_trap_unavailable_reason());
-		hs_sim_shutdown();
-		tap_skip(24, why);
-		return tap_done();
-	}
-	/* The boot loader's part on the brick: PSC1 powers eHRPWM1. */
 	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_EHRPWM), HS_PSC_ENABLE);
 	hs_psc_force(HS_PSC1_MODULE(HS_LPSC1_ECAP), HS_PSC_ENABLE);
 	hs_psc_force(HS_PSC0_MODULE(HS_LPSC0_SPI0), HS_PSC_ENABLE);
 	hs_psc_force(HS_PSC0_MODULE(HS_LPSC0_UART0), HS_PSC_ENABLE);
-	started = true;
-	for (int i = 0; i < 100 && !done; i++)
-		hs_sim_run_for(10 * MS);
-	ok(done, "the test body ran to its end");
-	hs_sim_shutdown();
+}
+
+int main(void)
+{
+	static const struct lt_test test = {
+		.name = "lms_modules", .power_on = power_on, .body = body, .after_boot = 24, .plain_pointers = true,
+	};
+
+	tap_plan(24);
+	if (lt_run(&test))
+		ok(lt_done, "the test body ran to its end");
 	return tap_done();
 }

@@ -12,24 +12,16 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "tap.h"
+#include "legacy_test.h"
 #include "sil.h"
-#include "rtos_host.h"
-#include "host_sim/board.h"
 #include "host_sim/psc.h"
-#include "host_sim/scenario.h"
-#include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/spi_adc.h"
-#include <linux_compat/config.h>
 
 #include "lms_spi_hack.h"
 #include "legacy_long_regs.h"
 
-#define MS          1000000ULL
 #define SPI0_PHYS   0x01C41000U
 #define PLAN        10
-
-static volatile bool started, done;
 
 /* SPI0's register at offset as the bus sees it (32 bits). */
 static uint32_t spi_reg(unsigned offset)
@@ -39,8 +31,6 @@ static uint32_t spi_reg(unsigned offset)
 
 static void body(void)
 {
-	while (!started)
-		dly_tsk(1);
 	is_int(lms_spi_load(), 0, "lms_spi's init succeeds");
 	is_int((int)sizeof(unsigned long), 4, "unsigned long is the target's 4 bytes here");
 	is_int((int)(lms_spi_setup(0) & 0x01000003U), 0x01000003, "Spi0[SPIGCR1] (offset 0x04): master and enabled");
@@ -52,24 +42,19 @@ static void body(void)
 	is_int((int)lms_spi_adc_answer(2), (int)ads7957_word(5, ev3_adc_channel_mv(5)), "with the converter's value");
 	lms_spi_unload();
 	is_int((int)(spi_reg(0x04) & 0x01000000U), 0, "exit: SpiRestoreReg put SPIGCR1 back (disabled)");
-	done = true;
 }
 
-static void test_task(intptr_t exinf)
+/* The boot loader's part on the brick: PSC0 powers SPI0. */
+static void power_on(void)
 {
-	(void)exinf;
-	body();
+	hs_psc_force(HS_PSC0_MODULE(HS_LPSC0_SPI0), HS_PSC_ENABLE);
 }
 
 int main(void)
 {
-	const struct rtos_task_cfg tasks[] = {
-		{ 1, TA_ACT, 0, test_task, 8, 64 * 1024, TDOM_KERNEL, "lms_spi_test" },
+	static const struct lt_test test = {
+		.name = "lms_spi", .power_on = power_on, .body = body, .after_boot = PLAN - 1, .plain_pointers = true,
 	};
-	static const struct rtos_cfg *const includes[] = { &linux_compat_cfg, NULL };
-	const struct rtos_cfg cfg = { .name = "lms_spi", .tasks = tasks, .ntasks = 1, .includes = includes };
-	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
-	struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 1 };
 	const char *lp64 = legacy_long_regs_of("lms_spi");
 
 	tap_plan(PLAN);
@@ -81,21 +66,6 @@ int main(void)
 		return tap_done();
 	}
 	ok(lp64 == NULL, "the build found no register pointer this configuration cannot run");
-	if (hs_sim_boot(&scn) != E_OK)
-		tap_bail_out(rtos_host_boot_error());
-	if (!hs_board_traps_pointers()) {
-		char why[200];
-
-		snprintf(why, sizeof(why), "%s", hs_board_trap_unavailable_reason());
-		hs_sim_shutdown();
-		tap_skip(PLAN - 1, why);
-		return tap_done();
-	}
-	/* The boot loader's part on the brick: PSC0 powers SPI0. */
-	hs_psc_force(HS_PSC0_MODULE(HS_LPSC0_SPI0), HS_PSC_ENABLE);
-	started = true;
-	for (int i = 0; i < 100 && !done; i++)
-		hs_sim_run_for(10 * MS);
-	hs_sim_shutdown();
+	lt_run(&test);
 	return tap_done();
 }

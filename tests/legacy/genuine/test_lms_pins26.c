@@ -5,18 +5,12 @@
  * configuration's -O2 on the simulated EV3: it claims its pins, drives the
  * output, mirrors the input, and frees both at exit.
  */
-#include "tap.h"
+#include "legacy_test.h"
 #include "sil.h"
-#include "rtos_host.h"
-#include "host_sim/board.h"
 #include "host_sim/gpio.h"
-#include "host_sim/scenario.h"
-#include "host_sim/devices/ev3_brick.h"
-#include <linux_compat/config.h>
 
 #include "lms_pins26_hack.h"
 
-#define MS        1000000ULL
 #define OUT_PIN   HS_GPIO(3, 13)
 #define IN_PIN    HS_GPIO(0, 3)
 /* SYSCFG0 (AM1808 TRM, SYSCFG chapter): KICK0R/KICK1R unlock, PINMUXn 4 bits a pin */
@@ -24,8 +18,6 @@
 #define KICK0R    0x38U
 #define KICK1R    0x3CU
 #define PINMUX(n) (0x120U + 4U * (n))
-
-static volatile bool started, done;
 
 /* 1 if the SoC drives pin high, 0 if low, -1 if the pin is not an output. */
 static int output(unsigned pin)
@@ -37,8 +29,6 @@ static int output(unsigned pin)
 
 static void body(void)
 {
-	while (!started)
-		dly_tsk(1);
 	is_int(lms_pins26_load(), 0, "lms_pins26's init claims GP3[13] and GP0[3]");
 	is_int(output(OUT_PIN), 1, "gpio_direction_output(OutPin, 1): GP3[13] is an output, high");
 	lms_pins26_drive(0);
@@ -53,7 +43,6 @@ static void body(void)
 	is_int(output(OUT_PIN), -1, "exit: the output pin is an input again");
 	is_int(lms_pins26_load(), 0, "exit freed both pins: a second init claims them again");
 	lms_pins26_unload();
-	done = true;
 }
 
 /* Sets PINMUXn[shift + 3 : shift] to mode, as a 2.6 board file's pin set-up does before the modules load. */
@@ -69,31 +58,21 @@ static void board_mux(unsigned n, unsigned shift, unsigned mode)
 	sil_wrw_mem(kick1, 0);
 }
 
-static void test_task(intptr_t exinf)
+/* The board file's part: GP3[13] and GP0[3] muxed as GPIOs. */
+static void power_on(void)
 {
-	(void)exinf;
-	body();
+	board_mux(7, 8, 8);     /* GP3[13] */
+	board_mux(1, 16, 8);    /* GP0[3] */
 }
 
 int main(void)
 {
-	const struct rtos_task_cfg tasks[] = {
-		{ 1, TA_ACT, 0, test_task, 8, 64 * 1024, TDOM_KERNEL, "pins26_test" },
+	static const struct lt_test test = {
+		.name = "lms_pins26", .power_on = power_on, .body = body,
 	};
-	static const struct rtos_cfg *const includes[] = { &linux_compat_cfg, NULL };
-	const struct rtos_cfg cfg = { .name = "lms_pins26", .tasks = tasks, .ntasks = 1, .includes = includes };
-	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
-	struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 1 };
 
 	tap_plan(9);
-	if (hs_sim_boot(&scn) != E_OK)
-		tap_bail_out(rtos_host_boot_error());
-	board_mux(7, 8, 8);     /* GP3[13] */
-	board_mux(1, 16, 8);    /* GP0[3] */
-	started = true;
-	for (int i = 0; i < 100 && !done; i++)
-		hs_sim_run_for(10 * MS);
-	ok(done, "the test body ran to its end");
-	hs_sim_shutdown();
+	lt_run(&test);
+	ok(lt_done, "the test body ran to its end");
 	return tap_done();
 }
