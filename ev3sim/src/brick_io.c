@@ -587,6 +587,13 @@ static bool serial_connected(intptr_t port)
 	       (io.serial_fd >= 0 || io.serial_is_uart);
 }
 
+/* The socket link of a Bluetooth or USB port, NULL for the UART's. */
+static struct peer_link *peer_link_of(intptr_t port)
+{
+	return port == EV3_SERIAL_BT ? &bt.peer : port == EV3_SERIAL_USB_CDC ? &usb.peer :
+	       port == BRICK_IO_SERIAL_SPP_MASTER ? &spp.link : NULL;
+}
+
 /* A Bluetooth link's write: what the far end's socket takes (0: full); a
  * far end gone is a disconnection, and the bytes are lost as on the air. */
 static ER_UINT link_write(struct peer_link *link, const void *buf, size_t len)
@@ -640,6 +647,7 @@ static ER serial_check(intptr_t port, intptr_t p_buf, intptr_t p_len, MODE acces
 static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, intptr_t p4, intptr_t p5,
 				ID cdmid)
 {
+	struct peer_link *link;
 	ssize_t put;
 	ER ercd;
 
@@ -650,12 +658,8 @@ static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, i
 		return p_len == 0 ? E_OBJ : p_len;    /* nothing listens: the bytes are lost, as on the wire */
 	if (p_len == 0)
 		return E_OK;
-	if (port == EV3_SERIAL_BT)
-		return link_write(&bt.peer, (const void *)p_buf, (size_t)p_len);
-	if (port == EV3_SERIAL_USB_CDC)
-		return link_write(&usb.peer, (const void *)p_buf, (size_t)p_len);
-	if (port == BRICK_IO_SERIAL_SPP_MASTER)
-		return link_write(&spp.link, (const void *)p_buf, (size_t)p_len);
+	if ((link = peer_link_of(port)) != NULL)
+		return link_write(link, (const void *)p_buf, (size_t)p_len);
 	if (io.serial_is_uart)
 		return serial_log_send((const char *)p_buf, (uint_t)p_len);
 	put = write(io.serial_fd, (const void *)p_buf, (size_t)p_len);
@@ -672,18 +676,15 @@ static ER_UINT svc_serial_write(intptr_t port, intptr_t p_buf, intptr_t p_len, i
 static ER_UINT svc_serial_read(intptr_t port, intptr_t p_buf, intptr_t p_len, intptr_t p4, intptr_t p5,
 			       ID cdmid)
 {
+	struct peer_link *link;
 	ssize_t got;
 	ER ercd;
 
 	(void)p4; (void)p5; (void)cdmid;
 	if ((ercd = serial_check(port, p_buf, p_len, TPM_WRITE)) != E_OK || p_len == 0)
 		return ercd;
-	if (port == EV3_SERIAL_BT)
-		return link_read(&bt.peer, port_peer(&bt), (void *)p_buf, (size_t)p_len);
-	if (port == EV3_SERIAL_USB_CDC)
-		return link_read(&usb.peer, port_peer(&usb), (void *)p_buf, (size_t)p_len);
-	if (port == BRICK_IO_SERIAL_SPP_MASTER)
-		return link_read(&spp.link, spp_peer(), (void *)p_buf, (size_t)p_len);
+	if ((link = peer_link_of(port)) != NULL)
+		return link_read(link, serial_connected(port), (void *)p_buf, (size_t)p_len);
 	if (!serial_connected(port))
 		return 0;           /* nothing arrives from no far end: the reader waits */
 	if (io.serial_is_file || io.serial_is_uart)
