@@ -46,8 +46,12 @@ CXX_host-prof      := g++
 CFLAGS_host-prof    = $(CFLAGS_host) -fprofile-generate $(pgo_dumpbase)
 CC_host-pgo        := gcc
 CXX_host-pgo       := g++
-CFLAGS_host-pgo     = $(CFLAGS_host) -fprofile-use -fprofile-partial-training -Wno-missing-profile \
-	$(pgo_dumpbase) $(pgo_lto)
+# An EV3RT app's own code is compiled as in host, without the profile: its
+# basic blocks are its virtual CPU time (rtos_host.h, CPU time), so a block
+# structure the profile changed would change the simulation's results.
+pgo_use = $(if $(filter $(BUILD)/host-pgo/ev3rt/%,$@),,-fprofile-use -fprofile-partial-training \
+	-Wno-missing-profile $(pgo_dumpbase))
+CFLAGS_host-pgo     = $(CFLAGS_host) $(pgo_use) $(pgo_lto)
 $(foreach c,$(PGO_CONFIGS),$(eval LD_$(c) := $(LD_host))$(eval OBJCOPY_$(c) := $(OBJCOPY_host)))
 
 PGO_PROFILE := $(BUILD)/host-pgo/profile.stamp
