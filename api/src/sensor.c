@@ -65,6 +65,16 @@ static sensor_type_t sensor_type[TNUM_SENSOR_PORT];
  * whole bound again; a sensor that starts its handshake is waited for anew.
  */
 static bool silent[TNUM_SENSOR_PORT];
+/*
+ * A mode switch in flight per port: the mode a read selected and is still waiting
+ * for, and when it selected it.  A read of another mode waits for that read's
+ * sample instead of switching back — two tasks reading one sensor in two modes
+ * would otherwise undo each other's switch until both time out.  A switch older
+ * than MODE_TIMEOUT_MS is abandoned (its reader gave up) and may be overridden.
+ */
+#define NO_MODE  (-1)
+static int switching_mode[TNUM_SENSOR_PORT];
+static SYSTIM switching_since[TNUM_SENSOR_PORT];
 static const struct lms_uart_shm *uart_shm;
 static const struct lms_analog *analog_shm;
 
@@ -106,6 +116,8 @@ void api_sensor_boot(void)
 {
 	memset(sensor_type, 0, sizeof(sensor_type));
 	memset(silent, 0, sizeof(silent));
+	for (unsigned i = 0; i < TNUM_SENSOR_PORT; i++)
+		switching_mode[i] = NO_MODE;
 	uart_shm = NULL;
 	analog_shm = NULL;
 	api_iic_boot();
@@ -188,6 +200,13 @@ static bool hears_nothing(uint8_t state)
 	return state <= LMS_UART_STATE_SYNC || state == LMS_UART_STATE_TERMINAL;
 }
 
+/* Whether another read's switch to a mode other than mode is still awaiting its sample on port. */
+static bool other_switch_in_flight(sensor_port_t port, int mode, SYSTIM now)
+{
+	return switching_mode[port] != NO_MODE && switching_mode[port] != mode &&
+	       now - switching_since[port] < MODE_TIMEOUT_MS;
+}
+
 /*
  * The slow path of a UART read: brings the port to valid data of mode and
  * returns the sample, selecting the mode and accepting a new description as
@@ -237,16 +256,30 @@ static ER wait_sample(sensor_port_t port, int mode, const int8_t **p_sample)
 		}
 		if (state == LMS_UART_STATE_DATA &&
 		    *(const volatile int8_t *)&ext->mode != mode) {
-			ercd = uart_svc_set_mode((uint_t)port, (uint_t)mode);
-			if (ercd != E_OK)
-				return ercd;
+			if (other_switch_in_flight(port, mode, now)) {
+				/* our bound starts when that read has its sample */
+				since = now;
+				waited = 0;
+			} else {
+				switching_mode[port] = mode;
+				switching_since[port] = now;
+				ercd = uart_svc_set_mode((uint_t)port, (uint_t)mode);
+				if (ercd != E_OK) {
+					switching_mode[port] = NO_MODE;
+					return ercd;
+				}
+			}
 		}
 		sample = lms_uart_sample(uart_shm, (unsigned)port, mode);
 		if (sample != NULL) {
+			if (switching_mode[port] == mode)
+				switching_mode[port] = NO_MODE;
 			*p_sample = sample;
 			return E_OK;
 		}
 		if (waited >= limit) {
+			if (switching_mode[port] == mode)
+				switching_mode[port] = NO_MODE;
 			/* nothing heard for a whole handshake's bound: the port is silent */
 			if (!in_data && hears_nothing(state))
 				silent[port] = true;
