@@ -276,6 +276,19 @@ report(struct cfg_ctx *ctx, const char *file, int line, const char *what, const 
 	va_end(ap);
 }
 
+/* Prints "file:line: warning: what: message"; a warning is not counted as an error. */
+static void __attribute__((format(printf, 5, 6)))
+warn(struct cfg_ctx *ctx, const char *file, int line, const char *what, const char *fmt, ...)
+{
+	va_list ap;
+
+	va_start(ap, fmt);
+	fprintf(ctx->err, "%s:%d: warning: %s: ", file, line, what);
+	vfprintf(ctx->err, fmt, ap);
+	fputc('\n', ctx->err);
+	va_end(ap);
+}
+
 /* Reports an error at a token's file, line and column. */
 static void __attribute__((format(printf, 4, 5)))
 report_at(struct cfg_ctx *ctx, const struct tok *t, const char *what, const char *fmt, ...)
@@ -1042,8 +1055,17 @@ static void parse_api(struct cfg_ctx *ctx, enum api a)
 		}
 		for (int i = 0; i < ctx->nobjs; i++)
 			if (ctx->objs[i].api == a && strcmp(ctx->objs[i].id, s) == 0) {
-				report(ctx, name->file, name->line, what, "\"%s\" is already attached at %s:%d (E_OBJ)",
-				       s, ctx->objs[i].file, ctx->objs[i].line);
+				/* EV3RT's app build ignores the module names (its module.tf
+				 * checks only their domain) and a linker script's second
+				 * pattern for a file matches nothing: apps ship such lines. */
+				if (a == API_ATT_MOD)
+					warn(ctx, name->file, name->line, what,
+					     "\"%s\" is already attached at %s:%d; this one is ignored",
+					     s, ctx->objs[i].file, ctx->objs[i].line);
+				else
+					report(ctx, name->file, name->line, what,
+					       "\"%s\" is already attached at %s:%d (E_OBJ)",
+					       s, ctx->objs[i].file, ctx->objs[i].line);
 				free(s);
 				return;
 			}
@@ -1462,21 +1484,31 @@ const char *cfg_module_object(const struct cfg_ctx *ctx, int index)
 int cfg_bind_modules(struct cfg_ctx *ctx, const char *const *objects, int nobjects)
 {
 	int errors = ctx->nerrors;
+	int kept = 0, modules = 0;
 
 	for (int i = 0; i < ctx->nobjs; i++) {
 		struct obj *o = &ctx->objs[i];
 
-		if (o->api != API_ATT_MOD)
-			continue;
-		for (int k = 0; k < nobjects && o->path == NULL; k++) {
-			const char *slash = strrchr(objects[k], '/');
+		if (o->api == API_ATT_MOD) {
+			for (int k = 0; k < nobjects && o->path == NULL; k++) {
+				const char *slash = strrchr(objects[k], '/');
 
-			if (strcmp(slash != NULL ? slash + 1 : objects[k], o->id) == 0)
-				o->path = objects[k];
+				if (strcmp(slash != NULL ? slash + 1 : objects[k], o->id) == 0)
+					o->path = objects[k];
+			}
+			if (o->path == NULL) {
+				/* As on EV3RT, where a stale ATT_MOD's linker pattern
+				 * matches nothing: the module is dropped, the rest kept. */
+				warn(ctx, o->file, o->line, "ATT_MOD",
+				     "\"%s\" is not one of the app's objects; ignored", o->id);
+				free(o->id);
+				continue;
+			}
+			o->number = ++modules;
 		}
-		if (o->path == NULL)
-			report(ctx, o->file, o->line, "ATT_MOD", "\"%s\" is not one of the app's objects (E_NOEXS)", o->id);
+		ctx->objs[kept++] = *o;
 	}
+	ctx->nobjs = kept;
 	return ctx->nerrors - errors;
 }
 

@@ -46,6 +46,10 @@ EV3RT_APP_WARN ?= -Wall -Wno-unused-parameter
 # which work on the simulated SD card as newlib over FatFs does on the brick
 # (ev3sim/src/app_fs.c): the app itself is unchanged.
 EV3RT_APP_FS_SYMS := mk/ev3rt_app_fs.syms
+# The app's malloc family and C++ operators new and delete are renamed the
+# same way to the apps' heap in its domain (api/src/app_malloc.c), as an
+# EV3RT app's newlib allocates from the heap EV3RT gives its domain.
+EV3RT_APP_HEAP_SYMS := mk/ev3rt_app_heap.syms
 # The languages EV3RT's app build compiles in (public source:
 # ev3rt-git/ev3rt-hrp2-sdk, common/Makefile.img: gcc -std=gnu99, g++
 # -std=gnu++11).  A plain `inline` function gets an external definition
@@ -54,6 +58,11 @@ EV3RT_APP_FS_SYMS := mk/ev3rt_app_fs.syms
 # call would have no definition to link against.
 EV3RT_APP_CSTD   ?= -std=gnu99 -fgnu89-inline
 EV3RT_APP_CXXSTD ?= -std=gnu++11
+# An inline function's static (a singleton's getInstance()) and its guard are
+# weak symbols, as on EV3RT's bare-metal toolchain, not GNU unique ones: the
+# relink of each ATT_MOD object below drops section groups, and two modules
+# with the same unique symbol would then clash instead of sharing one.
+EV3RT_APP_CXXSYMS ?= -fno-gnu-unique
 # The app's own computation costs virtual CPU time: every basic block calls
 # the host kernel's __sanitizer_cov_trace_pc (rtos_host.h, CPU time).
 EV3RT_APP_CPU    ?= -fsanitize-coverage=trace-pc
@@ -61,7 +70,7 @@ EV3RT_APP_CPU    ?= -fsanitize-coverage=trace-pc
 # The app compile flags above are a key of each configuration's
 # ($(BUILD)/CONFIG/ev3rt/app.key) that every app object depends on, made once.
 ev3rt_app_key = $(if $(EV3RT_APP_KEY_$(1)),,$(eval EV3RT_APP_KEY_$(1) := $(BUILD)/$(1)/ev3rt/app.key)$(eval \
-	$(call key_file_rule,$(BUILD)/$(1)/ev3rt/app.key,$$(EV3RT_APP_CSTD) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CPU) $$(EV3RT_APP_WARN))))
+	$(call key_file_rule,$(BUILD)/$(1)/ev3rt/app.key,$$(EV3RT_APP_CSTD) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CXXSYMS) $$(EV3RT_APP_CPU) $$(EV3RT_APP_WARN))))
 
 define ev3rt_app
 $(call ev3rt_app_key,$(2))
@@ -95,7 +104,7 @@ $(BUILD)/$(2)/ev3rt/$(1)/obj/%.o: %.cpp $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.
 		$(BUILD)/$(2)/ev3rt/app.key
 	@mkdir -p $$(@D)
 	$$(quiet) CXX $(2) $$<
-	$(Q)$$(CXX_$(2)) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CPU) $$(EV3RT_PROFILE_$(1)_$(2)) $$(EV3RT_INC_$(1)_$(2)) \
+	$(Q)$$(CXX_$(2)) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CXXSYMS) $$(EV3RT_APP_CPU) $$(EV3RT_PROFILE_$(1)_$(2)) $$(EV3RT_INC_$(1)_$(2)) \
 		$$(if $$(EV3RT_OMIT_WALL_$(1)_$(2)),,$$(EV3RT_APP_WARN)) $$(CFLAGS_$(2)) $(KERNEL_DEFS) $$(EV3RT_APPFLAGS_$(1)_$(2)) \
 		-MMD -MP -c $$< -o $$@
 
@@ -120,7 +129,7 @@ $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o: $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c
 # the host C library's start-up file.  (The recipe is a prerequisite: an object linked by an older one would construct
 # its globals before boot.)
 $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o \
-		$$(EV3RT_DOMLIBS_$(1)_$(2)) $(EV3RT_APP_FS_SYMS) mk/ev3rt_app.mk
+		$$(EV3RT_DOMLIBS_$(1)_$(2)) $(EV3RT_APP_FS_SYMS) $(EV3RT_APP_HEAP_SYMS) mk/ev3rt_app.mk
 	$$(quiet) LD $(2) $$@
 	$(Q)set -e; objs=; \
 	for o in $$(EV3RT_OBJS_$(1)_$(2)); do \
@@ -142,7 +151,8 @@ $(BUILD)/$(2)/ev3rt/$(1)/$(1).o: $$(EV3RT_OBJS_$(1)_$(2)) $(BUILD)/$(2)/ev3rt/$(
 	$$(OBJCOPY_$(2)) --rename-section .init_array=ev3rt_app_init_array $$@.app.o; \
 	$$(CC_$(2)) -r -nostdlib -o $$@ $$@.app.o $(BUILD)/$(2)/ev3rt/$(1)/kernel_cfg.o; \
 	$$(OBJCOPY_$(2)) --redefine-sym main=ev3rt_app_main --redefine-sym __cxa_atexit=ev3rt_app_cxa_atexit \
-		--localize-symbol=__dso_handle --redefine-syms=$(EV3RT_APP_FS_SYMS) $$@
+		--localize-symbol=__dso_handle --redefine-syms=$(EV3RT_APP_FS_SYMS) \
+		--redefine-syms=$(EV3RT_APP_HEAP_SYMS) $$@
 
 ifneq ($(strip $(5)),)
 EV3RT_PLATFORM_$(1)_$(2) ?= $(BUILD)/$(2)/libev3lx.a

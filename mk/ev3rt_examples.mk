@@ -93,8 +93,8 @@ $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_
 # those the app's headers declare and the runner's entry (ev3sim_run_main),
 # so an app's own global names (a tick_handler, a jiffies) never meet
 # ev3lx's, as on EV3RT, whose kernel and app are separate images.  The app's
-# file calls, renamed (mk/ev3rt_app.mk), are ev3sim's: those names stay too.
-EV3RT_APP_FS_CALLS := $(sort $(shell awk '{ print $$2 }' $(EV3RT_APP_FS_SYMS)))
+# file calls and its heap calls, renamed (mk/ev3rt_app.mk), are the platform's: those names stay too.
+EV3RT_APP_FS_CALLS := $(sort $(shell awk '{ print $$2 }' $(EV3RT_APP_FS_SYMS) $(EV3RT_APP_HEAP_SYMS)))
 # The configurations whose ev3sim runs apps: host, and host32 (the target's
 # 32-bit types; its ev3sim has no image writers: no 32-bit libpng or giflib
 # comes with gcc-multilib).
@@ -107,7 +107,7 @@ EV3RT_PLATFORM = $(BUILD)/$(1)/ev3rt/platform.o
 EV3RT_PLATFORM_OBJS = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(EV3SIM_WRITERS_$(1)))
 # $(1) = config
 define ev3rt_platform_rules
-$(call EV3RT_PLATFORM,$(1)): $(LIB_$(1)) $(call EV3RT_PLATFORM_OBJS,$(1)) mk/ev3rt/platform_syms.sh $(EV3RT_APP_FS_SYMS) \
+$(call EV3RT_PLATFORM,$(1)): $(LIB_$(1)) $(call EV3RT_PLATFORM_OBJS,$(1)) mk/ev3rt/platform_syms.sh $(EV3RT_APP_FS_SYMS) $(EV3RT_APP_HEAP_SYMS) \
 		$(wildcard api/*.h api/syssvc/*.h rtos_stub/include/*.h rtos_stub/include/syssvc/*.h)
 	@mkdir -p $$(@D)
 	$$(quiet) LD $(1) $$@
@@ -223,7 +223,8 @@ endif
 # (tests/ev3sim/apps/makeinc, an ET Robocon-style HRP3 app: INCLUDE("tecsgen.cfg")), an HRP3 app and an HRP2 app side by side
 # (examples/notify, examples/dtq), an ET Robocon-style C++ app
 # (tests/ev3sim/apps/etstyle: EV3RT 0.x's APPL_DIR under `ifdef app`, its own
-# __dso_handle, ten modules' writable data), an app with a main() and
+# __dso_handle, ten modules' writable data, a singleton shared by nine of them,
+# a duplicate and a stale ATT_MOD), an app with a main() and
 # global names ev3lx uses inside (tests/ev3sim/apps/namespace); then
 # tests/ev3sim/apps/misbehave crashes (status 4) and stalls (status 3), each
 # reported with its source line from the runner `ev3sim run` built.
@@ -258,7 +259,7 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	done
 	+$(Q)out=$$($(BUILD)/host/ev3sim run tests/ev3sim/apps/etstyle --seconds 1) || \
 		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/etstyle exited $$?"; exit 1; }; \
-	printf '%s\n' "$$out" | grep -q "NOTICE: etstyle: 9 units stepped, sum 459" && \
+	printf '%s\n' "$$out" | grep -q "NOTICE: etstyle: 9 units stepped, sum 459, 9 registered" && \
 	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=etstyle .* warnings=0 errors=0 bugs=0 " || \
 		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
 	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"

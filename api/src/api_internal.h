@@ -84,6 +84,8 @@ extern uint8_t api_app_heap[EV3LX_APP_HEAP_SIZE];
 void *api_app_heap_alloc(SIZE size);
 /* Frees what api_app_heap_alloc gave; E_PAR for anything else or a second free. */
 ER api_app_heap_free(void *p);
+/* The bytes usable at p, a block api_app_heap_alloc gave (at least what was asked). */
+SIZE api_app_heap_usable_size(const void *p);
 
 /* The frame of the LCD calls (lcd.c), in the format of lcd_draw.h: 7680 bytes. */
 extern uint8_t api_lcd_frame[60 * 128];

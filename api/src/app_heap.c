@@ -99,3 +99,10 @@ ER api_app_heap_free(void *p)
 	ena_dsp();
 	return E_OK;
 }
+
+SIZE api_app_heap_usable_size(const void *p)
+{
+	const struct block *b = (const struct block *)(const void *)((const uint8_t *)p - HEADER);
+
+	return b->size - HEADER;
+}

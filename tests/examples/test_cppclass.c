@@ -21,7 +21,7 @@ int main(void)
 	ok(ex_logged("cppclass: average of the last 4 of 10..80 is 65, the library's C call says 65") != NULL,
 	   "the library's C++ class and C function give 65");
 	ok(ex_logged("cppclass: done, the LCD says so (0)") != NULL,
-	   "the task ran to its end and drew from a static buffer of its C++ code (E_OK)");
+	   "the task ran to its end and drew from a line it allocated with new (E_OK)");
 	is_int(r.warnings + r.errors + r.bugs, 0, "no warnings, errors or bugs");
 	return tap_done();
 }

@@ -26,9 +26,16 @@ public:
 	/* Stops the motor (brake or float, as set). */
 	~Motor(void);
 
-	/* Stops the motor at once (braking, whatever the mode) and makes its
-	 * current position the count 0. */
-	void reset(void);
+	/* Stops the motor at once (braking, whatever the mode, so that it is
+	 * still when its counter is cleared) and makes its current position
+	 * the count 0.  Inline, as in EV3RT's header: apps that ship a copy of
+	 * that header must not meet a second definition in the library. */
+	void reset(void)
+	{
+		ev3_motor_stop(mPort, true);
+		ev3_motor_reset_counts(mPort);
+		mOffset = 0;
+	}
 
 	/* Degrees turned since the count's zero (reset(), setCount()). */
 	int32_t getCount(void) const { return ev3_motor_get_counts(mPort) - mOffset; }
@@ -44,8 +51,9 @@ public:
 	/* Sets the brake mode used by the next setPWM(0) and stop(). */
 	void setBrake(bool brake);
 
-	/* Stops the motor, braking or coasting as the brake mode says. */
-	void stop(void);
+	/* Stops the motor, braking or coasting as the brake mode says (inline,
+	 * as in EV3RT's header). */
+	void stop(void) { (void)ev3_motor_stop(mPort, mBrake); }
 
 protected:
 	/* The port as EV3RT's C API numbers it. */
@@ -54,7 +62,7 @@ protected:
 	/* The brake mode: true brakes, false floats. */
 	bool getBrake(void) const { return mBrake; }
 
-	/* The PWM last set (0 after stop() and reset()). */
+	/* The PWM last set by setPWM() (stop() and reset() keep it, as EV3RT's do). */
 	int getPWM(void) const { return mPWM; }
 
 private:

@@ -19,16 +19,6 @@ Motor::~Motor(void)
 	stop();
 }
 
-/* Brakes even in float mode, so that the motor is still when its counter
- * is cleared and the new zero is where it stands. */
-void Motor::reset(void)
-{
-	mPWM = 0;
-	ev3_motor_stop(mPort, true);
-	ev3_motor_reset_counts(mPort);
-	mOffset = 0;
-}
-
 /* Clamps, keeps the value for getPWM(), and stops on 0 in brake mode
  * (setting power 0 would let the motor coast). */
 void Motor::setPWM(int pwm)
@@ -48,13 +38,6 @@ void Motor::setPWM(int pwm)
 void Motor::setBrake(bool brake)
 {
 	mBrake = brake;
-}
-
-/* The PWM is 0 afterwards, for getPWM(). */
-void Motor::stop(void)
-{
-	mPWM = 0;
-	ev3_motor_stop(mPort, mBrake);
 }
 
 } /* namespace ev3api */

@@ -4,9 +4,22 @@
  */
 #pragma once
 
+/* Every unit registers with one registry, reached through an inline
+ * function's static, as ET Robocon apps' singletons are: each unit's
+ * module has its own copy of that static, and the link keeps one. */
+class Registry {
+public:
+	static Registry &instance()
+	{
+		static Registry registry;
+		return registry;
+	}
+	int units = 0;
+};
+
 class Unit {
 public:
-	explicit Unit(int start) : count(start) {}
+	explicit Unit(int start) : count(start) { Registry::instance().units++; }
 	/* One step: the count after it. */
 	int step() { return ++count; }
 private:
