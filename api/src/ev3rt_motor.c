@@ -82,11 +82,20 @@ ER ev3_motor_stop(motor_port_t port, bool_t brake)
 
 ER ev3_motor_rotate(motor_port_t port, int degrees, uint32_t speed_abs, bool_t blocking)
 {
+	int32_t as_signed = (int32_t)speed_abs;
 	int speed = (int)(speed_abs > POWER_MAX ? POWER_MAX : speed_abs);
 
-	if (speed_abs > POWER_MAX)
+	if (as_signed < 0 && as_signed >= -POWER_MAX) {
+		/* EV3RT multiplies speed_abs into the command's signed byte, so a
+		 * negative speed turns the other way there (ev3rt-git/ev3rt-hrp2-sdk,
+		 * common/ev3api/src/ev3api_motor.c): apps rely on it. */
+		speed = (int)as_signed;
+		syslog(LOG_WARNING, "%s(%d): speed_abs %ld is negative: turning the other way, as EV3RT does",
+		       __func__, (int)port, (long)as_signed);
+	} else if (speed_abs > POWER_MAX) {
 		syslog(LOG_WARNING, "%s(%d): speed %lu clamped to %d", __func__, (int)port,
 		       (unsigned long)speed_abs, speed);
+	}
 	return ev3lx_motor_rotate(port, degrees, speed, blocking != 0);
 }
 

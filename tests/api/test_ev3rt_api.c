@@ -159,6 +159,15 @@ static void motor_body(void)
 	in_range(model_angle(0) - a0, -185, -175, "turned back by 180 degrees");
 	in_range(ev3_motor_get_counts(EV3_PORT_A), -185, -175, "counts follow");
 	is_int(ev3_motor_rotate(EV3_PORT_A, 90, 0, false), E_PAR, "rotate at speed 0: E_PAR");
+	/* a negative speed passed as speed_abs (an unsigned parameter) turns the other way,
+	 * as EV3RT's signed byte of the command makes it */
+	a0 = model_angle(0);
+	is_int(ev3_motor_rotate(EV3_PORT_A, 90, (uint32_t)-40, true), E_OK, "rotate 90 at speed_abs -40, blocking");
+	in_range(model_angle(0) - a0, -95, -85, "turned back by 90 degrees");
+	ok(warned("ev3_motor_rotate(0): speed_abs -40 is negative"), "with a warning naming the call");
+	a0 = model_angle(0);
+	is_int(ev3_motor_rotate(EV3_PORT_A, -90, (uint32_t)-40, true), E_OK, "rotate -90 at speed_abs -40");
+	in_range(model_angle(0) - a0, 85, 95, "turned forwards by 90 degrees");
 
 	/* steer: turn_ratio 50 is LEGO's turn 100, one wheel stopped; positive turns right */
 	a0 = model_angle(0);
