@@ -63,6 +63,11 @@ $(foreach c,$(PGO_CONFIGS),$(eval $(call host_lib_rules,$(c))))
 $(foreach c,$(PGO_CONFIGS),$(eval $(call ev3sim_gyroboy_rules,$(c))))
 $(foreach c,$(PGO_CONFIGS),$(foreach p,$(PGO_PROGRAMS),$(eval $(call host_program_rules,$(p),$(c)))))
 
+# Which objects get the profile and -flto is decided per object ($@ above),
+# which the configuration's compile key (its flags as text) cannot see: an
+# edit here rebuilds the objects whose flags depend on that choice.
+$(EV3RT_OBJS_ev3sim_gyroboy_host-pgo) $(BUILD)/host-pgo/ev3rt/ev3sim_gyroboy/kernel_cfg.o: mk/pgo.mk
+
 # Every object of host-pgo is compiled with the profile, so after it.
 $(OBJS_host-pgo) $(foreach p,$(PGO_PROGRAMS),$(patsubst %.c,$(BUILD)/host-pgo/obj/%.o,$($(p)_SRCS))) \
 	$(EV3RT_OBJS_ev3sim_gyroboy_host-pgo) $(BUILD)/host-pgo/ev3rt/ev3sim_gyroboy/kernel_cfg.o: $(PGO_PROFILE)
