@@ -342,6 +342,16 @@ void cfg_set_profile(struct cfg_ctx *ctx, int profile)
 	ctx->profile = profile;
 }
 
+bool cfg_profile_from_source(struct cfg_ctx *ctx, const char *file, int line, const char *what)
+{
+	if (ctx->profile != CFG_PROFILE_AUTO || ctx->hrp2_mark.file != NULL || ctx->hrp3_mark.file != NULL)
+		return false;
+	ctx->hrp3_mark.file = intern(ctx, file, strlen(file));
+	ctx->hrp3_mark.line = line;
+	snprintf(ctx->hrp3_mark.what, sizeof(ctx->hrp3_mark.what), "%s", what);
+	return true;
+}
+
 int cfg_profile(const struct cfg_ctx *ctx)
 {
 	if (ctx->profile != CFG_PROFILE_AUTO)

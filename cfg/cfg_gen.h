@@ -47,6 +47,11 @@ void cfg_set_profile(struct cfg_ctx *ctx, int profile);
  * HRP3's form, else HRP2). */
 int cfg_profile(const struct cfg_ctx *ctx);
 
+/* With --kernel auto and no static API telling the profile, takes the
+ * app's source as evidence of HRP3: a wait of what (at file:line) written in
+ * microseconds.  True if that decided the profile. */
+bool cfg_profile_from_source(struct cfg_ctx *ctx, const char *file, int line, const char *what);
+
 /* Writes the header every source of the app is compiled with first (the
  * build's -include): it defines EV3LX_KERNEL_HRP3 for the HRP3 profile, so
  * that kernel.h gives HRP3's names, types and calls. */

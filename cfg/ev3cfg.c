@@ -315,10 +315,38 @@ static int write_outputs(const struct cfg_ctx *ctx, const char *outdir, const ch
 	return close_out(f, outdir, "modules.txt") != 0 ? 2 : 0;
 }
 
+/*
+ * --time-hint FILE:LINE:CALL — a wait the app's source writes in microseconds
+ * (the build found e.g. tslp_tsk(1000000) there: 1000 s in HRP2's
+ * milliseconds, 1 s in HRP3's microseconds).  With --kernel auto and an
+ * app.cfg that names no time event, it decides HRP3, and says so; 0, or 1
+ * if the hint is malformed (reported).
+ */
+static int apply_time_hint(struct cfg_ctx *ctx, const char *input, const char *hint)
+{
+	char file[4096], call[128];
+	int line = 0;
+	const char *colon = strchr(hint, ':');
+
+	if (colon == NULL || (size_t)(colon - hint) >= sizeof(file) ||
+	    sscanf(colon + 1, "%d:%127[^\n]", &line, call) != 2 || line <= 0) {
+		fprintf(stderr, "ev3cfg: --time-hint %s: expected FILE:LINE:CALL\n", hint);
+		return 1;
+	}
+	memcpy(file, hint, (size_t)(colon - hint));
+	file[colon - hint] = '\0';
+	if (cfg_profile_from_source(ctx, file, line, call))
+		fprintf(stderr, "%s:%d: note: %s waits in microseconds and %s names no time event: the app is "
+			"built for TOPPERS/HRP3 (EV3RT 1.x); --kernel hrp2 builds it for HRP2\n", file, line, call,
+			input);
+	return 0;
+}
+
 static int usage(void)
 {
 	fputs("usage: ev3cfg -o OUTDIR [-I dir]... [-D name[=value]]... [--cpp CMD] [--symbol NAME]\n"
-	      "              [--kernel auto|hrp2|hrp3] [--object path.o]... app.cfg\n", stderr);
+	      "              [--kernel auto|hrp2|hrp3] [--time-hint FILE:LINE:CALL] [--object path.o]... app.cfg\n",
+	      stderr);
 	return 2;
 }
 
@@ -328,6 +356,7 @@ int main(int argc, char **argv)
 	const char *outdir = NULL, *symbol = "ev3rt_app_cfg", *input = NULL;
 	struct cfg_ctx *ctx;
 	int errors, status, profile = CFG_PROFILE_AUTO;
+	const char *time_hint = NULL;
 
 	for (int i = 1; i < argc; i++) {
 		const char *a = argv[i];
@@ -337,7 +366,7 @@ int main(int argc, char **argv)
 			val = a + 2;
 		} else if (strcmp(a, "-I") == 0 || strcmp(a, "-D") == 0 || strcmp(a, "-o") == 0 ||
 			   strcmp(a, "--cpp") == 0 || strcmp(a, "--symbol") == 0 || strcmp(a, "--object") == 0 ||
-			   strcmp(a, "--kernel") == 0) {
+			   strcmp(a, "--kernel") == 0 || strcmp(a, "--time-hint") == 0) {
 			if (++i == argc)
 				return usage();
 			val = argv[i];
@@ -359,6 +388,8 @@ int main(int argc, char **argv)
 			symbol = val;
 		else if (strcmp(a, "--object") == 0 && tool.nobjects < MAX_ARGS)
 			tool.objects[tool.nobjects++] = val;
+		else if (strcmp(a, "--time-hint") == 0)
+			time_hint = val;
 		else if (strcmp(a, "--kernel") == 0 && strcmp(val, "auto") == 0)
 			profile = CFG_PROFILE_AUTO;
 		else if (strcmp(a, "--kernel") == 0 && strcmp(val, "hrp2") == 0)
@@ -381,6 +412,8 @@ int main(int argc, char **argv)
 	errors = process_file(ctx, &tool, input);
 	cfg_finish(ctx);
 	cfg_bind_modules(ctx, tool.objects, tool.nobjects);
+	if (time_hint != NULL)
+		errors += apply_time_hint(ctx, input, time_hint);
 	errors += cfg_errors(ctx);
 	if (errors > 0) {
 		fprintf(stderr, "ev3cfg: %s: %d error%s\n", input, errors, errors == 1 ? "" : "s");

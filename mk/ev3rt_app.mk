@@ -72,6 +72,18 @@ EV3RT_APP_CPU    ?= -fsanitize-coverage=trace-pc
 ev3rt_app_key = $(if $(EV3RT_APP_KEY_$(1)),,$(eval EV3RT_APP_KEY_$(1) := $(BUILD)/$(1)/ev3rt/app.key)$(eval \
 	$(call key_file_rule,$(BUILD)/$(1)/ev3rt/app.key,$$(EV3RT_APP_CSTD) $$(EV3RT_APP_CXXSTD) $$(EV3RT_APP_CXXSYMS) $$(EV3RT_APP_CPU) $$(EV3RT_APP_WARN))))
 
+# An app built with --kernel auto whose app.cfg names no time event (EV3RT
+# 1.x's samples and tutorials often have none) is told by its source: a
+# wait written in microseconds — a literal of 100000 or more in a call that
+# takes a timeout (100 s as HRP2's milliseconds, 0.1 s as HRP3's
+# microseconds) — is the hint ev3cfg takes (--time-hint), once per app.
+EV3RT_TIMED_CALLS := dly_tsk|tslp_tsk|twai_sem|twai_flg|tsnd_dtq|trcv_dtq|tsnd_pdq|trcv_pdq|tloc_mtx
+EV3RT_TIME_GREP := grep -HnoE '\b($(EV3RT_TIMED_CALLS))[[:space:]]*[(]([^;]*[^0-9_A-Za-z])?[1-9][0-9]{5,}'
+EV3RT_TIME_SED := sed -E 's/^([^:]*:[0-9]+:)([a-z_]+).*[^0-9]([1-9][0-9]{5,})$$/\1\2 with \3/'
+ev3rt_time_hint = $(if $(filter auto,$(or $(EV3RT_KERNEL_$(1)),auto)),$(if $(filter undefined,$(origin \
+	EV3RT_TIME_HINT_$(1))),$(eval EV3RT_TIME_HINT_$(1) := $$(shell $$(EV3RT_TIME_GREP) $(2) /dev/null 2>/dev/null \
+	| head -n 1 | $$(EV3RT_TIME_SED))))$(EV3RT_TIME_HINT_$(1)))
+
 define ev3rt_app
 $(call ev3rt_app_key,$(2))
 EV3RT_DIR_$(1)_$(2)  := $(BUILD)/$(2)/ev3rt/$(1)
@@ -79,7 +91,8 @@ EV3RT_OBJS_$(1)_$(2) := $$(patsubst %,$(BUILD)/$(2)/ev3rt/$(1)/obj/%.o,$$(basena
 EV3RT_LINK_$(1)_$(2) := $$(if $$(filter %.cpp,$(4)),$$(CXX_$(2)),$$(CC_$(2)))
 EV3RT_INC_$(1)_$(2)  := -I$(BUILD)/$(2)/ev3rt/$(1)/gen -I$(patsubst %/,%,$(dir $(3))) -Icfg $(call layer_inc,api)
 EV3RT_PROFILE_$(1)_$(2) := -include $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_profile.h
-$(eval $(call key_file_rule,$(BUILD)/$(2)/ev3rt/$(1)/kernel.key,$(or $(EV3RT_KERNEL_$(1)),auto)))
+EV3RT_HINT_$(1)_$(2) := $$(call ev3rt_time_hint,$(1),$$(filter %.c %.cpp,$(4)))
+$(eval $(call key_file_rule,$(BUILD)/$(2)/ev3rt/$(1)/kernel.key,$(or $(EV3RT_KERNEL_$(1)),auto) $$(EV3RT_HINT_$(1)_$(2))))
 
 $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg cfg/tecsgen.cfg \
 		$$(wildcard $(dir $(3))*.h $(dir $(3))*.cfg) $(BUILD)/$(2)/ev3rt/$(1)/kernel.key
@@ -87,6 +100,7 @@ $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.c: $(3) $$(EV3CFG) cfg/app_common.cfg cf
 	$$(quiet) CFG $(2) $(3)
 	$(Q)$$(EV3CFG) -o $$(@D) --cpp '$$(CC_$(2)) -E' $$(EV3RT_INC_$(1)_$(2)) $(KERNEL_DEFS) \
 		$(if $(EV3RT_SYMBOL_$(1)),--symbol $(EV3RT_SYMBOL_$(1))) --kernel $(or $(EV3RT_KERNEL_$(1)),auto) \
+		$$(if $$(EV3RT_HINT_$(1)_$(2)),--time-hint '$$(EV3RT_HINT_$(1)_$(2))') \
 		$$(addprefix --object ,$$(EV3RT_OBJS_$(1)_$(2))) $(3)
 
 $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_cfg.h $(BUILD)/$(2)/ev3rt/$(1)/gen/kernel_profile.h: \

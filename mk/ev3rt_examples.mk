@@ -221,7 +221,8 @@ endif
 # INCLUDES, mkfile_path) with its own ATT_MOD, one whose Makefile.inc sets
 # COPTS, CDEFS, APPL_CFLAGS, SRCDIRS, LDFLAGS, APPL_LIBS, LIBS and OMIT_*
 # (tests/ev3sim/apps/makeinc, an ET Robocon-style HRP3 app: INCLUDE("tecsgen.cfg")), an HRP3 app and an HRP2 app side by side
-# (examples/notify, examples/dtq), an ET Robocon-style C++ app
+# (examples/notify, examples/dtq), an HRP3 app told only by a wait in µs in
+# its source (tests/ev3sim/apps/usleep), an ET Robocon-style C++ app
 # (tests/ev3sim/apps/etstyle: EV3RT 0.x's APPL_DIR under `ifdef app`, its own
 # __dso_handle, ten modules' writable data, a singleton shared by nine of them,
 # a duplicate and a stale ATT_MOD), an app with a main() and
@@ -248,6 +249,12 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/makeinc exited $$?"; exit 1; }; \
 	printf '%s\n' "$$out" | grep -q "NOTICE: makeinc: gain 150, CDEFS and APPL_CFLAGS, not optimized, zlib [0-9.]*, sqrt 7, dly_tsk(250000) 250 ms" && \
 	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=makeinc .* warnings=0 errors=0 bugs=0 " || \
+		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
+	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
+	+$(Q)out=$$($(BUILD)/host/ev3sim run tests/ev3sim/apps/usleep --seconds 1 2>&1) || \
+		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/usleep exited $$?"; exit 1; }; \
+	printf '%s\n' "$$out" | grep -q "NOTICE: usleep: tslp_tsk(250000) took 250 ms" && \
+	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=usleep .* warnings=0 errors=0 bugs=0 " || \
 		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
 	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
 	+$(Q)for app in notify dtq; do \

@@ -106,12 +106,30 @@ static int profile_of(const char *text)
 	return profile;
 }
 
+/* The profile of text built with profile, given the source's hint of a wait in microseconds. */
+static int profile_with_source_hint(const char *text, int profile)
+{
+	struct cfg_ctx *ctx = cfg_new(stderr, include_nothing, NULL);
+	int result = -1;
+
+	cfg_set_profile(ctx, profile);
+	if (cfg_parse(ctx, text, "app.cfg") == 0) {
+		bool took = cfg_profile_from_source(ctx, "app.c", 12, "tslp_tsk with 1000000");
+
+		ok(took == (profile == CFG_PROFILE_AUTO && strstr(text, "CRE_CYC") == NULL),
+		   "the hint is taken only where nothing else decides (%s)", took ? "taken" : "not taken");
+		result = cfg_profile(ctx);
+	}
+	cfg_free(ctx);
+	return result;
+}
+
 int main(void)
 {
 	struct cfg_ctx *ctx;
 	char *h, *c;
 
-	tap_plan(79);
+	tap_plan(85);
 
 	/* A configuration as the preprocessor leaves it: line markers, header declarations. */
 	is_int(run("# 1 \"app.cfg\"\n"
@@ -292,6 +310,12 @@ int main(void)
 	       CFG_PROFILE_HRP3, "INCLUDE(\"tecsgen.cfg\") (TECS, of the third-generation kernels) makes it HRP3's");
 	is_int(profile_of("INCLUDE(\"app_common.cfg\");\nCRE_TSK(T, { 0U, 0, t, 8, 4096, NULL });\n"), CFG_PROFILE_HRP2,
 	       "tasks alone say nothing: HRP2's, unless the build says otherwise");
+	is_int(profile_with_source_hint("CRE_TSK(T, { 0U, 0, t, 8, 4096, NULL });\n", CFG_PROFILE_AUTO), CFG_PROFILE_HRP3,
+	       "a wait in microseconds in the source makes a configuration without time events HRP3's");
+	is_int(profile_with_source_hint("CRE_CYC(C, { TA_STA, 0, h, 10, 0 });\n", CFG_PROFILE_AUTO), CFG_PROFILE_HRP2,
+	       "the source's hint loses to an HRP2 handler form in app.cfg");
+	is_int(profile_with_source_hint("CRE_TSK(T, { 0U, 0, t, 8, 4096, NULL });\n", CFG_PROFILE_HRP2), CFG_PROFILE_HRP2,
+	       "and to --kernel hrp2");
 	expect_error("DOMAIN(TDOM_APP) {\nCRE_CYC(C, { TA_STA, { TNFY_HANDLER, 0, h }, 10, 0 });\n}\n",
 		     "app.cfg:2: error: CRE_CYC(C): TNFY_HANDLER is not permitted in a user domain (DOMAIN(TDOM_APP))",
 		     "TNFY_HANDLER in a user domain is HRP3's E_OACV");
