@@ -60,8 +60,13 @@ $(BUILD)/$(1)/tests/%.t: $(BUILD)/$(1)/obj/tests/%.o $$(SUPPORT_OBJS_$(1)) $$(LI
 .PHONY: tests-$(1) prove-$(1)
 tests-$(1): $$(TESTS_$(1))
 
+# prove -r runs every test program it finds: one whose source was renamed or
+# removed is deleted first, or its old binary would still run (and pass).
 prove-$(1): tests-$(1)
 	@echo "=== prove: $(1) ==="
+	$(Q)cd $(BUILD)/$(1) && printf '%s\n' $$(patsubst %.c,%.t,$$(TEST_SRCS)) | LC_ALL=C sort > .test-programs && \
+		find tests -name '*.t' | LC_ALL=C sort | LC_ALL=C comm -23 - .test-programs | while read -r stale; do \
+		echo "prove-$(1): $$$$stale: its source is gone, removed"; rm -f "$$$$stale"; done
 	@cd $(BUILD)/$(1) && prove -j$(PROVE_JOBS) --state=$$(call prove_state,.prove) --exec '$$(RUN_$(1))' -r $(PROVE_DIRS)
 
 -include $$(SUPPORT_OBJS_$(1):.o=.d) $$(patsubst %.c,$(BUILD)/$(1)/obj/%.d,$$(TEST_SRCS))
