@@ -48,7 +48,7 @@ void clk_disable(struct clk *clk)
 	if (IS_ERR_OR_NULL(clk))
 		return;
 	if (!clk->enables) {
-		WARN(1, "clk_disable(%s): not enabled\n", clk->con_id);
+		WARN(1, "clk_disable(%s): not enabled", clk->con_id);
 		return;
 	}
 	clk->enables--;
