@@ -578,8 +578,14 @@ static void pru_ctrl_written(void *ctx, const struct hs_access *a, uint32_t old,
 {
 	struct hs_pru_suart *s = ctx;
 
-	if (a->offset != PRU0_CTRL || (nv & CTRL_ENABLE))
+	if (a->offset != PRU0_CTRL)
 		return;
+	if (nv & CTRL_ENABLE) {
+		/* started with a request already pending: the firmware's core loop serves it */
+		if (!(old & CTRL_ENABLE) && evt_bit(s->raw, EVT_ARM_TO_PRU0))
+			serve_arm_request(s);
+		return;
+	}
 	for (unsigned ch = 0; ch < NCHANNELS; ch++) {     /* halted: nothing more moves */
 		hs_event_cancel(&s->tx[ch].ev);
 		hs_event_cancel(&s->rx[ch].timeout_ev);

@@ -4,7 +4,9 @@
  * as the ARM sees them.  Host only.
  *
  * Regions (AM1808 TRM, memory map): PRUSS at 0x01C30000 (PSC0 LPSC 13):
- * data RAM 0/1 (0x0000/0x2000, 512 B each used, 8 KiB decoded), the PRU
+ * data RAM 0/1 (0x0000/0x2000: the TRM gives 512 bytes each and reserves
+ * the rest of each 8 KiB; the model answers all of it as RAM, since TI's
+ * HAL clears data RAM 0 with word stores up to byte 514), the PRU
  * interrupt controller (0x4000), PRU0/PRU1 control (0x7000/0x7800),
  * instruction RAM 0/1 (0x8000/0xC000, 4 KiB each); McASP0 at 0x01D00000
  * (PSC1 LPSC 7), its control registers; the shared RAM at 0x80000000 (the
