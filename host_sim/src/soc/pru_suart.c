@@ -117,22 +117,26 @@ static uint8_t ram_get8(struct hs_region *r, uint32_t off)
 	return (uint8_t)(hs_reg_get(r, off & ~3U) >> (8U * (off & 3U)));
 }
 
+/* Stores a byte at offset of a RAM region, leaving the word's other bytes. */
 static void ram_set8(struct hs_region *r, uint32_t off, uint8_t v)
 {
 	hs_reg_update(r, off & ~3U, 0xFFU << (8U * (off & 3U)), (uint32_t)v << (8U * (off & 3U)));
 }
 
+/* Little-endian halfword at offset (any alignment: the firmware's fields are byte-addressed). */
 static uint16_t ram_get16(struct hs_region *r, uint32_t off)
 {
 	return (uint16_t)(ram_get8(r, off) | (ram_get8(r, off + 1U) << 8));
 }
 
+/* Stores a little-endian halfword at offset. */
 static void ram_set16(struct hs_region *r, uint32_t off, uint16_t v)
 {
 	ram_set8(r, off, (uint8_t)v);
 	ram_set8(r, off + 1U, (uint8_t)(v >> 8));
 }
 
+/* Little-endian word at offset. */
 static uint32_t ram_get32(struct hs_region *r, uint32_t off)
 {
 	return ram_get16(r, off) | ((uint32_t)ram_get16(r, off + 2U) << 16);
@@ -144,16 +148,19 @@ static uint16_t ch16(struct hs_pru_suart *s, unsigned ch, uint32_t reg)
 	return ram_get16(s->pruss, DRAM0 + 16U * ch + reg);
 }
 
+/* Stores a channel register of data RAM 0. */
 static void ch16_set(struct hs_pru_suart *s, unsigned ch, uint32_t reg, uint16_t v)
 {
 	ram_set16(s->pruss, DRAM0 + 16U * ch + reg, v);
 }
 
+/* A channel register byte (status, active bit, bytes counter). */
 static uint8_t ch8(struct hs_pru_suart *s, unsigned ch, uint32_t reg)
 {
 	return ram_get8(s->pruss, DRAM0 + 16U * ch + reg);
 }
 
+/* Stores a channel register byte. */
 static void ch8_set(struct hs_pru_suart *s, unsigned ch, uint32_t reg, uint8_t v)
 {
 	ram_set8(s->pruss, DRAM0 + 16U * ch + reg, v);
@@ -171,6 +178,7 @@ static bool sram_addr_ok(uint32_t addr, const char *what)
 
 /* ---- interrupt controller ---- */
 
+/* Whether event e is in the set (raw status or enables). */
 static bool evt_bit(const uint64_t *set, unsigned e)
 {
 	return (set[e / 64U] >> (e % 64U)) & 1U;
@@ -201,6 +209,7 @@ static void intc_update(struct hs_pru_suart *s)
 	}
 }
 
+/* Puts event e in the set or takes it out (an index past 63 is ignored, as the INTC ignores it). */
 static void evt_set(uint64_t *set, unsigned e, bool on)
 {
 	if (e >= NEVENTS)
@@ -222,6 +231,7 @@ static void pru_raise(struct hs_pru_suart *s, unsigned e)
 
 static void serve_arm_request(struct hs_pru_suart *s);
 
+/* SISR/SICR/EISR/EICR/HIEISR/HIDISR: the indexed set and clear registers; event 32 set wakes the firmware. */
 static void intc_index_written(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct hs_pru_suart *s = ctx;
@@ -266,6 +276,7 @@ static void intc_set_read(void *ctx, const struct hs_access *a, uint32_t *value)
 	*value = (uint32_t)(set[0] >> (32U * half));
 }
 
+/* SRSRn/ESRn set, SECRn/ECRn clear the 1 bits written. */
 static void intc_set_written(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct hs_pru_suart *s = ctx;
@@ -283,6 +294,7 @@ static void intc_set_written(void *ctx, const struct hs_access *a, uint32_t old,
 	intc_update(s);
 }
 
+/* GER, CMR, HMR, HIER changed: the host lines follow. */
 static void intc_map_written(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	intc_update(ctx);
@@ -363,6 +375,7 @@ static void tx_char_done(struct hs_pru_suart *s, unsigned ch)
 	}
 }
 
+/* Event: the character in flight on a TX channel (arg: its tx_state) has left the wire. */
 static void tx_next(void *arg)
 {
 	struct tx_state *t = arg;
@@ -421,6 +434,7 @@ static void rx_timeout_arm(struct hs_pru_suart *s, unsigned ch)
 	r->timeout_ev = hs_event_at(r->last_end + frame_ns * (tries + 1U), rx_timeout_due, r);
 }
 
+/* Event: the idle time-out of an RX channel (arg: its rx_state) may be due; the firmware's conditions decide. */
 static void rx_timeout_due(void *arg)
 {
 	struct hs_pru_suart *s = the_suart;
@@ -569,11 +583,13 @@ static void serve_arm_request(struct hs_pru_suart *s)
 
 /* ---- PRU control ---- */
 
+/* CONTROL.RUNSTATE reads 1 while the PRU is enabled (it never halts by itself here). */
 static void pru_ctrl_read(void *ctx, const struct hs_access *a, uint32_t *value)
 {
 	*value = (*value & ~CTRL_RUNSTATE) | ((*value & CTRL_ENABLE) ? CTRL_RUNSTATE : 0U);
 }
 
+/* PRU0 enabled: a pending request is served; disabled: its channels stop. */
 static void pru_ctrl_written(void *ctx, const struct hs_access *a, uint32_t old, uint32_t nv, uint32_t written)
 {
 	struct hs_pru_suart *s = ctx;
@@ -688,6 +704,7 @@ static const struct hs_reg sram_regs[] = {
 	{ .name = "SHARED_RAM_", .offset = 0, .kind = HS_RW, .widths = RAM_W, .count = HS_SHARED_RAM_MODELLED / 4U },
 };
 
+/* Registers the PRUSS, McASP0 and shared RAM regions: E_OK, E_NOMEM, or E_PAR if they cannot be placed. */
 static ER pru_suart_create(const struct hs_board_cfg *cfg, void **ctx)
 {
 	struct hs_pru_suart *s = calloc(1, sizeof(*s));
@@ -709,6 +726,7 @@ static ER pru_suart_create(const struct hs_board_cfg *cfg, void **ctx)
 	return E_OK;
 }
 
+/* Cancels the model's events and frees it. */
 static void pru_suart_destroy(void *ctx)
 {
 	struct hs_pru_suart *s = ctx;
