@@ -75,6 +75,11 @@ CC_host-san     := $(CCACHE) gcc
 CXX_host-san    := $(CCACHE) g++
 CFLAGS_host-san := -O1 -g $(DEBUG_PREFIX_MAP) -DEV3LX_HOST=1 -fsanitize=address,undefined \
 	-fno-omit-frame-pointer -fno-sanitize-recover=all
+# Linux code under UBSan as kbuild builds it for x86: CONFIG_UBSAN_ALIGNMENT
+# defaults to n where unaligned accesses are efficient (lib/Kconfig.ubsan:
+# default !HAVE_EFFICIENT_UNALIGNED_ACCESS), so a driver's deliberate
+# unaligned word store (TI's soft-UART HAL clearing PRU RAM) is not UB there.
+LINUX_SAN_host-san := -fno-sanitize=alignment
 LDFLAGS_host-san := -fsanitize=address,undefined
 RUN_host-san    :=
 
@@ -181,7 +186,8 @@ kernel_domain_flags = $(if $(filter $(addsuffix /%,$(KERNEL_DOMAIN_DIRS)),$(1)),
 # A configuration may rewrite its command (compile_adjust_<config>: the AM1808
 # against a real HRP2 tree takes the kernel's headers for rtos_stub's).
 compile_cmd = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(call src_flags,$(2)) \
-	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2)) $(call kernel_domain_flags,$(2))) $(CFLAGS_$(1)) $(KERNEL_DEFS)
+	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2)) $(call kernel_domain_flags,$(2))) $(CFLAGS_$(1)) \
+	$(if $(call is_linux_src,$(2)),$(LINUX_SAN_$(1))) $(KERNEL_DEFS)
 compile = $(if $(compile_adjust_$(1)),$(call compile_adjust_$(1),$(call compile_cmd,$(1),$(2))),$(call compile_cmd,$(1),$(2)))
 
 # Flags of configuration $(1)'s compiler: clang (the fuzzing build) has no
@@ -221,7 +227,7 @@ same_text = $(and $(findstring x$(strip $(1))x,x$(strip $(2))x),$(findstring x$(
 # test) — so a changed flag recompiles the objects that an old one made (the
 # compiler cache makes that cheap where nothing changed).
 define obj_rule
-$(call key_file_rule,$(2)/compile.key,$(CC_$(1)) $(CFLAGS_$(1)) $(KERNEL_DEFS) $(LINUX_CODEGEN))
+$(call key_file_rule,$(2)/compile.key,$(CC_$(1)) $(CFLAGS_$(1)) $(KERNEL_DEFS) $(LINUX_CODEGEN) $(LINUX_SAN_$(1)))
 $(2)/obj/%.o: %.c $(2)/compile.key
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(1) $$<

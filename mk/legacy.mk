@@ -34,7 +34,7 @@ $(BUILD)/$(1)/legacy/%.mod.o: tests/legacy/%_hack.c $(BUILD)/$(1)/compile.key mk
 	@mkdir -p $$(@D)
 	$$(quiet) MOD $(1) $$@
 	$(Q)$$(CC_$(1)) $$(call nostdinc_flags,$(1),$$<) -std=gnu11 $(LINUX_INC) $(LINUX_CODEGEN) -Itests/legacy $(KBUILD_WARN) \
-		$$(CFLAGS_$(1)) $(KERNEL_DEFS) -fvisibility=hidden -MMD -MP -MT $$@ -MF $$(@:.mod.o=.d) -c $$< -o $$(@:.mod.o=.o)
+		$$(CFLAGS_$(1)) $$(LINUX_SAN_$(1)) $(KERNEL_DEFS) -fvisibility=hidden -MMD -MP -MT $$@ -MF $$(@:.mod.o=.d) -c $$< -o $$(@:.mod.o=.o)
 	$(Q)bash cloc_report/record_driver_hashes.sh $$(@:.mod.o=.o)
 	$(Q)$$(call module_link,$(1),$$@,$$(@:.mod.o=.o))
 

@@ -3,7 +3,7 @@
  * simulated EV3: the EV3 boots with linux_compat, the boot loader's part is
  * done (power_on: PSC power, pin mux, as on the brick before Linux starts),
  * and then the body runs in a kernel-domain task, as a module's init would,
- * for at most a second of virtual time.
+ * for at most a second of virtual time (or the test's run_ms).
  */
 #ifndef EV3LX_TESTS_LEGACY_TEST_H
 #define EV3LX_TESTS_LEGACY_TEST_H
@@ -26,6 +26,7 @@ struct lt_test {
 	void (*body)(void);         /* the test body, in a kernel-domain task */
 	unsigned after_boot;        /* the tests left once booted, for the skip */
 	bool plain_pointers;        /* the module uses plain pointers: skipped where the board cannot trap them */
+	unsigned run_ms;            /* virtual time the body may take (0: 1000 ms) */
 };
 
 static const struct lt_test *lt_current;
@@ -67,7 +68,7 @@ static inline bool lt_run(const struct lt_test *t)
 	if (t->power_on != NULL)
 		t->power_on();
 	lt_started = true;
-	for (int i = 0; i < 100 && !lt_done; i++)
+	for (unsigned i = 0; i < (t->run_ms ? t->run_ms : 1000U) / 10U && !lt_done; i++)
 		hs_sim_run_for(10 * LT_MS);
 	hs_sim_shutdown();
 	return true;

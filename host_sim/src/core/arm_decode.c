@@ -82,6 +82,34 @@ static struct indexing indexed(uint32_t insn, uint32_t base, uint32_t offset)
 				  .write_back = !pre || w };
 }
 
+/*
+ * A width-byte load at addr.  Unaligned, it is what Linux's ARM kernel does
+ * for a kernel-mode access that faulted on alignment (arch/arm/mm/alignment.c,
+ * do_alignment: the access redone as byte accesses, lowest address first,
+ * little-endian), the environment the drivers run here were written for.
+ */
+static uint32_t bus_load(const struct hs_arm_bus *bus, uint32_t addr, unsigned width)
+{
+	uint32_t v = 0;
+
+	if (!(addr & (width - 1U)))
+		return bus->read(bus->ctx, addr, width);
+	for (unsigned i = 0; i < width; i++)
+		v |= (bus->read(bus->ctx, addr + i, 1U) & 0xFFU) << (8U * i);
+	return v;
+}
+
+/* A width-byte store at addr; unaligned, as Linux's alignment fixup (bus_load). */
+static void bus_store(const struct hs_arm_bus *bus, uint32_t addr, unsigned width, uint32_t v)
+{
+	if (!(addr & (width - 1U))) {
+		bus->write(bus->ctx, addr, width, v);
+		return;
+	}
+	for (unsigned i = 0; i < width; i++)
+		bus->write(bus->ctx, addr + i, 1U, (v >> (8U * i)) & 0xFFU);
+}
+
 /* Addressing mode 2: LDR, STR, LDRB, STRB (and their T forms). */
 static int single(uint32_t insn, uint32_t regs[16], uint32_t *cpsr, const struct hs_arm_bus *bus,
 		  bool *pc_loaded, char *why, size_t whylen)
@@ -97,10 +125,8 @@ static int single(uint32_t insn, uint32_t regs[16], uint32_t *cpsr, const struct
 		     reg_offset ? scaled_offset(insn, regs, *cpsr) : (insn & 0xFFFU));
 	if (ix.write_back && rn == HS_ARM_PC)
 		return refuse(why, whylen, "a load/store writing back the PC as its base", insn);
-	if (ix.addr & (width - 1U))
-		return refuse(why, whylen, "an unaligned word access (ARMv5 rotates it; no register is read so)", insn);
 	if (load) {
-		uint32_t v = bus->read(bus->ctx, ix.addr, width);
+		uint32_t v = bus_load(bus, ix.addr, width);
 
 		if (ix.write_back)
 			regs[rn] = ix.wb_value;
@@ -108,7 +134,7 @@ static int single(uint32_t insn, uint32_t regs[16], uint32_t *cpsr, const struct
 	} else {
 		uint32_t v = stored(regs, rd);
 
-		bus->write(bus->ctx, ix.addr, width, byte ? (v & 0xFFU) : v);
+		bus_store(bus, ix.addr, width, byte ? (v & 0xFFU) : v);
 		if (ix.write_back)
 			regs[rn] = ix.wb_value;
 	}
@@ -130,23 +156,21 @@ static int extra(uint32_t insn, uint32_t regs[16], uint32_t *cpsr, const struct 
 		return refuse(why, whylen, "a load/store writing back the PC as its base", insn);
 	if (dual && ((rd & 1U) || rd == 14U))
 		return refuse(why, whylen, "LDRD/STRD with an odd or R14 first register", insn);
-	if (ix.addr & (width - 1U))
-		return refuse(why, whylen, "an unaligned halfword or doubleword access", insn);
 	if (dual && sh == 2U) {                 /* LDRD */
-		uint32_t lo = bus->read(bus->ctx, ix.addr, 4U);
-		uint32_t hi = bus->read(bus->ctx, ix.addr + 4U, 4U);
+		uint32_t lo = bus_load(bus, ix.addr, 4U);
+		uint32_t hi = bus_load(bus, ix.addr + 4U, 4U);
 
 		if (ix.write_back)
 			regs[rn] = ix.wb_value;
 		regs[rd] = lo;
 		regs[rd + 1U] = hi;
 	} else if (dual) {                      /* STRD */
-		bus->write(bus->ctx, ix.addr, 4U, stored(regs, rd));
-		bus->write(bus->ctx, ix.addr + 4U, 4U, stored(regs, rd + 1U));
+		bus_store(bus, ix.addr, 4U, stored(regs, rd));
+		bus_store(bus, ix.addr + 4U, 4U, stored(regs, rd + 1U));
 		if (ix.write_back)
 			regs[rn] = ix.wb_value;
 	} else if (load) {                      /* LDRH, LDRSB, LDRSH */
-		uint32_t v = bus->read(bus->ctx, ix.addr, width);
+		uint32_t v = bus_load(bus, ix.addr, width);
 
 		if (sh == 2U)
 			v = (uint32_t)(int32_t)(int8_t)(uint8_t)v;
@@ -156,7 +180,7 @@ static int extra(uint32_t insn, uint32_t regs[16], uint32_t *cpsr, const struct 
 			regs[rn] = ix.wb_value;
 		load_register(regs, cpsr, rd, v, pc_loaded);
 	} else {                                /* STRH */
-		bus->write(bus->ctx, ix.addr, 2U, stored(regs, rd) & 0xFFFFU);
+		bus_store(bus, ix.addr, 2U, stored(regs, rd) & 0xFFFFU);
 		if (ix.write_back)
 			regs[rn] = ix.wb_value;
 	}

@@ -9,11 +9,13 @@
 #include "host_sim/devices/ev3_speaker.h"
 #include "host_sim/devices/pwm.h"
 #include "host_sim/devices/spi_adc.h"
+#include "host_sim/devices/pru_suart.h"
 
 const struct hs_device *const ev3_board_devices[] = {
 	&hs_ehrpwm0_device, &hs_ehrpwm1_device, &hs_ecap0_device, &hs_ecap1_device, &hs_spi0_device, &ev3_adc_device,
 	&hs_spi1_device, &ev3_lcd_device,
 	&ev3_uart1_device, &ev3_uart0_device, &ev3_suart_in3_device, &ev3_suart_in4_device,
+	&hs_pru_suart_device,
 	&ev3_ports_device, &ev3_ui_device, &ev3_power_device,
 	&ev3_speaker_device, NULL,
 };

@@ -20,6 +20,7 @@
 #include "host_sim/devices/pwm.h"
 #include "host_sim/devices/spi_adc.h"
 #include "host_sim/devices/uart16550.h"
+#include "host_sim/devices/pru_suart.h"
 #include "host_sim/devices/ev3_ui.h"
 #include "host_sim/devices/ev3_power.h"
 #include "nxt_iic_bus.h"
@@ -223,12 +224,16 @@ ER ev3_set_light(unsigned port, unsigned pct)
 
 /* ---- UART sensor links ---- */
 
+/* The sensor's TX wire reaches the port's UART and, on ports 3 and 4, the
+ * McASP pin the PRU soft UART receives on (whichever listens takes it). */
 static void deliver_to_uart(struct in_port *p, uint8_t byte, uint32_t baud)
 {
 	struct hs_uart *u = ev3_input_uart(p->index);
 
 	if (u)
 		hs_uart_rx_byte(u, byte, baud);
+	if (ev3_port_suart_pins[p->index].rx_ser)
+		hs_pru_suart_rx_byte(hs_pru_suart(), ev3_port_suart_pins[p->index].rx_ser, byte, baud);
 }
 
 /* Sensor -> UART, through the fault filters. */
@@ -261,6 +266,8 @@ static void link_line(void *ctx, bool high)
 	input_apply_pins(p);
 	if (u)
 		hs_uart_rx_line(u, high);
+	if (ev3_port_suart_pins[p->index].rx_ser)
+		hs_pru_suart_rx_line(hs_pru_suart(), ev3_port_suart_pins[p->index].rx_ser, high);
 }
 
 /* UART -> sensor: only through the port's TX buffer, enabled by driving its GPIO low. */
@@ -277,6 +284,14 @@ static void peer_tx_byte(void *ctx, uint8_t byte, uint32_t baud)
 		return;
 	}
 	uart_sensor_host_byte(p->sensor, byte, baud);
+}
+
+/* A byte the PRU soft UART sent on a McASP transmit pin: the port wired to it. */
+static void suart_tx_byte(void *ctx, unsigned ser, uint8_t byte, uint32_t baud)
+{
+	for (unsigned port = 0; port < EV3_INPUT_PORTS; port++)
+		if (ev3_port_suart_pins[port].rx_ser && ev3_port_suart_pins[port].tx_ser == ser)
+			peer_tx_byte(&brick.in[port], byte, baud);
 }
 
 /* The UART's break reaches the sensor's receiver. */
@@ -762,6 +777,7 @@ static ER ports_create(const struct hs_board_cfg *cfg, void **ctx)
 		 "d_uart.port3_base=%#x d_uart.port3_irq=%u d_uart.port4_base=%#x d_uart.port4_irq=%u",
 		 EV3_SUART_PORT3_BASE, EV3_SUART_PORT3_INTNO, EV3_SUART_PORT4_BASE, EV3_SUART_PORT4_INTNO);
 	rtos_host_set_boot_args(boot_args);
+	hs_pru_suart_set_peer(hs_pru_suart(), &(struct hs_pru_suart_peer){ suart_tx_byte, NULL });
 	brick.ready = true;
 	*ctx = &brick;
 	return E_OK;
@@ -781,6 +797,7 @@ static void ports_destroy(void *ctx)
 		fault_job_free(fault_jobs);
 	}
 	rtos_host_set_boot_args(NULL);
+	hs_pru_suart_set_peer(hs_pru_suart(), NULL);
 	brick.ready = false;
 }
 

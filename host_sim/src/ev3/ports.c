@@ -31,3 +31,8 @@ const struct hs_uart_cfg ev3_port_uart[EV3_INPUT_PORTS] = {
 	{ "SUART_IN3", EV3_SUART_PORT3_BASE, EV3_SUART_PORT3_INTNO, EV3_SUART_CLOCK_HZ, HS_NO_PSC },
 	{ "SUART_IN4", EV3_SUART_PORT4_BASE, EV3_SUART_PORT4_INTNO, EV3_SUART_CLOCK_HZ, HS_NO_PSC },
 };
+
+const struct ev3_suart_pins ev3_port_suart_pins[EV3_INPUT_PORTS] = {
+	[2] = { .rx_ser = 2, .tx_ser = 4 },
+	[3] = { .rx_ser = 1, .tx_ser = 3 },
+};

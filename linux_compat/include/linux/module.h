@@ -39,6 +39,7 @@
 #include <linux/moduleparam.h>
 #include <linux/kernel.h>
 #include <linux/errno.h>       /* as Linux's, through linux/err.h */
+#include <linux/stat.h>        /* as Linux's: S_IRUGO for module_param */
 
 enum module_state {
 	MODULE_STATE_UNFORMED,  /* linked, init not run yet */

@@ -43,11 +43,18 @@ struct platform_device {
 extern struct bus_type platform_bus_type;
 extern struct device platform_bus;
 
+/* A power-management transition (ev3lx never suspends: the hooks are only kept). */
+typedef struct pm_message {
+	int event;
+} pm_message_t;
+
 struct platform_driver {
 	int (*probe)(struct platform_device *);
 	int (*remove)(struct platform_device *);       /* 6.1: the result is ignored */
 	void (*remove_new)(struct platform_device *);  /* 6.3 */
 	void (*shutdown)(struct platform_device *);
+	int (*suspend)(struct platform_device *, pm_message_t state);  /* never called: no suspend */
+	int (*resume)(struct platform_device *);
 	struct device_driver driver;
 	const struct platform_device_id *id_table;
 	bool prevent_deferred_probe;

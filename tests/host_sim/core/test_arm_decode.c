@@ -319,8 +319,23 @@ int main(void)
 	check_refused(0xe8d10005U, 0x10U, "ldm r1, {r0, r2}^", "S bit");
 	check_refused(0xe5910000U, 0x30U, "an access in Thumb state", "Thumb");
 	check_refused(0xf5d1f000U, 0x10U, "pld [r1]", "unconditional");
-	check_refused(0xe5910001U, 0x10U, "ldr r0, [r1, #1] (unaligned word)", "unaligned");
-	check_refused(0xe1d100b1U, 0x10U, "ldrh r0, [r1, #1] (unaligned halfword)", "unaligned");
+	/* unaligned: as Linux's kernel alignment fixup, byte accesses lowest address first */
+	fill_memory();
+	start_regs(regs);
+	cpsr = 0x10U;
+	nlog = 0;
+	ok(hs_arm_emulate(0xe5910001U, regs, &cpsr, &bus, why, sizeof(why)) == 0 && nlog == 4 &&
+	   log_[0].addr == R1_START + 1U && log_[0].width == 1U && log_[3].addr == R1_START + 4U &&
+	   regs[0] == ((uint32_t)mem[0x41] | (uint32_t)mem[0x42] << 8 | (uint32_t)mem[0x43] << 16 |
+		       (uint32_t)mem[0x44] << 24),
+	   "ldr r0, [r1, #1] (unaligned word): four byte reads, lowest first, as Linux's alignment fixup");
+	fill_memory();
+	start_regs(regs);
+	nlog = 0;
+	ok(hs_arm_emulate(0xe1c100b1U, regs, &cpsr, &bus, why, sizeof(why)) == 0 && nlog == 2 &&
+	   log_[0].dir == 'w' && log_[0].addr == R1_START + 1U && log_[0].value == 0x44U &&
+	   log_[1].addr == R1_START + 2U && log_[1].value == 0x33U,
+	   "strh r0, [r1, #1] (unaligned halfword): two byte writes, lowest first");
 	check_refused(0xe1c150d0U, 0x10U, "ldrd r5, [r1] (odd first register)", "odd");
 	check_refused(0xe101009fU, 0x10U, "swp r0, pc, [r1]", "SWP with the PC");
 	check_refused(0xe49f0004U, 0x10U, "ldr r0, [pc], #4 (the PC written back)", "writing back the PC");

@@ -73,6 +73,15 @@ struct hs_uart *ev3_input_uart(unsigned port);
 #define EV3_SUART_PORT4_INTNO 3U            /* PRU EVTOUT0, as LEGO's port 4 */
 #define EV3_SUART_CLOCK_HZ    150000000U
 
+/* The McASP0 serializer pins of the PRU soft UART behind each input port
+ * (0: none): LEGO's omapl_suart_board.h gives soft UART 1 receive AXR1 and
+ * transmit AXR3, soft UART 2 AXR2 and AXR4, and its d_uart_mod.c drives
+ * port 3 through soft UART 2, port 4 through soft UART 1. */
+struct ev3_suart_pins {
+	uint8_t rx_ser, tx_ser;
+};
+extern const struct ev3_suart_pins ev3_port_suart_pins[EV3_INPUT_PORTS];
+
 #define EV3_UART0_INTNO       25U
 #define EV3_UART1_INTNO       53U
 

@@ -26,6 +26,9 @@
 #include <linux/module.h>
 #include <linux/interrupt.h>
 #include <linux/sched.h>
+#include <linux/platform_device.h>	/* da8xx.h includes it itself */
+#include <linux/io.h>			/* ioremap, memcpy_toio: da8xx.h -> mach/edma.h, mach/serial.h -> asm/io.h */
+#include <linux/string.h>
 
 extern void __iomem *da8xx_syscfg0_base;
 extern void __iomem *da8xx_syscfg1_base;
