@@ -5,8 +5,8 @@
 # Host only: nothing goes into AM1808_SRCS.
 HOST_SRCS     += $(sort $(wildcard ev3sim/src/*.c))
 HOST_PROGRAMS += ev3sim
-ev3sim_SRCS   := ev3sim/main.c ev3sim/lcd_png.c ev3sim/lcd_gif.c
-ev3sim_LDLIBS := -lpng -lgif
+ev3sim_SRCS   := ev3sim/main.c ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/world_file.c
+ev3sim_LDLIBS := -lpng -lgif -ljson-c
 # build/host32/ev3sim: the simulator with the target's 32-bit types, for
 # modules written for them (`volatile unsigned long *` registers); without
 # the image writers (--lcd, --lcd-video), as gcc-multilib brings no 32-bit

@@ -99,9 +99,9 @@ EV3RT_APP_FS_CALLS := $(sort $(shell awk '{ print $$2 }' $(EV3RT_APP_FS_SYMS)))
 # 32-bit types; its ev3sim has no image writers: no 32-bit libpng or giflib
 # comes with gcc-multilib).
 EV3SIM_CONFIGS := host host32
-EV3SIM_WRITERS_host := ev3sim/lcd_png.c ev3sim/lcd_gif.c
+EV3SIM_WRITERS_host := ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/world_file.c
 EV3SIM_WRITERS_host32 :=
-EV3SIM_LDLIBS_host := -lpng -lgif
+EV3SIM_LDLIBS_host := -lpng -lgif -ljson-c
 EV3SIM_LDLIBS_host32 :=
 EV3RT_PLATFORM = $(BUILD)/$(1)/ev3rt/platform.o
 EV3RT_PLATFORM_OBJS = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(EV3SIM_WRITERS_$(1)))
