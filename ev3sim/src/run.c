@@ -451,10 +451,14 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	    o->nfaults > EV3SIM_RUN_MAX_FAULTS || o->nactions > EV3SIM_RUN_MAX_ACTIONS ||
 	    o->npushes > EV3SIM_MAX_PUSHES || o->nplacements > EV3SIM_MAX_PLACEMENTS ||
 	    (unsigned)o->robot > EV3SIM_ROBOT_TRIBOT ||
-	    (o->world != NULL && (o->robot != EV3SIM_ROBOT_BARE || ev3sim_world_check(o->world) != NULL)) ||
+	    (o->world != NULL && o->robot != EV3SIM_ROBOT_BARE) ||
 	    (o->plot_path != NULL && o->world == NULL && o->robot != EV3SIM_ROBOT_TRIBOT) ||
 	    fabs(o->start_tilt_deg) >= 30.0 || !(o->gyro_noise_dps >= 0)) {
 		snprintf(err, errlen, "bad run options");
+		return E_PAR;
+	}
+	if (o->world != NULL && ev3sim_world_check(o->world) != NULL) {
+		snprintf(err, errlen, "world %s: %s", o->world->name, ev3sim_world_check(o->world));
 		return E_PAR;
 	}
 	for (unsigned p = 0; p < 4; p++)

@@ -173,18 +173,23 @@ void ev3sim_world_mat_rgb(const struct ev3sim_world_mat *m, double x, double y, 
 	}
 }
 
-/* EV3 colour codes (COL-COLOR: 1 black .. 7 brown) and surfaces of those colours. */
+/* EV3 colour codes (COL-COLOR: 2 blue .. 7 brown) and surfaces of those colours. */
 static const struct { uint8_t code, rgb[3]; } palette[] = {
-	{ 1, { 0, 0, 0 } }, { 2, { 0, 0, 255 } }, { 3, { 0, 160, 0 } }, { 4, { 255, 255, 0 } },
-	{ 5, { 255, 0, 0 } }, { 6, { 255, 255, 255 } }, { 7, { 128, 64, 0 } },
+	{ 2, { 0, 0, 255 } }, { 3, { 0, 160, 0 } }, { 4, { 255, 255, 0 } }, { 5, { 255, 0, 0 } },
+	{ 7, { 128, 64, 0 } },
 };
 
-/* The EV3 colour code nearest to an RGB surface. */
+/* The EV3 colour code of an RGB surface: a grey one is white (6) or black
+ * (1) by its lightness, as the sensor tells no greys apart; a coloured one
+ * the nearest of the others. */
 static uint8_t colour_code(const double rgb[3])
 {
+	double hi = fmax(rgb[0], fmax(rgb[1], rgb[2])), lo = fmin(rgb[0], fmin(rgb[1], rgb[2]));
 	double best = 1e30;
 	uint8_t code = 0;
 
+	if (hi - lo < 80.0)
+		return (rgb[0] + rgb[1] + rgb[2]) / 3.0 >= 100.0 ? 6 : 1;
 	for (unsigned i = 0; i < sizeof(palette) / sizeof(palette[0]); i++) {
 		double d = 0;
 

@@ -76,7 +76,7 @@ static const struct ev3sim_world maze_world = {
 		BOX(1.95, 0.25, 2.1, 0.4),
 		CAN(0.4, 1.35), CAN(1.2, 0.35), CAN(2.05, 1.2),
 	},
-	.nobstacles = 12,
+	.nobstacles = 11,
 	.robot = BASE_ROBOT(.mounts = { BUMPER(0), GYRO_YAW(1), COLOR_DOWN(2), US_AHEAD(3) }, .nmounts = 4),
 	.start_x = 0.35, .start_y = 0.35, .start_heading = 90.0 * DEG,
 	.has_goal = true, .goal_x = 2.1, .goal_y = 1.5, .goal_r = 0.2,

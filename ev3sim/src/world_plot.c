@@ -132,19 +132,19 @@ static void write_obstacles(FILE *f, const struct ev3sim_world *w)
 		const struct ev3sim_obstacle *o = &w->obstacles[i];
 
 		if (o->kind == EV3SIM_OBST_SEGMENT) {
-			fprintf(f, "%g %g\n%g %g\n", o->x0, o->y0, o->x1, o->y1);
+			fprintf(f, "%g,%g\n%g,%g\n", o->x0, o->y0, o->x1, o->y1);
 		} else if (o->kind == EV3SIM_OBST_BOX) {
-			fprintf(f, "%g %g\n%g %g\n%g %g\n%g %g\n%g %g\n", o->x0, o->y0, o->x1, o->y0, o->x1, o->y1,
+			fprintf(f, "%g,%g\n%g,%g\n%g,%g\n%g,%g\n%g,%g\n", o->x0, o->y0, o->x1, o->y0, o->x1, o->y1,
 				o->x0, o->y1, o->x0, o->y0);
 		} else {
 			for (int k = 0; k <= 32; k++)
-				fprintf(f, "%g %g\n", o->x0 + o->r * cos(k * PI / 16), o->y0 + o->r * sin(k * PI / 16));
+				fprintf(f, "%g,%g\n", o->x0 + o->r * cos(k * PI / 16), o->y0 + o->r * sin(k * PI / 16));
 		}
 		fprintf(f, "\n");
 	}
 	/* gnuplot refuses an empty file: one point far outside the view */
 	if (w->nobstacles == 0)
-		fprintf(f, "1e9 1e9\n");
+		fprintf(f, "1e9,1e9\n");
 }
 
 /* Closes f; false if any write to it failed. */
@@ -161,6 +161,39 @@ static FILE *temp_file(char *tmpl)
 	int fd = mkstemp(tmpl);
 
 	return fd < 0 ? NULL : fdopen(fd, "wb");
+}
+
+/* Signal i's value in row r. */
+static double signal_value(const struct row *r, unsigned i)
+{
+	switch (i) {
+	case 0: return r->heading;
+	case 5: return r->left;
+	case 6: return r->right;
+	case 7: return r->clearance_mm;
+	default: return r->in[i - 1];
+	}
+}
+
+/* Signal i's range over the series with a margin (gnuplot warns of an empty one). */
+static void signal_range(unsigned i, double *lo, double *hi)
+{
+	*lo = INFINITY;
+	*hi = -INFINITY;
+	for (size_t k = 0; k < series.n; k++) {
+		double v = signal_value(&series.rows[k], i);
+
+		if (isfinite(v)) {
+			*lo = fmin(*lo, v);
+			*hi = fmax(*hi, v);
+		}
+	}
+	if (!(*lo <= *hi))
+		*lo = *hi = 0;
+	double pad = (*hi - *lo) * 0.05 + (*hi == *lo ? 1.0 : 0.0);
+
+	*lo -= pad;
+	*hi += pad;
 }
 
 /* The gnuplot script: the mat with the path on top, then one panel per signal. */
@@ -190,7 +223,7 @@ static void script(FILE *gp, const char *png, const char *title, const char *mat
 	fprintf(gp,
 		"plot '%s' binary array=(%u,%u) dx=%g dy=%g origin=(%g,%g) format='%%uchar%%uchar%%uchar' "
 		"with rgbimage notitle, "
-		"'%s' using 1:2 datafile separator whitespace with lines lc rgb '#8b4513' lw 3 title 'walls', "
+		"'%s' using 1:2 with lines lc rgb '#8b4513' lw 3 title 'walls', "
 		"'%s' using 2:3 with lines lc rgb '#1060e0' lw 1.5 title 'path', "
 		"'%s' every ::0::0 using 2:3 with points pt 7 ps 1.5 lc rgb '#20a020' title 'start', "
 		"'%s' every ::%zu::%zu using 2:3 with points pt 7 ps 1.5 lc rgb '#e02020' title 'end'",
@@ -199,11 +232,16 @@ static void script(FILE *gp, const char *png, const char *title, const char *mat
 	if (w->has_goal)
 		fprintf(gp, ", '+' using (%g+%g*cos(2*pi*$0/64)):(%g+%g*sin(2*pi*$0/64)) every ::0::64 "
 			"with lines lc rgb '#20a020' dt 2 title 'goal'", w->goal_x, w->goal_r, w->goal_y, w->goal_r);
-	fprintf(gp, "\nset size noratio\nset autoscale\nset xlabel ''\n");
+	fprintf(gp, "\nset size noratio\nset autoscale\nset xrange [0:%g]\nset xlabel ''\n",
+		series.n ? series.rows[series.n - 1].t : 1.0);
 	for (unsigned i = 0; i < NSIGNALS; i++) {
+		double lo, hi;
+
 		if (!((bits >> i) & 1U))
 			continue;
 		k++;
+		signal_range(i, &lo, &hi);
+		fprintf(gp, "set yrange [%g:%g]\n", lo, hi);
 		fprintf(gp, "set origin 0,%g\nset size 1,%g\nset ylabel '%s'\n%s"
 			"plot '%s' using 1:%u with lines lw 1.5 title '%s'\n",
 			(double)(180 * (nsig - k)) / (700 + 180 * nsig), 180.0 / (700 + 180 * nsig),
