@@ -31,6 +31,7 @@
 void main_task(intptr_t exinf)
 {
 	int turns = 0, bumps = 0, dir = 1;
+	SYSTIM start, now;
 
 	ev3_motor_config(LEFT_MOTOR, LARGE_MOTOR);
 	ev3_motor_config(RIGHT_MOTOR, LARGE_MOTOR);
@@ -38,14 +39,14 @@ void main_task(intptr_t exinf)
 	ev3_sensor_config(SONAR, ULTRASONIC_SENSOR);
 	tslp_tsk(500);
 	syslog(LOG_NOTICE, "avoid: go, %d cm free ahead", ev3_ultrasonic_sensor_get_distance(SONAR));
-	for (int t = 0; t < RUN_MS; t += PERIOD_MS) {
+	get_tim(&start);
+	for (get_tim(&now); now - start < RUN_MS; get_tim(&now)) {
 		int cm = ev3_ultrasonic_sensor_get_distance(SONAR);
 
 		if (ev3_touch_sensor_is_pressed(BUMPER)) {
 			bumps++;
 			ev3_motor_steer(LEFT_MOTOR, RIGHT_MOTOR, -POWER, 0);
 			tslp_tsk(400);
-			t += 400;
 			cm = 0;
 		}
 		if (cm >= NEAR_CM) {
@@ -67,7 +68,6 @@ void main_task(intptr_t exinf)
 			spent += PERIOD_MS;
 		}
 		tslp_tsk(EXTRA_MS);
-		t += spent + EXTRA_MS;
 		syslog(LOG_NOTICE, "avoid: turn %d %s at %d cm, %d ms", turns, dir > 0 ? "right" : "left", cm, spent);
 		if (spent > 2000)
 			dir = -dir;
