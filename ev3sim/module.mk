@@ -21,3 +21,11 @@ ev3sim_LDLIBS_host32 :=
 # meets a test's own gyroboy.
 EV3SIM_GYROBOY_OBJ = $(BUILD)/$(1)/ev3rt/ev3sim_gyroboy/ev3sim_gyroboy.lib.o
 $(foreach c,$(HOST_CONFIGS),$(eval HOST_LIB_EXTRA_$(c) += $(call EV3SIM_GYROBOY_OBJ,$(c))))
+
+# The world file reader (world_file.c: json-c and libpng, the program's only)
+# is tested where the configuration has both libraries, the 64-bit hosts;
+# elsewhere its test finds no reader and skips.
+WORLD_FILE_TEST_CONFIGS := host host-san
+$(foreach c,$(WORLD_FILE_TEST_CONFIGS),\
+	$(eval TEST_LDLIBS_$(c)_ev3sim/test_world_file := $(BUILD)/$(c)/obj/ev3sim/world_file.o -ljson-c -lpng)\
+	$(eval $(BUILD)/$(c)/tests/ev3sim/test_world_file.t: $(BUILD)/$(c)/obj/ev3sim/world_file.o))
