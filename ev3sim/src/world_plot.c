@@ -196,6 +196,32 @@ static void signal_range(unsigned i, double *lo, double *hi)
 	*hi += pad;
 }
 
+/* Signal i's axis label: a port's with what its sensor measures. */
+static const char *port_label(const struct ev3sim_world *w, unsigned i)
+{
+	static char label[64];
+
+	if (i < 1 || i > 4)
+		return signals[i].label;
+	snprintf(label, sizeof(label), "port %u", i);
+	for (unsigned k = 0; k < w->robot.nmounts; k++) {
+		const struct ev3sim_world_mount *mt = &w->robot.mounts[k];
+		const char *what;
+
+		if (mt->port != i - 1)
+			continue;
+		switch (mt->device) {
+		case EV3SIM_IN_COLOR:      what = "reflect (%)"; break;
+		case EV3SIM_IN_ULTRASONIC: what = "distance (mm)"; break;
+		case EV3SIM_IN_IR:         what = "distance (mm)"; break;
+		case EV3SIM_IN_TOUCH:      what = "pressed"; break;
+		default:                   what = mt->pitch_axis ? "pitch (deg)" : "yaw (deg, cw)"; break;
+		}
+		snprintf(label, sizeof(label), "port %u %s", i, what);
+	}
+	return label;
+}
+
 /* The gnuplot script: the mat with the path on top, then one panel per signal. */
 static void script(FILE *gp, const char *png, const char *title, const char *mat, unsigned cols,
 		   unsigned rows, const char *obst, const char *data, unsigned bits)
@@ -245,7 +271,7 @@ static void script(FILE *gp, const char *png, const char *title, const char *mat
 		fprintf(gp, "set origin 0,%g\nset size 1,%g\nset ylabel '%s'\n%s"
 			"plot '%s' using 1:%u with lines lw 1.5 title '%s'\n",
 			(double)(180 * (nsig - k)) / (700 + 180 * nsig), 180.0 / (700 + 180 * nsig),
-			signals[i].label, k == nsig ? "set xlabel 'time (s)'\n" : "", data, signals[i].column,
+			port_label(w, i), k == nsig ? "set xlabel 'time (s)'\n" : "", data, signals[i].column,
 			signals[i].name);
 	}
 	fprintf(gp, "unset multiplot\n");

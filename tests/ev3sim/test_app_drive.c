@@ -6,12 +6,11 @@
  * (255 cm when there is none); the robot stops at the wall and its bumper is
  * pressed until it backs off; the gyro follows its spin (clockwise
  * positive), and a gyro drift fault takes it off; wheel slip shortens the
- * way the same wheel turns make.
+ * way the same wheel turns make.  The command line's --world, --plot and
+ * --plot-signals refuse what they cannot do, naming it.
  */
+#include "ev3sim_test.h"
 #include <math.h>
-#include <stdio.h>
-#include <string.h>
-#include "tap.h"
 #include "ev3sim/run.h"
 #include "ev3sim/world.h"
 
@@ -108,6 +107,49 @@ static bool drive(const struct ev3sim_world *w, const char *fault, struct ev3sim
 	return true;
 }
 
+static struct et_run cli;
+
+static int drive_main(int argc, char **argv)
+{
+	return ev3sim_run_main(argc, argv, "drive", &ev3rt_app_cfg);
+}
+
+/* Runs the command line with args; whether it exited with status and said text on stderr (or stdout). */
+static bool cli_says(const char *const *args, int status, const char *text)
+{
+	if (!et_run_main(&cli, args, drive_main, NULL))
+		return false;
+	if (cli.status != status || (strstr(cli.err, text) == NULL && strstr(cli.out, text) == NULL)) {
+		tap_diag("status %d, stderr: %s", cli.status, cli.err);
+		return false;
+	}
+	return true;
+}
+
+/* The command line's refusals, and a run in a built-in world. */
+static void command_line(void)
+{
+	static const char *const nowhere[] = { "--world", "nowhere", NULL };
+	static const char *const both[] = { "--robot", "tribot", "--world", "maze", NULL };
+	static const char *const plot[] = { "--plot", "x.png", NULL };
+	static const char *const signals[] = { "--world", "maze", "--plot-signals", "heading,speed", NULL };
+	static const char *const file[] = { "--world", "/nonexistent/w.json", NULL };
+	static const char *const arena[] = { "--world", "arena", "--seconds", "3", "--quiet", NULL };
+
+	ok(cli_says(nowhere, EV3SIM_EXIT_USAGE, "--world: 'nowhere' is neither a built-in world (line, arena, maze) nor a file"),
+	   "--world nowhere: not built in, and no file");
+	ok(cli_says(both, EV3SIM_EXIT_USAGE, "--world: the world gives the robot (not with --robot tribot)"),
+	   "--world with --robot tribot is refused");
+	ok(cli_says(plot, EV3SIM_EXIT_USAGE, "--plot: needs a world (--world, or --robot tribot)"),
+	   "--plot without a world is refused");
+	ok(cli_says(signals, EV3SIM_EXIT_USAGE, "--plot-signals: unknown signal 'speed'"), "an unknown signal is named");
+	ok(cli_says(file, EV3SIM_EXIT_USAGE, ev3sim_world_file_reader ? "/nonexistent/w.json: cannot open: No such file"
+				  : "this program has no world file reader"),
+	   "a world file that is not there is named (or refused where no reader is linked)");
+	ok(cli_says(arena, 0, "robot=world seconds=3 seed=1 world=arena x_m="),
+	   "a run in the arena says so in its summary");
+}
+
 int main(void)
 {
 	struct ev3sim_world w;
@@ -199,5 +241,6 @@ int main(void)
 	} else {
 		tap_skip(1, "no run");
 	}
+	command_line();
 	return tap_done();
 }
