@@ -30,6 +30,11 @@
  * (an estimate: LEGO gives no optics). */
 #define COLOR_REF_HEIGHT_M 0.008
 #define RAYS_PER_BEAM 7
+/* The ultrasonic and infrared sensors' distances are cast every 5 steps
+ * (5 ms, in which the robot moves a few millimetres at most): the ray
+ * casting is the step's dearest part, and the sensors themselves measure
+ * no faster (host_sim sends a sample every 10 ms or more). */
+#define RANGE_EVERY_STEPS 5U
 #define STEP_S (EV3SIM_WORLD_STEP_NS * 1e-9)
 
 static struct world {
@@ -234,11 +239,13 @@ static unsigned colour_scene(const struct ev3sim_world_mount *mt, double sx, dou
 			scene->rgb[i] = (uint16_t)lround((30.0 * cover + 420.0 * white) * att);
 		return reflect;
 	}
-	/* the mean colour over the spot: a 5 x 5 grid, the points inside the circle */
+	/* the mean colour over the spot: a 5 x 5 grid, the points inside the
+	 * circle (a plain mat is one colour: its centre) */
 	unsigned n = 0;
+	int reach = m->kind == EV3SIM_MAT_PLAIN ? 0 : 2;
 
-	for (int i = -2; i <= 2; i++)
-		for (int j = -2; j <= 2; j++) {
+	for (int i = -reach; i <= reach; i++)
+		for (int j = -reach; j <= reach; j++) {
 			uint8_t px[3];
 
 			if (i * i + j * j > 5)
@@ -273,25 +280,27 @@ static void to_mat(double x, double y, double h, double fx, double fy, double *m
  * would be inside one, at pose (x, y, h). */
 static double clearance_at(double x, double y, double h, bool *tip_inside)
 {
-	double best = 1e30;
+	double best = 1e30, tip[EV3SIM_WORLD_MAX_MOUNTS][2];
+	unsigned ntips = 0;
 
 	*tip_inside = false;
+	for (unsigned k = 0; k < wd.w.robot.nmounts; k++) {
+		const struct ev3sim_world_mount *mt = &wd.w.robot.mounts[k];
+
+		if (mt->device == EV3SIM_IN_TOUCH) {
+			to_mat(x, y, h, mt->x, mt->y, &tip[ntips][0], &tip[ntips][1]);
+			ntips++;
+		}
+	}
 	for (unsigned i = 0; i < wd.w.nobstacles; i++) {
 		const struct ev3sim_obstacle *o = &wd.w.obstacles[i];
 		double d = ev3sim_obstacle_distance(o, x, y) - wd.w.robot.body_radius;
 
 		if (d < best)
 			best = d;
-		for (unsigned k = 0; k < wd.w.robot.nmounts; k++) {
-			const struct ev3sim_world_mount *mt = &wd.w.robot.mounts[k];
-			double tx, ty;
-
-			if (mt->device != EV3SIM_IN_TOUCH)
-				continue;
-			to_mat(x, y, h, mt->x, mt->y, &tx, &ty);
-			if (ev3sim_obstacle_distance(o, tx, ty) < TOUCH_TIP_M)
+		for (unsigned k = 0; k < ntips; k++)
+			if (ev3sim_obstacle_distance(o, tip[k][0], tip[k][1]) < TOUCH_TIP_M)
 				*tip_inside = true;
-		}
 	}
 	return best;
 }
@@ -340,8 +349,9 @@ static double wheel_load(double dps, double coeff)
 	return full * (s > 1.0 ? 1.0 : s < -1.0 ? -1.0 : s);
 }
 
-/* Sets every mounted sensor's physical input from the pose; yaw_dps: the body's rate. */
-static void sense(double yaw_dps)
+/* Sets every mounted sensor's physical input from the pose; yaw_dps: the
+ * body's rate; ranges: cast the ultrasonic and infrared beams too. */
+static void sense(double yaw_dps, bool ranges)
 {
 	bool spot_set = false;
 
@@ -379,7 +389,11 @@ static void sense(double yaw_dps)
 			}
 			break;
 		case EV3SIM_IN_ULTRASONIC: {
-			double d = beam_distance(sx, sy, wd.heading + mt->direction, mt->beam, mt->height,
+			double d;
+
+			if (!ranges)
+				continue;
+			d = beam_distance(sx, sy, wd.heading + mt->direction, mt->beam, mt->height,
 						 EV3SIM_US_NOTHING_M);
 
 			d = d < EV3SIM_US_MIN_M ? EV3SIM_US_MIN_M : d;
@@ -388,9 +402,12 @@ static void sense(double yaw_dps)
 			break;
 		}
 		case EV3SIM_IN_IR: {
-			double d = beam_distance(sx, sy, wd.heading + mt->direction, mt->beam, mt->height,
-						 EV3SIM_IR_RANGE_M);
+			double d;
 
+			if (!ranges)
+				continue;
+			d = beam_distance(sx, sy, wd.heading + mt->direction, mt->beam, mt->height,
+					  EV3SIM_IR_RANGE_M);
 			scene.distance_mm = (uint32_t)lround(d * 1000.0);
 			wd.now.port_value[mt->port] = scene.distance_mm;
 			break;
@@ -443,8 +460,9 @@ static void trail_add(uint64_t t)
 	wd.now.ntrail = wd.ntrail;
 }
 
-/* The state's pose fields, clearance and goal, from the robot now. */
-static void observe_pose(uint64_t t)
+/* The state's pose fields, clearance and goal, from the robot now; clearance:
+ * the body's at this pose, or NAN when it is not known yet. */
+static void observe_pose(uint64_t t, double clearance)
 {
 	bool tip_inside;
 
@@ -453,7 +471,7 @@ static void observe_pose(uint64_t t)
 	wd.now.y = wd.y;
 	wd.now.heading_deg = wd.heading / DEG;
 	if (wd.w.nobstacles > 0) {
-		wd.now.clearance_m = clearance_at(wd.x, wd.y, wd.heading, &tip_inside);
+		wd.now.clearance_m = isnan(clearance) ? clearance_at(wd.x, wd.y, wd.heading, &tip_inside) : clearance;
 		if (wd.now.clearance_m < wd.now.min_clearance_m)
 			wd.now.min_clearance_m = wd.now.clearance_m;
 	}
@@ -468,8 +486,8 @@ static void world_step(void *arg)
 {
 	const struct ev3sim_world_robot *rb = &wd.w.robot;
 	uint64_t t = hs_now();
-	double d[2], ds, dpsi, nx, ny, nh, yaw_dps = 0.0;
-	bool placed, tip_inside = false;
+	double d[2], ds, dpsi, nx, ny, nh, yaw_dps = 0.0, clear = NAN;
+	bool placed, moved;
 
 	(void)arg;
 	wd.step_ev = 0;
@@ -497,14 +515,23 @@ static void world_step(void *arg)
 	nx = wd.x + ds * cos(wd.heading + dpsi / 2.0);
 	ny = wd.y + ds * sin(wd.heading + dpsi / 2.0);
 	nh = wd.heading + dpsi;
-	if (wd.w.nobstacles > 0 && (ds != 0 || dpsi != 0) &&
-	    (clearance_at(nx, ny, nh, &tip_inside) < 0 || tip_inside)) {
-		if (!wd.blocked)
-			wd.now.contacts++;
-		wd.blocked = true;
-	} else {
-		if (ds != 0 || dpsi != 0)
-			wd.blocked = false;
+	moved = ds != 0 || dpsi != 0;
+	clear = wd.now.clearance_m;     /* the pose's, while it stays */
+	if (wd.w.nobstacles > 0 && moved) {
+		bool tip_inside;
+		double c = clearance_at(nx, ny, nh, &tip_inside);
+
+		if (c < 0 || tip_inside) {
+			if (!wd.blocked)
+				wd.now.contacts++;
+			wd.blocked = true;
+			moved = false;
+		} else {
+			clear = c;
+		}
+	}
+	if (moved) {
+		wd.blocked = false;
 		wd.x = nx;
 		wd.y = ny;
 		wd.heading = nh;
@@ -513,8 +540,8 @@ static void world_step(void *arg)
 	}
 	wd.now.touching = wd.blocked;
 	placed = apply_placements(t);
-	observe_pose(t);
-	sense(yaw_dps);
+	observe_pose(t, placed ? NAN : clear);
+	sense(yaw_dps, placed || wd.steps % RANGE_EVERY_STEPS == 0);
 	if (++wd.steps % (EV3SIM_WORLD_TRAIL_NS / EV3SIM_WORLD_STEP_NS) == 0)
 		trail_add(t);
 	if (wd.run.on_step)
@@ -636,8 +663,8 @@ ER ev3sim_world_start(const struct ev3sim_world_run *run)
 	wd.heading = w->start_heading;
 	wd.now.min_clearance_m = 1e30;
 	wd.now.clearance_m = 1e30;
-	observe_pose(hs_now());
-	sense(0.0);
+	observe_pose(hs_now(), NAN);
+	sense(0.0, true);
 	trail_add(hs_now());
 	wd.running = wd.active = true;
 	wd.step_ev = hs_event_at(hs_now(), world_step, NULL);

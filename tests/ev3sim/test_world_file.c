@@ -60,7 +60,8 @@ static void chunk(FILE *f, const char *type, const uint8_t *data, uint32_t n)
 
 	be32(buf, n);
 	memcpy(buf + 4, type, 4);
-	memcpy(buf + 8, data, n);
+	if (n > 0)
+		memcpy(buf + 8, data, n);
 	fwrite(buf, 1, n + 8, f);
 	be32(buf, crc32_of(buf + 4, n + 4));
 	fwrite(buf, 1, 4, f);
