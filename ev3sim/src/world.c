@@ -661,6 +661,9 @@ ER ev3sim_world_start(const struct ev3sim_world_run *run)
 	wd.x = w->start_x;
 	wd.y = w->start_y;
 	wd.heading = w->start_heading;
+	for (unsigned k = 0; k < w->robot.nmounts; k++)
+		if (run->in[w->robot.mounts[k].port] == w->robot.mounts[k].device)
+			wd.now.port_device[w->robot.mounts[k].port] = w->robot.mounts[k].device;
 	wd.now.min_clearance_m = 1e30;
 	wd.now.clearance_m = 1e30;
 	observe_pose(hs_now(), NAN);

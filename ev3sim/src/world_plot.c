@@ -293,8 +293,9 @@ int ev3sim_world_plot(const char *png_path, unsigned bits, const char *title, ch
 	}
 	if (bits == 0) {
 		bits = EV3SIM_SIGNAL_HEADING;
-		for (unsigned k = 0; k < w->robot.nmounts; k++)
-			bits |= EV3SIM_SIGNAL_IN1 << w->robot.mounts[k].port;
+		for (unsigned p = 0; p < 4; p++)
+			if (ev3sim_world_now()->port_device[p] != EV3SIM_IN_NONE)
+				bits |= EV3SIM_SIGNAL_IN1 << p;
 	}
 	fm = temp_file(mat);
 	fo = fm ? temp_file(obst) : NULL;

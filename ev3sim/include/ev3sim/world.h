@@ -127,6 +127,7 @@ struct ev3sim_world_state {
 	uint64_t t_ns;
 	double x, y, heading_deg, pitch_deg;         /* axle centre, m; heading from +x */
 	double travel_m;                             /* distance the axle travelled */
+	enum ev3sim_input_device port_device[4];     /* the sensor the world drives on each port (or none) */
 	double port_value[4];                        /* what each port's sensor measures: reflect %,
 						      * distance mm, pressed 0/1, yaw or pitch deg (clockwise +) */
 	double spot_x, spot_y;                       /* the first colour sensor's spot */

@@ -32,7 +32,7 @@ void ev3sim_world_series_begin(void);
 void ev3sim_world_series_add(void);
 
 /* Draws the series over the world that ran (ev3sim_world_current) into the
- * PNG; signals 0: the heading and every port with a sensor of the robot's.
+ * PNG; signals 0: the heading and every port whose sensor the world drives.
  * 0, or -1 with a message in err. */
 int ev3sim_world_plot(const char *png_path, unsigned signals, const char *title, char *err, size_t errlen);
 
