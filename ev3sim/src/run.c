@@ -601,14 +601,16 @@ void ev3sim_run_summary(const struct ev3sim_run_opts *o, const struct ev3sim_run
 	char world[256] = "";
 
 	if (o->world != NULL) {
-		char goal[32] = "none";
+		char goal[32] = "none", clearance[32] = "none";
 
 		if (r->goal_reached)
 			snprintf(goal, sizeof(goal), "%.2f", r->goal_at_s);
+		if (r->min_clearance_mm >= 0)
+			snprintf(clearance, sizeof(clearance), "%.0f", r->min_clearance_mm);
 		snprintf(world, sizeof(world),
 			 "world=%s x_m=%.3f y_m=%.3f heading_deg=%.1f travel_m=%.3f contacts=%u "
-			 "min_clearance_mm=%.0f goal_at_s=%s ", o->world->name, r->x_m, r->y_m, r->heading_deg,
-			 r->travel_m, r->contacts, r->min_clearance_mm, goal);
+			 "min_clearance_mm=%s goal_at_s=%s ", o->world->name, r->x_m, r->y_m, r->heading_deg,
+			 r->travel_m, r->contacts, clearance, goal);
 	} else if (o->robot == EV3SIM_ROBOT_GYROBOY) {
 		char fell_at[32] = "none";
 

@@ -92,7 +92,7 @@ struct ev3sim_run_result {
 	/* tribot */
 	double progress_m, travel_m, max_line_error_mm, rms_line_error_mm, on_line_pct;
 	/* a world (travel_m too) */
-	double x_m, y_m, heading_deg, min_clearance_mm;
+	double x_m, y_m, heading_deg, min_clearance_mm;    /* min_clearance_mm < 0: no obstacles */
 	unsigned contacts;
 	bool goal_reached;
 	double goal_at_s;
