@@ -5,8 +5,8 @@
 # Host only: nothing goes into AM1808_SRCS.
 HOST_SRCS     += $(sort $(wildcard ev3sim/src/*.c))
 HOST_PROGRAMS += ev3sim
-ev3sim_SRCS   := ev3sim/main.c ev3sim/lcd_png.c ev3sim/lcd_gif.c
-ev3sim_LDLIBS := -lpng -lgif
+ev3sim_SRCS   := ev3sim/main.c ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/world_file.c
+ev3sim_LDLIBS := -lpng -lgif -ljson-c
 # build/host32/ev3sim: the simulator with the target's 32-bit types, for
 # modules written for them (`volatile unsigned long *` registers); without
 # the image writers (--lcd, --lcd-video), as gcc-multilib brings no 32-bit
@@ -21,3 +21,11 @@ ev3sim_LDLIBS_host32 :=
 # meets a test's own gyroboy.
 EV3SIM_GYROBOY_OBJ = $(BUILD)/$(1)/ev3rt/ev3sim_gyroboy/ev3sim_gyroboy.lib.o
 $(foreach c,$(HOST_CONFIGS),$(eval HOST_LIB_EXTRA_$(c) += $(call EV3SIM_GYROBOY_OBJ,$(c))))
+
+# The world file reader (world_file.c: json-c and libpng, the program's only)
+# is tested where the configuration has both libraries, the 64-bit hosts;
+# elsewhere its test finds no reader and skips.
+WORLD_FILE_TEST_CONFIGS := host host-san
+$(foreach c,$(WORLD_FILE_TEST_CONFIGS),\
+	$(eval TEST_LDLIBS_$(c)_ev3sim/test_world_file := $(BUILD)/$(c)/obj/ev3sim/world_file.o -ljson-c -lpng)\
+	$(eval $(BUILD)/$(c)/tests/ev3sim/test_world_file.t: $(BUILD)/$(c)/obj/ev3sim/world_file.o))

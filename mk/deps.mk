@@ -1,10 +1,11 @@
 # Tools ev3lx needs beyond a Debian 12 base with gcc and arm-none-eabi-gcc.
 # gcc-multilib and g++-multilib: the 32-bit host configuration (host32, gcc -m32).
+# libjson-c-dev: ev3sim run --world's world files (JSON).
 # `make deps` installs what is missing; `make`/`make test` call it when needed.
 
 DEPS_PACKAGES := g++ gcc-arm-linux-gnueabi g++-arm-linux-gnueabi libc6-dev-armel-cross qemu-user \
 	u-boot-tools cloc gnuplot-nox linux-headers-amd64 sparse gcc-arm-none-eabi \
-	libnewlib-arm-none-eabi perl cppcheck clang-tidy libpng-dev libgif-dev ccache \
+	libnewlib-arm-none-eabi perl cppcheck clang-tidy libpng-dev libgif-dev libjson-c-dev ccache \
 	gcc-multilib g++-multilib
 
 # tool -> package, checked by `deps-check`
@@ -18,6 +19,7 @@ deps_missing = $(strip $(foreach t,$(DEPS_TOOLS),$(if $(shell command -v $(first
 	$(if $(wildcard /usr/arm-linux-gnueabi/lib/libc.so.6),,libc6-dev-armel-cross) \
 	$(if $(wildcard /usr/include/png.h /usr/include/libpng/png.h),,libpng-dev) \
 	$(if $(wildcard /usr/include/gif_lib.h),,libgif-dev) \
+	$(if $(wildcard /usr/include/json-c/json.h),,libjson-c-dev) \
 	$(if $(wildcard /usr/lib32/crt1.o),,gcc-multilib) \
 	$(if $(wildcard /usr/lib/gcc/x86_64-linux-gnu/*/32/libstdc++.so),,g++-multilib))
 

@@ -99,9 +99,9 @@ EV3RT_APP_FS_CALLS := $(sort $(shell awk '{ print $$2 }' $(EV3RT_APP_FS_SYMS) $(
 # 32-bit types; its ev3sim has no image writers: no 32-bit libpng or giflib
 # comes with gcc-multilib).
 EV3SIM_CONFIGS := host host32
-EV3SIM_WRITERS_host := ev3sim/lcd_png.c ev3sim/lcd_gif.c
+EV3SIM_WRITERS_host := ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/world_file.c
 EV3SIM_WRITERS_host32 :=
-EV3SIM_LDLIBS_host := -lpng -lgif
+EV3SIM_LDLIBS_host := -lpng -lgif -ljson-c
 EV3SIM_LDLIBS_host32 :=
 EV3RT_PLATFORM = $(BUILD)/$(1)/ev3rt/platform.o
 EV3RT_PLATFORM_OBJS = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(EV3SIM_WRITERS_$(1)))
@@ -216,7 +216,8 @@ ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)
 endif
 
 # `make ev3sim-run-check` (in make test): `ev3sim run` builds an app directory
-# and runs it, ending with its summary line: examples/blink, an app whose
+# and runs it, ending with its summary line: examples/blink, examples/gyrosquare
+# in a world file (examples/worlds/course.json) and refused a bad one, an app whose
 # Makefile.inc adds a source from another directory (APPL_COBJS, APPL_DIRS,
 # INCLUDES, mkfile_path) with its own ATT_MOD, one whose Makefile.inc sets
 # COPTS, CDEFS, APPL_CFLAGS, SRCDIRS, LDFLAGS, APPL_LIBS, LIBS and OMIT_*
@@ -239,6 +240,15 @@ ev3sim-run-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 		echo "ev3sim-run-check: $$summary";; \
 	*) echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1;; \
 	esac
+	+$(Q)out=$$($(BUILD)/host/ev3sim run examples/gyrosquare --world examples/worlds/course.json --seconds 20 --quiet) || \
+		{ echo "ev3sim-run-check: FAILED: ev3sim run examples/gyrosquare --world examples/worlds/course.json exited $$?"; exit 1; }; \
+	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=gyrosquare robot=world seconds=20 seed=1 world=course .* contacts=0 .* warnings=0 errors=0 bugs=0 " || \
+		{ echo "ev3sim-run-check: FAILED: unexpected output:"; printf '%s\n' "$$out"; exit 1; }; \
+	echo "ev3sim-run-check: $$(printf '%s\n' "$$out" | tail -n 1)"
+	+$(Q)err=$$($(BUILD)/host/ev3sim run examples/gyrosquare --world tests/ev3sim/worlds/typo.json 2>&1 >/dev/null); status=$$?; \
+	[ $$status = 2 ] && printf '%s\n' "$$err" | grep -q "^ev3sim run: --world: tests/ev3sim/worlds/typo.json: robot.whee_radius_mm: unknown key" || \
+		{ echo "ev3sim-run-check: FAILED: a bad world file: status $$status: $$err"; exit 1; }; \
+	echo "ev3sim-run-check: a bad world file: status 2, $$(printf '%s\n' "$$err" | head -n 1)"
 	+$(Q)out=$$($(BUILD)/host/ev3sim run tests/ev3sim/apps/multisrc --outA large --seconds 2) || \
 		{ echo "ev3sim-run-check: FAILED: ev3sim run tests/ev3sim/apps/multisrc exited $$?"; exit 1; }; \
 	printf '%s\n' "$$out" | grep -q "NOTICE: multisrc: A turned [1-9][0-9]* degrees, 1 speed lookups" && \
@@ -293,13 +303,21 @@ TEST_SUITE_EXTRA += ev3sim-run-check
 
 # `make ev3sim-run-check-host32` (in make test): build/host32/ev3sim builds
 # an app for host32 (build/host32/ev3rt/, a 32-bit runner: ELF class 1) and
-# runs it; --lcd is refused before the run with its reason (no 32-bit libpng).
+# runs it; --lcd and a world file are refused before the run with their
+# reason (no 32-bit libpng or json-c), a built-in world runs.
 .PHONY: ev3sim-run-check-host32
 ev3sim-run-check-host32: $(BUILD)/host32/ev3sim $(LIB_host32) $(EV3CFG)
 	+$(Q)err=$$($(BUILD)/host32/ev3sim run examples/blink --lcd $(BUILD)/host32/blink.png 2>&1 >/dev/null); status=$$?; \
 	[ $$status = 2 ] && printf '%s\n' "$$err" | grep -q "no PNG writer (the 32-bit ev3sim links no libpng" || \
 		{ echo "ev3sim-run-check-host32: FAILED: --lcd: status $$status: $$err"; exit 1; }; \
 	echo "ev3sim-run-check-host32: --lcd refused: $$(printf '%s\n' "$$err" | head -n 1)"
+	+$(Q)err=$$($(BUILD)/host32/ev3sim run examples/gyrosquare --world examples/worlds/course.json 2>&1 >/dev/null); status=$$?; \
+	[ $$status = 2 ] && printf '%s\n' "$$err" | grep -q "no world file reader (the 32-bit ev3sim links no json-c or libpng" || \
+		{ echo "ev3sim-run-check-host32: FAILED: --world FILE: status $$status: $$err"; exit 1; }; \
+	echo "ev3sim-run-check-host32: --world FILE refused: $$(printf '%s\n' "$$err" | head -n 1)"
+	+$(Q)out=$$($(BUILD)/host32/ev3sim run examples/gyrosquare --world arena --seconds 20 --quiet) && \
+	printf '%s\n' "$$out" | tail -n 1 | grep -q "^app=gyrosquare robot=world seconds=20 seed=1 world=arena .* contacts=0 " || \
+		{ echo "ev3sim-run-check-host32: FAILED: --world arena:"; printf '%s\n' "$$out"; exit 1; }
 	+$(Q)out=$$($(BUILD)/host32/ev3sim run examples/blink --seconds 3 --click back:1500ms --quiet) || \
 		{ echo "ev3sim-run-check-host32: FAILED: build/host32/ev3sim run examples/blink exited $$?"; exit 1; }; \
 	summary=$$(printf '%s\n' "$$out" | tail -n 1); \

@@ -4,6 +4,8 @@
 #   HOST_SRCS      sources of libev3lx.a in every host configuration
 #   HOST_LIB_EXTRA_<config>  objects built otherwise that go into that library
 #   TEST_SUPPORT_SRCS  sources linked into every test (tests/lib/, with its headers)
+#   TEST_LDLIBS_<path>, TEST_LDLIBS_<config>_<path>  what a test (tests/<path>.c) links
+#                  besides, in every configuration or in one
 #   HOST_PROGRAMS  programs built in build/host/ (each NAME with NAME_SRCS)
 # Tests are every tests/**/test_*.c: one TAP program each, linked against
 # the library; build/<config>/tests/<path>/test_x.t mirrors the source tree.
@@ -55,7 +57,7 @@ $(BUILD)/$(1)/tests/%.t: $(BUILD)/$(1)/obj/tests/%.o $$(SUPPORT_OBJS_$(1)) $$(LI
 	@mkdir -p $$(@D)
 	$$(quiet) LD $(1) $$@
 	$(Q)$$(CC_$(1)) $$(CFLAGS_$(1)) $$(LDFLAGS_$(1)) -o $$@ $$< $$(SUPPORT_OBJS_$(1)) \
-		-Wl,--start-group $$(LIB_$(1)) -Wl,--end-group -lm $$(TEST_LDLIBS_$$*)
+		-Wl,--start-group $$(LIB_$(1)) -Wl,--end-group -lm $$(TEST_LDLIBS_$$*) $$(TEST_LDLIBS_$(1)_$$*)
 
 .PHONY: tests-$(1) prove-$(1)
 tests-$(1): $$(TESTS_$(1))

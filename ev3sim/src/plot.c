@@ -31,8 +31,7 @@ bool ev3sim_have_gnuplot(void)
 	return false;
 }
 
-/* Copies the file at from to the path to, every write checked; 0 or -1 (errno). */
-static int copy_file(const char *from, const char *to)
+int ev3sim_copy_file(const char *from, const char *to)
 {
 	char buf[8192];
 	FILE *in = fopen(from, "rb"), *out;
@@ -107,7 +106,7 @@ int ev3sim_plot(const char *csv_path, const char *title, const char *png_path, c
 		unlink(png);
 		return -1;
 	}
-	if (copy_file(png, png_path) != 0) {
+	if (ev3sim_copy_file(png, png_path) != 0) {
 		snprintf(err, errlen, "cannot write %s: %s", png_path, strerror(errno ? errno : EIO));
 		unlink(png);
 		return -1;

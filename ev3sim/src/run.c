@@ -15,6 +15,8 @@
 #include "ev3sim/balance_run.h"
 #include "ev3sim/run.h"
 #include "ev3sim/tribot.h"
+#include "ev3sim/world.h"
+#include "ev3sim/world_plot.h"
 #include "ev3sim/wav_out.h"
 
 ER (*ev3sim_lcd_png_writer)(const char *path);
@@ -123,6 +125,19 @@ void ev3sim_run_defaults(struct ev3sim_run_opts *o, enum ev3sim_robot_kind robot
 		break;
 	default:
 		break;
+	}
+}
+
+void ev3sim_run_defaults_world(struct ev3sim_run_opts *o, const struct ev3sim_world *w)
+{
+	ev3sim_run_defaults(o, EV3SIM_ROBOT_BARE);
+	o->world = w;
+	o->out[w->robot.left_port] = w->robot.motor;
+	o->out[w->robot.right_port] = w->robot.motor;
+	for (unsigned k = 0; k < w->robot.nmounts; k++) {
+		o->in[w->robot.mounts[k].port] = w->robot.mounts[k].device;
+		if (w->robot.mounts[k].device == EV3SIM_IN_GYRO)
+			o->gyro_noise_dps = UART_SENSOR_GYRO_NOISE_AT_REST_DPS;
 	}
 }
 
@@ -276,9 +291,14 @@ static void touch_event(void *arg)
 }
 
 /* The output ports of the robot's wheel motors (A = 0); false for a robot without wheels. */
-static bool wheel_ports(enum ev3sim_robot_kind robot, unsigned *left, unsigned *right)
+static bool wheel_ports(const struct ev3sim_run_opts *o, unsigned *left, unsigned *right)
 {
-	switch (robot) {
+	if (o->world != NULL) {
+		*left = o->world->robot.left_port;
+		*right = o->world->robot.right_port;
+		return true;
+	}
+	switch (o->robot) {
 	case EV3SIM_ROBOT_GYROBOY: *left = 0; *right = 3; return true;
 	case EV3SIM_ROBOT_TRIBOT:  *left = 1; *right = 2; return true;
 	default:                   return false;
@@ -291,7 +311,7 @@ static ER schedule(const struct ev3sim_run_opts *o, char *err, size_t errlen)
 	static const char press = 1;
 	unsigned left, right;
 
-	if (wheel_ports(o->robot, &left, &right) &&
+	if (wheel_ports(o, &left, &right) &&
 	    ev3sim_fault_check_wheels(o->faults, o->nfaults, left, right, err, errlen) != E_OK)
 		return E_PAR;
 	for (unsigned i = 0; i < o->nactions; i++) {
@@ -322,8 +342,20 @@ static ER start_world(const struct ev3sim_run_opts *o)
 {
 	unsigned left, right;
 
-	if (!wheel_ports(o->robot, &left, &right))
+	if (!wheel_ports(o, &left, &right))
 		return E_OK;
+	if (o->world != NULL) {
+		struct ev3sim_world_placement pl[EV3SIM_MAX_PLACEMENTS];
+		struct ev3sim_world_run wr = { .world = o->world, .placements = pl, .nplacements = o->nplacements };
+
+		for (unsigned i = 0; i < o->nplacements; i++) {
+			pl[i].t_ns = o->placements[i].t_ns;
+			pl[i].left_m = o->placements[i].left_mm / 1000.0;
+		}
+		for (unsigned p = 0; p < 4; p++)
+			wr.in[p] = o->in[p];
+		return ev3sim_world_start(&wr);
+	}
 	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
 		struct ev3sim_robot_cfg cfg = {
 			.left_port = left, .right_port = right, .gyro_port = 1, .release_ns = o->release_ns,
@@ -335,10 +367,11 @@ static ER start_world(const struct ev3sim_run_opts *o)
 	if (o->robot == EV3SIM_ROBOT_TRIBOT) {
 		struct ev3sim_tribot_cfg cfg = {
 			.left_port = left, .right_port = right,
-			.color_port = o->in[2] == EV3SIM_IN_COLOR ? 2 : -1,
 			.placements = o->placements, .nplacements = o->nplacements,
 		};
 
+		for (unsigned p = 0; p < 4; p++)
+			cfg.in[p] = o->in[p];
 		return ev3sim_tribot_start(&cfg);
 	}
 	return E_OK;
@@ -349,6 +382,18 @@ static void observe(const struct ev3sim_run_opts *o, struct ev3sim_run_result *r
 {
 	double t = rtos_host_now() * 1e-9;
 
+	if (o->plot_path)
+		ev3sim_world_series_add();
+	if (o->world != NULL) {
+		const struct ev3sim_world_state *s = ev3sim_world_now();
+
+		r->travel_m = s->travel_m;
+		if (o->csv)
+			fprintf(o->csv, "%.2f,%.4f,%.4f,%.2f,%.4f,%g,%g,%g,%g,%u\n", t, s->x, s->y, s->heading_deg,
+				s->travel_m, s->port_value[0], s->port_value[1], s->port_value[2], s->port_value[3],
+				s->contacts);
+		return;
+	}
 	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
 		const struct ev3sim_robot_sample *s = ev3sim_robot_now();
 
@@ -378,7 +423,9 @@ static void csv_header(const struct ev3sim_run_opts *o)
 {
 	if (o->csv == NULL)
 		return;
-	if (o->robot == EV3SIM_ROBOT_GYROBOY)
+	if (o->world != NULL)
+		fprintf(o->csv, "t_s,x_m,y_m,heading_deg,travel_m,in1,in2,in3,in4,contacts\n");
+	else if (o->robot == EV3SIM_ROBOT_GYROBOY)
 		fprintf(o->csv, "t_s,tilt_deg,tilt_rate_dps,wheel_deg,held\n");
 	else if (o->robot == EV3SIM_ROBOT_TRIBOT)
 		fprintf(o->csv, "t_s,x_m,y_m,heading_deg,line_error_mm,reflect_pct,progress_m\n");
@@ -404,8 +451,14 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	    o->nfaults > EV3SIM_RUN_MAX_FAULTS || o->nactions > EV3SIM_RUN_MAX_ACTIONS ||
 	    o->npushes > EV3SIM_MAX_PUSHES || o->nplacements > EV3SIM_MAX_PLACEMENTS ||
 	    (unsigned)o->robot > EV3SIM_ROBOT_TRIBOT ||
+	    (o->world != NULL && o->robot != EV3SIM_ROBOT_BARE) ||
+	    (o->plot_path != NULL && o->world == NULL && o->robot != EV3SIM_ROBOT_TRIBOT) ||
 	    fabs(o->start_tilt_deg) >= 30.0 || !(o->gyro_noise_dps >= 0)) {
 		snprintf(err, errlen, "bad run options");
+		return E_PAR;
+	}
+	if (o->world != NULL && ev3sim_world_check(o->world) != NULL) {
+		snprintf(err, errlen, "world %s: %s", o->world->name, ev3sim_world_check(o->world));
 		return E_PAR;
 	}
 	for (unsigned p = 0; p < 4; p++)
@@ -445,7 +498,9 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		ercd = schedule(o, err, errlen);
 	if (ercd == E_OK && (ercd = start_world(o)) != E_OK)
 		snprintf(err, errlen, "the %s's devices are not all plugged in (%d)",
-			 ev3sim_robot_name(o->robot), (int)ercd);
+			 o->world ? "world's robot" : ev3sim_robot_name(o->robot), (int)ercd);
+	if (ercd == E_OK && o->plot_path)
+		ev3sim_world_series_begin();
 	if (ercd != E_OK) {
 		(void)ev3sim_wav_end(audio_err, sizeof(audio_err));
 		(void)iact_tsk(POWER_OFF_TSKID);
@@ -470,7 +525,19 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	}
 	if (o->lcd_video_path && !lcd_failed && ev3sim_lcd_video->end(rtos_host_now()) != E_OK)
 		lcd_failed = true;
-	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
+	if (o->world != NULL) {
+		const struct ev3sim_world_state *s = ev3sim_world_now();
+
+		ev3sim_world_stop();
+		r->x_m = s->x;
+		r->y_m = s->y;
+		r->heading_deg = s->heading_deg;
+		r->travel_m = s->travel_m;
+		r->contacts = s->contacts;
+		r->min_clearance_mm = s->min_clearance_m < 1e29 ? s->min_clearance_m * 1000.0 : -1.0;
+		r->goal_reached = s->goal_reached;
+		r->goal_at_s = s->goal_at_s;
+	} else if (o->robot == EV3SIM_ROBOT_GYROBOY) {
 		uint64_t fell_ns;
 
 		r->fell = ev3sim_robot_fallen(&fell_ns);
@@ -519,6 +586,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		snprintf(err, errlen, "%s", audio_err);
 		return E_SYS;
 	}
+	if (o->plot_path && ev3sim_world_plot(o->plot_path, o->plot_signals, o->app_name, err, errlen) != 0)
+		return E_SYS;
 	if (png_failed || lcd_failed) {
 		snprintf(err, errlen, "cannot write %s", png_failed ? o->lcd_path : o->lcd_video_path);
 		return E_SYS;
@@ -531,7 +600,18 @@ void ev3sim_run_summary(const struct ev3sim_run_opts *o, const struct ev3sim_run
 {
 	char world[256] = "";
 
-	if (o->robot == EV3SIM_ROBOT_GYROBOY) {
+	if (o->world != NULL) {
+		char goal[32] = "none", clearance[32] = "none";
+
+		if (r->goal_reached)
+			snprintf(goal, sizeof(goal), "%.2f", r->goal_at_s);
+		if (r->min_clearance_mm >= 0)
+			snprintf(clearance, sizeof(clearance), "%.0f", r->min_clearance_mm);
+		snprintf(world, sizeof(world),
+			 "world=%s x_m=%.3f y_m=%.3f heading_deg=%.1f travel_m=%.3f contacts=%u "
+			 "min_clearance_mm=%s goal_at_s=%s ", o->world->name, r->x_m, r->y_m, r->heading_deg,
+			 r->travel_m, r->contacts, clearance, goal);
+	} else if (o->robot == EV3SIM_ROBOT_GYROBOY) {
 		char fell_at[32] = "none";
 
 		if (r->fell)
@@ -551,7 +631,7 @@ void ev3sim_run_summary(const struct ev3sim_run_opts *o, const struct ev3sim_run
 	}
 	snprintf(buf, len, "app=%s robot=%s seconds=%g seed=%llu %slog_lines=%u warnings=%u errors=%u "
 		 "bugs=%u sim_speed=%.0fx",
-		 o->app_name ? o->app_name : "?", ev3sim_robot_name(o->robot), o->seconds,
+		 o->app_name ? o->app_name : "?", o->world ? "world" : ev3sim_robot_name(o->robot), o->seconds,
 		 (unsigned long long)o->seed, world, r->log_lines, r->warnings, r->errors, r->bugs,
 		 r->wall_s > 0 ? r->seconds / r->wall_s : 0.0);
 }

@@ -18,12 +18,17 @@
 #include "ev3sim/output.h"
 #include "ev3sim/parse.h"
 #include "ev3sim/balance_run.h"
+#include "ev3sim/plot.h"
 #include "ev3sim/run.h"
 #include "ev3sim/app_build.h"
+#include "ev3sim/world_plot.h"
 
 #define MAX_PUSH_NM 5.0
 
 extern char **environ;
+
+/* The world a --world file gave, for the whole run (the process ends with it). */
+static struct ev3sim_world *loaded;
 
 static const char run_usage[] =
 	"usage: ev3sim run APP_DIR [options]\n"
@@ -50,6 +55,11 @@ static const char run_usage[] =
 	"                         tribot:  large motors B (left), C (right), touch on 1, colour on 3\n"
 	"                                  looking down at a line-following mat, ultrasonic on 4;\n"
 	"                                  the touch sensor is pressed at 3 s (unless --touch)\n"
+	"  --world W            the robot in a world instead: a built-in one (line: the\n"
+	"                       tribot's mat; arena: an open walled floor; maze: walls,\n"
+	"                       boxes and cans) or a world file (JSON: the mat image, walls\n"
+	"                       and obstacles, the robot's build and start; docs/ev3sim.md);\n"
+	"                       its build gives the devices on the ports\n"
 	"  --in1 .. --in4 DEV   none, touch, nxt-touch, nxt-light, gyro, color, ultrasonic, ir\n"
 	"  --outA .. --outD DEV none, large, medium (override the robot's)\n"
 	"  --seconds N          virtual seconds to run (default 10, max 3600)\n"
@@ -87,10 +97,15 @@ static const char run_usage[] =
 	"  --lcd FILE.png       the display's last frame (178 x 128, grey)\n"
 	"  --lcd-video FILE.gif the display over time: a frame per change, sampled every 10 ms\n"
 	"  --csv FILE           the robot's state every 10 ms\n"
+	"  --plot FILE.png      with a world (or the tribot): the path on the mat and signals\n"
+	"                       against time (gnuplot)\n"
+	"  --plot-signals LIST  the plot's signals: heading, in1..in4, left, right,\n"
+	"                       clearance (default: heading and the robot's sensors)\n"
 	"  --quiet              the console shows warnings and worse only\n"
 	"\n"
 	"Summary: app, robot, seconds, seed, the world's figures (gyroboy: result, fell_at_s,\n"
-	"max_tilt_deg; tribot: line_progress_m, travel_m, max/rms_line_error_mm, on_line_pct),\n"
+	"max_tilt_deg; tribot: line_progress_m, travel_m, max/rms_line_error_mm, on_line_pct;\n"
+	"a world: world, x_m, y_m, heading_deg, travel_m, contacts, min_clearance_mm, goal_at_s),\n"
 	"syslog line counts, bugs, sim_speed.\n";
 
 static const char *const button_names[] = { "left", "right", "up", "down", "enter", "back" };
@@ -253,6 +268,21 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		o->usb_path = v;
 	} else if (strcmp(name, "--csv") == 0) {
 		*csv_path = v;
+	} else if (strcmp(name, "--world") == 0) {
+		/* read before the others (ev3sim_run_main) */
+	} else if (strcmp(name, "--plot") == 0) {
+		if (o->world == NULL && o->robot != EV3SIM_ROBOT_TRIBOT)
+			return usage("%s: needs a world (--world, or --robot tribot)", "--plot");
+		if (!ev3sim_have_gnuplot()) {
+			fprintf(stderr, "ev3sim run: --plot: gnuplot not found on PATH (install gnuplot-nox: make deps)\n");
+			return EV3SIM_EXIT_FAIL;
+		}
+		if (!ev3sim_can_create("run", v))
+			return EV3SIM_EXIT_FAIL;
+		o->plot_path = v;
+	} else if (strcmp(name, "--plot-signals") == 0) {
+		if (!ev3sim_plot_signals_parse(v, &o->plot_signals, err, sizeof(err)))
+			return usage("--plot-signals: %s", err);
 	} else {
 		return usage("unknown option %s", name);
 	}
@@ -262,6 +292,7 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rtos_cfg *app)
 {
 	enum ev3sim_robot_kind robot = EV3SIM_ROBOT_BARE;
+	const struct ev3sim_world *world = NULL;
 	struct ev3sim_run_opts o;
 	struct ev3sim_run_result r;
 	const char *csv_path = NULL;
@@ -280,7 +311,38 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 		if (strncmp(argv[i], "--robot=", 8) == 0 && !ev3sim_robot_parse(argv[i] + 8, &robot))
 			return usage("--robot: bad value '%s' (bare, gyroboy or tribot)", argv[i] + 8);
 	}
-	ev3sim_run_defaults(&o, robot);
+	for (int i = 1; i < argc; i++) {
+		const char *v = NULL;
+
+		if (strcmp(argv[i], "--world") == 0 && i + 1 < argc)
+			v = argv[i + 1];
+		else if (strncmp(argv[i], "--world=", 8) == 0)
+			v = argv[i] + 8;
+		if (v == NULL)
+			continue;
+		if (robot != EV3SIM_ROBOT_BARE)
+			return usage("--world: the world gives the robot (not with --robot %s)", ev3sim_robot_name(robot));
+		world = ev3sim_world_builtin(v);
+		if (world != NULL)
+			continue;
+		if (strchr(v, '/') == NULL && strchr(v, '.') == NULL) {
+			fprintf(stderr, "ev3sim run: --world: '%s' is neither a built-in world (%s) nor a file\n"
+				"(ev3sim run --help lists the options)\n", v, ev3sim_world_builtin_names);
+			return EV3SIM_EXIT_USAGE;
+		}
+		if (!ev3sim_world_file_reader)
+			return usage("--world: this program has no world file reader (the 32-bit ev3sim links no "
+				     "json-c or libpng: build/host/ev3sim has it); '%s'", v);
+		world = loaded = ev3sim_world_file_reader(v, err, sizeof(err));
+		if (world == NULL) {
+			fprintf(stderr, "ev3sim run: --world: %s\n", err);
+			return EV3SIM_EXIT_USAGE;
+		}
+	}
+	if (world != NULL)
+		ev3sim_run_defaults_world(&o, world);
+	else
+		ev3sim_run_defaults(&o, robot);
 	o.app_name = app_name;
 	for (int i = 1; i < argc; i++) {
 		char name[64];

@@ -1,6 +1,7 @@
 /*
  * test_fuzz_options.c — fuzz harness: ev3sim's option value parsers, as the
- * command line feeds them (numbers, times, ports, robots, fault specs).  The
+ * command line feeds them (numbers, times, ports, robots, fault specs, built-in
+ * worlds, plot signals).  The
  * input is split at NUL bytes into strings; each goes through every parser.
  * A parser accepts a value only if it is in range, and never reads past the
  * string.
@@ -15,6 +16,7 @@
 #include "ev3sim/fault_spec.h"
 #include "ev3sim/parse.h"
 #include "ev3sim/run.h"
+#include "ev3sim/world_plot.h"
 
 #define FUZZ_NAME "options"
 
@@ -25,7 +27,8 @@ static void parse_all(const char *s)
 	char err[256];
 	double d;
 	uint64_t u, ns;
-	unsigned port;
+	unsigned port, bits;
+	const struct ev3sim_world *w;
 
 	if (ev3sim_parse_double(s, &d) && !isfinite(d))
 		abort();
@@ -38,6 +41,11 @@ static void parse_all(const char *s)
 	if (ev3sim_parse_input_port(s, &port) && port > 3)
 		abort();
 	(void)ev3sim_robot_parse(s, &robot);
+	if ((w = ev3sim_world_builtin(s)) != NULL && strcmp(w->name, s) != 0)
+		abort();
+	if (ev3sim_plot_signals_parse(s, &bits, err, sizeof(err)) ? bits == 0 || bits > 0xFF :
+	    memchr(err, '\0', sizeof(err)) == NULL)
+		abort();
 	if (!ev3sim_fault_parse(s, 1, &spec, err, sizeof(err)) && memchr(err, '\0', sizeof(err)) == NULL)
 		abort();
 }

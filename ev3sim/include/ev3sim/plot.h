@@ -15,4 +15,7 @@ bool ev3sim_have_gnuplot(void);
  * message in err (gnuplot missing or failing, the PNG not written completely). */
 int ev3sim_plot(const char *csv_path, const char *title, const char *png_path, char *err, size_t errlen);
 
+/* Copies the file at from to the path to, every write checked; 0 or -1 (errno). */
+int ev3sim_copy_file(const char *from, const char *to);
+
 #endif /* EV3SIM_PLOT_H */

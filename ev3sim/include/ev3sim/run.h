@@ -8,7 +8,9 @@
  *            application or falls (robot.h)
  *   tribot   a driving base: large motors on B (left) and C (right), touch on
  *            port 1, colour on port 3 looking down at a line-following mat,
- *            ultrasonic on port 4 (tribot.h)
+ *            ultrasonic on port 4 (tribot.h: the built-in world "line")
+ *   a world  a driving robot in a world of its own (world.h): a built-in one
+ *            or a world file (--world); its build gives the ports' devices
  *
  * The application's syslog lines go to the console (NOTICE and worse) and
  * to an optional sink; the run ends after the requested virtual time.
@@ -26,6 +28,7 @@
 #include "ev3sim/fault_spec.h"
 #include "ev3sim/robot.h"
 #include "ev3sim/tribot.h"
+#include "ev3sim/world.h"
 
 #define EV3SIM_RUN_MAX_FAULTS   16U
 #define EV3SIM_RUN_MAX_ACTIONS  16U
@@ -69,7 +72,10 @@ struct ev3sim_run_opts {
 	const char *bt_path;        /* Bluetooth SPP's far end: a Unix socket there (brick_io.h), NULL: none */
 	const char *bt_master_path; /* the SPP master's remote slave: a Unix socket there, NULL: none */
 	const char *usb_path;       /* USB CDC's far end: a Unix socket there, NULL: none */
+	const struct ev3sim_world *world;   /* the robot and its world (robot bare), NULL: none */
 	FILE *csv;                  /* the robot's state every 10 ms, NULL: none */
+	const char *plot_path;      /* a world's PNG: the path on the mat and signals, NULL: none */
+	unsigned plot_signals;      /* which signals (EV3SIM_SIGNAL_* bits), 0: the default */
 	bool quiet;                 /* the console shows warnings and worse only */
 	/* every syslog line of the run ("WARNING: text"), NULL: none */
 	void (*log_sink)(const char *line, void *ctx);
@@ -85,6 +91,11 @@ struct ev3sim_run_result {
 	double fell_at_s, max_tilt_deg;
 	/* tribot */
 	double progress_m, travel_m, max_line_error_mm, rms_line_error_mm, on_line_pct;
+	/* a world (travel_m too) */
+	double x_m, y_m, heading_deg, min_clearance_mm;    /* min_clearance_mm < 0: no obstacles */
+	unsigned contacts;
+	bool goal_reached;
+	double goal_at_s;
 	double wall_s;
 	unsigned lcd_dark;          /* dark pixels of the display at the end (with lcd_path) */
 	int end_status;             /* 0, or why the app ended the system: RTOS_HOST_EXIT_STALL, _STACK */
@@ -109,6 +120,10 @@ extern const struct ev3sim_lcd_video *ev3sim_lcd_video;
  * tribot a touch press at 3 s; the gyro boy let go at 4 s with a 0.5 degree
  * tilt, its gyro's noise an EV3 gyro's at rest (UART_SENSOR_GYRO_NOISE_AT_REST_DPS). */
 void ev3sim_run_defaults(struct ev3sim_run_opts *o, enum ev3sim_robot_kind robot);
+
+/* A world's robot: its devices on the ports (a gyro's noise an EV3 gyro's
+ * at rest), no faults or actions. */
+void ev3sim_run_defaults_world(struct ev3sim_run_opts *o, const struct ev3sim_world *w);
 
 /* Boots app (a configuration INCLUDEing ev3api_cfg), plugs in the robot,
  * runs.  E_OK, E_PAR (bad options, message in err), E_SYS (boot failure). */

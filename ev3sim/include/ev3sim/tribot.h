@@ -3,12 +3,15 @@
  * motors on B (left) and C (right), a caster behind) on a line-following mat.
  * Host only.
  *
- * Each physics step (a host event every EV3SIM_TRIBOT_STEP_NS) turns the
- * wheels' shaft angle changes into the robot's motion over the mat
- * (differential drive, no slip), hands the motors their share of the robot's
- * mass and rolling resistance (hs_motor_set_load) and sets the scene of the
- * colour sensor looking down in front of the axle: reflected light, colour
- * and raw RGB of the spot it sees.
+ * It is the built-in world "line" (world.h): each physics step (a host event
+ * every EV3SIM_TRIBOT_STEP_NS) turns the wheels' shaft angle changes into the
+ * robot's motion over the mat (differential drive, no slip), hands the
+ * motors their share of the robot's mass and rolling resistance
+ * (hs_motor_set_load) and sets the scene of the colour sensor looking down in
+ * front of the axle: reflected light, colour and raw RGB of the spot it sees;
+ * the ultrasonic sensor sees nothing (255 cm), a gyro on a port follows the
+ * turns.  This header adds the line's measures: the spot's distance from the
+ * line and the progress along it.
  *
  * The mat is white with a black line of width EV3SIM_LINE_WIDTH_M laid as a
  * stadium: two straights of EV3SIM_LINE_STRAIGHT_M joined by half circles of
@@ -22,6 +25,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include "kernel.h"
+#include "ev3sim/apps.h"
 
 #define EV3SIM_TRIBOT_STEP_NS   1000000ULL    /* physics step: 1 ms */
 
@@ -45,7 +49,8 @@ struct ev3sim_placement {
 
 struct ev3sim_tribot_cfg {
 	unsigned left_port, right_port;     /* output ports 0..3 of the wheel motors */
-	int color_port;                     /* input port 0..3 of the downward colour sensor, -1: none */
+	enum ev3sim_input_device in[4];     /* the devices plugged in: the colour sensor on 3 looks
+					     * down, the ultrasonic on 4 ahead (when they are there) */
 	const struct ev3sim_placement *placements;  /* any order */
 	unsigned nplacements;               /* at most EV3SIM_MAX_PLACEMENTS */
 };
