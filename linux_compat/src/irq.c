@@ -628,6 +628,7 @@ void lx_io_boot(intptr_t exinf)
 	lx_devfs_boot();
 	lx_driver_core_boot();
 	lx_sysfs_boot();
+	lx_input_boot();
 	lx_platform_boot();
 	lx_gpiolib_boot();
 	lx_spi_boot();

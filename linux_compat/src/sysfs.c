@@ -816,6 +816,13 @@ unsigned int lx_sysfs_for_each_class_file(void (*fn)(const char *path, void *ctx
 	return count;
 }
 
+void lx_class_register_boot(struct class *cls)
+{
+	INIT_LIST_HEAD(&cls->lx_devices);
+	list_add_tail(&cls->lx_node, &classes);
+	cls->lx_registered = true;
+}
+
 void lx_sysfs_boot(void)
 {
 	INIT_LIST_HEAD(&classes);

@@ -58,6 +58,13 @@ const char *lx_uevent_action_name(enum kobject_action action);
 /* Forgets classes, uevents and notifications (lx_io_boot). */
 void lx_sysfs_boot(void);
 
+/* Registers a class of linux_compat's own at boot (lx_io_boot), before any
+ * task runs: no lock. */
+struct class;
+void lx_class_register_boot(struct class *cls);
+/* Resets the input core: no devices, the input class registered (lx_io_boot). */
+void lx_input_boot(void);
+
 /* The driver core's side (src/driver_core.c calls them, core locked). */
 struct device;
 /* Checks dev's class (registered, its name free there) and the modes of its
