@@ -276,18 +276,22 @@ static int evdev_open(struct inode *inode, struct file *file)
 	if (!client)
 		return -ENOMEM;
 	client->dev = input_get_device(dev);
+	/* attached before the device opens, so that what open() reports reaches it (evdev's order) */
+	spin_lock_irqsave(&dev->event_lock, flags);
+	list_add_tail(&client->node, &dev->lx_clients);
+	spin_unlock_irqrestore(&dev->event_lock, flags);
 	if (dev->users++ == 0 && dev->open) {
 		ret = dev->open(dev);
 		if (ret) {
 			dev->users--;
+			spin_lock_irqsave(&dev->event_lock, flags);
+			list_del(&client->node);
+			spin_unlock_irqrestore(&dev->event_lock, flags);
 			input_put_device(dev);
 			kfree(client);
 			return ret;
 		}
 	}
-	spin_lock_irqsave(&dev->event_lock, flags);
-	list_add_tail(&client->node, &dev->lx_clients);
-	spin_unlock_irqrestore(&dev->event_lock, flags);
 	file->private_data = client;
 	return 0;
 }
