@@ -164,6 +164,12 @@ int device_driver_attach(struct device_driver *drv, struct device *dev);
 int device_attach(struct device *dev);
 /* Unbinds dev from its driver (remove, devres, drvdata). */
 void device_release_driver(struct device *dev);
+/* Whether dev is added (between device_add and device_del). */
+static inline bool device_is_registered(struct device *dev)
+{
+	return dev->lx_added;
+}
+
 /* Whether dev is bound to a driver. */
 static inline bool device_is_bound(struct device *dev)
 {

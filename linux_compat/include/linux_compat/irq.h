@@ -112,6 +112,8 @@ void lx_platform_boot(void);
 void lx_gpiolib_boot(void);
 /* Forgets SPI controllers, devices, drivers and board info (lx_io_boot). */
 void lx_spi_boot(void);
+/* Forgets PWM chips and lookup tables (lx_io_boot). */
+void lx_pwm_boot(void);
 /* Forgets registered frame buffers (lx_io_boot). */
 void lx_fb_boot(void);
 /* Puts every task back to USER_DS (lx_io_boot). */
