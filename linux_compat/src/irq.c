@@ -633,6 +633,7 @@ void lx_io_boot(intptr_t exinf)
 	lx_gpiolib_boot();
 	lx_spi_boot();
 	lx_pwm_boot();
+	lx_iio_boot();
 	lx_fb_boot();
 	lx_uaccess_boot();
 }

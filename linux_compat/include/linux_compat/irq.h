@@ -114,6 +114,8 @@ void lx_gpiolib_boot(void);
 void lx_spi_boot(void);
 /* Forgets PWM chips and lookup tables (lx_io_boot). */
 void lx_pwm_boot(void);
+/* Forgets IIO devices and maps, registers the iio bus (lx_io_boot). */
+void lx_iio_boot(void);
 /* Forgets registered frame buffers (lx_io_boot). */
 void lx_fb_boot(void);
 /* Puts every task back to USER_DS (lx_io_boot). */
