@@ -116,8 +116,19 @@ static const char *cat(const char *path)
 	return read_buf;
 }
 
+static char listed[512];
+
+/* Collects the paths lx_sysfs_for_each_class_file gives. */
+static void list_file(const char *path, void *ctx)
+{
+	(*(unsigned int *)ctx)++;
+	strncat(listed, path, sizeof(listed) - strlen(listed) - 2);
+	strcat(listed, " ");
+}
+
 static void class_tests(void)
 {
+	unsigned int nlisted = 0;
 	struct class *cls, *dup;
 	struct device *m0, *m1;
 	unsigned int ev0;
@@ -139,6 +150,10 @@ static void class_tests(void)
 	m1 = device_create_with_groups(cls, NULL, 0, NULL, extra_groups, "motor%d", 1);
 	ok(!IS_ERR(m1), "device_create_with_groups");
 
+	is_int(lx_sysfs_for_each_class_file(list_file, &nlisted), 6, "six readable class files");
+	ok(nlisted == 6 && strstr(listed, "/sys/class/tacho-motor/motor0/dev ") &&
+	   strstr(listed, "/sys/class/tacho-motor/motor1/extra/list ") &&
+	   !strstr(listed, "secret"), "dev, speed and name of each, the group's visible file (%s)", listed);
 	is_str(cat("/sys/class/tacho-motor/motor0/speed"), "7\n", "a class dev_groups file reads through show");
 	is_str(cat("/sys/class/tacho-motor/motor1/name"), "motor1\n", "the same file of another device");
 	is_str(cat("/sys/class/tacho-motor/motor0/dev"), "240:0\n", "dev: the device's number");
@@ -291,7 +306,7 @@ static void body(void)
 
 int main(void)
 {
-	tap_plan(56);
+	tap_plan(58);
 	is_int(hs_board_init(NULL), E_OK, "host_sim board");
 	ok(lx_test_run(body), "test task ran to completion");
 	hs_board_shutdown();
