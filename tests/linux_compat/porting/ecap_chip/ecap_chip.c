@@ -57,7 +57,7 @@ static int ecap_apply(struct pwm_chip *chip, struct pwm_device *pwm, const struc
 		writew(ctl & ~(ECCTL2_APWM | ECCTL2_TSCTRSTOP), pc->base + ECCTL2);
 		return 0;
 	}
-	if (state->period > 10 * NSEC_PER_SEC)
+	if (state->period > 10ULL * NSEC_PER_SEC)
 		return -ERANGE;	/* the products below fit in 64 bits up to here */
 	period = div64_u64(state->period * pc->clk_rate, NSEC_PER_SEC);
 	duty = div64_u64(state->duty_cycle * pc->clk_rate, NSEC_PER_SEC);
