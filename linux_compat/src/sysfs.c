@@ -205,7 +205,7 @@ static void device_create_release(struct device *dev)
 
 /* The body of device_create and device_create_with_groups. */
 static __printf(6, 0) struct device *device_create_vargs(struct class *cls, struct device *parent,
-							 dev_t devt, void *drvdata,
+							 __kernel_dev_t devt, void *drvdata,
 							 const struct attribute_group **groups,
 							 const char *fmt, va_list args)
 {
@@ -234,7 +234,7 @@ static __printf(6, 0) struct device *device_create_vargs(struct class *cls, stru
 	return dev;
 }
 
-struct device *device_create(struct class *cls, struct device *parent, dev_t devt, void *drvdata,
+struct device *device_create(struct class *cls, struct device *parent, __kernel_dev_t devt, void *drvdata,
 			     const char *fmt, ...)
 {
 	struct device *dev;
@@ -246,7 +246,7 @@ struct device *device_create(struct class *cls, struct device *parent, dev_t dev
 	return dev;
 }
 
-struct device *device_create_with_groups(struct class *cls, struct device *parent, dev_t devt,
+struct device *device_create_with_groups(struct class *cls, struct device *parent, __kernel_dev_t devt,
 					 void *drvdata, const struct attribute_group **groups,
 					 const char *fmt, ...)
 {
@@ -259,7 +259,7 @@ struct device *device_create_with_groups(struct class *cls, struct device *paren
 	return dev;
 }
 
-void device_destroy(struct class *cls, dev_t devt)
+void device_destroy(struct class *cls, __kernel_dev_t devt)
 {
 	struct device *dev, *found = NULL;
 

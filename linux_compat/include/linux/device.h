@@ -92,7 +92,8 @@ struct device {
 	void (*release)(struct device *dev);
 	struct class *class;
 	const struct attribute_group **groups;  /* its own files (beside its class's) */
-	dev_t devt;                     /* a "dev" file "major:minor" when MAJOR(devt) != 0 */
+	__kernel_dev_t devt;            /* dev_t; a "dev" file "major:minor" when MAJOR(devt) != 0
+					 * (the kernel type: a hosted test may see the C library's dev_t) */
 	struct kobject kobj;            /* its name; sysfs_notify, kobject_uevent */
 	struct lx_devres *lx_devres;    /* ev3lx: managed resources, newest first */
 	struct list_head lx_bus_node;   /* ev3lx: on its bus's device list */
@@ -317,15 +318,15 @@ struct device *class_find_device_by_name(struct class *cls, const char *name);
 
 /* Creates and registers a device of cls (its drvdata, number devt, name from
  * fmt): it, or ERR_PTR.  Freed by device_destroy/device_unregister. */
-__printf(5, 6) struct device *device_create(struct class *cls, struct device *parent, dev_t devt,
+__printf(5, 6) struct device *device_create(struct class *cls, struct device *parent, __kernel_dev_t devt,
 					    void *drvdata, const char *fmt, ...);
 /* The same with extra attribute groups. */
 __printf(6, 7) struct device *device_create_with_groups(struct class *cls, struct device *parent,
-							dev_t devt, void *drvdata,
+							__kernel_dev_t devt, void *drvdata,
 							const struct attribute_group **groups,
 							const char *fmt, ...);
 /* Unregisters the device of cls with number devt (reported if none). */
-void device_destroy(struct class *cls, dev_t devt);
+void device_destroy(struct class *cls, __kernel_dev_t devt);
 
 #define lx_dev_driver_name(dev)	((dev)->driver ? (dev)->driver->name : "")
 #define dev_printk(level, dev, fmt, ...) \
