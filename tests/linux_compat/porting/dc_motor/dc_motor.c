@@ -56,7 +56,7 @@ static int dc_motor_drive(struct dc_motor *m, int duty)
 	if (ret)
 		return ret;
 	state.enabled = duty != 0;
-	ret = pwm_apply_might_sleep(m->pwm, &state);
+	ret = pwm_apply_state(m->pwm, &state);
 	if (!ret)
 		m->duty_cycle = m->inversed ? -duty : duty;
 	return ret;
