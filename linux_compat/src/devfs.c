@@ -108,6 +108,8 @@ static bool major_taken_locked(unsigned int major)
 	return false;
 }
 
+/* A node name: 1..LX_DEV_NAME_MAX characters; a '/' only between two names
+ * (a subdirectory of /dev, as input/event0). */
 static bool name_ok(const char *name)
 {
 	size_t len;
@@ -115,7 +117,8 @@ static bool name_ok(const char *name)
 	if (!name)
 		return false;
 	len = strlen(name);
-	return len > 0 && len <= LX_DEV_NAME_MAX && !strchr(name, '/');
+	return len > 0 && len <= LX_DEV_NAME_MAX && name[0] != '/' && name[len - 1] != '/' &&
+	       !strstr(name, "//");
 }
 
 int misc_register(struct miscdevice *misc)

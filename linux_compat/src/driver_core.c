@@ -16,6 +16,7 @@
 #include <linux_compat/context.h>
 #include <linux_compat/irq.h>
 #include <linux_compat/report.h>
+#include <linux_compat/sysfs.h>
 
 static DEFINE_MUTEX(core_mutex);
 static struct task_struct *core_owner;
@@ -27,6 +28,18 @@ static bool deferred_trigger;
 static void run_deferred_probes(void);
 
 /* Takes the core lock (again, if the calling task holds it). */
+static void core_lock(void);
+void lx_driver_core_lock(void)
+{
+	core_lock();
+}
+
+static void core_unlock(void);
+void lx_driver_core_unlock(void)
+{
+	core_unlock();
+}
+
 static void core_lock(void)
 {
 	if (core_depth && core_owner == current) {
@@ -141,6 +154,7 @@ static int really_probe(struct device *dev, struct device_driver *drv)
 		list_add_tail(&dev->lx_bound_node, &drv->lx_bound);
 		deferred_probe_del(dev);
 		deferred_trigger = true;
+		kobject_uevent(&dev->kobj, KOBJ_BIND);
 		return 0;
 	}
 	devres_release_all(dev);
@@ -236,6 +250,7 @@ static void release_driver_locked(struct device *dev)
 	list_del_init(&dev->lx_bound_node);
 	dev->driver = NULL;
 	dev_set_drvdata(dev, NULL);
+	kobject_uevent(&dev->kobj, KOBJ_UNBIND);
 }
 
 void device_initialize(struct device *dev)
@@ -248,10 +263,14 @@ void device_initialize(struct device *dev)
 	INIT_LIST_HEAD(&dev->lx_bus_node);
 	INIT_LIST_HEAD(&dev->lx_bound_node);
 	INIT_LIST_HEAD(&dev->lx_deferred);
+	INIT_LIST_HEAD(&dev->lx_class_node);
+	INIT_LIST_HEAD(&dev->lx_files);
 }
 
 int device_add(struct device *dev)
 {
+	int ret;
+
 	might_sleep();
 	if (!dev)
 		return -EINVAL;
@@ -276,7 +295,13 @@ int device_add(struct device *dev)
 		       dev->bus->name);
 		return -EINVAL;
 	}
+	ret = lx_sysfs_device_add(dev);
+	if (ret) {
+		core_unlock();
+		return ret;
+	}
 	dev->lx_added = true;
+	kobject_uevent(&dev->kobj, KOBJ_ADD);
 	if (dev->bus) {
 		list_add_tail(&dev->lx_bus_node, &dev->bus->lx_devices);
 		bus_attach_device(dev);
@@ -308,6 +333,8 @@ void device_del(struct device *dev)
 	release_driver_locked(dev);
 	deferred_probe_del(dev);
 	list_del_init(&dev->lx_bus_node);
+	kobject_uevent(&dev->kobj, KOBJ_REMOVE);
+	lx_sysfs_device_del(dev);
 	dev->lx_added = false;
 	core_unlock();
 }
@@ -340,6 +367,8 @@ void put_device(struct device *dev)
 	devres_release_all(dev);
 	if (dev->release)
 		dev->release(dev);
+	else if (dev->class && dev->class->dev_release)
+		dev->class->dev_release(dev);
 	else
 		lx_warn(__FILE__, __LINE__,
 			"Device '%s' does not have a release() function, it is broken and must be fixed.",
@@ -472,6 +501,21 @@ int dev_err_probe(const struct device *dev, int err, const char *fmt, ...)
 	else
 		dev_dbg(dev, "error %d: %s", err, msg);
 	return err;
+}
+
+struct device *lx_bus_find_device_by_name(const char *bus_name, const char *name)
+{
+	struct bus_type *bus;
+	struct device *dev;
+
+	list_for_each_entry(bus, &buses, lx_node) {
+		if (strcmp(bus->name, bus_name))
+			continue;
+		list_for_each_entry(dev, &bus->lx_devices, lx_bus_node)
+			if (!name || !strcmp(dev_name(dev), name))
+				return dev;
+	}
+	return NULL;
 }
 
 void lx_bus_register_boot(struct bus_type *bus)

@@ -33,6 +33,7 @@
 #include <linux_compat/irq.h>
 #include <linux_compat/machine.h>
 #include <linux_compat/report.h>
+#include <linux_compat/sysfs.h>
 #include <kernel.h>
 #include <sil.h>
 
@@ -626,9 +627,13 @@ void lx_io_boot(intptr_t exinf)
 	lx_resource_boot();
 	lx_devfs_boot();
 	lx_driver_core_boot();
+	lx_sysfs_boot();
+	lx_input_boot();
 	lx_platform_boot();
 	lx_gpiolib_boot();
 	lx_spi_boot();
+	lx_pwm_boot();
+	lx_iio_boot();
 	lx_fb_boot();
 	lx_uaccess_boot();
 }

@@ -4,7 +4,9 @@
  * (drivers/base/core.c, bus.c, dd.c) and src/devres.c (drivers/base/devres.c).
  *
  * struct device has a name, parent, bus, bound driver, platform and driver
- * data, an of_node and release, but no kobject and no sysfs.  A bus
+ * data, an of_node and release, a class and attribute groups, whose files
+ * src/sysfs.c serves (linux_compat/sysfs.h reads and writes them by path,
+ * /sys/class/<class>/<device>/<attribute>, /sys/bus/<bus>/devices/...).  A bus
  * (bus_register) keeps its devices and drivers; device_add and
  * driver_register bind every matching pair through the bus's match and
  * probe (else the driver's probe), in process context; a failing probe
@@ -26,6 +28,10 @@
 #include <linux/gfp.h>
 #include <linux/limits.h>
 #include <linux/printk.h>
+#include <linux/container_of.h>
+#include <linux/kdev_t.h>
+#include <linux/kobject.h>
+#include <linux/sysfs.h>
 
 struct module;
 struct device;
@@ -34,6 +40,8 @@ struct device_node;
 struct of_device_id;
 struct resource;
 struct lx_devres;
+struct class;
+struct attribute_group;
 
 struct bus_type {
 	const char *name;
@@ -63,6 +71,7 @@ struct device_driver {
 	bool suppress_bind_attrs;
 	enum probe_type probe_type;
 	const struct of_device_id *of_match_table;
+	const struct attribute_group **dev_groups;  /* files of each bound device, after probe */
 	int (*probe)(struct device *dev);
 	int (*remove)(struct device *dev);
 	void (*shutdown)(struct device *dev);
@@ -81,10 +90,17 @@ struct device {
 	u64 *dma_mask;
 	u64 coherent_dma_mask;
 	void (*release)(struct device *dev);
+	struct class *class;
+	const struct attribute_group **groups;  /* its own files (beside its class's) */
+	__kernel_dev_t devt;            /* dev_t; a "dev" file "major:minor" when MAJOR(devt) != 0
+					 * (the kernel type: a hosted test may see the C library's dev_t) */
+	struct kobject kobj;            /* its name; sysfs_notify, kobject_uevent */
 	struct lx_devres *lx_devres;    /* ev3lx: managed resources, newest first */
 	struct list_head lx_bus_node;   /* ev3lx: on its bus's device list */
 	struct list_head lx_bound_node; /* ev3lx: on its driver's list */
 	struct list_head lx_deferred;   /* ev3lx: on the deferred-probe list */
+	struct list_head lx_class_node; /* ev3lx: on its class's device list */
+	struct list_head lx_files;      /* ev3lx: device_create_file's attributes */
 	int lx_refcount;                /* ev3lx: get_device/put_device */
 	bool lx_added;                  /* ev3lx: between device_add and device_del */
 	bool lx_probing;                /* ev3lx: inside its driver's probe */
@@ -149,6 +165,12 @@ int device_driver_attach(struct device_driver *drv, struct device *dev);
 int device_attach(struct device *dev);
 /* Unbinds dev from its driver (remove, devres, drvdata). */
 void device_release_driver(struct device *dev);
+/* Whether dev is added (between device_add and device_del). */
+static inline bool device_is_registered(struct device *dev)
+{
+	return dev->lx_added;
+}
+
 /* Whether dev is bound to a driver. */
 static inline bool device_is_bound(struct device *dev)
 {
@@ -232,6 +254,79 @@ void devm_release_action(struct device *dev, void (*action)(void *), void *data)
  * ERR_PTR(-EINVAL) (NULL or not memory), -EBUSY (region taken) or -ENOMEM
  * (cannot be mapped), each logged. */
 void __iomem *devm_ioremap_resource(struct device *dev, const struct resource *res);
+
+/* ---- attributes (src/sysfs.c) ---- */
+
+struct device_attribute {
+	struct attribute attr;
+	ssize_t (*show)(struct device *dev, struct device_attribute *attr, char *buf);
+	ssize_t (*store)(struct device *dev, struct device_attribute *attr, const char *buf,
+			 size_t count);
+};
+
+#define DEVICE_ATTR(_name, _mode, _show, _store) \
+	struct device_attribute dev_attr_##_name = __ATTR(_name, _mode, _show, _store)
+#define DEVICE_ATTR_RW(_name)	struct device_attribute dev_attr_##_name = __ATTR_RW(_name)
+#define DEVICE_ATTR_ADMIN_RW(_name) \
+	struct device_attribute dev_attr_##_name = __ATTR_RW_MODE(_name, 0600)
+#define DEVICE_ATTR_RO(_name)	struct device_attribute dev_attr_##_name = __ATTR_RO(_name)
+#define DEVICE_ATTR_ADMIN_RO(_name) \
+	struct device_attribute dev_attr_##_name = __ATTR_RO_MODE(_name, 0400)
+#define DEVICE_ATTR_WO(_name)	struct device_attribute dev_attr_##_name = __ATTR_WO(_name)
+
+static inline struct device *kobj_to_dev(struct kobject *kobj)
+{
+	return container_of(kobj, struct device, kobj);
+}
+
+/* Adds one attribute file to dev (process context): 0, -EINVAL (no device
+ * or name), -EEXIST (a file of that name), -ENOMEM.  A mode with write bits
+ * but no store, or read bits but no show, is reported as Linux WARNs. */
+int device_create_file(struct device *dev, const struct device_attribute *attr);
+/* Removes a file device_create_file added (process context). */
+void device_remove_file(struct device *dev, const struct device_attribute *attr);
+
+/* ---- classes (src/sysfs.c; Linux 6.1's include/linux/device/class.h) ---- */
+
+struct class {
+	const char *name;
+	struct module *owner;
+	const struct attribute_group **class_groups;
+	const struct attribute_group **dev_groups;  /* files of every device of the class */
+	int (*dev_uevent)(struct device *dev, void *env);
+	char *(*devnode)(struct device *dev, umode_t *mode);
+	void (*class_release)(struct class *class);
+	void (*dev_release)(struct device *dev);     /* release for devices without their own */
+	struct list_head lx_node;       /* ev3lx: on the list of classes */
+	struct list_head lx_devices;    /* ev3lx: its devices, in order of device_add */
+	bool lx_registered;
+};
+
+/* Registers cls (/sys/class/<name>): 0, -EINVAL (no name), -EEXIST (a class
+ * of that name).  Process context. */
+int class_register(struct class *cls);
+/* Unregisters cls; devices left in it are reported.  Process context. */
+void class_unregister(struct class *cls);
+/* Allocates and registers a class called name: it, or ERR_PTR(-ENOMEM,
+ * -EINVAL, -EEXIST).  Linux 6.1's two-argument form (6.4 dropped owner). */
+struct class *__class_create(struct module *owner, const char *name);
+#define class_create(owner, name)	__class_create(owner, name)
+/* Unregisters and frees a class from class_create (NULL or an error: nothing). */
+void class_destroy(struct class *cls);
+/* The device of cls called name, with a reference (put_device it), or NULL. */
+struct device *class_find_device_by_name(struct class *cls, const char *name);
+
+/* Creates and registers a device of cls (its drvdata, number devt, name from
+ * fmt): it, or ERR_PTR.  Freed by device_destroy/device_unregister. */
+__printf(5, 6) struct device *device_create(struct class *cls, struct device *parent, __kernel_dev_t devt,
+					    void *drvdata, const char *fmt, ...);
+/* The same with extra attribute groups. */
+__printf(6, 7) struct device *device_create_with_groups(struct class *cls, struct device *parent,
+							__kernel_dev_t devt, void *drvdata,
+							const struct attribute_group **groups,
+							const char *fmt, ...);
+/* Unregisters the device of cls with number devt (reported if none). */
+void device_destroy(struct class *cls, __kernel_dev_t devt);
 
 #define lx_dev_driver_name(dev)	((dev)->driver ? (dev)->driver->name : "")
 #define dev_printk(level, dev, fmt, ...) \

@@ -100,6 +100,9 @@ void lx_resource_boot(void);
 void lx_devfs_boot(void);
 /* Forgets buses, the deferred-probe list and the core lock (lx_io_boot). */
 void lx_driver_core_boot(void);
+/* The driver core's lock (re-entrant for its holder), for src/sysfs.c. */
+void lx_driver_core_lock(void);
+void lx_driver_core_unlock(void);
 struct bus_type;
 /* Registers bus at boot (lx_platform_boot), before any task runs: no lock. */
 void lx_bus_register_boot(struct bus_type *bus);
@@ -109,6 +112,10 @@ void lx_platform_boot(void);
 void lx_gpiolib_boot(void);
 /* Forgets SPI controllers, devices, drivers and board info (lx_io_boot). */
 void lx_spi_boot(void);
+/* Forgets PWM chips and lookup tables (lx_io_boot). */
+void lx_pwm_boot(void);
+/* Forgets IIO devices and maps, registers the iio bus (lx_io_boot). */
+void lx_iio_boot(void);
 /* Forgets registered frame buffers (lx_io_boot). */
 void lx_fb_boot(void);
 /* Puts every task back to USER_DS (lx_io_boot). */
