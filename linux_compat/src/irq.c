@@ -629,6 +629,8 @@ void lx_io_boot(intptr_t exinf)
 	lx_platform_boot();
 	lx_gpiolib_boot();
 	lx_spi_boot();
+	lx_i2c_boot();
+	lx_legoev3_i2c_boot();
 	lx_fb_boot();
 	lx_uaccess_boot();
 }

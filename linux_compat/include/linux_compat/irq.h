@@ -109,6 +109,10 @@ void lx_platform_boot(void);
 void lx_gpiolib_boot(void);
 /* Forgets SPI controllers, devices, drivers and board info (lx_io_boot). */
 void lx_spi_boot(void);
+/* Forgets I2C adapters, clients and board info; registers the I2C bus (lx_io_boot). */
+void lx_i2c_boot(void);
+/* Forgets the EV3 input ports' I2C buses (lx_io_boot). */
+void lx_legoev3_i2c_boot(void);
 /* Forgets registered frame buffers (lx_io_boot). */
 void lx_fb_boot(void);
 /* Puts every task back to USER_DS (lx_io_boot). */
