@@ -247,7 +247,7 @@ endif
 EV3LX_HACK_DIRS ?= hacks
 EXTRA_DRIVER_DIRS ?=
 # A driver from outside ev3_drivers/, its test as its hack file (docs/porting.md).
-EXAMPLE_DRIVER_DIRS := tests/linux_compat/porting/edge_watch tests/linux_compat/porting/gpio_events tests/linux_compat/porting/nxt_us
+EXAMPLE_DRIVER_DIRS := tests/linux_compat/porting/edge_watch tests/linux_compat/porting/gpio_events tests/linux_compat/porting/nxt_us tests/linux_compat/porting/ev3_uart
 DRIVER_DIRS := ev3_drivers $(EXAMPLE_DRIVER_DIRS) $(EXTRA_DRIVER_DIRS)
 # (found once per make, when first needed)
 DRIVER_FILES = $(or $(DRIVER_FILES_FOUND),$(eval DRIVER_FILES_FOUND := $(sort $(shell \
