@@ -633,6 +633,7 @@ void lx_io_boot(intptr_t exinf)
 	lx_legoev3_i2c_boot();
 	lx_tty_boot();
 	lx_davinci_serial_boot();
+	lx_davinci_i2c_boot();
 	lx_fb_boot();
 	lx_uaccess_boot();
 }

@@ -117,6 +117,8 @@ void lx_legoev3_i2c_boot(void);
 void lx_tty_boot(void);
 /* Forgets the DaVinci UART ports and their tty driver (lx_io_boot). */
 void lx_davinci_serial_boot(void);
+/* Forgets the DaVinci I2C controllers' adapters (lx_io_boot). */
+void lx_davinci_i2c_boot(void);
 /* Forgets registered frame buffers (lx_io_boot). */
 void lx_fb_boot(void);
 /* Puts every task back to USER_DS (lx_io_boot). */
