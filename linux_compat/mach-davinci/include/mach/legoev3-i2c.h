@@ -8,9 +8,9 @@
  * output-only (push-pull from the SCL pad through the port's TX buffer,
  * which the bus enables by driving its GPIO low); SDA is connector pin 6,
  * open-drain (driven low, or released to the sensor's pull-up).  SCL runs
- * at 10 kHz (udelay 50), the rate LEGO's firmware and ev3dev use for NXT
- * sensors.  Input port N (1..4) is bus 2 + N, as ev3dev's board file
- * numbers them (i2c-3 .. i2c-6).
+ * at 10 kHz (udelay 50), the rate of LEGO's firmware (lms2012 d_iic: a
+ * 50 us half period).  Input port N (1..4) is bus 2 + N, as ev3dev's board
+ * file numbers them (i2c-3 .. i2c-6).
  *
  *   port   buffer enable (low = on)   SCL      SDA
  *   1      GP8_11                     GP1_0    GP0_15
