@@ -256,7 +256,7 @@ EXTRA_DRIVER_DIRS ?=
 EXAMPLE_DRIVER_DIRS := tests/linux_compat/porting/edge_watch tests/linux_compat/porting/gpio_events \
 	tests/linux_compat/porting/ev3_buttons tests/linux_compat/porting/ehrpwm_chip \
 	tests/linux_compat/porting/ads7957_adc tests/linux_compat/porting/dc_motor \
-	tests/linux_compat/porting/ecap_chip
+	tests/linux_compat/porting/ecap_chip tests/linux_compat/porting/nxt_us tests/linux_compat/porting/ev3_uart
 DRIVER_DIRS := ev3_drivers $(EXAMPLE_DRIVER_DIRS) $(EXTRA_DRIVER_DIRS)
 # (found once per make, when first needed)
 DRIVER_FILES = $(or $(DRIVER_FILES_FOUND),$(eval DRIVER_FILES_FOUND := $(sort $(shell \

@@ -634,6 +634,11 @@ void lx_io_boot(intptr_t exinf)
 	lx_spi_boot();
 	lx_pwm_boot();
 	lx_iio_boot();
+	lx_i2c_boot();
+	lx_legoev3_i2c_boot();
+	lx_tty_boot();
+	lx_davinci_serial_boot();
+	lx_davinci_i2c_boot();
 	lx_fb_boot();
 	lx_uaccess_boot();
 }

@@ -1,6 +1,6 @@
 /*
  * linux/mod_devicetable.h — the device ID tables drivers match on (SPI,
- * platform, and the device-tree-style compatible table), as Linux 6.1
+ * I2C, platform, and the device-tree-style compatible table), as Linux 6.1
  * lays them out.
  */
 #ifndef _LINUX_MOD_DEVICETABLE_H
@@ -23,6 +23,14 @@ struct spi_device_id {
 
 struct platform_device_id {
 	char name[PLATFORM_NAME_SIZE];
+	kernel_ulong_t driver_data;
+};
+
+#define I2C_NAME_SIZE	20
+#define I2C_MODULE_PREFIX "i2c:"
+
+struct i2c_device_id {
+	char name[I2C_NAME_SIZE];
 	kernel_ulong_t driver_data;
 };
 

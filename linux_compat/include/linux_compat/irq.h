@@ -116,6 +116,16 @@ void lx_spi_boot(void);
 void lx_pwm_boot(void);
 /* Forgets IIO devices and maps, registers the iio bus (lx_io_boot). */
 void lx_iio_boot(void);
+/* Forgets I2C adapters, clients and board info; registers the I2C bus (lx_io_boot). */
+void lx_i2c_boot(void);
+/* Forgets the EV3 input ports' I2C buses (lx_io_boot). */
+void lx_legoev3_i2c_boot(void);
+/* Forgets tty drivers and line disciplines but N_TTY (lx_io_boot). */
+void lx_tty_boot(void);
+/* Forgets the DaVinci UART ports and their tty driver (lx_io_boot). */
+void lx_davinci_serial_boot(void);
+/* Forgets the DaVinci I2C controllers' adapters (lx_io_boot). */
+void lx_davinci_i2c_boot(void);
 /* Forgets registered frame buffers (lx_io_boot). */
 void lx_fb_boot(void);
 /* Puts every task back to USER_DS (lx_io_boot). */

@@ -32,7 +32,7 @@ static void body(void)
 	ok(gpio && strcmp(gpio->name, "GPIO") == 0, "a pin IRQ is served by the GPIO chip");
 	ok(lx_mach_irq_chip(IRQ_DA8XX_EVTOUT1) == aintc, "a PRU event line is an AINTC line too");
 	ok(lx_mach_irq_chip(IRQ_DA8XX_GPIO5) == NULL, "a GPIO bank line has no chip: drivers request its pins");
-	ok(lx_mach_irq_chip(IRQ_DA8XX_IIC0) == NULL, "a line the configuration does not carry has no chip");
+	ok(lx_mach_irq_chip(IRQ_DA8XX_MMCSDINT0) == NULL, "a line the configuration does not carry has no chip");
 	ok(lx_mach_irq_chip(NR_IRQS) == NULL, "nothing beyond NR_IRQS");
 	for (irq = 0; irq <= NR_IRQS; irq++)
 		if (lx_irq_valid(irq) != (lx_mach_irq_chip(irq) != NULL))

@@ -30,6 +30,15 @@
 #include <linux/io.h>			/* ioremap, memcpy_toio: da8xx.h -> mach/edma.h, mach/serial.h -> asm/io.h */
 #include <linux/string.h>
 
+struct davinci_i2c_platform_data;
+
+/* The SoC's I2C controller instance (0: I2C0, 1: I2C1) as bus instance + 1,
+ * driven by mach-davinci/i2c.c with pdata's speed (docs/linux-api.md, I2C):
+ * 0, -EINVAL, -EBUSY (registered already) or the I2C core's error. */
+int da8xx_register_i2c(int instance, struct davinci_i2c_platform_data *pdata);
+/* Unregisters the instance's bus and its clients. */
+void da8xx_unregister_i2c(int instance);
+
 extern void __iomem *da8xx_syscfg0_base;
 extern void __iomem *da8xx_syscfg1_base;
 
@@ -53,6 +62,7 @@ extern void __iomem *da8xx_syscfg1_base;
 #define DA8XX_PLL0_BASE		0x01c11000
 #define DA8XX_TIMER64P0_BASE	0x01c20000
 #define DA8XX_TIMER64P1_BASE	0x01c21000
+#define DA8XX_I2C0_BASE		0x01c22000
 #define DA8XX_SPI0_BASE		0x01c41000
 #define DA8XX_UART0_BASE	0x01c42000
 #define DA8XX_PRUSS_MEM_BASE	0x01c30000
@@ -61,6 +71,7 @@ extern void __iomem *da8xx_syscfg1_base;
 #define DA8XX_UART2_BASE	0x01d0d000
 #define DA8XX_PLL1_BASE		0x01e1a000
 #define DA8XX_GPIO_BASE		0x01e26000
+#define DA8XX_I2C1_BASE		0x01e28000
 #define DA8XX_PSC1_BASE		0x01e27000
 #define DA8XX_EHRPWM0_BASE	0x01f00000
 #define DA8XX_EHRPWM1_BASE	0x01f02000
