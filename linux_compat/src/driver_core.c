@@ -367,6 +367,8 @@ void put_device(struct device *dev)
 	devres_release_all(dev);
 	if (dev->release)
 		dev->release(dev);
+	else if (dev->type && dev->type->release)
+		dev->type->release(dev);
 	else if (dev->class && dev->class->dev_release)
 		dev->class->dev_release(dev);
 	else

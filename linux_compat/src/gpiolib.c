@@ -12,6 +12,7 @@
 #include <linux/errno.h>
 #include <linux/kernel.h>
 #include <linux/mutex.h>
+#include <linux/overflow.h>
 #include <linux/slab.h>
 #include <linux/string.h>
 #include <linux_compat/context.h>
@@ -443,4 +444,76 @@ void lx_gpiolib_boot(void)
 	memset(descs, 0, sizeof(descs));
 	mutex_init(&lookup_lock);
 	INIT_LIST_HEAD(&lookup_tables);
+}
+
+/* ---- arrays of lines (Linux 6.1's gpiod_get_array, without its fast path) ---- */
+
+struct gpio_descs *gpiod_get_array(struct device *dev, const char *con_id, enum gpiod_flags flags)
+{
+	struct gpio_descs *array;
+	int count = gpiod_count(dev, con_id);
+	int i;
+
+	if (count < 0)
+		return ERR_PTR(count);
+	array = kzalloc(struct_size(array, desc, count), GFP_KERNEL);
+	if (!array)
+		return ERR_PTR(-ENOMEM);
+	for (i = 0; i < count; i++) {
+		struct gpio_desc *desc = gpiod_get_index(dev, con_id, (unsigned int)i, flags);
+
+		if (IS_ERR(desc)) {
+			gpiod_put_array(array);
+			return ERR_CAST(desc);
+		}
+		array->desc[array->ndescs++] = desc;
+	}
+	return array;
+}
+
+struct gpio_descs *gpiod_get_array_optional(struct device *dev, const char *con_id, enum gpiod_flags flags)
+{
+	struct gpio_descs *array = gpiod_get_array(dev, con_id, flags);
+
+	return PTR_ERR_OR_ZERO(array) == -ENOENT ? NULL : array;
+}
+
+void gpiod_put_array(struct gpio_descs *array)
+{
+	unsigned int i;
+
+	if (!array)
+		return;
+	for (i = 0; i < array->ndescs; i++)
+		gpiod_put(array->desc[i]);
+	kfree(array);
+}
+
+static void devm_gpiod_release_array(struct device *dev, void *res)
+{
+	gpiod_put_array(*(struct gpio_descs **)res);
+}
+
+struct gpio_descs *devm_gpiod_get_array(struct device *dev, const char *con_id, enum gpiod_flags flags)
+{
+	struct gpio_descs **dr, *array;
+
+	dr = devres_alloc(devm_gpiod_release_array, sizeof(*dr), GFP_KERNEL);
+	if (!dr)
+		return ERR_PTR(-ENOMEM);
+	array = gpiod_get_array(dev, con_id, flags);
+	if (IS_ERR(array)) {
+		devres_free(dr);
+		return array;
+	}
+	*dr = array;
+	devres_add(dev, dr);
+	return array;
+}
+
+struct gpio_descs *devm_gpiod_get_array_optional(struct device *dev, const char *con_id, enum gpiod_flags flags)
+{
+	struct gpio_descs *array = devm_gpiod_get_array(dev, con_id, flags);
+
+	return PTR_ERR_OR_ZERO(array) == -ENOENT ? NULL : array;
 }

@@ -30,6 +30,7 @@ struct board_entry {
 static DEFINE_MUTEX(core_lock);
 static LIST_HEAD(adapters);
 static LIST_HEAD(clients);
+static LIST_HEAD(drivers);      /* registered drivers, for detection on new adapters */
 static struct board_entry board_info[LX_NR_I2C_BOARD_INFO];
 static unsigned int board_info_count;
 static int first_dynamic_bus_num;
@@ -127,20 +128,41 @@ struct bus_type i2c_bus_type = {
 	.shutdown = i2c_device_shutdown,
 };
 
+static int detect(struct i2c_adapter *adap, struct i2c_driver *driver);
+static void remove_detected(struct i2c_driver *driver, struct i2c_adapter *adap);
+
 int i2c_register_driver(struct module *owner, struct i2c_driver *driver)
 {
+	struct i2c_adapter *adap;
+	int ret;
+
 	if (!driver)
 		return -EINVAL;
 	driver->driver.owner = owner;
 	driver->driver.bus = &i2c_bus_type;
 	INIT_LIST_HEAD(&driver->clients);
-	return driver_register(&driver->driver);
+	ret = driver_register(&driver->driver);
+	if (ret)
+		return ret;
+	mutex_lock(&core_lock);
+	list_add_tail(&driver->lx_node, &drivers);
+	mutex_unlock(&core_lock);
+	/* Linux's __process_new_driver: detection on every adapter there is */
+	list_for_each_entry(adap, &adapters, lx_node)
+		if (adap->lx_added)
+			detect(adap, driver);
+	return 0;
 }
 
 void i2c_del_driver(struct i2c_driver *driver)
 {
-	if (driver)
-		driver_unregister(&driver->driver);
+	if (!driver)
+		return;
+	remove_detected(driver, NULL);
+	mutex_lock(&core_lock);
+	list_del(&driver->lx_node);
+	mutex_unlock(&core_lock);
+	driver_unregister(&driver->driver);
 }
 
 /* ---- clients ---- */
@@ -300,6 +322,7 @@ static struct i2c_adapter *find_adapter(int nr)
 /* Registers adap, numbered already and on the list; then the board's clients of its bus. */
 static int register_adapter(struct i2c_adapter *adap)
 {
+	struct i2c_driver *driver;
 	unsigned int i;
 	int ret;
 
@@ -323,7 +346,121 @@ static int register_adapter(struct i2c_adapter *adap)
 		if (board_info[i].busnum == adap->nr &&
 		    IS_ERR(i2c_new_client_device(adap, &board_info[i].info)))
 			dev_err(&adap->dev, "Can't create device at 0x%02x\n", board_info[i].info.addr);
+	/* Linux's i2c_do_add_adapter: every driver's detection on the new bus */
+	list_for_each_entry(driver, &drivers, lx_node)
+		detect(adap, driver);
 	return 0;
+}
+
+/* ---- detection (Linux 6.1's i2c_detect, i2c_detect_address, i2c_default_probe) ---- */
+
+/* Whether a device answers at addr: a receive byte where a quick write could
+ * corrupt EEPROMs or write-only chips (0x30..0x37, 0x50..0x5f), else a quick
+ * write, else a receive byte. */
+static bool default_probe(struct i2c_adapter *adap, unsigned short addr)
+{
+	union i2c_smbus_data dummy;
+	int err;
+
+	if (((addr & ~0x0fU) == 0x50 || (addr & ~0x07U) == 0x30) &&
+	    i2c_check_functionality(adap, I2C_FUNC_SMBUS_READ_BYTE))
+		err = i2c_smbus_xfer(adap, addr, 0, I2C_SMBUS_READ, 0, I2C_SMBUS_BYTE, &dummy);
+	else if (i2c_check_functionality(adap, I2C_FUNC_SMBUS_QUICK))
+		err = i2c_smbus_xfer(adap, addr, 0, I2C_SMBUS_WRITE, 0, I2C_SMBUS_QUICK, NULL);
+	else if (i2c_check_functionality(adap, I2C_FUNC_SMBUS_READ_BYTE))
+		err = i2c_smbus_xfer(adap, addr, 0, I2C_SMBUS_READ, 0, I2C_SMBUS_BYTE, &dummy);
+	else {
+		dev_warn(&adap->dev, "No suitable probing method supported for address 0x%02X\n", addr);
+		err = -EOPNOTSUPP;
+	}
+	return err >= 0;
+}
+
+/* Offers temp's address to driver's detect and creates the client it names:
+ * 0, or detect's error other than -ENODEV (which ends the adapter's scan). */
+static int detect_address(struct i2c_client *temp, struct i2c_driver *driver)
+{
+	struct i2c_adapter *adap = temp->adapter;
+	unsigned short addr = temp->addr;
+	struct i2c_board_info info;
+	struct i2c_client *client;
+	bool busy;
+	int err;
+
+	if (addr < 0x08 || addr > 0x77) {
+		dev_warn(&adap->dev, "Invalid probe address 0x%02x\n", addr);
+		return 0;
+	}
+	mutex_lock(&core_lock);
+	busy = addr_busy(adap, addr);
+	mutex_unlock(&core_lock);
+	if (busy || !default_probe(adap, addr))
+		return 0;
+	memset(&info, 0, sizeof(info));
+	info.addr = addr;
+	err = driver->detect(temp, &info);
+	if (err)
+		return err == -ENODEV ? 0 : err;
+	if (info.type[0] == '\0') {
+		dev_err(&adap->dev, "%s detection function provided no name for 0x%x\n", driver->driver.name,
+			addr);
+		return 0;
+	}
+	dev_dbg(&adap->dev, "Creating %s at 0x%02x\n", info.type, info.addr);
+	client = i2c_new_client_device(adap, &info);
+	if (IS_ERR(client)) {
+		dev_err(&adap->dev, "Failed creating %s at 0x%02x\n", info.type, info.addr);
+		return 0;
+	}
+	mutex_lock(&core_lock);
+	list_add_tail(&client->detected, &driver->clients);
+	mutex_unlock(&core_lock);
+	return 0;
+}
+
+/* Runs driver's detection on adap where their classes meet: 0 or detect's error. */
+static int detect(struct i2c_adapter *adap, struct i2c_driver *driver)
+{
+	const unsigned short *address_list = driver->address_list;
+	struct i2c_client *temp;
+	int err = 0;
+
+	if (!driver->detect || !address_list)
+		return 0;
+	if (adap->class == I2C_CLASS_DEPRECATED) {
+		dev_dbg(&adap->dev, "This adapter dropped support for I2C classes\n");
+		return 0;
+	}
+	if (!(adap->class & driver->class))
+		return 0;
+	temp = kzalloc(sizeof(*temp), GFP_KERNEL);
+	if (!temp)
+		return -ENOMEM;
+	temp->adapter = adap;
+	for (; *address_list != I2C_CLIENT_END && !err; address_list++) {
+		temp->addr = *address_list;
+		err = detect_address(temp, driver);
+	}
+	kfree(temp);
+	return err;
+}
+
+/* Removes the clients driver's detection created (on adap, or on any adapter when NULL). */
+static void remove_detected(struct i2c_driver *driver, struct i2c_adapter *adap)
+{
+	struct i2c_client *client, *next;
+	LIST_HEAD(victims);
+
+	mutex_lock(&core_lock);
+	list_for_each_entry_safe(client, next, &driver->clients, detected)
+		if (!adap || client->adapter == adap)
+			list_move_tail(&client->detected, &victims);
+	mutex_unlock(&core_lock);
+	list_for_each_entry_safe(client, next, &victims, detected) {
+		list_del(&client->detected);
+		dev_dbg(&client->adapter->dev, "Removing %s at 0x%x\n", client->name, client->addr);
+		i2c_unregister_device(client);
+	}
 }
 
 /* Linux's i2c_register_adapter checks: a name and an algorithm. */
@@ -388,6 +525,7 @@ int i2c_add_numbered_adapter(struct i2c_adapter *adap)
 
 void i2c_del_adapter(struct i2c_adapter *adap)
 {
+	struct i2c_driver *driver;
 	struct i2c_client *c;
 
 	might_sleep();
@@ -395,6 +533,9 @@ void i2c_del_adapter(struct i2c_adapter *adap)
 		pr_err("i2c-core: attempting to delete unregistered adapter [%s]\n", adap ? adap->name : "");
 		return;
 	}
+	/* Linux's i2c_do_del_adapter: the clients detection created here go first */
+	list_for_each_entry(driver, &drivers, lx_node)
+		remove_detected(driver, adap);
 	for (;;) {
 		struct i2c_client *victim = NULL;
 
@@ -852,6 +993,7 @@ void lx_i2c_boot(void)
 	mutex_init(&core_lock);
 	INIT_LIST_HEAD(&adapters);
 	INIT_LIST_HEAD(&clients);
+	INIT_LIST_HEAD(&drivers);
 	memset(board_info, 0, sizeof(board_info));
 	board_info_count = 0;
 	first_dynamic_bus_num = 0;

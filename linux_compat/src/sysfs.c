@@ -352,6 +352,8 @@ static bool dev_find_file(struct device *dev, const char *dir, const char *name,
 
 	if (dev->class && groups_find(dev, dev->class->dev_groups, dir, name, out))
 		return true;
+	if (dev->type && groups_find(dev, dev->type->groups, dir, name, out))
+		return true;
 	if (groups_find(dev, dev->groups, dir, name, out))
 		return true;
 	if (dev->driver && !dev->lx_probing && groups_find(dev, dev->driver->dev_groups, dir, name, out))
@@ -441,6 +443,8 @@ int lx_sysfs_device_add(struct device *dev)
 		check_groups(dev, cls->dev_groups);
 		list_add_tail(&dev->lx_class_node, &cls->lx_devices);
 	}
+	if (dev->type)
+		check_groups(dev, dev->type->groups);
 	check_groups(dev, dev->groups);
 	return 0;
 }
@@ -535,11 +539,46 @@ static void devpath_of(struct device *dev, char *buf, size_t len)
 	scnprintf(buf + at, len - at, "/%s", dev_name(dev));
 }
 
+int add_uevent_var(struct kobj_uevent_env *env, const char *format, ...)
+{
+	va_list args;
+	int len;
+
+	if (env->envp_idx >= (int)ARRAY_SIZE(env->envp)) {
+		pr_err("add_uevent_var: too many keys\n");
+		return -ENOMEM;
+	}
+	va_start(args, format);
+	len = vsnprintf(&env->buf[env->buflen], sizeof(env->buf) - (size_t)env->buflen, format, args);
+	va_end(args);
+	if (len >= (int)sizeof(env->buf) - env->buflen) {
+		pr_err("add_uevent_var: buffer size too small\n");
+		return -ENOMEM;
+	}
+	env->envp[env->envp_idx++] = &env->buf[env->buflen];
+	env->buflen += len + 1;
+	return 0;
+}
+
+/* The variables of dev's class and type (Linux's dev_uevent): 0, or their error. */
+static int device_uevent_vars(struct device *dev, struct kobj_uevent_env *env)
+{
+	int ret = 0;
+
+	if (dev->class && dev->class->dev_uevent)
+		ret = dev->class->dev_uevent(dev, env);
+	if (!ret && dev->type && dev->type->uevent)
+		ret = dev->type->uevent(dev, env);
+	return ret;
+}
+
 int kobject_uevent_env(struct kobject *kobj, enum kobject_action action, char *envp[])
 {
+	struct kobj_uevent_env *env;
 	struct device *dev;
 	struct lx_uevent *ev;
-	unsigned int i;
+	unsigned int i, n;
+	int ret;
 
 	might_sleep();
 	if (!kobj)
@@ -551,16 +590,28 @@ int kobject_uevent_env(struct kobject *kobj, enum kobject_action action, char *e
 		}
 	}
 	dev = kobj_to_dev(kobj);
+	env = kzalloc(sizeof(*env), GFP_KERNEL);
+	if (!env)
+		return -ENOMEM;
+	ret = device_uevent_vars(dev, env);
+	if (ret) {
+		kfree(env);
+		return ret;
+	}
 	ev = &uevents[nuevents % LX_UEVENT_LOG];
 	memset(ev, 0, sizeof(*ev));
 	ev->action = action;
 	devpath_of(dev, ev->devpath, sizeof(ev->devpath));
 	strscpy(ev->subsystem, dev->class ? dev->class->name : dev->bus ? dev->bus->name : "",
 		sizeof(ev->subsystem));
-	for (i = 0; envp && envp[i] && i < LX_UEVENT_VARS; i++)
-		strscpy(ev->vars[i], envp[i], sizeof(ev->vars[i]));
-	ev->nvars = i;
+	n = 0;
+	for (i = 0; envp && envp[i] && n < LX_UEVENT_VARS; i++)
+		strscpy(ev->vars[n++], envp[i], sizeof(ev->vars[0]));
+	for (i = 0; i < (unsigned int)env->envp_idx && n < LX_UEVENT_VARS; i++)
+		strscpy(ev->vars[n++], env->envp[i], sizeof(ev->vars[0]));
+	ev->nvars = n;
 	nuevents++;
+	kfree(env);
 	return 0;
 }
 
@@ -800,6 +851,8 @@ unsigned int lx_sysfs_for_each_class_file(void (*fn)(const char *path, void *ctx
 				count++;
 			}
 			count += for_each_group_file(dev, cls->dev_groups, prefix, fn, ctx);
+			if (dev->type)
+				count += for_each_group_file(dev, dev->type->groups, prefix, fn, ctx);
 			count += for_each_group_file(dev, dev->groups, prefix, fn, ctx);
 			list_for_each_entry(f, &dev->lx_files, node) {
 				if (!(f->attr->attr.mode & S_IRUSR))

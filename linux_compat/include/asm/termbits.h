@@ -68,18 +68,49 @@ struct ktermios {
 #define CRTSCTS	020000000000
 #define IBSHIFT	16
 
-/* c_iflag, c_lflag (those raw mode clears) */
+/* c_iflag */
 #define IGNBRK	0000001
 #define BRKINT	0000002
 #define IGNPAR	0000004
 #define PARMRK	0000010
 #define INPCK	0000020
 #define ISTRIP	0000040
+#define INLCR	0000100
+#define IGNCR	0000200
 #define ICRNL	0000400
+#define IUCLC	0001000
 #define IXON	0002000
+#define IXANY	0004000
+#define IXOFF	0010000
+#define IMAXBEL	0020000
+#define IUTF8	0040000
+
+/* c_oflag */
 #define OPOST	0000001
+#define OLCUC	0000002
+#define ONLCR	0000004
+#define OCRNL	0000010
+#define ONOCR	0000020
+#define ONLRET	0000040
+#define OFILL	0000100
+#define OFDEL	0000200
+
+/* c_lflag */
 #define ISIG	0000001
 #define ICANON	0000002
+#define XCASE	0000004
 #define ECHO	0000010
+#define ECHOE	0000020
+#define ECHOK	0000040
+#define ECHONL	0000100
+#define NOFLSH	0000200
+#define TOSTOP	0000400
+#define ECHOCTL	0001000
+#define ECHOPRT	0002000
+#define ECHOKE	0004000
+#define FLUSHO	0010000
+#define PENDIN	0040000
+#define IEXTEN	0100000
+#define EXTPROC	0200000
 
 #endif /* _ASM_TERMBITS_H */

@@ -32,6 +32,10 @@
 #include <linux/kdev_t.h>
 #include <linux/kobject.h>
 #include <linux/sysfs.h>
+#include <linux/uidgid.h>
+#include <linux/err.h>          /* as Linux's device.h reaches them (through kobject.h, */
+#include <linux/workqueue.h>    /* ioport.h, mutex.h ...): drivers rely on the errno */
+#include <asm/page.h>           /* values, delayed work and PAGE_SIZE it brings */
 
 struct module;
 struct device;
@@ -71,6 +75,8 @@ struct device_driver {
 	bool suppress_bind_attrs;
 	enum probe_type probe_type;
 	const struct of_device_id *of_match_table;
+	const struct attribute_group **groups;      /* the driver's own files (accepted; not served:
+						     * there is no /sys/bus/<bus>/drivers here) */
 	const struct attribute_group **dev_groups;  /* files of each bound device, after probe */
 	int (*probe)(struct device *dev);
 	int (*remove)(struct device *dev);
@@ -79,9 +85,24 @@ struct device_driver {
 	struct list_head lx_bound;      /* ev3lx: its devices, in binding order */
 };
 
+/*
+ * A kind of device (Linux 6.1's struct device_type): its files beside the
+ * class's, its uevent variables, its /dev name and its release, used when
+ * the device has no release of its own (before the class's).
+ */
+struct device_type {
+	const char *name;
+	const struct attribute_group **groups;
+	int (*uevent)(struct device *dev, struct kobj_uevent_env *env);
+	char *(*devnode)(struct device *dev, umode_t *mode, kuid_t *uid, kgid_t *gid);
+	void (*release)(struct device *dev);
+};
+
 struct device {
 	struct device *parent;
+	const struct device_type *type;
 	const char *init_name;          /* the device's name (dev_name) */
+	u32 id;                         /* its instance number, where the bus or class numbers them */
 	struct bus_type *bus;
 	struct device_driver *driver;   /* bound driver, NULL while unbound */
 	void *platform_data;            /* board-specific data (board files set it) */
@@ -269,6 +290,17 @@ struct device_attribute {
 #define DEVICE_ATTR_RW(_name)	struct device_attribute dev_attr_##_name = __ATTR_RW(_name)
 #define DEVICE_ATTR_ADMIN_RW(_name) \
 	struct device_attribute dev_attr_##_name = __ATTR_RW_MODE(_name, 0600)
+/* A driver's file (Linux 6.1's struct driver_attribute), for its groups. */
+struct driver_attribute {
+	struct attribute attr;
+	ssize_t (*show)(struct device_driver *driver, char *buf);
+	ssize_t (*store)(struct device_driver *driver, const char *buf, size_t count);
+};
+
+#define DRIVER_ATTR_RW(_name)	struct driver_attribute driver_attr_##_name = __ATTR_RW(_name)
+#define DRIVER_ATTR_RO(_name)	struct driver_attribute driver_attr_##_name = __ATTR_RO(_name)
+#define DRIVER_ATTR_WO(_name)	struct driver_attribute driver_attr_##_name = __ATTR_WO(_name)
+
 #define DEVICE_ATTR_RO(_name)	struct device_attribute dev_attr_##_name = __ATTR_RO(_name)
 #define DEVICE_ATTR_ADMIN_RO(_name) \
 	struct device_attribute dev_attr_##_name = __ATTR_RO_MODE(_name, 0400)
@@ -293,7 +325,7 @@ struct class {
 	struct module *owner;
 	const struct attribute_group **class_groups;
 	const struct attribute_group **dev_groups;  /* files of every device of the class */
-	int (*dev_uevent)(struct device *dev, void *env);
+	int (*dev_uevent)(struct device *dev, struct kobj_uevent_env *env);
 	char *(*devnode)(struct device *dev, umode_t *mode);
 	void (*class_release)(struct class *class);
 	void (*dev_release)(struct device *dev);     /* release for devices without their own */

@@ -260,7 +260,7 @@ void i2c_unregister_device(struct i2c_client *client);
 int i2c_register_board_info(int busnum, struct i2c_board_info const *info, unsigned int n);
 
 struct i2c_driver {
-	unsigned int class;
+	unsigned int class;             /* the adapter classes detect() is tried on */
 	union {
 		/* bind to client: 0, or -errno (Linux 6.3+) */
 		int (*probe)(struct i2c_client *client);
@@ -272,10 +272,21 @@ struct i2c_driver {
 	int (*command)(struct i2c_client *client, unsigned int cmd, void *arg);
 	struct device_driver driver;
 	const struct i2c_device_id *id_table;
+	/* Auto-detection (Linux's i2c_detect): on each adapter whose class
+	 * shares a bit with class, every address of address_list (ending in
+	 * I2C_CLIENT_END) free and answering a probe is offered to detect,
+	 * which fills info->type (0) or declines (-ENODEV); a client of that
+	 * type is then created, and removed with the driver or adapter. */
+	int (*detect)(struct i2c_client *client, struct i2c_board_info *info);
 	const unsigned short *address_list;
-	struct list_head clients;
+	struct list_head clients;       /* the clients detect created */
 	u32 flags;
+	struct list_head lx_node;       /* ev3lx: on the list of registered drivers */
 };
+
+/* The end of a driver's address_list (Linux's value), and a list written inline. */
+#define I2C_CLIENT_END	0xfffeU
+#define I2C_ADDRS(addr, addrs...)	((const unsigned short []){ addr, ## addrs, I2C_CLIENT_END })
 
 #define to_i2c_driver(d)	container_of(d, struct i2c_driver, driver)
 

@@ -29,7 +29,23 @@ enum kobject_action {
 	KOBJ_UNBIND,
 };
 
-/* Records a uevent of the device that embeds kobj; 0. */
+/* A uevent's variables as a bus, class or device type adds them
+ * (Linux 6.1's struct kobj_uevent_env, its sizes). */
+#define UEVENT_NUM_ENVP		64
+#define UEVENT_BUFFER_SIZE	2048
+struct kobj_uevent_env {
+	char *argv[3];
+	char *envp[UEVENT_NUM_ENVP];
+	int envp_idx;
+	char buf[UEVENT_BUFFER_SIZE];
+	int buflen;
+};
+
+/* Appends one "KEY=value" variable, printf-style: 0, or -ENOMEM when env is full. */
+__printf(2, 3) int add_uevent_var(struct kobj_uevent_env *env, const char *format, ...);
+
+/* Records a uevent of the device that embeds kobj (with its class's and
+ * device type's variables, as Linux's dev_uevent adds them); 0. */
 int kobject_uevent(struct kobject *kobj, enum kobject_action action);
 /* The same with extra "KEY=value" variables (envp, NULL-terminated, at most
  * LX_UEVENT_VARS are kept); 0, or -EINVAL for a malformed variable. */

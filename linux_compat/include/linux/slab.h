@@ -17,6 +17,7 @@
 #include <linux/types.h>
 #include <linux/gfp.h>
 #include <linux/compiler.h>
+#include <linux/overflow.h>
 #include <linux_compat/heap.h>
 
 #define ZERO_SIZE_PTR		((void *)16)

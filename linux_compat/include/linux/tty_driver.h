@@ -30,6 +30,17 @@ struct tty_operations {
 	void (*hangup)(struct tty_struct *tty);
 	int (*break_ctl)(struct tty_struct *tty, int state);
 	void (*wait_until_sent)(struct tty_struct *tty, int timeout);
+	/* Linux 6.1's other operations: kept for the drivers that fill them;
+	 * this tty core writes with write() and never calls these. */
+	int (*put_char)(struct tty_struct *tty, unsigned char ch);
+	void (*flush_chars)(struct tty_struct *tty);
+	void (*throttle)(struct tty_struct *tty);
+	void (*unthrottle)(struct tty_struct *tty);
+	void (*stop)(struct tty_struct *tty);
+	void (*start)(struct tty_struct *tty);
+	void (*send_xchar)(struct tty_struct *tty, char ch);
+	int (*tiocmget)(struct tty_struct *tty);
+	int (*tiocmset)(struct tty_struct *tty, unsigned int set, unsigned int clear);
 };
 
 #define TTY_DRIVER_TYPE_SYSTEM		0x0001

@@ -51,6 +51,7 @@ static irqreturn_t edge(int irq, void *dev)
 static void lookup_tests(void)
 {
 	struct gpio_desc *led, *reset, *button, *bus, *d1, *none;
+	struct gpio_descs *data;
 	bool level = false;
 
 	gpiod_add_lookup_table(&board_gpios);
@@ -90,6 +91,18 @@ static void lookup_tests(void)
 	is_int(gpiod_count(&consumer, "data"), 2, "gpiod_count: two data lines");
 	d1 = gpiod_get_index(&consumer, "data", 1, GPIOD_OUT_LOW);
 	ok(!IS_ERR(d1) && desc_to_gpio(d1) == DATA1, "gpiod_get_index picks index 1");
+	ok(gpiod_get_array(&consumer, "data", GPIOD_IN) == ERR_PTR(-EBUSY),
+	   "gpiod_get_array with one line taken: its error, the other line put back");
+	gpiod_put(d1);
+	data = gpiod_get_array(&consumer, "data", GPIOD_IN);
+	ok(!IS_ERR(data) && data->ndescs == 2 && desc_to_gpio(data->desc[0]) == DATA0 &&
+	   desc_to_gpio(data->desc[1]) == DATA1, "gpiod_get_array: both data lines, in index order");
+	ok(gpiod_get_array(&consumer, "missing", GPIOD_IN) == ERR_PTR(-ENOENT) &&
+	   gpiod_get_array_optional(&consumer, "missing", GPIOD_IN) == NULL,
+	   "no lines: -ENOENT, or NULL when optional");
+	gpiod_put_array(data);
+	d1 = gpiod_get_index(&consumer, "data", 1, GPIOD_OUT_LOW);
+	ok(!IS_ERR(d1), "gpiod_put_array gave the lines back");
 
 	ok(gpiod_get(&consumer, "missing", GPIOD_IN) == ERR_PTR(-ENOENT), "a line no table names: -ENOENT");
 	none = gpiod_get_optional(&consumer, "missing", GPIOD_IN);
@@ -171,7 +184,7 @@ int main(void)
 	static const unsigned int pins[] = { LED, RESET, BUTTON, BUS, DATA0, DATA1 };
 	unsigned int i;
 
-	tap_plan(37);
+	tap_plan(41);
 	is_int(hs_board_init(NULL), E_OK, "host_sim board");
 	for (i = 0; i < ARRAY_SIZE(pins); i++)
 		hs_gpio_mux_as_gpio(pins[i]);   /* the board's pinmux, as U-Boot leaves it */

@@ -309,16 +309,70 @@ static void test_context_and_teardown(void)
 	i2c_del_adapter(&adap_a);
 }
 
+/* ---- detection: a driver that finds its chip by probing addresses ---- */
+
+static int detect_calls, detected_probes, detected_removes;
+static unsigned short detect_addrs[4];
+
+static int det_detect(struct i2c_client *client, struct i2c_board_info *info)
+{
+	detect_addrs[detect_calls++ & 3] = client->addr;
+	if (client->addr != 0x50)
+		return -ENODEV;
+	strscpy(info->type, "det-chip", sizeof(info->type));
+	return 0;
+}
+
+static int det_probe(struct i2c_client *client)
+{
+	detected_probes++;
+	return 0;
+}
+
+static void det_remove(struct i2c_client *client)
+{
+	detected_removes++;
+}
+
+static const unsigned short det_addresses[] = { 0x4f, 0x50, I2C_CLIENT_END };
+static const struct i2c_device_id det_ids[] = { { "det-chip", 0 }, { } };
+static struct i2c_driver det_driver = {
+	.class = I2C_CLASS_HWMON, .driver = { .name = "det" }, .probe = det_probe, .remove = det_remove,
+	.id_table = det_ids, .detect = det_detect, .address_list = det_addresses,
+};
+static struct i2c_adapter adap_hwmon = { .name = "hwmon bus", .algo = &test_algo, .class = I2C_CLASS_HWMON };
+static struct i2c_adapter adap_plain = { .name = "no class", .algo = &test_algo };
+
+static void test_detection(void)
+{
+	is_int(i2c_add_driver(&det_driver), 0, "a driver with detect and an address list");
+	is_int(i2c_add_adapter(&adap_plain), 0, "an adapter of no class");
+	is_int(detect_calls, 0, "is not scanned");
+	is_int(i2c_add_adapter(&adap_hwmon), 0, "an adapter of the driver's class");
+	ok(detect_calls == 1 && detect_addrs[0] == 0x50,
+	   "is scanned: detect is offered only the address that answers the probe (0x%02x)", detect_addrs[0]);
+	ok(detected_probes == 1 && list_is_singular(&det_driver.clients), "the detected chip's client is created and bound");
+	i2c_del_driver(&det_driver);
+	ok(detected_removes == 1 && list_empty(&det_driver.clients), "removing the driver removes the detected client");
+	is_int(i2c_add_driver(&det_driver), 0, "the driver registered again");
+	ok(detected_probes == 2, "detects the chip on the adapter already there");
+	i2c_del_adapter(&adap_hwmon);
+	ok(detected_removes == 2 && list_empty(&det_driver.clients), "removing the adapter removes the detected client");
+	i2c_del_driver(&det_driver);
+	i2c_del_adapter(&adap_plain);
+}
+
 static void body(void)
 {
 	test_adapters_and_clients();
 	test_smbus();
 	test_context_and_teardown();
+	test_detection();
 }
 
 int main(void)
 {
-	tap_plan(61);
+	tap_plan(71);
 	is_int(hs_board_init(NULL), E_OK, "host_sim board");
 	ok(lx_test_run(body), "test task ran to completion");
 	hs_board_shutdown();

@@ -297,16 +297,70 @@ static void misuse_tests(void)
 	device_unregister(dev);
 }
 
+/* ---- device types: files, uevent variables, release (ev3dev's lego-port is one) ---- */
+
+static int type_released;
+
+static ssize_t port_name_show(struct device *dev, struct device_attribute *attr, char *buf)
+{
+	return sysfs_emit(buf, "%s\n", dev->type->name);
+}
+static struct device_attribute dev_attr_port_name = __ATTR(port_name, 0444, port_name_show, NULL);
+static struct attribute *port_type_attrs[] = { &dev_attr_port_name.attr, NULL };
+ATTRIBUTE_GROUPS(port_type);
+
+static int port_type_uevent(struct device *dev, struct kobj_uevent_env *env)
+{
+	return add_uevent_var(env, "LEGO_PORT_NAME=%s", dev_name(dev));
+}
+
+static int port_class_uevent(struct device *dev, struct kobj_uevent_env *env)
+{
+	return add_uevent_var(env, "LEGO_CLASS=%s", dev->class->name);
+}
+
+static void port_type_release(struct device *dev)
+{
+	type_released++;
+}
+
+static const struct device_type port_type = {
+	.name = "ev3-input-port", .groups = port_type_groups, .uevent = port_type_uevent,
+	.release = port_type_release,
+};
+static struct class port_class = { .name = "lego-port", .dev_uevent = port_class_uevent };
+static struct device port_dev = { .type = &port_type, .class = &port_class, .init_name = "port0" };
+
+static void device_type_tests(void)
+{
+	const struct lx_uevent *ev;
+	unsigned int ev0;
+
+	is_int(class_register(&port_class), 0, "a class with a dev_uevent");
+	ev0 = lx_uevent_count();
+	is_int(device_register(&port_dev), 0, "a device of a device type in it");
+	ok(!strcmp(cat("/sys/class/lego-port/port0/port_name"), "ev3-input-port\n"),
+	   "the type's files are the device's (%s)", read_buf);
+	ev = lx_uevent_get(ev0);
+	ok(ev && ev->action == KOBJ_ADD && ev->nvars == 2 && !strcmp(ev->vars[0], "LEGO_CLASS=lego-port") &&
+	   !strcmp(ev->vars[1], "LEGO_PORT_NAME=port0"),
+	   "its uevent carries the class's, then the type's variables");
+	device_unregister(&port_dev);
+	is_int(type_released, 1, "without a release of its own, the type's releases it");
+	class_unregister(&port_class);
+}
+
 static void body(void)
 {
 	class_tests();
 	platform_tests();
 	misuse_tests();
+	device_type_tests();
 }
 
 int main(void)
 {
-	tap_plan(58);
+	tap_plan(63);
 	is_int(hs_board_init(NULL), E_OK, "host_sim board");
 	ok(lx_test_run(body), "test task ran to completion");
 	hs_board_shutdown();

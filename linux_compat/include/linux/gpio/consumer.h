@@ -67,6 +67,28 @@ struct gpio_desc *__must_check devm_gpiod_get_index_optional(struct device *dev,
 /* Releases a devm_gpiod_get line now. */
 void devm_gpiod_put(struct device *dev, struct gpio_desc *desc);
 
+/* All of con_id's lines in index order (Linux's struct gpio_descs; the
+ * fast-path info of Linux's array is not kept: values go line by line). */
+struct gpio_descs {
+	struct gpio_array *info;        /* always NULL here */
+	unsigned int ndescs;
+	struct gpio_desc *desc[];
+};
+
+/* Every line the tables give dev for con_id: the array, or ERR_PTR(-ENOENT)
+ * when there is none (or a line's error; those taken are put back). */
+struct gpio_descs *__must_check gpiod_get_array(struct device *dev, const char *con_id, enum gpiod_flags flags);
+/* As gpiod_get_array, NULL instead of -ENOENT. */
+struct gpio_descs *__must_check gpiod_get_array_optional(struct device *dev, const char *con_id,
+							 enum gpiod_flags flags);
+/* Puts every line back and frees the array. */
+void gpiod_put_array(struct gpio_descs *descs);
+/* As gpiod_get_array, put back when dev's driver unbinds (devres). */
+struct gpio_descs *__must_check devm_gpiod_get_array(struct device *dev, const char *con_id,
+						     enum gpiod_flags flags);
+struct gpio_descs *__must_check devm_gpiod_get_array_optional(struct device *dev, const char *con_id,
+							      enum gpiod_flags flags);
+
 /* GPIO_LINE_DIRECTION_IN / _OUT, or -EINVAL. */
 int gpiod_get_direction(struct gpio_desc *desc);
 /* 0 or -EINVAL; value is logical (raw: physical).  Any context. */
