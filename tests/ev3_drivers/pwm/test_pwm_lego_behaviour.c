@@ -645,7 +645,7 @@ int main(void)
 	const int motors[4] = { HS_MOTOR_LARGE, HS_MOTOR_LARGE, HS_MOTOR_MEDIUM,
 				PWM_TEST_NO_MOTOR };
 
-	tap_plan(70);
+	tap_plan(71);
 	ok(pwm_test_run(body, motors), "test body ran to its end");
 	return tap_done();
 }
