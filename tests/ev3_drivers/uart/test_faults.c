@@ -59,6 +59,9 @@ static void unplug(void)
 	ok(ut_ext(0)->flags & LMS_UART_FLAG_STALE, "flagged stale");
 	ok(!(ut_status(0) & LMS_UART_DATA_READY), "DATA_READY cleared");
 	ok(ut_wait_state(0, LMS_UART_STATE_SYNC, 1000), "back to SYNC for the next handshake");
+	ok(ut_shm->lms.actual[0] == 0 && ut_shm->lms.log_in[0] == 0,
+	   "its samples start again in slot 0 (Actual %u, LogIn %u; LEGO's 0, 0)", ut_shm->lms.actual[0],
+	   ut_shm->lms.log_in[0]);
 	is_int(ut_ext(0)->speed, 2400, "at 2400 baud");
 	is_int(ut_ext(0)->reconnects - reconnects, 1, "one reconnect counted");
 
@@ -71,7 +74,8 @@ static void unplug(void)
 	ok(ut_status(0) & LMS_UART_PORT_CHANGED, "new description flagged");
 	is_int(uart_svc_clear_changed(0), E_OK, "accepted");
 	s = ut_wait_sample(0, 0, 300);
-	ok(s && s[0] == 71, "fresh value %d", s ? s[0] : -1);
+	ok(s && s[0] == 71 && ut_shm->lms.actual[0] == 0, "fresh value %d in slot %u", s ? s[0] : -1,
+	   ut_shm->lms.actual[0]);
 }
 
 static void bit_errors(void)
@@ -150,7 +154,7 @@ static void body(void)
 
 int main(void)
 {
-	tap_plan(32);
+	tap_plan(33);
 	ok(ut_run(body, 3, "UART0"), "scenario ran to its end");
 	return tap_done();
 }
