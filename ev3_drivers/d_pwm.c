@@ -29,8 +29,8 @@
  *    single command gives.  A command naming one motor of a pair floats both.
  *    Deliberately unlike LEGO's, whose STEP_/TIME_SPEED without a ramp up
  *    clears the regulator's terms at every command (re-issued every 1-4 ms,
- *    speed 40 runs at ~500 deg/s instead of ~410) and whose re-issued
- *    TIME_SPEED with a ramp runs at 320..780 deg/s: a loop re-sending a
+ *    speed 40 runs at 490-520 deg/s instead of 413) and whose re-issued
+ *    TIME_SPEED with a ramp runs at 315..920 deg/s: a loop re-sending a
  *    command gets the speed it asks for.
  *  - A regulated command that brakes at its end closes in on it as LEGO's
  *    does: over its last speed/2 counts (speed/3 on a medium motor; speed
@@ -65,15 +65,16 @@
  *    -16 braked 100 ms after a stop from speed 50).  A change of direction
  *    keeps the last speed until the new direction fills a window, and a
  *    longer window is waited for as the motor speeds up (SPEED +50 to -50:
- *    90 % of the speed the other way after 77..88 ms; +100 to -100 after
- *    126..133 ms, the new direction shown from ~60 ms on).  Deliberately
- *    unlike LEGO's, which keeps counting in the old direction while its
- *    measured speed is above 35: in some reversals from +100 (4 of 10) it
- *    notices the turn only at -300 deg/s, the window it then waits for
- *    grows with the speed faster than it fills, and MOTORDATA shows +15
- *    for ~90 ms while the motor runs the other way at up to -950 deg/s
- *    (then -67 at 200 ms, where the others show -95).  ev3lx reads the
- *    direction pin whenever the port drives against the last direction.
+ *    90 % of the speed the other way after 70..87 ms, LEGO's 76..88; +100
+ *    to -100 after 127..135 ms, LEGO's 116..132, the new direction shown
+ *    from ~60 ms on).  Deliberately unlike LEGO's, which keeps counting in
+ *    the old direction while its measured speed is above 35: in some
+ *    reversals from +100 (7 of 20) it notices the turn only at -300 deg/s,
+ *    the window it then waits for grows with the speed faster than it
+ *    fills, and MOTORDATA shows +15 for ~90 ms while the motor runs the
+ *    other way at up to -950 deg/s (then -67 at 200 ms, where the others
+ *    show -95).  ev3lx reads the direction pin whenever the port drives
+ *    against the last direction.
  *
  * Concurrency: one spinlock guards all port state.  The tacho interrupt and
  * the 2 ms control hrtimer run with interrupts off and take it plainly;
@@ -801,7 +802,7 @@ static void limited_tick(struct pwm_port *p, int port, ktime_t now)
 	 * LEGO's time.  A command re-issued while it runs starts in the phase
 	 * it is in, and keeps its terms: LEGO's clears them at every command
 	 * without a ramp up, and a loop re-issuing STEP_SPEED 40 every 1-4 ms
-	 * runs at ~500 deg/s there instead of ~410.
+	 * runs at 490-520 deg/s there instead of 413.
 	 */
 	if (pr->regulated && phase != pr->phase && progress < pr->up + pr->flat + pr->down) {
 		pr->phase = phase;
