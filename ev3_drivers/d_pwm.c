@@ -15,12 +15,23 @@
  *
  * What applications see behaves as LEGO's lms2012 d_pwm.c (mindboards/
  * ev3sources) does, measured on the same byte streams and simulated motors:
+ *  - The speed regulator is LEGO's incremental PID in LEGO's integer
+ *    arithmetic (its truncated integral stops adding power once the whole
+ *    measured speed is the target: SPEED 100 runs at ~1 010 deg/s, SPEED 40
+ *    anywhere in 403..413).  A limited command starts each of its phases
+ *    (ramp up, constant, ramp down) with fresh integral and derivative
+ *    terms, keeping its power for that tick, as LEGO's does.
  *  - A command re-issued while running (a control loop sending STEP_SYNC,
  *    SPEED, POWER, STEP_/TIME_SPEED every few ms) changes the target and
  *    nothing else: the regulator keeps its accumulated power, a ramp resumes
  *    where the port runs, the same sync pair runs on (its slave keeping its
  *    lag, even when the turn changes sign), so the motors run at the speed a
  *    single command gives.  A command naming one motor of a pair floats both.
+ *    Deliberately unlike LEGO's, whose STEP_/TIME_SPEED without a ramp up
+ *    clears the regulator's terms at every command (re-issued every 1-4 ms,
+ *    speed 40 runs at 490-520 deg/s instead of 413) and whose re-issued
+ *    TIME_SPEED with a ramp runs at 315..920 deg/s: a loop re-sending a
+ *    command gets the speed it asks for.
  *  - A regulated command that brakes at its end closes in on it as LEGO's
  *    does: over its last speed/2 counts (speed/3 on a medium motor; speed
  *    ms for a time command) it asks for the counts (ms) left as its speed,
@@ -45,12 +56,25 @@
  *    term: settled within 250 ms, a count or so back from the overshoot, and
  *    it stays put; only a load displacing the shaft by more than 3 counts
  *    starts an integral that brings it back.
- *  - MOTORDATA Speed is the measured speed.  OUTPUT_STOP clears the edge
- *    history: 0 until a full averaging window is in again (~40 ms coasting
- *    from speed 50, ~14 ms braked), then the coasting or settling motor's
- *    speed (+40 coasting, -16 braked 100 ms after a stop from speed 50).
- *    A change of direction keeps the last speed until the new direction
- *    fills a window (SPEED +50 to -50: 90 % of the speed after ~80 ms).
+ *  - MOTORDATA Speed is the measured speed, shown one 2 ms tick late as
+ *    LEGO's is, averaged over a window that the newest edge interval
+ *    chooses (4..64 edges), so a motor braking hard is followed within
+ *    milliseconds.  OUTPUT_STOP clears the edge history: 0 until a full
+ *    averaging window is in again (~40 ms coasting from speed 50, ~14 ms
+ *    braked), then the coasting or settling motor's speed (+40 coasting,
+ *    -16 braked 100 ms after a stop from speed 50).  A change of direction
+ *    keeps the last speed until the new direction fills a window, and a
+ *    longer window is waited for as the motor speeds up (SPEED +50 to -50:
+ *    90 % of the speed the other way after 70..87 ms, LEGO's 76..88; +100
+ *    to -100 after 127..135 ms, LEGO's 116..132, the new direction shown
+ *    from ~60 ms on).  Deliberately unlike LEGO's, which keeps counting in
+ *    the old direction while its measured speed is above 35: in some
+ *    reversals from +100 (7 of 20) it notices the turn only at -300 deg/s,
+ *    the window it then waits for grows with the speed faster than it
+ *    fills, and MOTORDATA shows +15 for ~90 ms while the motor runs the
+ *    other way at up to -950 deg/s (then -67 at 200 ms, where the others
+ *    show -95).  ev3lx reads the direction pin whenever the port drives
+ *    against the last direction.
  *
  * Concurrency: one spinlock guards all port state.  The tacho interrupt and
  * the 2 ms control hrtimer run with interrupts off and take it plainly;
@@ -164,13 +188,13 @@
 #define HOLD_I_MAX         (POWER_MAX / HOLD_I_GAIN)
 #define HOLD_STILL_TICKS   25      /* the integral only grows once no edge came for 50 ms */
 #define PROGRAM_STOP_BRAKE_MS 100
-#define RAMP_FLOOR_SPEED   5       /* a ramp never asks for less, or a step ramp would stall */
+#define RAMP_UP_FLOOR_SPEED 6      /* a ramp never asks for less, or a step ramp would stall: */
+#define RAMP_FLOOR_SPEED   5       /* LEGO's ramps start at 6 and end at 5 */
 #define RAMP_FLOOR_POWER   10
 #define APPROACH_COUNTS_MIN 15     /* a step slows down over its last counts: 3/4 per unit */
 #define APPROACH_COUNTS_MAX 60     /* of speed (30 at speed 40), at least 15, at most 60, */
 #define APPROACH_SPEED     3       /* and arrives at this speed, slow enough not to overshoot */
 #define APPROACH_MS        100     /* a braking time command slows down over its last 100 ms */
-#define PID_SCALE          100     /* fixed point of the PID accumulators */
 #define SYNC_POSITION_GAIN 2       /* slave speed per count it is off its share */
 #define SYNC_LAG_FREE      2       /* counts a slave may lag before the master waits */
 #define SYNC_LAG_SLOWDOWN  4       /* master speed given up per count of lag beyond that */
@@ -211,6 +235,13 @@ static const struct pinmux_field pwm_pinmux[] = {
 
 enum pwm_drive { DRIVE_COAST, DRIVE_FORWARD, DRIVE_REVERSE, DRIVE_BRAKE };
 
+/* What began the current run of edges in one direction (see tacho_speed). */
+enum pwm_run {
+	RUN_CLEARED,         /* OUTPUT_STOP or SET_TYPE forgot the edges before */
+	RUN_SILENCE,         /* the motor stood still; the last edge before is old */
+	RUN_TURN,            /* the motor turned; the last edge before went the other way */
+};
+
 enum pwm_state {
 	STATE_IDLE,          /* coasting */
 	STATE_UNREG,         /* unlimited, fixed power */
@@ -222,6 +253,8 @@ enum pwm_state {
 	STATE_BRAKE_TIMED,   /* PROGRAM_STOP: short-brake until brake_until, then coast */
 };
 
+enum pwm_phase { PHASE_UP, PHASE_FLAT, PHASE_DOWN };
+
 struct pwm_profile {          /* a limited command */
 	bool by_time;
 	bool brake;
@@ -232,6 +265,7 @@ struct pwm_profile {          /* a limited command */
 	s32 origin;           /* position at the start */
 	ktime_t start;
 	bool closing;         /* braking at its end: closing in on it (latched) */
+	enum pwm_phase phase; /* the phase the regulator last started */
 };
 
 struct pwm_port {
@@ -261,8 +295,8 @@ struct pwm_port {
 	ktime_t brake_until;  /* BRAKE_TIMED */
 
 	s32 power;            /* applied power, -POWER_MAX..POWER_MAX */
-	s32 pid_power;        /* PID accumulator, PID_SCALE fixed point */
-	s32 pid_i;
+	s32 pid_power;        /* the regulator's power, -POWER_MAX..POWER_MAX */
+	s32 pid_i;            /* its decaying integral, in power */
 	s32 pid_last_err;
 
 	/* tacho: written by the edge interrupt */
@@ -271,10 +305,10 @@ struct pwm_port {
 	u32 stamps[STAMP_RING];
 	u8 stamp_head;        /* next slot */
 	u8 stamp_valid;       /* consecutive stamps in the same direction, up to STAMP_RING */
+	enum pwm_run run;     /* what began those stamps */
 
 	/* derived in the control tick */
 	s8 speed;
-	bool speed_held;      /* STOP or a turn cleared the stamps: speed held until a full window */
 	s32 command_origin;   /* TachoCounts reference */
 	s32 sensor_origin;    /* TachoSensor reference */
 
@@ -417,7 +451,7 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 		dir = (int_high != dir_high) ? 1 : -1;
 	if (dir != p->last_dir) {
 		p->stamp_valid = 0;
-		p->speed_held = true;
+		p->run = RUN_TURN;
 	}
 	p->last_dir = dir;
 	p->position += dir;
@@ -431,12 +465,15 @@ static irqreturn_t tacho_isr(int irq, void *dev_id)
 
 /*
  * Measures a port's speed (-100..100) from its edge stamps; 0 after a
- * silence.  The window is as many edges as the speed asks for (more when
- * faster).  After OUTPUT_STOP (speed set to 0) or a change of direction
- * cleared the stamps, the speed keeps its last value until the window the
- * newest edge interval asks for is full, as LEGO's driver shows it (0 for
- * about 40 ms of a large motor coasting from speed 50; through a reversal
- * the old direction's speed, so that the regulator keeps pushing).
+ * silence.  The window is as many edges as the newest edge interval's speed
+ * asks for (more when faster), so a motor slowing down hard is followed
+ * within a few ms.  The speed is only measured again over a full window of
+ * edges in one direction: after OUTPUT_STOP (speed set to 0), a silence or a
+ * change of direction cleared the stamps, and whenever the motor got fast
+ * enough to ask for a longer window, it keeps its last value until that
+ * window is full, as LEGO's driver shows it (0 for about 40 ms of a large
+ * motor coasting from speed 50; through a reversal the old direction's speed
+ * at first, then the new one in steps, so the regulator keeps pushing).
  */
 static s8 tacho_speed(struct pwm_port *p, u32 now)
 {
@@ -444,28 +481,32 @@ static s8 tacho_speed(struct pwm_port *p, u32 now)
 	static const u8 samples_large[] = { 4, 16, 32, 64 };
 	static const u8 samples_medium[] = { 2, 4, 8, 16 };
 	const u8 *table = p->medium ? samples_medium : samples_large;
-	int mag = abs(p->speed);
-	u32 n, newest, oldest, ticks, speed;
+	u32 n, mag, newest, oldest, ticks, speed;
 
 	if (p->stamp_valid == 0)
 		return 0;
 	newest = p->stamps[(p->stamp_head + STAMP_RING - 1) % STAMP_RING];
 	if (((now - newest) & STAMP_MASK) > cpp) {
 		p->stamp_valid = 0;
+		p->run = RUN_SILENCE;
 		return 0;
 	}
 	if (p->stamp_valid < 2)
-		return p->speed_held ? p->speed : 0;
-	if (p->speed_held) {
-		ticks = (newest - p->stamps[(p->stamp_head + STAMP_RING - 2) % STAMP_RING]) & STAMP_MASK;
-		mag = ticks ? min_t(u32, cpp / ticks, SPEED_MAX) : SPEED_MAX;
-	}
-	n = table[(mag >= 40) + (mag >= 60) + (mag >= 80)];
-	if (p->speed_held && p->stamp_valid - 1U < n)
 		return p->speed;
-	p->speed_held = false;
-	if (n > p->stamp_valid - 1U)
-		n = p->stamp_valid - 1U;
+	ticks = (newest - p->stamps[(p->stamp_head + STAMP_RING - 2) % STAMP_RING]) & STAMP_MASK;
+	mag = ticks ? min_t(u32, cpp / ticks, SPEED_MAX) : SPEED_MAX;
+	n = table[(mag > 40) + (mag > 60) + (mag > 80)];
+	/*
+	 * LEGO's window may reach back to the edge before the run: after a
+	 * silence that edge is old and the speed low; after OUTPUT_STOP its
+	 * time stamp is cleared and the speed reads 0 for that tick (on the
+	 * brick, where the free-running timer is far from 0); after a turn the
+	 * window waits for an edge more.
+	 */
+	if (p->stamp_valid < n || (p->stamp_valid == n && p->run == RUN_TURN))
+		return p->speed;
+	if (p->stamp_valid == n && p->run == RUN_CLEARED)
+		return 0;
 	oldest = p->stamps[(p->stamp_head + STAMP_RING - 1 - n) % STAMP_RING];
 	ticks = (newest - oldest) & STAMP_MASK;
 	if (ticks == 0)
@@ -511,12 +552,21 @@ static void port_drive_power(struct pwm_port *p, s32 power, bool regulated)
 /* Forgets the PID history, keeping the applied power as the starting point. */
 static void pid_reset(struct pwm_port *p)
 {
-	p->pid_power = p->power * PID_SCALE;
+	p->pid_power = p->power;
 	p->pid_i = 0;
 	p->pid_last_err = 0;
 }
 
-/* One incremental PID step towards a target speed; returns the new power. */
+/*
+ * One incremental PID step towards a target speed; returns the new power.
+ * The arithmetic is LEGO's (lms2012 d_pwm.c, dRegulateSpeed): whole units of
+ * power, the integral decaying by 9/10 and growing by err/4 (err/3 on a
+ * medium motor), both truncated.  The truncation is what stops the power
+ * rising once the measured speed is within a few units of the target, or
+ * at the top of the scale, where the measurement saturates: a large motor
+ * asked for speed 100 runs at ~1 010 deg/s as LEGO's does, not at full
+ * duty (~1 040), and the 90 % point of a reversal from +100 is where LEGO's is.
+ */
 static s32 pid_step(struct pwm_port *p, s32 target)
 {
 	s32 err = target - p->speed;
@@ -529,19 +579,19 @@ static s32 pid_step(struct pwm_port *p, s32 target)
 	}
 	if (p->medium) {
 		pterm = 4 * err;
-		p->pid_i = p->pid_i * 9 / 10 + err * PID_SCALE / 3;
+		p->pid_i = p->pid_i * 9 / 10 + err / 3;
 	} else {
 		pterm = 2 * err;
-		p->pid_i = p->pid_i * 9 / 10 + err * PID_SCALE / 4;
+		p->pid_i = p->pid_i * 9 / 10 + err / 4;
 	}
 	dterm = 80 * (err - p->pid_last_err);
 	p->pid_last_err = err;
-	p->pid_power += (pterm + dterm) * PID_SCALE + p->pid_i;
-	p->pid_power = clamp(p->pid_power, -POWER_MAX * PID_SCALE, POWER_MAX * PID_SCALE);
+	p->pid_power += pterm + dterm + p->pid_i;
+	p->pid_power = clamp(p->pid_power, -POWER_MAX, POWER_MAX);
 	/* Never drive against the requested direction: let the motor slow down instead. */
 	if ((target > 0 && p->pid_power < 0) || (target < 0 && p->pid_power > 0))
 		p->pid_power = 0;
-	return p->pid_power / PID_SCALE;
+	return p->pid_power;
 }
 
 /*
@@ -627,6 +677,7 @@ static bool profile_target(const struct pwm_profile *pr, u32 progress, bool appr
 	u32 peak = abs(pr->peak), mag = peak;
 	u32 total = pr->up + pr->flat + pr->down;
 	u32 floor = min_t(u32, mag, pr->regulated ? RAMP_FLOOR_SPEED : RAMP_FLOOR_POWER);
+	u32 up_floor = min_t(u32, mag, pr->regulated ? RAMP_UP_FLOOR_SPEED : RAMP_FLOOR_POWER);
 	u32 near = approach ? approach_span(pr) : 0, left;
 
 	*approaching = false;
@@ -638,7 +689,7 @@ static bool profile_target(const struct pwm_profile *pr, u32 progress, bool appr
 		return false;
 	left = total - progress;
 	if (progress < pr->up)
-		mag = max(scale_fraction(mag, min(progress + pr->ramp_in, pr->up), pr->up), floor);
+		mag = max(scale_fraction(mag, min(progress + pr->ramp_in, pr->up), pr->up), up_floor);
 	else if (progress >= pr->up + pr->flat)
 		mag = max(scale_fraction(mag, left, pr->down), floor);
 	*approaching = left < near && mag > APPROACH_SPEED;
@@ -659,7 +710,7 @@ static void approach_cut(struct pwm_port *p, s32 target)
 	s32 was = abs(p->setpoint);
 
 	if (target * p->setpoint > 0 && abs(target) < was)
-		p->pid_power = p->pid_power / was * abs(target);
+		p->pid_power = p->pid_power * abs(target) / was;
 }
 
 /* Ends a port's command: hold at hold_pos or coast, and clear its busy bits. */
@@ -724,14 +775,40 @@ static bool closing_target(struct pwm_port *p, u32 progress, s32 *target)
 	return true;
 }
 
+/* The phase of a limited command at a progress (the last one past its end). */
+static enum pwm_phase profile_phase(const struct pwm_profile *pr, u32 progress)
+{
+	if (progress < pr->up)
+		return PHASE_UP;
+	return progress < pr->up + pr->flat ? PHASE_FLAT : PHASE_DOWN;
+}
+
 /* Runs one limited command tick; finishes the command when its profile ends. */
 static void limited_tick(struct pwm_port *p, int port, ktime_t now)
 {
 	struct pwm_profile *pr = &p->profile;
 	u32 progress = profile_progress(pr, p, now);
+	enum pwm_phase phase = profile_phase(pr, progress);
 	s32 target, end;
 	bool approaching;
 
+	/*
+	 * A regulated command starts each phase with a fresh integral and
+	 * derivative, keeping its power for the tick it changes phase, as
+	 * LEGO's does (lms2012 d_pwm.c clears its PID terms entering the
+	 * constant and the ramp-down phase, and regulates from the next tick):
+	 * the first regulated tick of a phase answers the whole speed error at
+	 * once, which is what lifts a ramped step onto its constant speed in
+	 * LEGO's time.  A command re-issued while it runs starts in the phase
+	 * it is in, and keeps its terms: LEGO's clears them at every command
+	 * without a ramp up, and a loop re-issuing STEP_SPEED 40 every 1-4 ms
+	 * runs at 490-520 deg/s there instead of 413.
+	 */
+	if (pr->regulated && phase != pr->phase && progress < pr->up + pr->flat + pr->down) {
+		pr->phase = phase;
+		pid_reset(p);
+		return;
+	}
 	if (closing_target(p, progress, &target)) {
 		p->setpoint = target;
 		port_drive_power(p, pid_step(p, target), true);
@@ -819,15 +896,16 @@ static void sync_tick(struct pwm_port *m, int port, ktime_t now)
 /*
  * Publishes a port's counters into the shared MOTORDATA: TachoCounts from the
  * start of the current command (0 while unlimited), Speed as measured (after
- * a STOP too, while the motor coasts or the brake settles); TachoSensor
- * cumulative.
+ * a STOP too, while the motor coasts or the brake settles) - the measurement
+ * of the tick before, shown as LEGO's driver shows it, one tick late;
+ * TachoSensor cumulative.
  */
-static void publish(struct pwm_port *p, struct lms_motor_data *md)
+static void publish(struct pwm_port *p, struct lms_motor_data *md, s8 speed)
 {
 	bool unlimited = p->state == STATE_UNREG || p->state == STATE_REG;
 
 	WRITE_ONCE(md->tacho_counts, unlimited ? 0 : p->position - p->command_origin);
-	WRITE_ONCE(md->speed, p->speed);
+	WRITE_ONCE(md->speed, speed);
 	WRITE_ONCE(md->tacho_sensor, p->position - p->sensor_origin);
 }
 
@@ -844,6 +922,7 @@ static enum hrtimer_restart control_tick(struct hrtimer *timer)
 	stamp = stamp_now();
 	for (i = 0; i < LMS_PWM_PORTS; i++) {
 		struct pwm_port *p = &ports[i];
+		s8 shown = p->speed;
 
 		p->speed = tacho_speed(p, stamp);
 		switch (p->state) {
@@ -878,7 +957,7 @@ static enum hrtimer_restart control_tick(struct hrtimer *timer)
 			}
 			break;
 		}
-		publish(p, &motor_data[i]);
+		publish(p, &motor_data[i], shown);
 	}
 	spin_unlock(&pwm_lock);
 	return HRTIMER_RESTART;
@@ -1031,8 +1110,8 @@ static int cmd_stop(const u8 *b)
 		port_finish(p, i, brake, p->position);
 		/* Speed starts again from a cleared history, as LEGO's driver clears its samples. */
 		p->stamp_valid = 0;
+		p->run = RUN_CLEARED;
 		p->speed = 0;
-		p->speed_held = true;
 	}
 	spin_unlock_irqrestore(&pwm_lock, flags);
 	return 0;
@@ -1132,6 +1211,7 @@ static int cmd_set_type(const u8 *b)
 		p->hold_pos = p->position;
 		p->hold_i = 0;
 		p->stamp_valid = 0;
+		p->run = RUN_CLEARED;
 	}
 	spin_unlock_irqrestore(&pwm_lock, flags);
 	return 0;
@@ -1257,17 +1337,19 @@ static int cmd_profile(const u8 *b, bool by_time, bool regulated)
 			continue;
 		origin = by_time ? p->position : step_origin(p);
 		sync_dissolve(p);
-		/* A new command changes the target; the regulator keeps what it has learnt. */
-		if (!regulated || !regulating(p))
-			pid_reset(p);
 		next = (struct pwm_profile){
 			.by_time = by_time, .brake = brake, .regulated = regulated,
 			.peak = value * p->polarity, .up = step[0], .flat = step[1], .down = step[2],
 		};
+		/* A new command changes the target; the regulator keeps what it has learnt. */
+		if (!regulated || !regulating(p))
+			pid_reset(p);
 		next.ramp_in = ramp_entry(p, &next, now);
 		*pr = next;
 		pr->origin = origin;
 		pr->start = now;
+		/* A command re-issued into a later phase is in it already: no new phase. */
+		pr->phase = profile_phase(pr, profile_progress(pr, p, now));
 		p->command_origin = origin;
 		/* A step command with no power would never arrive: it is done at once. */
 		if (!by_time && value == 0 && step[0] + step[1] + step[2] != 0) {

@@ -175,7 +175,8 @@ struct lms_uart_shm {
 
 /*
  * Returns the newest sample of @port if it is valid data of @mode, else NULL.  Lock-free: the
- * driver fills a sample slot before publishing its index, and reuses it only 300 samples later.
+ * driver fills a sample slot before publishing its index, and reuses it only 300 samples later
+ * or, when the port restarts (its samples start again in slot 0), after a new handshake.
  */
 static inline const int8_t *lms_uart_sample(const struct lms_uart_shm *shm, unsigned int port,
 					    int mode)

@@ -106,8 +106,10 @@ static void test_ablation(void)
 	ok(strncmp(line, "result=fell ", 12) == 0, "a logger above the balancer topples the robot");
 	ok(et_number(line, "deadline_misses") > 10, "the balance task missed its deadlines (%g)",
 	   et_number(line, "deadline_misses"));
-	ok(et_number(line, "max_start_delay_us") > 1000, "it started late (max %g us)",
-	   et_number(line, "max_start_delay_us"));
+	/* Starved by the logger, it is held up before it starts or inside a call, as the timing falls. */
+	ok(et_number(line, "max_start_delay_us") > 1000 || et_number(line, "max_api_call_us") > 1000,
+	   "it was held up: started late (max %g us) or waited in a call (longest %g us)",
+	   et_number(line, "max_start_delay_us"), et_number(line, "max_api_call_us"));
 }
 
 static void test_drift_and_faults(void)

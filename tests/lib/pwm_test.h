@@ -32,6 +32,21 @@
 #define PWM_LARGE_DPS(speed) ((speed) * PWM_STAMP_HZ / 12800.0)
 #define PWM_MEDIUM_DPS(speed) ((speed) * PWM_STAMP_HZ / 8100.0)
 
+/*
+ * True if a large motor at dps deg/s runs at what SPEED speed gives: the
+ * regulator (LEGO's integer one, and d_pwm's) stops adding power once the
+ * measured whole speed is the target, so the shaft settles anywhere within
+ * that unit (SPEED 40: 403..413 deg/s); 1 % either side for the averaging.
+ */
+static inline bool pwm_large_regulated_to(double dps, int speed)
+{
+	double lo = PWM_LARGE_DPS(speed < 0 ? -speed : speed);
+	double hi = PWM_LARGE_DPS((speed < 0 ? -speed : speed) + 1);
+	double mag = speed < 0 ? -dps : dps;
+
+	return mag >= 0.99 * lo && mag <= 1.01 * hi;
+}
+
 static void (*pwm_test_body)(void);
 static bool pwm_test_done;
 

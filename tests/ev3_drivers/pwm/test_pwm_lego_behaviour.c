@@ -4,13 +4,17 @@
  * large motors on A and B, watched every 10 ms as an application would):
  *
  *  1. a command re-issued every 1, 4 or 10 ms keeps the speed a single one
- *     gives (the regulator keeps its accumulated power);
+ *     gives (the regulator keeps its accumulated power) — deliberately also a
+ *     STEP_/TIME_SPEED without ramps, which LEGO's runs ~25 % fast re-issued
+ *     every 1-4 ms, and a ramped TIME_SPEED, which LEGO's runs at 315-920 deg/s;
  *  2. braking steps close in on their end as LEGO's do and stop on it (a
- *     large motor without overshoot, a medium one up to LEGO's 0.6 / 2.4
- *     degrees past); a 90-count STEP_SPEED at speed 30 is busy 570-615 ms;
- *     TIME_SYNC overshoots by at most 3 degrees; 2b. steps from rest take,
- *     and braking TIME_SPEEDs travel, within 5 % of LEGO's figures; 2c.
- *     SPEED +50 to -50 reaches 90 % of the speed within LEGO's 76-85 ms;
+ *     large motor less than a degree past, as LEGO's up to 0.6, a medium
+ *     one up to LEGO's 0.6 / 2.4 degrees past); a 90-count STEP_SPEED at
+ *     speed 30 is busy 570-676 ms; TIME_SYNC overshoots by at most 3
+ *     degrees; 2b. steps from rest take, and braking TIME_SPEEDs travel,
+ *     within 5 % of LEGO's figures; 2c. SPEED 50 and 100 run at LEGO's
+ *     speeds, and reversed without a stop they reach 90 % of the speed the
+ *     other way in LEGO's time, MOTORDATA Speed showing what LEGO's shows;
  *  3. MOTORDATA TachoCounts counts from the start of the current command
  *     (0 while unlimited, 0 again when a step ends, from the stop after a
  *     STOP); TachoSensor is cumulative; a step counts from where
@@ -19,7 +23,7 @@
  *  4. a brake hold settles within 250 ms and then stays put;
  *  5. MOTORDATA Speed after STOP: 0 at the first sample, then the measured
  *     speed of the coasting (or settling) motor from 50 ms on;
- *  6. and what already matched stays: regulated speed within 2 %, POWER 30
+ *  6. and what already matched stays: regulated speed within its unit, POWER 30
  *     at 323 deg/s, reversal, polarity, CLR_COUNT, TIME_SPEED's end time.
  */
 #define PWM_TEST_LIMIT_NS (400ULL * 1000 * 1000 * 1000)
@@ -110,6 +114,16 @@ static void send_time_speed(void)
 	pwm_cmd_step(LMS_PWM_OUTPUT_TIME_SPEED, PAIR, 40, 100, 100000, 100, 0);
 }
 
+static void send_step_speed_flat(void)
+{
+	pwm_cmd_step(LMS_PWM_OUTPUT_STEP_SPEED, PAIR, 40, 0, 100000, 0, 0);
+}
+
+static void send_time_speed_flat(void)
+{
+	pwm_cmd_step(LMS_PWM_OUTPUT_TIME_SPEED, PAIR, 40, 0, 100000, 0, 0);
+}
+
 static bool near(double got, double want, double tolerance)
 {
 	return fabs(got - want) <= tolerance * fabs(want);
@@ -152,6 +166,9 @@ static void test_reissue(void)
 	test_reissued("POWER 30 + START", send_power);
 	test_reissued("STEP_SPEED 40", send_step_speed);
 	test_reissued("TIME_SPEED 40", send_time_speed);
+	/* LEGO's runs these at ~510 deg/s re-issued every 1-4 ms (it clears its regulator each time) */
+	test_reissued("STEP_SPEED 40 without ramps", send_step_speed_flat);
+	test_reissued("TIME_SPEED 40 without ramps", send_time_speed_flat);
 
 	/* A changed value changes the target, smoothly: 40 then 60, re-issued every 4 ms. */
 	sync_speed = 40;
@@ -191,8 +208,8 @@ static void test_step_end(int speed, int32_t counts)
 	took = wait_idle(1U << PORT_A, 5000);
 	end = a0 + sign * counts;
 	over = overshoot_after(PORT_A, end, sign, 800);
-	ok(over <= 0.5 && fabs(motor_angle(PORT_A) - end) <= 1.0,
-	   "STEP_SPEED %d for %d counts: overshoot %.2f deg (<= 0.5), ends %.2f off (<= 1), busy %.0f ms",
+	ok(over <= 1.0 && fabs(motor_angle(PORT_A) - end) <= 1.0,
+	   "STEP_SPEED %d for %d counts: overshoot %.2f deg (LEGO's 0-0.6, <= 1), ends %.2f off (<= 1), busy %.0f ms",
 	   speed, counts, over, motor_angle(PORT_A) - end, took);
 	rest();
 }
@@ -222,7 +239,7 @@ static void test_approach(void)
 
 	pwm_cmd_step(LMS_PWM_OUTPUT_STEP_SPEED, 1U << PORT_A, 30, 0, 90, 0, 1);
 	took = wait_idle(1U << PORT_A, 5000);
-	ok(took >= 560 && took <= 700, "STEP_SPEED 30 for 90 counts busy %.0f ms (LEGO's 570-615)", took);
+	ok(took >= 560 && took <= 700, "STEP_SPEED 30 for 90 counts busy %.0f ms (LEGO's 570-676)", took);
 	rest();
 	test_step_end(30, 90);
 	test_step_end(50, 360);
@@ -362,50 +379,95 @@ static void test_lego_timings(void)
 	double travel, took, over;
 
 	took = step_busy(50, 0, 360, 0, &travel);
-	ok(took >= 920 && took <= 1065 && fabs(travel - 360) <= 1,
-	   "STEP_SPEED 50 for 360 from rest: busy %.0f ms (LEGO's 970-1014, +-5%%), ends at %.1f", took,
+	ok(took >= 912 && took <= 1069 && fabs(travel - 360) <= 1,
+	   "STEP_SPEED 50 for 360 from rest: busy %.0f ms (LEGO's 960-1018, +-5%%), ends at %.1f", took,
 	   travel);
 	took = step_busy(75, 0, 720, 0, &travel);
-	ok(took >= 1200 && took <= 1345 && fabs(travel - 720) <= 1,
-	   "STEP_SPEED 75 for 720 from rest: busy %.0f ms (LEGO's 1266-1282, +-5%%), ends at %.1f", took,
+	ok(took >= 1177 && took <= 1346 && fabs(travel - 720) <= 1,
+	   "STEP_SPEED 75 for 720 from rest: busy %.0f ms (LEGO's 1239-1282, +-5%%), ends at %.1f", took,
 	   travel);
 	took = step_busy(50, 90, 180, 90, &travel);
-	ok(took >= 1410 && took <= 1575 && fabs(travel - 360) <= 1.5,
-	   "STEP_SPEED 50 ramped 90/180/90: busy %.0f ms (LEGO's 1485-1500, +-5%%), ends at %.1f", took,
+	ok(took >= 1413 && took <= 1577 && fabs(travel - 360) <= 1.5,
+	   "STEP_SPEED 50 ramped 90/180/90: busy %.0f ms (LEGO's 1487-1502, +-5%%), ends at %.1f", took,
 	   travel);
 	travel = timed_travel(50, 1000, &over);
 	ok(fabs(travel - 486) <= 0.05 * 486 && fabs(over) <= 2,
-	   "TIME_SPEED 50 for 1 s: %.1f deg when it ends (LEGO's 486, +-5%%), %.1f after (LEGO's 0.9)",
+	   "TIME_SPEED 50 for 1 s: %.1f deg when it ends (LEGO's 486-488, +-5%%), %.1f after (LEGO's -0.2..0.9)",
 	   travel, over);
 	travel = timed_travel(30, 500, &over);
 	ok(fabs(travel - 139) <= 0.05 * 139 && fabs(over) <= 2,
-	   "TIME_SPEED 30 for 0.5 s: %.1f deg when it ends (LEGO's 139, +-5%%), %.1f after (LEGO's -0.2)",
+	   "TIME_SPEED 30 for 0.5 s: %.1f deg when it ends (LEGO's 139-140, +-5%%), %.1f after (LEGO's -0.2..0.7)",
 	   travel, over);
 }
 
 /*
- * 2c. Reversal without a stop, SPEED +50 then -50: 90 % of the speed the
- * other way within LEGO's 76-85 ms; the measured speed keeps its
- * last value across the turn until a full window of the new direction is in,
- * as LEGO's does, so the regulator keeps pushing through the turn.
+ * 2c. Reversal without a stop, SPEED +v then -v, watched as an application
+ * watches it: MOTORDATA Speed at 75, 100, 150, 200 and 300 ms, and when the
+ * motor reaches 90 % of its speed the other way, against LEGO's driver on
+ * the same motor (twenty runs, host and arm926).  The measured speed keeps
+ * its last value across the turn until a full window of the new direction is
+ * in, and the window follows the newest edge interval, as LEGO's does.  From
+ * +100, 7 of LEGO's 20 runs notice the turn late and show +15 until ~135 ms
+ * (their 90 % point 116-119 ms); the MOTORDATA figures here are the other
+ * 13, which ev3lx follows in every run.
  */
-static void test_reversal_time(void)
-{
-	double steady, t0, took;
+struct reversal_lego {
+	int speed;                      /* +v, then -v */
+	double steady_lo, steady_hi;    /* deg/s at +v before the turn */
+	double took_lo, took_hi;        /* ms to 90 % of it the other way */
+	int shown_lo[5], shown_hi[5];   /* MOTORDATA Speed at reversal_look_ms */
+};
 
-	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 1U << PORT_A, 50);
+static const RELTIM reversal_look_ms[5] = { 75, 100, 150, 200, 300 };
+
+static const struct reversal_lego reversals[] = {
+	{ 50, 513, 514, 76, 88, { -39, -47, -56, -54, -52 }, { -36, -42, -54, -54, -52 } },
+	{ 100, 1011, 1018, 116, 132, { -33, -47, -79, -96, -100 }, { -26, -38, -76, -94, -100 } },
+};
+
+static void test_reversal(const struct reversal_lego *lego)
+{
+	double steady, t0, took = -1;
+	int shown[5];
+	unsigned k = 0;
+	bool shown_ok = true;
+
+	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 1U << PORT_A, lego->speed);
 	pwm_cmd(LMS_PWM_OUTPUT_START, 1U << PORT_A);
 	dly_tsk(1500);
 	steady = motor_dps(PORT_A);
-	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 1U << PORT_A, -50);
+	ok(steady >= 0.99 * lego->steady_lo && steady <= 1.01 * lego->steady_hi,
+	   "SPEED %d runs at %.0f deg/s (LEGO's %.0f-%.0f, +-1%%)", lego->speed, steady, lego->steady_lo,
+	   lego->steady_hi);
+	pwm_cmd_value(LMS_PWM_OUTPUT_SPEED, 1U << PORT_A, -lego->speed);
 	pwm_cmd(LMS_PWM_OUTPUT_START, 1U << PORT_A);
 	t0 = now_ms();
-	while (motor_dps(PORT_A) > -0.9 * steady && now_ms() - t0 < 1000)
+	while (now_ms() - t0 < 400) {
+		if (took < 0 && motor_dps(PORT_A) <= -0.9 * steady)
+			took = now_ms() - t0;
+		if (k < 5 && now_ms() - t0 >= reversal_look_ms[k]) {
+			shown[k] = motor_data_of(PORT_A).speed;
+			/* 5 units either side: 5 % of the speed scale. */
+			shown_ok &= shown[k] >= lego->shown_lo[k] - 5 && shown[k] <= lego->shown_hi[k] + 5;
+			k++;
+		}
 		dly_tsk(1);
-	took = now_ms() - t0;
-	ok(took >= 72 && took <= 85, "SPEED +50 to -50: 90 %% of %.0f deg/s the other way after %.0f ms (LEGO's 76-85)",
-	   steady, took);
+	}
+	ok(took >= 0.95 * lego->took_lo && took <= 1.05 * lego->took_hi,
+	   "SPEED %+d to %+d: 90 %% of %.0f deg/s the other way after %.0f ms (LEGO's %.0f-%.0f, +-5%%)",
+	   lego->speed, -lego->speed, steady, took, lego->took_lo, lego->took_hi);
+	ok(shown_ok, "SPEED %+d to %+d: MOTORDATA Speed %d / %d / %d / %d / %d at 75 / 100 / 150 / 200 / 300 ms "
+	   "(LEGO's %d..%d / %d..%d / %d..%d / %d..%d / %d..%d, +-5)", lego->speed, -lego->speed,
+	   shown[0], shown[1], shown[2], shown[3], shown[4], lego->shown_lo[0], lego->shown_hi[0],
+	   lego->shown_lo[1], lego->shown_hi[1], lego->shown_lo[2], lego->shown_hi[2], lego->shown_lo[3],
+	   lego->shown_hi[3], lego->shown_lo[4], lego->shown_hi[4]);
 	rest();
+}
+
+static void test_reversal_time(void)
+{
+	for (unsigned i = 0; i < sizeof(reversals) / sizeof(reversals[0]); i++)
+		test_reversal(&reversals[i]);
 }
 
 /* 3b. A step counts from where TachoCounts is 0 (LEGO's driver counts it in the
@@ -555,10 +617,10 @@ static void test_unchanged(void)
 	double dps, took;
 
 	dps = unlimited_dps(LMS_PWM_OUTPUT_SPEED, 50);
-	ok(near(dps, PWM_LARGE_DPS(50), 0.02), "SPEED 50 regulated to %.0f deg/s (%.0f +-2%%)", dps,
-	   PWM_LARGE_DPS(50));
+	ok(pwm_large_regulated_to(dps, 50), "SPEED 50 regulated to %.0f deg/s (%.0f..%.0f)", dps,
+	   PWM_LARGE_DPS(50), PWM_LARGE_DPS(51));
 	dps = unlimited_dps(LMS_PWM_OUTPUT_SPEED, -50);
-	ok(near(dps, -PWM_LARGE_DPS(50), 0.02), "reversed without a stop: %.0f deg/s", dps);
+	ok(pwm_large_regulated_to(dps, -50), "reversed without a stop: %.0f deg/s", dps);
 	rest();
 	dps = unlimited_dps(LMS_PWM_OUTPUT_POWER, 30);
 	ok(near(dps, 323, 0.02), "POWER 30 runs at %.0f deg/s (323 +-2%%)", dps);
@@ -566,7 +628,7 @@ static void test_unchanged(void)
 	pwm_cmd_value(LMS_PWM_OUTPUT_POLARITY, 1U << PORT_A, -1);
 	dps = unlimited_dps(LMS_PWM_OUTPUT_SPEED, 40);
 	pwm_cmd_value(LMS_PWM_OUTPUT_POLARITY, 1U << PORT_A, 1);
-	ok(near(dps, -PWM_LARGE_DPS(40), 0.02), "polarity -1: SPEED 40 runs at %.0f deg/s", dps);
+	ok(pwm_large_regulated_to(dps, -40), "polarity -1: SPEED 40 runs at %.0f deg/s", dps);
 	rest();
 	pwm_cmd(LMS_PWM_OUTPUT_CLR_COUNT, 1U << PORT_A);
 	dly_tsk(SAMPLE_MS);
@@ -598,7 +660,7 @@ int main(void)
 	const int motors[4] = { HS_MOTOR_LARGE, HS_MOTOR_LARGE, HS_MOTOR_MEDIUM,
 				PWM_TEST_NO_MOTOR };
 
-	tap_plan(66);
+	tap_plan(77);
 	ok(pwm_test_run(body, motors), "test body ran to its end");
 	return tap_done();
 }

@@ -5,7 +5,8 @@
  * NACK_MODE_INFO, CLEAR_CHANGED), write() of WRITE commands reaching the
  * sensor, read() of the states, mmap; and bad ports, modes, lengths,
  * pointers (from a user-domain task) and commands answered with -EINVAL/-EFAULT/-ENXIO/-EBUSY/-ENOTTY
- * without side effects (sanitizers watch for memory damage).
+ * without side effects (sanitizers watch for memory damage); a port started again stores its
+ * samples from slot 0, as LEGO's driver does.
  */
 #include <linux/fcntl.h>
 #include <linux_compat/devfs.h>
@@ -117,6 +118,49 @@ static void reads_and_maps(void)
 	   "idle, data withdrawn");
 }
 
+/* Waits until the port has stored n more samples (ext seq), at most ms; true if it did. */
+static bool more_samples(unsigned port, uint32_t n, unsigned ms)
+{
+	uint32_t seq = ut_ext(port)->seq;
+
+	while (ut_ext(port)->seq - seq < n) {
+		if (!ms--)
+			return false;
+		dly_tsk(1);
+	}
+	return true;
+}
+
+/*
+ * Actual over a restart: a port started again by SET_CONN stores its samples from slot 0
+ * (Actual and LogIn 0 at once, the first sample in slot 0), as LEGO's driver does at
+ * SET_CONN and at every restart.
+ */
+static void restarts(void)
+{
+	struct lms_uart_ctl c;
+	const int8_t U = LMS_CONN_INPUT_UART;
+	const int8_t *s;
+
+	is_int(conn(U, 0, 0, 0), 0, "SET_CONN port 1 again");
+	ok(ut_wait_state(0, LMS_UART_STATE_DATA, 3000) && ctl(LMS_UART_CLEAR_CHANGED, 0, 0, &c) == 0 &&
+	   more_samples(0, 3, 500) && ut_shm->lms.actual[0] >= 2,
+	   "streaming: newest sample in slot %u", ut_shm->lms.actual[0]);
+	is_int(conn(0, 0, 0, 0), 0, "stopped");
+	is_int(conn(U, 0, 0, 0), 0, "and started again");
+	ok(ut_shm->lms.actual[0] == 0 && ut_shm->lms.log_in[0] == 0,
+	   "Actual %u, LogIn %u at once (LEGO's 0, 0)", ut_shm->lms.actual[0], ut_shm->lms.log_in[0]);
+	ok(ut_wait_state(0, LMS_UART_STATE_DATA, 3000) && ut_shm->lms.actual[0] == 0 &&
+	   !lms_uart_sample(ut_shm, 0, 0), "Actual 0 at the new handshake, no sample served");
+	ctl(LMS_UART_CLEAR_CHANGED, 0, 0, &c);
+	s = ut_wait_sample(0, 0, 300);
+	ok(s && ut_shm->lms.actual[0] == 0 && ut_shm->lms.log_in[0] == 1,
+	   "the first sample in slot %u, LogIn %u", ut_shm->lms.actual[0], ut_shm->lms.log_in[0]);
+	ok(more_samples(0, 1, 300) && ut_shm->lms.actual[0] == 1, "the next in slot %u",
+	   ut_shm->lms.actual[0]);
+	is_int(conn(0, 0, 0, 0), 0, "stopped");
+}
+
 static void body(void)
 {
 	if (lx_dev_open("/dev/" LMS_UART_DEVICE_NAME, O_RDWR, &f)) {
@@ -126,13 +170,14 @@ static void body(void)
 	ioctls();
 	writes();
 	reads_and_maps();
+	restarts();
 	lx_dev_close(f);
 }
 
 int main(void)
 {
 	ut_domain = 1;		/* a user domain: only its stack is its memory */
-	tap_plan(50);
+	tap_plan(59);
 	ok(ut_run(body, 7, NULL), "scenario ran to its end");
 	return tap_done();
 }

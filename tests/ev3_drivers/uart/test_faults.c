@@ -2,8 +2,8 @@
  * test_faults.c — d_uart under the failures EV3 users report: the NACK
  * keep-alive every 100 ms (checked on the register trace), a sensor that is
  * unplugged (reported stale, not frozen; the port goes back to SYNC) and
- * plugged in again (DATA again), bit errors (counted, data keeps flowing, no
- * reconnect), and a receive overrun while the CPU is blocked (counted and
+ * plugged in again (DATA again), 5 % of the bytes lost (every untouched frame
+ * delivered), bit errors (counted, data keeps flowing, no reconnect), and a receive overrun while the CPU is blocked (counted and
  * recovered), and a write request forged in the shared page (dropped).
  */
 #include <stdlib.h>
@@ -59,6 +59,9 @@ static void unplug(void)
 	ok(ut_ext(0)->flags & LMS_UART_FLAG_STALE, "flagged stale");
 	ok(!(ut_status(0) & LMS_UART_DATA_READY), "DATA_READY cleared");
 	ok(ut_wait_state(0, LMS_UART_STATE_SYNC, 1000), "back to SYNC for the next handshake");
+	ok(ut_shm->lms.actual[0] == 0 && ut_shm->lms.log_in[0] == 0,
+	   "its samples start again in slot 0 (Actual %u, LogIn %u; LEGO's 0, 0)", ut_shm->lms.actual[0],
+	   ut_shm->lms.log_in[0]);
 	is_int(ut_ext(0)->speed, 2400, "at 2400 baud");
 	is_int(ut_ext(0)->reconnects - reconnects, 1, "one reconnect counted");
 
@@ -71,7 +74,8 @@ static void unplug(void)
 	ok(ut_status(0) & LMS_UART_PORT_CHANGED, "new description flagged");
 	is_int(uart_svc_clear_changed(0), E_OK, "accepted");
 	s = ut_wait_sample(0, 0, 300);
-	ok(s && s[0] == 71, "fresh value %d", s ? s[0] : -1);
+	ok(s && s[0] == 71 && ut_shm->lms.actual[0] == 0, "fresh value %d in slot %u", s ? s[0] : -1,
+	   ut_shm->lms.actual[0]);
 }
 
 static void bit_errors(void)
@@ -138,11 +142,44 @@ static void forged_write(void)
 	ok(lms_uart_sample(ut_shm, 3, 0) != NULL, "the gyro still streams");
 }
 
+/*
+ * 5 % of a colour sensor's bytes lost for 10 s: while the port is in DATA every frame no loss
+ * touched arrives as a sample (a bad check byte costs one byte of resync, not the frames
+ * behind it); when errors outrun good frames (six, as LEGO's driver allows) the port starts
+ * the handshake again and, the line clean again, serves values within the handshake's time.
+ * LEGO's driver, on the same line, loses 4-8 untouched frames in 100 and in 3 of 10 runs
+ * falls into its error state and stays there.
+ */
+static void dropped_bytes(void)
+{
+	struct ev3_fault f = { EV3_FAULT_UART_DROP, 0, 0.05, 10000 * UT_MS };
+	const struct uart_sensor_stats *st = uart_sensor_get_stats(ev3_input_uart_sensor(0));
+	uint32_t frames = 0, last = st->data_frames, seq = ut_ext(0)->seq, flipped, dropped, dup;
+	unsigned ms;
+
+	is_int(ev3_fault_at(rtos_host_now(), &f), E_OK, "5 %% of port 1's bytes dropped for 10 s");
+	for (ms = 0; ms < 10000; ms++) {
+		dly_tsk(1);
+		if (ut_ext(0)->state == LMS_UART_STATE_DATA)
+			frames += st->data_frames - last;
+		last = st->data_frames;
+	}
+	ev3_fault_uart_counts(0, &flipped, &dropped, &dup);
+	ok(ut_ext(0)->seq - seq + dropped >= frames,
+	   "%u samples of the %u frames sent in DATA, %u bytes dropped: every untouched frame delivered",
+	   ut_ext(0)->seq - seq, frames, dropped);
+	ok(ut_wait_state(0, LMS_UART_STATE_DATA, 3000), "DATA again within 3 s of the clean line");
+	if (ut_status(0) & LMS_UART_PORT_CHANGED)
+		uart_svc_clear_changed(0);
+	ok(ut_wait_sample(0, 0, 300) != NULL, "and a value served (%u reconnects)", ut_ext(0)->reconnects);
+}
+
 /* One boot: linux_compat initialises modules once per process. */
 static void body(void)
 {
 	keepalive();
 	unplug();
+	dropped_bytes();
 	bit_errors();
 	overrun();
 	forged_write();
@@ -150,7 +187,7 @@ static void body(void)
 
 int main(void)
 {
-	tap_plan(32);
+	tap_plan(37);
 	ok(ut_run(body, 3, "UART0"), "scenario ran to its end");
 	return tap_done();
 }

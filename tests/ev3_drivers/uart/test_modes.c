@@ -7,6 +7,8 @@
  */
 #include "uart_test.h"
 
+static unsigned switch_ms;	/* how long the last switch_and_check waited for its value */
+
 /* Switches port to mode and watches every millisecond until its first value:
  * true if the first value served is want (read by get) and nothing of another
  * mode was served meanwhile. */
@@ -25,6 +27,7 @@ static bool switch_and_check(unsigned port, unsigned mode, int (*get)(const int8
 				return false;
 		s = lms_uart_sample(ut_shm, port, (int)mode);
 		if (s) {
+			switch_ms = ms;
 			*first = get(s);
 			return *first == want;
 		}
@@ -97,12 +100,14 @@ static void body(void)
 	   s ? ut_s16(s, 0) : -1);
 	sw = switch_and_check(1, 1, get_s16, 30, &first);
 	ok(sw, "gyro rate: first value 30 d/s, not an angle (%d)", first);
+	/* LEGO's shows the stale angle as the rate from 5 to 8 ms, then 30 */
+	ok(switch_ms <= 8, "after %u ms (LEGO's right value after 8)", switch_ms);
 	is_int(ut_ext(0)->reconnects + ut_ext(1)->reconnects, 0, "no reconnects");
 }
 
 int main(void)
 {
-	tap_plan(23);
+	tap_plan(24);
 	ok(ut_run(body, 2, NULL), "scenario ran to its end");
 	return tap_done();
 }
