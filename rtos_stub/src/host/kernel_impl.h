@@ -396,6 +396,28 @@ void syslog_reset(void);
 /* Name of an error code ("E_CTX"), or "E_?". */
 const char *ercd_name(ER ercd);
 
+/* ---- Scheduler observer (rtos_host_set_sched_observer; trace.c) ---- */
+extern const struct rtos_host_sched_observer *sched_observer;
+/* Tells the observer of t's state now. */
+static inline void observe_task_state(const struct tcb *t)
+{
+	if (sched_observer != NULL)
+		sched_observer->task_state(t->id, t->cfg->name,
+					   t->state == TTS_WAI && t->suspended ? TTS_WAS : t->state);
+}
+/* Tells the observer which task runs now (NULL: idle). */
+static inline void observe_running(const struct tcb *t)
+{
+	if (sched_observer != NULL)
+		sched_observer->running(t != NULL ? t->id : 0);
+}
+/* Tells the observer a handler is entered or left. */
+static inline void observe_handler(enum rtos_host_handler_kind kind, unsigned id, bool enter)
+{
+	if (sched_observer != NULL)
+		sched_observer->handler(kind, id, enter);
+}
+
 /* ---- CPU cost of service calls (cost.c) and stall watch (stall.c) ---- */
 extern struct rtos_host_cpu_cost cpu_cost;
 /* The first step of every service call: its CPU time, charged to the calling

@@ -30,6 +30,14 @@ void rtos_host_trace_set_source_sink(const char *source, rtos_host_trace_sink si
 	trace_source = source;
 }
 
+const struct rtos_host_sched_observer *sched_observer;
+
+/* Installs the scheduler's observer (NULL: none). */
+void rtos_host_set_sched_observer(const struct rtos_host_sched_observer *obs)
+{
+	sched_observer = obs;
+}
+
 /* Records one line "<ns> <source> <text>" if a sink is installed. */
 void rtos_host_trace(const char *source, const char *fmt, ...)
 {
