@@ -210,6 +210,13 @@ $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 EV3RT_PLATFORM_$(EV3RT_RUN_NAME)_$(EV3RT_RUN_CONFIG) := $(call EV3RT_PLATFORM,$(EV3RT_RUN_CONFIG))
 $(eval $(call ev3rt_dir_app,$(EV3RT_RUN_NAME),$(EV3RT_RUN_CONFIG),$(APP),EV3RT_RUN,$(EV3RT_RUN_DIR)/runner.o))
 EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_$(EV3RT_RUN_CONFIG) += $(EV3SIM_LDLIBS_$(EV3RT_RUN_CONFIG))
+# ev3sim run --debug (EV3RT_DEBUG=1, under a key of its own: app_build.c):
+# the app and its SDK libraries at -O0, after every other flag, so that gdb
+# steps through its lines and shows its variables
+EV3RT_DEBUG ?= 0
+ifeq ($(EV3RT_DEBUG),1)
+EV3RT_APPFLAGS_$(EV3RT_RUN_NAME)_$(EV3RT_RUN_CONFIG) += -O0 -g
+endif
 
 .PHONY: ev3rt-app
 ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)
@@ -313,6 +320,16 @@ adversarial-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 	+$(Q)EV3SIM=$(abspath $(BUILD)/host/ev3sim) ROOT=$(CURDIR) WORK=$(abspath $(BUILD)/adversarial-check) \
 		prove --verbose --exec sh tests/ev3sim/adversarial_check.sh
 TEST_SUITE_EXTRA += adversarial-check
+
+# `make ev3sim-gdb-check` (in make test): `ev3sim run --debug` builds an app at
+# -O0 and gdb, in batch mode with the project's script
+# (tools/gdb/ev3lx-tasks.py), stops in an app task and lists the app's tasks
+# with their states, as docs/ev3sim.md's session does
+# (tests/ev3sim/gdb_check.sh, TAP).
+.PHONY: ev3sim-gdb-check
+ev3sim-gdb-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
+	+$(Q)EV3SIM=$(abspath $(BUILD)/host/ev3sim) ROOT=$(CURDIR) prove --exec sh tests/ev3sim/gdb_check.sh
+TEST_SUITE_EXTRA += ev3sim-gdb-check
 
 # `make ev3sim-app-path-check` (in make test): `ev3sim run` on app directories
 # whose paths make cannot hold ('$', spaces, quotes), an SDK library in such

@@ -37,6 +37,8 @@ static const char run_usage[] =
 	"                       $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile (e.g. the SDK's\n"
 	"                       common/library), beside ev3lx's own (libcpp-ev3), whose\n"
 	"                       library of the same name they replace; before the others\n"
+	"  --debug              build the app at -O0 (under a build of its own) and show\n"
+	"                       the command that runs it under gdb (docs/ev3sim.md)\n"
 	"  --kernel K           the kernel profile the app is written for: hrp2 (EV3RT 0.x,\n"
 	"                       time in ms), hrp3 (EV3RT 1.x, time in us) or auto (default:\n"
 	"                       hrp3 when app.cfg has a CRE_CYC or CRE_ALM in HRP3's\n"
@@ -352,13 +354,35 @@ static bool source_root(char *root, size_t len, const char **config)
 	return true;
 }
 
+/* Removes every flag (an option without a value) from argv[1..*argc) where it
+ * stands as an option, not as another option's value; true if there was one. */
+static bool take_flag(int *argc, char **argv, const char *flag)
+{
+	bool found = false;
+	int out = 1;
+
+	for (int i = 1; i < *argc; i++) {
+		const char *prev = out > 1 ? argv[out - 1] : "";
+		bool is_value = strncmp(prev, "--", 2) == 0 && strchr(prev, '=') == NULL &&
+				strcmp(prev, "--quiet") != 0 && strcmp(prev, "--live") != 0;
+
+		if (!is_value && strcmp(argv[i], flag) == 0) {
+			found = true;
+			continue;
+		}
+		argv[out++] = argv[i];
+	}
+	*argc = out;
+	return found;
+}
+
 int ev3sim_run_command(int argc, char **argv)
 {
 	char root[PATH_MAX], app[PATH_MAX], runner[2 * PATH_MAX + 64], err[2 * PATH_MAX + 128];
 	char cfg_path[PATH_MAX + 16], lib_dir[PATH_MAX];
 	const char *config;
 	const char *kernel = NULL;
-	bool have_lib_dir = false;
+	bool have_lib_dir = false, debug;
 	struct stat st;
 	char **args;
 	int runner_fd;
@@ -393,8 +417,9 @@ int ev3sim_run_command(int argc, char **argv)
 		argv += 2;
 		argc -= 2;
 	}
-	runner_fd = ev3sim_app_build(root, config, app, have_lib_dir ? lib_dir : NULL, kernel, runner, sizeof(runner),
-				     err, sizeof(err));
+	debug = take_flag(&argc, argv, "--debug");
+	runner_fd = ev3sim_app_build(root, config, app, have_lib_dir ? lib_dir : NULL, kernel, debug, runner,
+				     sizeof(runner), err, sizeof(err));
 	if (runner_fd < 0) {
 		fprintf(stderr, "ev3sim run: %s\n", err);
 		return EV3SIM_EXIT_FAIL;
@@ -407,6 +432,14 @@ int ev3sim_run_command(int argc, char **argv)
 	args[0] = runner;
 	for (int i = 1; i < argc; i++)
 		args[i] = argv[i];
+	if (debug) {
+		/* the command that runs the same under gdb, with the project's task list */
+		fprintf(stderr, "ev3sim run: built at -O0 for gdb: gdb -x %s/tools/gdb/ev3lx-tasks.py --args %s",
+			root, runner);
+		for (int i = 1; i < argc; i++)
+			fprintf(stderr, " %s", argv[i]);
+		fputc('\n', stderr);
+	}
 	fflush(stdout);
 	fexecve(runner_fd, args, environ);
 	fprintf(stderr, "ev3sim run: cannot execute %s: %s\n", runner, strerror(errno));
