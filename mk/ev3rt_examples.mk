@@ -96,12 +96,12 @@ $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_
 # file calls, renamed (mk/ev3rt_app.mk), are ev3sim's: those names stay too.
 EV3RT_APP_FS_CALLS := $(sort $(shell awk '{ print $$2 }' $(EV3RT_APP_FS_SYMS)))
 # The configurations whose ev3sim runs apps: host, and host32 (the target's
-# 32-bit types; its ev3sim has no image writers: no 32-bit libpng or giflib
-# comes with gcc-multilib).
+# 32-bit types; its ev3sim has no image writers and no live view's server:
+# no 32-bit libpng, giflib or libmicrohttpd comes with gcc-multilib).
 EV3SIM_CONFIGS := host host32
-EV3SIM_WRITERS_host := ev3sim/lcd_png.c ev3sim/lcd_gif.c
+EV3SIM_WRITERS_host := ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/live_http.c
 EV3SIM_WRITERS_host32 :=
-EV3SIM_LDLIBS_host := -lpng -lgif
+EV3SIM_LDLIBS_host := -lpng -lgif -lmicrohttpd
 EV3SIM_LDLIBS_host32 :=
 EV3RT_PLATFORM = $(BUILD)/$(1)/ev3rt/platform.o
 EV3RT_PLATFORM_OBJS = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(EV3SIM_WRITERS_$(1)))
@@ -358,3 +358,14 @@ $(call EV3SIM_GYROBOY_OBJ,$(1)): $(BUILD)/$(1)/ev3rt/ev3sim_gyroboy/ev3sim_gyrob
 		-G ev3sim_gyroboy_cfg -G ev3sim_gyroboy_params -G ev3sim_gyroboy_stats $$< $$@
 endef
 $(foreach c,$(HOST_CONFIGS),$(eval $(call ev3sim_gyroboy_rules,$(c))))
+
+# tests/ev3sim/test_app_live runs the live view's server where the ev3sim
+# program has one (host, host-san: Debian's libmicrohttpd is a 64-bit host
+# library); elsewhere it checks that --live is refused.
+EV3SIM_LIVE_TEST_CONFIGS := host host-san
+$(foreach c,$(EV3SIM_LIVE_TEST_CONFIGS),$(eval \
+	$(BUILD)/$(c)/tests/ev3sim/test_app_live.t: $(BUILD)/$(c)/obj/ev3sim/live_http.o))
+$(foreach c,$(EV3SIM_LIVE_TEST_CONFIGS),$(eval \
+	$(BUILD)/$(c)/tests/ev3sim/test_app_live.t: EV3SIM_LIVE_TEST_LIBS := $(BUILD)/$(c)/obj/ev3sim/live_http.o -lmicrohttpd))
+TEST_LDLIBS_ev3sim/test_app_live = $(EV3SIM_LIVE_TEST_LIBS)
+$(foreach c,$(EV3SIM_LIVE_TEST_CONFIGS),$(BUILD)/$(c)/obj/ev3sim/live_http.o): ev3sim/live_page.html

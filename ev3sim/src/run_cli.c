@@ -18,6 +18,7 @@
 #include "ev3sim/output.h"
 #include "ev3sim/parse.h"
 #include "ev3sim/balance_run.h"
+#include "ev3sim/live.h"
 #include "ev3sim/run.h"
 #include "ev3sim/app_build.h"
 
@@ -88,6 +89,13 @@ static const char run_usage[] =
 	"  --lcd-video FILE.gif the display over time: a frame per change, sampled every 10 ms\n"
 	"  --csv FILE           the robot's state every 10 ms\n"
 	"  --quiet              the console shows warnings and worse only\n"
+	"  --live[=PORT]        watch and steer the run in a browser: a page on\n"
+	"                       http://127.0.0.1:PORT/ (default 8033; 0: any free port,\n"
+	"                       the address is printed on stderr) with the mat and the\n"
+	"                       robot, the display, LEDs, buttons to click, the ports and\n"
+	"                       a plot; pause, single steps, pace\n"
+	"  --pace N|fast        with --live: at most N times real time (default 1), or as\n"
+	"                       fast as it goes\n"
 	"\n"
 	"Summary: app, robot, seconds, seed, the world's figures (gyroboy: result, fell_at_s,\n"
 	"max_tilt_deg; tribot: line_progress_m, travel_m, max/rms_line_error_mm, on_line_pct),\n"
@@ -253,6 +261,18 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 		o->usb_path = v;
 	} else if (strcmp(name, "--csv") == 0) {
 		*csv_path = v;
+	} else if (strcmp(name, "--live") == 0) {
+		uint64_t port;
+
+		if (!ev3sim_parse_uint(v, 65535, &port))
+			return usage("--live: bad port '%s' (0..65535; 0: any free port)", v);
+		o->live = true;
+		o->live_port = (unsigned)port;
+	} else if (strcmp(name, "--pace") == 0) {
+		if (strcmp(v, "fast") == 0)
+			o->pace = 0.0;
+		else if (!ev3sim_parse_double(v, &o->pace) || !(o->pace > 0.0 && o->pace <= EV3SIM_LIVE_MAX_PACE))
+			return usage("--pace: bad value '%s' (0 < N <= 1000 times real time, or fast)", v);
 	} else {
 		return usage("unknown option %s", name);
 	}
@@ -265,7 +285,7 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 	struct ev3sim_run_opts o;
 	struct ev3sim_run_result r;
 	const char *csv_path = NULL;
-	bool touch_given = false, quiet = false;
+	bool touch_given = false, quiet = false, pace_given = false;
 	char err[1536], line[1024];
 	int status = EV3SIM_EXIT_OK;
 
@@ -291,6 +311,11 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 			quiet = true;
 			continue;
 		}
+		if (strcmp(argv[i], "--live") == 0) {     /* its port is optional: --live=PORT */
+			o.live = true;
+			o.live_port = EV3SIM_LIVE_DEFAULT_PORT;
+			continue;
+		}
 		if (strncmp(argv[i], "--", 2) != 0)
 			return usage("unexpected argument '%s'", argv[i]);
 		if (eq != NULL && (size_t)(eq - argv[i]) < sizeof(name)) {
@@ -303,10 +328,13 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 		} else {
 			return usage("%s needs a value (or is unknown)", argv[i]);
 		}
+		pace_given |= strcmp(name, "--pace") == 0;
 		st = run_option(&o, name, v, &touch_given, &csv_path);
 		if (st != EV3SIM_EXIT_OK)
 			return st;
 	}
+	if (pace_given && !o.live)
+		return usage("%s: only with --live (a run without it goes as fast as it can)", "--pace");
 	if (csv_path && (o.csv = ev3sim_open_output("run", csv_path)) == NULL)
 		return EV3SIM_EXIT_FAIL;
 	o.quiet = quiet;

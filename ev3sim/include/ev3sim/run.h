@@ -70,6 +70,9 @@ struct ev3sim_run_opts {
 	const char *bt_master_path; /* the SPP master's remote slave: a Unix socket there, NULL: none */
 	const char *usb_path;       /* USB CDC's far end: a Unix socket there, NULL: none */
 	FILE *csv;                  /* the robot's state every 10 ms, NULL: none */
+	bool live;                  /* the live view (live.h): served on 127.0.0.1:live_port (0: any free port) */
+	unsigned live_port;
+	double pace;                /* with live: times real time at most (default 1), 0: as fast as possible */
 	bool quiet;                 /* the console shows warnings and worse only */
 	/* every syslog line of the run ("WARNING: text"), NULL: none */
 	void (*log_sink)(const char *line, void *ctx);
@@ -86,6 +89,7 @@ struct ev3sim_run_result {
 	/* tribot */
 	double progress_m, travel_m, max_line_error_mm, rms_line_error_mm, on_line_pct;
 	double wall_s;
+	bool stopped;               /* the live view's page stopped the run before its end */
 	unsigned lcd_dark;          /* dark pixels of the display at the end (with lcd_path) */
 	int end_status;             /* 0, or why the app ended the system: RTOS_HOST_EXIT_STALL, _STACK */
 	char end_report[1024];      /* then: the kernel's report (task, PC and source line, or sizes) */
