@@ -6,7 +6,7 @@
 HOST_SRCS     += $(sort $(wildcard ev3sim/src/*.c))
 HOST_PROGRAMS += ev3sim
 ev3sim_SRCS   := ev3sim/main.c ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/live_http.c
-ev3sim_LDLIBS := -lpng -lgif -lmicrohttpd
+ev3sim_LDLIBS := -lpng -lgif
 # build/host32/ev3sim: the simulator with the target's 32-bit types, for
 # modules written for them (`volatile unsigned long *` registers); without
 # the image writers (--lcd, --lcd-video) and the live view's server (--live),

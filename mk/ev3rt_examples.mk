@@ -101,7 +101,7 @@ EV3RT_APP_FS_CALLS := $(sort $(shell awk '{ print $$2 }' $(EV3RT_APP_FS_SYMS)))
 EV3SIM_CONFIGS := host host32
 EV3SIM_WRITERS_host := ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/live_http.c
 EV3SIM_WRITERS_host32 :=
-EV3SIM_LDLIBS_host := -lpng -lgif -lmicrohttpd
+EV3SIM_LDLIBS_host := -lpng -lgif
 EV3SIM_LDLIBS_host32 :=
 EV3RT_PLATFORM = $(BUILD)/$(1)/ev3rt/platform.o
 EV3RT_PLATFORM_OBJS = $(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(EV3SIM_WRITERS_$(1)))
@@ -366,6 +366,6 @@ EV3SIM_LIVE_TEST_CONFIGS := host host-san
 $(foreach c,$(EV3SIM_LIVE_TEST_CONFIGS),$(eval \
 	$(BUILD)/$(c)/tests/ev3sim/test_app_live.t: $(BUILD)/$(c)/obj/ev3sim/live_http.o))
 $(foreach c,$(EV3SIM_LIVE_TEST_CONFIGS),$(eval \
-	$(BUILD)/$(c)/tests/ev3sim/test_app_live.t: EV3SIM_LIVE_TEST_LIBS := $(BUILD)/$(c)/obj/ev3sim/live_http.o -lmicrohttpd))
+	$(BUILD)/$(c)/tests/ev3sim/test_app_live.t: EV3SIM_LIVE_TEST_LIBS := $(BUILD)/$(c)/obj/ev3sim/live_http.o))
 TEST_LDLIBS_ev3sim/test_app_live = $(EV3SIM_LIVE_TEST_LIBS)
 $(foreach c,$(EV3SIM_LIVE_TEST_CONFIGS),$(BUILD)/$(c)/obj/ev3sim/live_http.o): ev3sim/live_page.html
