@@ -429,6 +429,7 @@ int ev3sim_run_command(int argc, char **argv)
 		return EV3SIM_EXIT_FAIL;
 	}
 	/* the build's options; the runner gets the others */
+	debug = take_flag(&argc, argv, "--debug");
 	while (argc >= 2 && (strcmp(argv[1], "--lib-dir") == 0 || strcmp(argv[1], "--kernel") == 0)) {
 		if (argc < 3)
 			return usage("%s needs a value", argv[1]);
@@ -445,7 +446,6 @@ int ev3sim_run_command(int argc, char **argv)
 		argv += 2;
 		argc -= 2;
 	}
-	debug = take_flag(&argc, argv, "--debug");
 	runner_fd = ev3sim_app_build(root, config, app, have_lib_dir ? lib_dir : NULL, kernel, debug, runner,
 				     sizeof(runner), err, sizeof(err));
 	if (runner_fd < 0) {
