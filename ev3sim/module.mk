@@ -5,12 +5,12 @@
 # Host only: nothing goes into AM1808_SRCS.
 HOST_SRCS     += $(sort $(wildcard ev3sim/src/*.c))
 HOST_PROGRAMS += ev3sim
-ev3sim_SRCS   := ev3sim/main.c ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/world_file.c
+ev3sim_SRCS   := ev3sim/main.c ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/world_file.c ev3sim/live_http.c
 ev3sim_LDLIBS := -lpng -lgif -ljson-c
 # build/host32/ev3sim: the simulator with the target's 32-bit types, for
 # modules written for them (`volatile unsigned long *` registers); without
-# the image writers (--lcd, --lcd-video), as gcc-multilib brings no 32-bit
-# libpng or giflib.
+# the image writers (--lcd, --lcd-video) and the live view's server (--live),
+# as gcc-multilib brings no 32-bit libpng, giflib or libmicrohttpd.
 HOST32_PROGRAMS += ev3sim
 ev3sim_SRCS_host32 := ev3sim/main.c
 ev3sim_LDLIBS_host32 :=
@@ -29,3 +29,6 @@ WORLD_FILE_TEST_CONFIGS := host host-san
 $(foreach c,$(WORLD_FILE_TEST_CONFIGS),\
 	$(eval TEST_LDLIBS_$(c)_ev3sim/test_world_file := $(BUILD)/$(c)/obj/ev3sim/world_file.o -ljson-c -lpng)\
 	$(eval $(BUILD)/$(c)/tests/ev3sim/test_world_file.t: $(BUILD)/$(c)/obj/ev3sim/world_file.o))
+# --live's server links the page in (.incbin): its object depends on it in
+# every configuration that compiles it.
+$(foreach c,host host-san host-prof host-pgo,$(BUILD)/$(c)/obj/ev3sim/live_http.o): ev3sim/live_page.html

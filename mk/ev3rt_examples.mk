@@ -96,10 +96,10 @@ $(foreach c,$(HOST_CONFIGS),$(foreach e,$(EXAMPLES),$(eval $(call ev3rt_example_
 # file calls and its heap calls, renamed (mk/ev3rt_app.mk), are the platform's: those names stay too.
 EV3RT_APP_FS_CALLS := $(sort $(shell awk '{ print $$2 }' $(EV3RT_APP_FS_SYMS) $(EV3RT_APP_HEAP_SYMS)))
 # The configurations whose ev3sim runs apps: host, and host32 (the target's
-# 32-bit types; its ev3sim has no image writers: no 32-bit libpng or giflib
-# comes with gcc-multilib).
+# 32-bit types; its ev3sim has no image writers and no live view's server:
+# no 32-bit libpng, giflib or libmicrohttpd comes with gcc-multilib).
 EV3SIM_CONFIGS := host host32
-EV3SIM_WRITERS_host := ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/world_file.c
+EV3SIM_WRITERS_host := ev3sim/lcd_png.c ev3sim/lcd_gif.c ev3sim/world_file.c ev3sim/live_http.c
 EV3SIM_WRITERS_host32 :=
 EV3SIM_LDLIBS_host := -lpng -lgif -ljson-c
 EV3SIM_LDLIBS_host32 :=
@@ -210,6 +210,13 @@ $(EV3RT_RUN_DIR)/runner.o: ev3sim/app_runner.c
 EV3RT_PLATFORM_$(EV3RT_RUN_NAME)_$(EV3RT_RUN_CONFIG) := $(call EV3RT_PLATFORM,$(EV3RT_RUN_CONFIG))
 $(eval $(call ev3rt_dir_app,$(EV3RT_RUN_NAME),$(EV3RT_RUN_CONFIG),$(APP),EV3RT_RUN,$(EV3RT_RUN_DIR)/runner.o))
 EV3RT_LDLIBS_$(EV3RT_RUN_NAME)_$(EV3RT_RUN_CONFIG) += $(EV3SIM_LDLIBS_$(EV3RT_RUN_CONFIG))
+# ev3sim run --debug (EV3RT_DEBUG=1, under a key of its own: app_build.c):
+# the app and its SDK libraries at -O0, after every other flag, so that gdb
+# steps through its lines and shows its variables
+EV3RT_DEBUG ?= 0
+ifeq ($(EV3RT_DEBUG),1)
+EV3RT_APPFLAGS_$(EV3RT_RUN_NAME)_$(EV3RT_RUN_CONFIG) += -O0 -g
+endif
 
 .PHONY: ev3rt-app
 ev3rt-app: $(EV3RT_RUN_DIR)/$(EV3RT_RUN_NAME)
@@ -340,6 +347,16 @@ adversarial-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
 		prove --verbose --exec sh tests/ev3sim/adversarial_check.sh
 TEST_SUITE_EXTRA += adversarial-check
 
+# `make ev3sim-gdb-check` (in make test): `ev3sim run --debug` builds an app at
+# -O0 and gdb, in batch mode with the project's script
+# (tools/gdb/ev3lx-tasks.py), stops in an app task and lists the app's tasks
+# with their states, as docs/ev3sim.md's session does
+# (tests/ev3sim/gdb_check.sh, TAP).
+.PHONY: ev3sim-gdb-check
+ev3sim-gdb-check: $(BUILD)/host/ev3sim $(LIB_host) $(EV3CFG)
+	+$(Q)EV3SIM=$(abspath $(BUILD)/host/ev3sim) ROOT=$(CURDIR) prove --exec sh tests/ev3sim/gdb_check.sh
+TEST_SUITE_EXTRA += ev3sim-gdb-check
+
 # `make ev3sim-app-path-check` (in make test): `ev3sim run` on app directories
 # whose paths make cannot hold ('$', spaces, quotes), an SDK library in such
 # a directory, two directories of one name, four first runs of one app at
@@ -367,3 +384,14 @@ $(call EV3SIM_GYROBOY_OBJ,$(1)): $(BUILD)/$(1)/ev3rt/ev3sim_gyroboy/ev3sim_gyrob
 		-G ev3sim_gyroboy_cfg -G ev3sim_gyroboy_params -G ev3sim_gyroboy_stats $$< $$@
 endef
 $(foreach c,$(HOST_CONFIGS),$(eval $(call ev3sim_gyroboy_rules,$(c))))
+
+# tests/ev3sim/test_app_live runs the live view's server where the ev3sim
+# program has one (host, host-san: Debian's libmicrohttpd is a 64-bit host
+# library); elsewhere it checks that --live is refused.
+EV3SIM_LIVE_TEST_CONFIGS := host host-san
+$(foreach c,$(EV3SIM_LIVE_TEST_CONFIGS),$(eval \
+	$(BUILD)/$(c)/tests/ev3sim/test_app_live.t: $(BUILD)/$(c)/obj/ev3sim/live_http.o))
+$(foreach c,$(EV3SIM_LIVE_TEST_CONFIGS),$(eval \
+	$(BUILD)/$(c)/tests/ev3sim/test_app_live.t: EV3SIM_LIVE_TEST_LIBS := $(BUILD)/$(c)/obj/ev3sim/live_http.o))
+TEST_LDLIBS_ev3sim/test_app_live = $(EV3SIM_LIVE_TEST_LIBS)
+$(foreach c,$(EV3SIM_LIVE_TEST_CONFIGS),$(BUILD)/$(c)/obj/ev3sim/live_http.o): ev3sim/live_page.html

@@ -163,16 +163,20 @@ static int run_program(char *const argv[], char *err, size_t err_len)
 }
 
 int ev3sim_app_build(const char *root, const char *config, const char *app, const char *lib_dir, const char *kernel,
-		     char *runner, size_t runner_len, char *err, size_t err_len)
+		     bool debug, char *runner, size_t runner_len, char *err, size_t err_len)
 {
 	char key[APP_NAME_MAX + 32], name[APP_NAME_MAX + 1], dir[PATH_MAX], lock[PATH_MAX + 8];
 	char app_arg[PATH_MAX + 8], lib_arg[PATH_MAX + 24] = "EV3RT_LIB_DIR=";
 	char name_arg[APP_NAME_MAX + 32], key_arg[APP_NAME_MAX + 48], config_arg[APP_NAME_MAX + 32];
 	char kernel_arg[32];
+	size_t key_len;
 	int lock_fd, fd = -1, status;
 
 	ev3sim_app_name(app, name, sizeof(name));
 	ev3sim_app_key(app, key, sizeof(key));
+	key_len = strlen(key);
+	if (debug)
+		snprintf(key + key_len, sizeof(key) - key_len, "-debug");
 	if (snprintf(config_arg, sizeof(config_arg), "EV3RT_RUN_CONFIG=%s", config) >= (int)sizeof(config_arg) ||
 	    snprintf(dir, sizeof(dir), "%s/build/%s/ev3rt/%s", root, config, key) >= (int)sizeof(dir) ||
 	    snprintf(runner, runner_len, "%s/%s", dir, key) >= (int)runner_len) {
@@ -207,7 +211,8 @@ int ev3sim_app_build(const char *root, const char *config, const char *app, cons
 		snprintf(err, err_len, "cannot link %s/libdir to %s: %s", dir, lib_dir, strerror(errno));
 	} else {
 		char *make_argv[] = { "make", "-s", "--no-print-directory", "-C", (char *)root, app_arg, lib_arg,
-				      name_arg, key_arg, config_arg, kernel_arg, "ev3rt-app", NULL };
+				      name_arg, key_arg, config_arg, kernel_arg,
+				      debug ? "EV3RT_DEBUG=1" : "EV3RT_DEBUG=0", "ev3rt-app", NULL };
 		char why[PATH_MAX + 64] = "";
 
 		status = run_program(make_argv, why, sizeof(why));

@@ -13,6 +13,7 @@
 #include "host_sim/devices/uart_sensor.h"
 #include "ev3sim/brick_io.h"
 #include "ev3sim/balance_run.h"
+#include "ev3sim/live.h"
 #include "ev3sim/run.h"
 #include "ev3sim/tribot.h"
 #include "ev3sim/world.h"
@@ -105,6 +106,7 @@ void ev3sim_run_defaults(struct ev3sim_run_opts *o, enum ev3sim_robot_kind robot
 	 * that calibrates first (EV3RT's gyroboy sample) is let go when ready */
 	o->release_ns = 0;
 	o->release_on_drive = true;
+	o->pace = 1.0;
 	switch (robot) {
 	case EV3SIM_ROBOT_GYROBOY:
 		o->out[0] = EV3SIM_OUT_LARGE;
@@ -482,9 +484,15 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	memset(&run, 0, sizeof(run));
 	run.o = o;
 	run.r = r;
+	if (o->live && ev3sim_live_begin(o, err, errlen) != E_OK) {
+		brick_io_teardown();
+		return E_SYS;
+	}
 	wall0 = ev3sim_wall_seconds();
 	if (hs_sim_boot(&scn) != E_OK) {
 		snprintf(err, errlen, "boot failed: %s", rtos_host_boot_error());
+		if (o->live)
+			ev3sim_live_end(NULL);
 		brick_io_teardown();
 		return E_SYS;
 	}
@@ -507,6 +515,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		hs_sim_run_for(DRAIN_NS);
 		rtos_host_trace_set_sink(NULL, NULL);
 		hs_sim_shutdown();
+		if (o->live)
+			ev3sim_live_end(NULL);
 		brick_io_teardown();
 		return ercd == E_PAR ? E_PAR : E_SYS;
 	}
@@ -514,7 +524,8 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	end = (uint64_t)llround(o->seconds * 1e9);
 	if (o->lcd_video_path && (!ev3sim_lcd_video || ev3sim_lcd_video->begin(o->lcd_video_path) != E_OK))
 		lcd_failed = true;
-	/* a stalled task or a stack overrun ends the system: time then stands still */
+	/* a stalled task or a stack overrun ends the system: time then stands still; the
+	 * live view takes the page's inputs and paces after each step, and may stop the run */
 	while (rtos_host_now() < end && !rtos_host_exited()) {
 		uint64_t next = rtos_host_now() + CHUNK_NS;
 
@@ -522,7 +533,13 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 		observe(o, r);
 		if (o->lcd_video_path && !lcd_failed)
 			ev3sim_lcd_video->frame(rtos_host_now());
+		if (o->live && rtos_host_now() < end && !ev3sim_live_step()) {
+			r->stopped = true;
+			break;
+		}
 	}
+	if (o->live)
+		ev3sim_live_record();
 	if (o->lcd_video_path && !lcd_failed && ev3sim_lcd_video->end(rtos_host_now()) != E_OK)
 		lcd_failed = true;
 	if (o->world != NULL) {
@@ -572,6 +589,12 @@ ER ev3sim_run(const struct ev3sim_run_opts *o, const struct rtos_cfg *app,
 	rtos_host_trace_set_sink(NULL, NULL);
 	shutdown = hs_sim_shutdown();
 	brick_io_teardown();
+	if (o->live) {
+		char line[1024];
+
+		ev3sim_run_summary(o, r, line, sizeof(line));
+		ev3sim_live_end(line);
+	}
 	if (r->end_status != 0) {
 		snprintf(err, errlen, "the app %s at %.3f s: %s",
 			 r->end_status == RTOS_HOST_EXIT_STALL ? "stalled" : "overran a task's stack", r->seconds,
@@ -628,6 +651,11 @@ void ev3sim_run_summary(const struct ev3sim_run_opts *o, const struct ev3sim_run
 		size_t n = strlen(world);
 
 		snprintf(world + n, sizeof(world) - n, "lcd_dark_pixels=%u ", r->lcd_dark);
+	}
+	if (r->stopped) {
+		size_t n = strlen(world);
+
+		snprintf(world + n, sizeof(world) - n, "stopped_at_s=%.2f ", r->seconds);
 	}
 	snprintf(buf, len, "app=%s robot=%s seconds=%g seed=%llu %slog_lines=%u warnings=%u errors=%u "
 		 "bugs=%u sim_speed=%.0fx",

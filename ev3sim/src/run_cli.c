@@ -19,6 +19,7 @@
 #include "ev3sim/parse.h"
 #include "ev3sim/balance_run.h"
 #include "ev3sim/plot.h"
+#include "ev3sim/live.h"
 #include "ev3sim/run.h"
 #include "ev3sim/app_build.h"
 #include "ev3sim/world_plot.h"
@@ -42,6 +43,8 @@ static const char run_usage[] =
 	"                       $(EV3RT_SDK_LIB_DIR)/<lib>/Makefile (e.g. the SDK's\n"
 	"                       common/library), beside ev3lx's own (libcpp-ev3), whose\n"
 	"                       library of the same name they replace; before the others\n"
+	"  --debug              build the app at -O0 (under a build of its own) and show\n"
+	"                       the command that runs it under gdb (docs/ev3sim.md)\n"
 	"  --kernel K           the kernel profile the app is written for: hrp2 (EV3RT 0.x,\n"
 	"                       time in ms), hrp3 (EV3RT 1.x, time in us) or auto (default:\n"
 	"                       hrp3 when app.cfg has a CRE_CYC or CRE_ALM in HRP3's\n"
@@ -102,6 +105,13 @@ static const char run_usage[] =
 	"  --plot-signals LIST  the plot's signals: heading, in1..in4, left, right,\n"
 	"                       clearance (default: heading and the robot's sensors)\n"
 	"  --quiet              the console shows warnings and worse only\n"
+	"  --live[=PORT]        watch and steer the run in a browser: a page on\n"
+	"                       http://127.0.0.1:PORT/ (default 8033; 0: any free port,\n"
+	"                       the address is printed on stderr) with the mat and the\n"
+	"                       robot, the display, LEDs, buttons to click, the ports and\n"
+	"                       a plot; pause, single steps, pace\n"
+	"  --pace N|fast        with --live: at most N times real time (default 1), or as\n"
+	"                       fast as it goes\n"
 	"\n"
 	"Summary: app, robot, seconds, seed, the world's figures (gyroboy: result, fell_at_s,\n"
 	"max_tilt_deg; tribot: line_progress_m, travel_m, max/rms_line_error_mm, on_line_pct;\n"
@@ -283,6 +293,18 @@ static int run_option(struct ev3sim_run_opts *o, const char *name, const char *v
 	} else if (strcmp(name, "--plot-signals") == 0) {
 		if (!ev3sim_plot_signals_parse(v, &o->plot_signals, err, sizeof(err)))
 			return usage("--plot-signals: %s", err);
+	} else if (strcmp(name, "--live") == 0) {
+		uint64_t port;
+
+		if (!ev3sim_parse_uint(v, 65535, &port))
+			return usage("--live: bad port '%s' (0..65535; 0: any free port)", v);
+		o->live = true;
+		o->live_port = (unsigned)port;
+	} else if (strcmp(name, "--pace") == 0) {
+		if (strcmp(v, "fast") == 0)
+			o->pace = 0.0;
+		else if (!ev3sim_parse_double(v, &o->pace) || !(o->pace > 0.0 && o->pace <= EV3SIM_LIVE_MAX_PACE))
+			return usage("--pace: bad value '%s' (0 < N <= 1000 times real time, or fast)", v);
 	} else {
 		return usage("unknown option %s", name);
 	}
@@ -296,7 +318,7 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 	struct ev3sim_run_opts o;
 	struct ev3sim_run_result r;
 	const char *csv_path = NULL;
-	bool touch_given = false, quiet = false;
+	bool touch_given = false, quiet = false, pace_given = false;
 	char err[1536], line[1024];
 	int status = EV3SIM_EXIT_OK;
 
@@ -353,6 +375,11 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 			quiet = true;
 			continue;
 		}
+		if (strcmp(argv[i], "--live") == 0) {     /* its port is optional: --live=PORT */
+			o.live = true;
+			o.live_port = EV3SIM_LIVE_DEFAULT_PORT;
+			continue;
+		}
 		if (strncmp(argv[i], "--", 2) != 0)
 			return usage("unexpected argument '%s'", argv[i]);
 		if (eq != NULL && (size_t)(eq - argv[i]) < sizeof(name)) {
@@ -365,10 +392,13 @@ int ev3sim_run_main(int argc, char **argv, const char *app_name, const struct rt
 		} else {
 			return usage("%s needs a value (or is unknown)", argv[i]);
 		}
+		pace_given |= strcmp(name, "--pace") == 0;
 		st = run_option(&o, name, v, &touch_given, &csv_path);
 		if (st != EV3SIM_EXIT_OK)
 			return st;
 	}
+	if (pace_given && !o.live)
+		return usage("%s: only with --live (a run without it goes as fast as it can)", "--pace");
 	if (csv_path && (o.csv = ev3sim_open_output("run", csv_path)) == NULL)
 		return EV3SIM_EXIT_FAIL;
 	o.quiet = quiet;
@@ -416,13 +446,35 @@ static bool source_root(char *root, size_t len, const char **config)
 	return true;
 }
 
+/* Removes every flag (an option without a value) from argv[1..*argc) where it
+ * stands as an option, not as another option's value; true if there was one. */
+static bool take_flag(int *argc, char **argv, const char *flag)
+{
+	bool found = false;
+	int out = 1;
+
+	for (int i = 1; i < *argc; i++) {
+		const char *prev = out > 1 ? argv[out - 1] : "";
+		bool is_value = strncmp(prev, "--", 2) == 0 && strchr(prev, '=') == NULL &&
+				strcmp(prev, "--quiet") != 0 && strcmp(prev, "--live") != 0;
+
+		if (!is_value && strcmp(argv[i], flag) == 0) {
+			found = true;
+			continue;
+		}
+		argv[out++] = argv[i];
+	}
+	*argc = out;
+	return found;
+}
+
 int ev3sim_run_command(int argc, char **argv)
 {
 	char root[PATH_MAX], app[PATH_MAX], runner[2 * PATH_MAX + 64], err[2 * PATH_MAX + 128];
 	char cfg_path[PATH_MAX + 16], lib_dir[PATH_MAX];
 	const char *config;
 	const char *kernel = NULL;
-	bool have_lib_dir = false;
+	bool have_lib_dir = false, debug;
 	struct stat st;
 	char **args;
 	int runner_fd;
@@ -441,6 +493,7 @@ int ev3sim_run_command(int argc, char **argv)
 		return EV3SIM_EXIT_FAIL;
 	}
 	/* the build's options; the runner gets the others */
+	debug = take_flag(&argc, argv, "--debug");
 	while (argc >= 2 && (strcmp(argv[1], "--lib-dir") == 0 || strcmp(argv[1], "--kernel") == 0)) {
 		if (argc < 3)
 			return usage("%s needs a value", argv[1]);
@@ -457,8 +510,8 @@ int ev3sim_run_command(int argc, char **argv)
 		argv += 2;
 		argc -= 2;
 	}
-	runner_fd = ev3sim_app_build(root, config, app, have_lib_dir ? lib_dir : NULL, kernel, runner, sizeof(runner),
-				     err, sizeof(err));
+	runner_fd = ev3sim_app_build(root, config, app, have_lib_dir ? lib_dir : NULL, kernel, debug, runner,
+				     sizeof(runner), err, sizeof(err));
 	if (runner_fd < 0) {
 		fprintf(stderr, "ev3sim run: %s\n", err);
 		return EV3SIM_EXIT_FAIL;
@@ -471,6 +524,14 @@ int ev3sim_run_command(int argc, char **argv)
 	args[0] = runner;
 	for (int i = 1; i < argc; i++)
 		args[i] = argv[i];
+	if (debug) {
+		/* the command that runs the same under gdb, with the project's task list */
+		fprintf(stderr, "ev3sim run: built at -O0 for gdb: gdb -x %s/tools/gdb/ev3lx-tasks.py --args %s",
+			root, runner);
+		for (int i = 1; i < argc; i++)
+			fprintf(stderr, " %s", argv[i]);
+		fputc('\n', stderr);
+	}
 	fflush(stdout);
 	fexecve(runner_fd, args, environ);
 	fprintf(stderr, "ev3sim run: cannot execute %s: %s\n", runner, strerror(errno));

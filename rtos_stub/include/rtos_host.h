@@ -447,6 +447,25 @@ void rtos_host_trace_set_source_sink(const char *source, rtos_host_trace_sink si
 void rtos_host_trace(const char *source, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
 
+/* ---- Scheduler observer (host_sim's VCD timeline of tasks and interrupts) ---- */
+
+/* What runs a handler the observer is told of. */
+enum rtos_host_handler_kind { RTOS_HOST_HANDLER_ISR, RTOS_HOST_HANDLER_CYC, RTOS_HOST_HANDLER_ALM };
+
+/* Told of every task state change (state: TTS_DMT, TTS_RDY, TTS_WAI, TTS_SUS,
+ * TTS_WAS; the running task is TTS_RDY and is named by running), of every
+ * change of the running task (0: the CPU is idle) and of every entry and exit
+ * of an interrupt line's service (id: the line) or of a cyclic or alarm
+ * handler (id: its ID).  It must not call the kernel or spend virtual time:
+ * a run observed is the run unobserved. */
+struct rtos_host_sched_observer {
+	void (*task_state)(ID tskid, const char *name, STAT state);
+	void (*running)(ID tskid);
+	void (*handler)(enum rtos_host_handler_kind kind, unsigned id, bool enter);
+};
+/* Installs the observer (NULL: none, the default); it stays across boots. */
+void rtos_host_set_sched_observer(const struct rtos_host_sched_observer *obs);
+
 /* ---- Bug reports (context violations and other misuse) ---- */
 
 /* Reports a bug: prints "BUG: ..." with virtual time and context to stderr and

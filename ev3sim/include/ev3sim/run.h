@@ -76,6 +76,9 @@ struct ev3sim_run_opts {
 	FILE *csv;                  /* the robot's state every 10 ms, NULL: none */
 	const char *plot_path;      /* a world's PNG: the path on the mat and signals, NULL: none */
 	unsigned plot_signals;      /* which signals (EV3SIM_SIGNAL_* bits), 0: the default */
+	bool live;                  /* the live view (live.h): served on 127.0.0.1:live_port (0: any free port) */
+	unsigned live_port;
+	double pace;                /* with live: times real time at most (default 1), 0: as fast as possible */
 	bool quiet;                 /* the console shows warnings and worse only */
 	/* every syslog line of the run ("WARNING: text"), NULL: none */
 	void (*log_sink)(const char *line, void *ctx);
@@ -97,6 +100,7 @@ struct ev3sim_run_result {
 	bool goal_reached;
 	double goal_at_s;
 	double wall_s;
+	bool stopped;               /* the live view's page stopped the run before its end */
 	unsigned lcd_dark;          /* dark pixels of the display at the end (with lcd_path) */
 	int end_status;             /* 0, or why the app ended the system: RTOS_HOST_EXIT_STALL, _STACK */
 	char end_report[1024];      /* then: the kernel's report (task, PC and source line, or sizes) */

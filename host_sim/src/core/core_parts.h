@@ -19,4 +19,13 @@ const char *hs_trap_reason(void);
 /* Forgets trace signals and closes files (board shutdown). */
 void hs_trace_reset(void);
 
+/* The task and interrupt timeline of an open VCD (kernel_timeline.c): started when
+ * the VCD opens, stopped when it closes.  A task's signal holds one of these codes. */
+enum hs_task_code {
+	HS_TASK_DORMANT = 0, HS_TASK_READY, HS_TASK_RUNNING, HS_TASK_WAITING, HS_TASK_SUSPENDED,
+	HS_TASK_WAITING_SUSPENDED,
+};
+void hs_kernel_timeline_start(void);
+void hs_kernel_timeline_stop(void);
+
 #endif /* HOST_SIM_CORE_PARTS_H */

@@ -455,6 +455,7 @@ int hs_trace_open_vcd(const char *path)
 		vcd_value(s, buf, sizeof(buf));
 		s->initial = strdup(buf);
 	}
+	hs_kernel_timeline_start();
 	return 0;
 }
 
@@ -532,6 +533,7 @@ int hs_trace_close(void)
 	for (unsigned i = 0; i < tr.nsigs; i++)
 		settle_fall(tr.sigs[i], UINT64_MAX);
 	if (tr.vcd) {
+		hs_kernel_timeline_stop();
 		vcd_finish();
 		if (ferror(tr.vcd) || ferror(tr.body))
 			status = -1;

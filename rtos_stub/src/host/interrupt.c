@@ -119,7 +119,9 @@ void run_handler(enum exec_kind kind, ID id, void (*fn)(intptr_t), intptr_t exin
 	cpu.exec_id = id;
 	if (trace_on())
 		rtos_host_trace("kernel", "%s %d", kind == EXEC_CYC ? "cyclic" : "alarm", (int)id);
+	observe_handler(kind == EXEC_CYC ? RTOS_HOST_HANDLER_CYC : RTOS_HOST_HANDLER_ALM, (unsigned)id, true);
 	fn(exinf);
+	observe_handler(kind == EXEC_CYC ? RTOS_HOST_HANDLER_CYC : RTOS_HOST_HANDLER_ALM, (unsigned)id, false);
 	cpu.locked = false;
 	cpu.kind = saved_kind;
 	cpu.exec_id = saved_id;
@@ -180,6 +182,7 @@ static inline __attribute__((always_inline)) void line_serve(INTNO n)
 	cpu.isr_depth++;
 	if (trace_on())
 		rtos_host_trace("kernel", "isr %u enter", n);
+	observe_handler(RTOS_HOST_HANDLER_ISR, n, true);
 	if (n == INTNO_TICK)
 		tick_handler();
 	if (l->nisrs == 1) {
@@ -189,6 +192,7 @@ static inline __attribute__((always_inline)) void line_serve(INTNO n)
 	} else {
 		isrs_run_all(l, n);
 	}
+	observe_handler(RTOS_HOST_HANDLER_ISR, n, false);
 	if (trace_on())
 		rtos_host_trace("kernel", "isr %u exit", n);
 	cpu.isr_depth--;

@@ -396,6 +396,32 @@ void syslog_reset(void);
 /* Name of an error code ("E_CTX"), or "E_?". */
 const char *ercd_name(ER ercd);
 
+/* ---- Scheduler observer (rtos_host_set_sched_observer; trace.c) ---- */
+extern const struct rtos_host_sched_observer *sched_observer;
+/* The calls to the observer, out of line and cold (trace.c): without one the
+ * dispatch and interrupt paths keep a test and a jump. */
+void observer_task_state(const struct tcb *t);
+void observer_running(const struct tcb *t);
+void observer_handler(enum rtos_host_handler_kind kind, unsigned id, bool enter);
+/* Tells the observer of t's state now. */
+static inline void observe_task_state(const struct tcb *t)
+{
+	if (__builtin_expect(sched_observer != NULL, 0))
+		observer_task_state(t);
+}
+/* Tells the observer which task runs now (NULL: idle). */
+static inline void observe_running(const struct tcb *t)
+{
+	if (__builtin_expect(sched_observer != NULL, 0))
+		observer_running(t);
+}
+/* Tells the observer a handler is entered or left. */
+static inline void observe_handler(enum rtos_host_handler_kind kind, unsigned id, bool enter)
+{
+	if (__builtin_expect(sched_observer != NULL, 0))
+		observer_handler(kind, id, enter);
+}
+
 /* ---- CPU cost of service calls (cost.c) and stall watch (stall.c) ---- */
 extern struct rtos_host_cpu_cost cpu_cost;
 /* The first step of every service call: its CPU time, charged to the calling

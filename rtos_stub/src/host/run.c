@@ -23,6 +23,7 @@ static void harness_dispatch(void)
 	runtsk = to;
 	cpu.kind = EXEC_TASK;
 	cpu.exec_id = to->id;
+	observe_running(to);
 	if (trace_on())
 		rtos_host_trace("kernel", "dispatch %s", to->cfg->name ? to->cfg->name : "?");
 	co_switch(&harness_co, &to->co, false);

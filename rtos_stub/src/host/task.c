@@ -22,9 +22,10 @@ static uint32_t ready_map;                        /* bit pri-1 set: queue not em
 
 static void wait_timeout(struct tmevt *ev);
 
-/* Traces a task event. */
+/* Traces a task event (the observer sees the task's state after it). */
 static void trace_task(const char *what, const struct tcb *t)
 {
+	observe_task_state(t);
 	if (trace_on())
 		rtos_host_trace("kernel", "%s %s", what, t->cfg->name ? t->cfg->name : "?");
 }
@@ -95,11 +96,13 @@ static void switch_from_task(bool dying)
 		cpu.exec_id = to->id;
 		to_co = &to->co;
 		trace_task("dispatch", to);
+		observe_running(to);
 	} else {
 		runtsk = NULL;
 		cpu.kind = EXEC_IDLE;
 		cpu.exec_id = 0;
 		to_co = &harness_co;
+		observe_running(NULL);
 		if (trace_on())
 			rtos_host_trace("kernel", "idle");
 	}
@@ -241,9 +244,11 @@ void wait_release(struct tcb *t, ER ercd)
 				ercd_name(ercd));
 	if (t->suspended) {
 		t->state = TTS_SUS;
+		observe_task_state(t);
 		return;
 	}
 	t->state = TTS_RDY;
+	observe_task_state(t);
 	ready_insert_tail(t);
 }
 

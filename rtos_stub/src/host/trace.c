@@ -30,6 +30,32 @@ void rtos_host_trace_set_source_sink(const char *source, rtos_host_trace_sink si
 	trace_source = source;
 }
 
+const struct rtos_host_sched_observer *sched_observer;
+
+/* Installs the scheduler's observer (NULL: none). */
+void rtos_host_set_sched_observer(const struct rtos_host_sched_observer *obs)
+{
+	sched_observer = obs;
+}
+
+/* Tells the observer of t's state (a waiting task that is also suspended: TTS_WAS). */
+__attribute__((cold, noinline)) void observer_task_state(const struct tcb *t)
+{
+	sched_observer->task_state(t->id, t->cfg->name, t->state == TTS_WAI && t->suspended ? TTS_WAS : t->state);
+}
+
+/* Tells the observer which task runs (NULL: idle). */
+__attribute__((cold, noinline)) void observer_running(const struct tcb *t)
+{
+	sched_observer->running(t != NULL ? t->id : 0);
+}
+
+/* Tells the observer of a handler's entry or exit. */
+__attribute__((cold, noinline)) void observer_handler(enum rtos_host_handler_kind kind, unsigned id, bool enter)
+{
+	sched_observer->handler(kind, id, enter);
+}
+
 /* Records one line "<ns> <source> <text>" if a sink is installed. */
 void rtos_host_trace(const char *source, const char *fmt, ...)
 {
