@@ -549,7 +549,8 @@ size_t ev3sim_live_world_json(char *buf, size_t len)
 	pthread_mutex_lock(&lv.mu);
 	live_mat_json(mat, sizeof(mat));
 	put(buf, len, &n, "{\"app\":\"%s\",\"robot\":\"%s\",\"seconds\":%g,\"mat\":%s}",
-	    lv.o->app_name ? lv.o->app_name : "?", ev3sim_robot_name(lv.o->robot), lv.o->seconds, mat);
+	    lv.o->app_name ? lv.o->app_name : "?",
+	    lv.o->world != NULL ? lv.o->world->name : ev3sim_robot_name(lv.o->robot), lv.o->seconds, mat);
 	pthread_mutex_unlock(&lv.mu);
 	return n;
 }
