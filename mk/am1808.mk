@@ -48,11 +48,14 @@ SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null || echo 0)
 $(eval $(call obj_rule,am1808,$(AM1808)))
 $(eval $(call module_link_rule,am1808,$(AM1808_OBJS)))
 
-$(AM1808_LIB): $(call module_objs,$(AM1808_OBJS))
+# The member list is a key: a source taken out of the library rebuilds it
+# (the archive is made anew), or its old object would stay in.
+$(eval $(call key_file_rule,$(AM1808)/lib-members.key,$(AM1808_OBJS)))
+$(AM1808_LIB): $(call module_objs,$(AM1808_OBJS)) $(AM1808)/lib-members.key
 	@mkdir -p $(@D)
 	$(quiet) AR am1808 $@
 	$(Q)rm -f $@
-	$(Q)$(AR_am1808) rcs $@ $^
+	$(Q)$(AR_am1808) rcs $@ $(filter %.o,$^)
 
 $(AM1808)/startup.o: am1808/startup.S
 	@mkdir -p $(@D)

@@ -38,11 +38,12 @@ LIB_$(1)       := $(BUILD)/$(1)/libev3lx.a
 $(call obj_rule,$(1),$(BUILD)/$(1))
 $(call module_link_rule,$(1),$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$(HOST_SRCS)))
 
-$$(LIB_$(1)): $$(call module_objs,$$(OBJS_$(1))) $$(HOST_LIB_EXTRA_$(1))
+$(call key_file_rule,$(BUILD)/$(1)/lib-members.key,$$(OBJS_$(1)) $$(HOST_LIB_EXTRA_$(1)))
+$$(LIB_$(1)): $$(call module_objs,$$(OBJS_$(1))) $$(HOST_LIB_EXTRA_$(1)) $(BUILD)/$(1)/lib-members.key
 	@mkdir -p $$(@D)
 	$$(quiet) AR $(1) $$@
 	$(Q)rm -f $$@
-	$(Q)$$(if $$(filter arm926-test,$(1)),arm-linux-gnueabi-ar,ar) rcs $$@ $$^
+	$(Q)$$(if $$(filter arm926-test,$(1)),arm-linux-gnueabi-ar,ar) rcs $$@ $$(filter-out %.key,$$^)
 
 -include $$(OBJS_$(1):.o=.d)
 endef
