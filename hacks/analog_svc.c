@@ -11,7 +11,7 @@
 #include "analog_module.h"
 
 /* ANALOG_FN_MAP: the address of the shared ANALOG area. */
-static ER_UINT svc_analog_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5,
+ER_UINT svc_analog_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5,
 			      ID cdmid)
 {
 	if (sns_ctx())
@@ -24,7 +24,7 @@ static ER_UINT svc_analog_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p
 }
 
 /* ANALOG_FN_INPUT: one input port's detected device and pin voltages. */
-static ER_UINT svc_analog_input(intptr_t port, intptr_t out, intptr_t p3, intptr_t p4,
+ER_UINT svc_analog_input(intptr_t port, intptr_t out, intptr_t p3, intptr_t p4,
 				intptr_t p5, ID cdmid)
 {
 	const struct lms_analog *a = analog_map_addr;
@@ -44,7 +44,7 @@ static ER_UINT svc_analog_input(intptr_t port, intptr_t out, intptr_t p3, intptr
 }
 
 /* ANALOG_FN_OUTPUT: one output port's detected device and pin 5 voltage. */
-static ER_UINT svc_analog_output(intptr_t port, intptr_t out, intptr_t p3, intptr_t p4,
+ER_UINT svc_analog_output(intptr_t port, intptr_t out, intptr_t p3, intptr_t p4,
 				 intptr_t p5, ID cdmid)
 {
 	const struct lms_analog *a = analog_map_addr;
@@ -63,7 +63,7 @@ static ER_UINT svc_analog_output(intptr_t port, intptr_t out, intptr_t p3, intpt
 }
 
 /* ANALOG_FN_DCM_WRITE: exactly one command per input port, from the caller's memory. */
-static ER_UINT svc_analog_dcm_write(intptr_t cmd, intptr_t len, intptr_t p3, intptr_t p4,
+ER_UINT svc_analog_dcm_write(intptr_t cmd, intptr_t len, intptr_t p3, intptr_t p4,
 				    intptr_t p5, ID cdmid)
 {
 	if (sns_ctx())
@@ -88,14 +88,14 @@ static ER_UINT analog_read_from_start(struct file *file, intptr_t buf, intptr_t 
 }
 
 /* ANALOG_FN_DCM_READ: in_dcm[4], out_dcm[4], '\r', 0. */
-static ER_UINT svc_analog_dcm_read(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4,
+ER_UINT svc_analog_dcm_read(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4,
 				   intptr_t p5, ID cdmid)
 {
 	return analog_read_from_start(dcm_file, buf, len);
 }
 
 /* ANALOG_FN_TEXT: a fresh text dump. */
-static ER_UINT svc_analog_text(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4, intptr_t p5,
+ER_UINT svc_analog_text(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4, intptr_t p5,
 			       ID cdmid)
 {
 	return analog_read_from_start(analog_file, buf, len);

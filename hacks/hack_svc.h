@@ -23,5 +23,6 @@
 #include <linux_compat/config.h>
 #include <linux_compat/modparam.h>
 #include "hack_interface.h"
+#include "hack_routines.h"
 
 #endif /* EV3LX_HACK_SVC_H */

@@ -44,7 +44,7 @@ static ER iic_hack_set_conn(intptr_t port, s8 conn, s8 mode)
 }
 
 /* IIC_FN_START */
-static ER_UINT svc_iic_start(intptr_t port, intptr_t mode, intptr_t p3, intptr_t p4,
+ER_UINT svc_iic_start(intptr_t port, intptr_t mode, intptr_t p3, intptr_t p4,
 			     intptr_t p5, ID cdmid)
 {
 	ER ercd = iic_hack_check(port);
@@ -57,7 +57,7 @@ static ER_UINT svc_iic_start(intptr_t port, intptr_t mode, intptr_t p3, intptr_t
 }
 
 /* IIC_FN_STOP */
-static ER_UINT svc_iic_stop(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_iic_stop(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p4,
 			    intptr_t p5, ID cdmid)
 {
 	ER ercd = iic_hack_check(port);
@@ -66,7 +66,7 @@ static ER_UINT svc_iic_stop(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p4
 }
 
 /* IIC_FN_TYPE_INFO: READ_TYPE_INFO into the caller's IICSTR. */
-static ER_UINT svc_iic_type_info(intptr_t port, intptr_t out, intptr_t p3, intptr_t p4,
+ER_UINT svc_iic_type_info(intptr_t port, intptr_t out, intptr_t p3, intptr_t p4,
 				 intptr_t p5, ID cdmid)
 {
 	struct lms_iic_str s = { .port = (s8)port };
@@ -85,7 +85,7 @@ static ER_UINT svc_iic_type_info(intptr_t port, intptr_t out, intptr_t p3, intpt
 }
 
 /* IIC_FN_SET: the caller's IICSTR, checked here, then IIC_SET. */
-static ER_UINT svc_iic_set(intptr_t in, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_iic_set(intptr_t in, intptr_t p2, intptr_t p3, intptr_t p4,
 			   intptr_t p5, ID cdmid)
 {
 	struct lms_iic_str s;
@@ -103,7 +103,7 @@ static ER_UINT svc_iic_set(intptr_t in, intptr_t p2, intptr_t p3, intptr_t p4,
 }
 
 /* IIC_FN_SETUP: one IIC_SETUP round on the caller's IICDAT. */
-static ER_UINT svc_iic_setup(intptr_t io, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_iic_setup(intptr_t io, intptr_t p2, intptr_t p3, intptr_t p4,
 			     intptr_t p5, ID cdmid)
 {
 	struct lms_iic_dat d;
@@ -126,7 +126,7 @@ static ER_UINT svc_iic_setup(intptr_t io, intptr_t p2, intptr_t p3, intptr_t p4,
 }
 
 /* IIC_FN_MAP: the address of the shared memory. */
-static ER_UINT svc_iic_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_iic_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
 			   intptr_t p5, ID cdmid)
 {
 	ER ercd = iic_hack_check(0);
@@ -139,7 +139,7 @@ static ER_UINT svc_iic_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
 }
 
 /* IIC_FN_STATE */
-static ER_UINT svc_iic_state(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_iic_state(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p4,
 			     intptr_t p5, ID cdmid)
 {
 	ER ercd = iic_hack_check(port);
@@ -148,7 +148,7 @@ static ER_UINT svc_iic_state(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p
 }
 
 /* ATT_INI: forget the previous boot's file. */
-static void iic_hack_boot(intptr_t exinf)
+void iic_hack_boot(intptr_t exinf)
 {
 	iic_file = NULL;
 	iic_hack_map = NULL;

@@ -16,7 +16,7 @@ static struct file *lcd_hack_file(void)
 }
 
 /* LCD_FN_INIT: open /dev/fb0 (once), then INIT and START as LEGO's user space does. */
-static ER_UINT svc_lcd_init(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
+ER_UINT svc_lcd_init(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
 {
 	struct file *file;
 	long ret;
@@ -39,7 +39,7 @@ static ER_UINT svc_lcd_init(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4, 
 }
 
 /* LCD_FN_UPDATE: the caller's frame written to the frame buffer (the driver copies it from user memory). */
-static ER_UINT svc_lcd_update(intptr_t frame, intptr_t len, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
+ER_UINT svc_lcd_update(intptr_t frame, intptr_t len, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
 {
 	struct file *file = lcd_hack_file();
 	loff_t pos = 0;
@@ -58,7 +58,7 @@ static ER_UINT svc_lcd_update(intptr_t frame, intptr_t len, intptr_t p3, intptr_
 }
 
 /* LCD_FN_FLUSH: runs a pending deferred update now. */
-static ER_UINT svc_lcd_flush(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
+ER_UINT svc_lcd_flush(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4, intptr_t p5, ID cdmid)
 {
 	struct file *file = lcd_hack_file();
 	struct fb_info *info;

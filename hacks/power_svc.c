@@ -18,7 +18,7 @@ static ER power_hack_check(void)
 }
 
 /* POWER_FN_RECHARGEABLE: read() of the two-character answer from offset 0. */
-static ER_UINT svc_power_rechargeable(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_power_rechargeable(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4,
 				      intptr_t p5, ID cdmid)
 {
 	char text[LMS_POWER_READ_SIZE];
@@ -35,7 +35,7 @@ static ER_UINT svc_power_rechargeable(intptr_t p1, intptr_t p2, intptr_t p3, int
 }
 
 /* POWER_FN_TEST_PIN: write() of one level byte. */
-static ER_UINT svc_power_test_pin(intptr_t level, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_power_test_pin(intptr_t level, intptr_t p2, intptr_t p3, intptr_t p4,
 				  intptr_t p5, ID cdmid)
 {
 	u8 byte = (u8)level;

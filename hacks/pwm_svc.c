@@ -21,14 +21,14 @@ static ER pwm_write_command(intptr_t cmd, intptr_t len)
 }
 
 /* PWM_FN_COMMAND: one command. */
-static ER_UINT svc_pwm_command(intptr_t cmd, intptr_t len, intptr_t p3, intptr_t p4,
+ER_UINT svc_pwm_command(intptr_t cmd, intptr_t len, intptr_t p3, intptr_t p4,
 			       intptr_t p5, ID cdmid)
 {
 	return pwm_write_command(cmd, len);
 }
 
 /* PWM_FN_COMMAND2: two commands; the second runs only if the first succeeded. */
-static ER_UINT svc_pwm_command2(intptr_t cmd_a, intptr_t len_a, intptr_t cmd_b,
+ER_UINT svc_pwm_command2(intptr_t cmd_a, intptr_t len_a, intptr_t cmd_b,
 				intptr_t len_b, intptr_t p5, ID cdmid)
 {
 	ER ercd = pwm_write_command(cmd_a, len_a);
@@ -42,7 +42,7 @@ static ER_UINT svc_pwm_command2(intptr_t cmd_a, intptr_t len_a, intptr_t cmd_b,
  * dispatches them to (cmd_speed or cmd_power, then cmd_start), which check the
  * port mask and the value and take the driver's lock as for a write().
  */
-static ER_UINT svc_pwm_run(intptr_t opcode, intptr_t port, intptr_t value, intptr_t p4,
+ER_UINT svc_pwm_run(intptr_t opcode, intptr_t port, intptr_t value, intptr_t p4,
 			   intptr_t p5, ID cdmid)
 {
 	u8 set[3], start[2];
@@ -65,7 +65,7 @@ static ER_UINT svc_pwm_run(intptr_t opcode, intptr_t port, intptr_t value, intpt
 }
 
 /* PWM_FN_READ: the "R T " status text into the caller's buffer; the byte count. */
-static ER_UINT svc_pwm_read(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4,
+ER_UINT svc_pwm_read(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4,
 			    intptr_t p5, ID cdmid)
 {
 	ssize_t ret;
@@ -77,14 +77,14 @@ static ER_UINT svc_pwm_read(intptr_t buf, intptr_t len, intptr_t p3, intptr_t p4
 }
 
 /* PWM_FN_BUSY: the ReadyStatus mask (a byte the driver updates atomically). */
-static ER_UINT svc_pwm_busy(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_pwm_busy(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4,
 			    intptr_t p5, ID cdmid)
 {
 	return pwm_file ? (ER_UINT)pwm_module_ready_status() : E_OBJ;
 }
 
 /* PWM_FN_SET_BUSY: ORs mask into the busy masks through /dev/lms_motor. */
-static ER_UINT svc_pwm_set_busy(intptr_t mask, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_pwm_set_busy(intptr_t mask, intptr_t p2, intptr_t p3, intptr_t p4,
 				intptr_t p5, ID cdmid)
 {
 	u8 byte = (u8)mask;
@@ -95,7 +95,7 @@ static ER_UINT svc_pwm_set_busy(intptr_t mask, intptr_t p2, intptr_t p3, intptr_
 }
 
 /* PWM_FN_MOTOR_DATA: copies one port's MOTORDATA to the caller. */
-static ER_UINT svc_pwm_motor_data(intptr_t port, intptr_t out, intptr_t p3, intptr_t p4,
+ER_UINT svc_pwm_motor_data(intptr_t port, intptr_t out, intptr_t p3, intptr_t p4,
 				  intptr_t p5, ID cdmid)
 {
 	if (port < 0 || port >= LMS_PWM_PORTS)
@@ -108,7 +108,7 @@ static ER_UINT svc_pwm_motor_data(intptr_t port, intptr_t out, intptr_t p3, intp
 }
 
 /* PWM_FN_MOTOR_MAP: the address of the shared MOTORDATA[4]. */
-static ER_UINT svc_pwm_motor_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_pwm_motor_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
 				 intptr_t p5, ID cdmid)
 {
 	if (!motor_map)

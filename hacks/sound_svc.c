@@ -17,7 +17,7 @@ static ER sound_hack_check(void)
 }
 
 /* SOUND_FN_WRITE: write() of one command, BUSY set first for TONE and PLAY. */
-static ER_UINT svc_sound_write(intptr_t cmd, intptr_t len, intptr_t p3, intptr_t p4,
+ER_UINT svc_sound_write(intptr_t cmd, intptr_t len, intptr_t p3, intptr_t p4,
 			       intptr_t p5, ID cdmid)
 {
 	const u8 __user *buf = (const u8 __user *)cmd;
@@ -44,7 +44,7 @@ static ER_UINT svc_sound_write(intptr_t cmd, intptr_t len, intptr_t p3, intptr_t
 }
 
 /* SOUND_FN_PLAY_PCM: PLAY at level, then the buffer's samples fed slot by slot. */
-static ER_UINT svc_sound_play_pcm(intptr_t samples, intptr_t len, intptr_t level, intptr_t p4,
+ER_UINT svc_sound_play_pcm(intptr_t samples, intptr_t len, intptr_t level, intptr_t p4,
 				 intptr_t p5, ID cdmid)
 {
 	u8 play[2] = { LMS_SOUND_PLAY, (u8)level };
@@ -73,7 +73,7 @@ static ER_UINT svc_sound_play_pcm(intptr_t samples, intptr_t len, intptr_t level
 }
 
 /* SOUND_FN_STATUS: the status byte. */
-static ER_UINT svc_sound_status(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_sound_status(intptr_t p1, intptr_t p2, intptr_t p3, intptr_t p4,
 				intptr_t p5, ID cdmid)
 {
 	ER ercd = sound_hack_check();

@@ -39,7 +39,7 @@ static ER uart_hack_set_conn(intptr_t port, s8 conn, s8 mode)
 }
 
 /* UART_FN_SET_MODE */
-static ER_UINT svc_uart_set_mode(intptr_t port, intptr_t mode, intptr_t p3, intptr_t p4,
+ER_UINT svc_uart_set_mode(intptr_t port, intptr_t mode, intptr_t p3, intptr_t p4,
 				 intptr_t p5, ID cdmid)
 {
 	ER ercd = uart_hack_check(port);
@@ -52,7 +52,7 @@ static ER_UINT svc_uart_set_mode(intptr_t port, intptr_t mode, intptr_t p3, intp
 }
 
 /* UART_FN_STOP */
-static ER_UINT svc_uart_stop(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_uart_stop(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p4,
 			     intptr_t p5, ID cdmid)
 {
 	ER ercd = uart_hack_check(port);
@@ -61,7 +61,7 @@ static ER_UINT svc_uart_stop(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p
 }
 
 /* UART_FN_MODE_INFO: the description from the shared memory, once the sensor has given it. */
-static ER_UINT svc_uart_mode_info(intptr_t port, intptr_t mode, intptr_t out, intptr_t p4,
+ER_UINT svc_uart_mode_info(intptr_t port, intptr_t mode, intptr_t out, intptr_t p4,
 				  intptr_t p5, ID cdmid)
 {
 	ER ercd = uart_hack_check(port);
@@ -84,7 +84,7 @@ static ER_UINT svc_uart_mode_info(intptr_t port, intptr_t mode, intptr_t out, in
 }
 
 /* UART_FN_CLEAR_CHANGED */
-static ER_UINT svc_uart_clear_changed(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_uart_clear_changed(intptr_t port, intptr_t p2, intptr_t p3, intptr_t p4,
 				      intptr_t p5, ID cdmid)
 {
 	struct lms_uart_ctl ctl = { .port = (s8)port };
@@ -96,7 +96,7 @@ static ER_UINT svc_uart_clear_changed(intptr_t port, intptr_t p2, intptr_t p3, i
 }
 
 /* UART_FN_WRITE: [port, data...] written to the device. */
-static ER_UINT svc_uart_write(intptr_t port, intptr_t data, intptr_t len, intptr_t p4,
+ER_UINT svc_uart_write(intptr_t port, intptr_t data, intptr_t len, intptr_t p4,
 			      intptr_t p5, ID cdmid)
 {
 	u8 cmd[1 + LMS_UART_DATA_SIZE];
@@ -114,7 +114,7 @@ static ER_UINT svc_uart_write(intptr_t port, intptr_t data, intptr_t len, intptr
 }
 
 /* UART_FN_MAP: the address of the shared memory. */
-static ER_UINT svc_uart_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_uart_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
 			    intptr_t p5, ID cdmid)
 {
 	ER ercd = uart_hack_check(0);
@@ -128,7 +128,7 @@ static ER_UINT svc_uart_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
 
 /* ATT_INI: forget the previous boot's file.  Which UARTs serve ports 3 and 4
  * is the board's to say: it passes d_uart.port3_* / port4_* as boot arguments. */
-static void uart_hack_boot(intptr_t exinf)
+void uart_hack_boot(intptr_t exinf)
 {
 	uart_file = NULL;
 	uart_map = NULL;

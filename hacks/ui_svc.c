@@ -25,7 +25,7 @@ static ER ui_hack_check(void)
 }
 
 /* UI_FN_LED: one pattern byte written to the device. */
-static ER_UINT svc_ui_led(intptr_t pattern, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_ui_led(intptr_t pattern, intptr_t p2, intptr_t p3, intptr_t p4,
 			  intptr_t p5, ID cdmid)
 {
 	u8 byte = (u8)pattern;
@@ -39,7 +39,7 @@ static ER_UINT svc_ui_led(intptr_t pattern, intptr_t p2, intptr_t p3, intptr_t p
 }
 
 /* UI_FN_MAP: the address of the shared page. */
-static ER_UINT svc_ui_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
+ER_UINT svc_ui_map(intptr_t out, intptr_t p2, intptr_t p3, intptr_t p4,
 			  intptr_t p5, ID cdmid)
 {
 	ER ercd = ui_hack_check();
@@ -70,7 +70,7 @@ static void ui_poll_queue(struct file *file, wait_queue_head_t *queue, poll_tabl
 }
 
 /* UI_FN_WAIT_CLICK: read() of one click, waiting at most tmout ms (poll(2) + read(2)). */
-static ER_UINT svc_ui_wait_click(intptr_t out, intptr_t tmout, intptr_t p3, intptr_t p4,
+ER_UINT svc_ui_wait_click(intptr_t out, intptr_t tmout, intptr_t p3, intptr_t p4,
 				 intptr_t p5, ID cdmid)
 {
 	struct ui_poller p = { .queue = NULL };

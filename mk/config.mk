@@ -189,12 +189,19 @@ endef
 KERNEL_DOMAIN_DIRS := rtos_stub/src linux_compat hacks
 kernel_domain_flags = $(if $(filter $(addsuffix /%,$(KERNEL_DOMAIN_DIRS)),$(1)),-DTOPPERS_SVC_CALL)
 
+# The object IDs every source takes from the configurator's kernel_cfg.h
+# (cfg/ev3lx.cfg, cfg/module.mk): searched last, after an app's own
+# kernel_cfg.h, and never by a driver's unit (the kernel's directories are
+# not on its path).
+cfg_inc = $(if $(call is_driver_tu,$(1)),,-idirafter $(EV3LX_CFG_DIR))
+
 # The one compile command of configuration $(1) for source (or header) $(2):
 # every object, firmware file and header check is compiled through it.
 # A configuration may rewrite its command (compile_adjust_<config>: the AM1808
 # against a real HRP2 tree takes the kernel's headers for rtos_stub's).
 compile_cmd = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(call driver_tu_filter,$(2),$(call src_flags,$(2))) \
-	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2)) $(call kernel_domain_flags,$(2))) $(CFLAGS_$(1)) $(KERNEL_DEFS)
+	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2)) $(call kernel_domain_flags,$(2)) $(call cfg_inc,$(2))) \
+	$(CFLAGS_$(1)) $(KERNEL_DEFS)
 compile = $(if $(compile_adjust_$(1)),$(call compile_adjust_$(1),$(call compile_cmd,$(1),$(2))),$(call compile_cmd,$(1),$(2)))
 
 # Flags of configuration $(1)'s compiler: clang (the fuzzing build) has no
@@ -235,7 +242,7 @@ same_text = $(and $(findstring x$(strip $(1))x,x$(strip $(2))x),$(findstring x$(
 # compiler cache makes that cheap where nothing changed).
 define obj_rule
 $(call key_file_rule,$(2)/compile.key,$(CC_$(1)) $(CFLAGS_$(1)) $(KERNEL_DEFS) $(LINUX_CODEGEN))
-$(2)/obj/%.o: %.c $(2)/compile.key
+$(2)/obj/%.o: %.c $(2)/compile.key | $(EV3LX_CFG_DIR)/kernel_cfg.h
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(1) $$<
 	$(Q)$$(call compile,$(1),$$<) -MMD -MP -c $$< -o $$@
