@@ -32,9 +32,14 @@ EV3LX_CFG_CPP_INC := -Iapi -Ihacks -Ilinux_compat/include -Ilinux_compat/mach-da
 EV3LX_CFG_DEPS := cfg/ev3lx.cfg $(wildcard api/*.h hacks/*.h rtos_stub/include/*.h \
 	linux_compat/include/linux_compat/*.h linux_compat/mach-davinci/include/*/*.h)
 
+# Every library object depends on the kernel_cfg.h it was compiled with
+# (mk/config.mk's obj_rule: the compiler's dependency lists leave it out, a
+# header of a system directory), so the files are replaced only when their
+# text changes: a header edit that leaves the IDs alone recompiles nothing.
 $(EV3LX_CFG_GEN)/kernel_cfg.h: $(EV3CFG) $(EV3LX_CFG_DEPS)
-	@mkdir -p $(@D)
+	@mkdir -p $(@D)/new
 	$(quiet) CFG ev3lx $@
-	$(Q)$(EV3CFG) --library --kernel hrp2 --symbol ev3lx_cfg -o $(@D) $(EV3LX_CFG_CPP_INC) \
+	$(Q)$(EV3CFG) --library --kernel hrp2 --symbol ev3lx_cfg -o $(@D)/new $(EV3LX_CFG_CPP_INC) \
 		$(KERNEL_DEFS) cfg/ev3lx.cfg
+	$(Q)for f in kernel_cfg.h kernel_cfg.c; do cmp -s $(@D)/new/$$f $(@D)/$$f || cp $(@D)/new/$$f $(@D)/$$f; done
 $(EV3LX_CFG_GEN)/kernel_cfg.c: $(EV3LX_CFG_GEN)/kernel_cfg.h

@@ -242,7 +242,7 @@ same_text = $(and $(findstring x$(strip $(1))x,x$(strip $(2))x),$(findstring x$(
 # compiler cache makes that cheap where nothing changed).
 define obj_rule
 $(call key_file_rule,$(2)/compile.key,$(CC_$(1)) $(CFLAGS_$(1)) $(KERNEL_DEFS) $(LINUX_CODEGEN))
-$(2)/obj/%.o: %.c $(2)/compile.key | $(EV3LX_CFG_DIR)/kernel_cfg.h
+$(2)/obj/%.o: %.c $(2)/compile.key $(EV3LX_CFG_DIR)/kernel_cfg.h
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(1) $$<
 	$(Q)$$(call compile,$(1),$$<) -MMD -MP -c $$< -o $$@
