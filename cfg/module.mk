@@ -36,10 +36,11 @@ EV3LX_CFG_DEPS := cfg/ev3lx.cfg $(wildcard api/*.h hacks/*.h rtos_stub/include/*
 # (mk/config.mk's obj_rule: the compiler's dependency lists leave it out, a
 # header of a system directory), so the files are replaced only when their
 # text changes: a header edit that leaves the IDs alone recompiles nothing.
-$(EV3LX_CFG_GEN)/kernel_cfg.h: $(EV3CFG) $(EV3LX_CFG_DEPS)
+$(EV3LX_CFG_GEN)/stamp: $(EV3CFG) $(EV3LX_CFG_DEPS)
 	@mkdir -p $(@D)/new
-	$(quiet) CFG ev3lx $@
+	$(quiet) CFG ev3lx $(@D)/kernel_cfg.h
 	$(Q)$(EV3CFG) --library --kernel hrp2 --symbol ev3lx_cfg -o $(@D)/new $(EV3LX_CFG_CPP_INC) \
 		$(KERNEL_DEFS) cfg/ev3lx.cfg
 	$(Q)for f in kernel_cfg.h kernel_cfg.c; do cmp -s $(@D)/new/$$f $(@D)/$$f || cp $(@D)/new/$$f $(@D)/$$f; done
-$(EV3LX_CFG_GEN)/kernel_cfg.c: $(EV3LX_CFG_GEN)/kernel_cfg.h
+	$(Q)touch $@
+$(EV3LX_CFG_GEN)/kernel_cfg.h $(EV3LX_CFG_GEN)/kernel_cfg.c: $(EV3LX_CFG_GEN)/stamp ;
