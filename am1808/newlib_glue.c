@@ -76,3 +76,29 @@ off_t _lseek(int fd, off_t offset, int whence)
 	(void)offset; (void)whence;
 	return no_descriptor(fd);
 }
+
+int _getpid(void);
+int _kill(int pid, int sig);
+void _exit(int status);
+
+/* One program, no processes: newlib's abort asks for its own process ID and signals it. */
+int _getpid(void)
+{
+	return 1;
+}
+
+/* No signal can be delivered: abort then ends in _exit. */
+int _kill(int pid, int sig)
+{
+	(void)pid; (void)sig;
+	errno = EINVAL;
+	return -1;
+}
+
+/* The program cannot end: the caller stops here, where a debugger finds it. */
+void _exit(int status)
+{
+	(void)status;
+	for (;;)
+		;
+}

@@ -12,6 +12,7 @@ component_of() {
 	*linux_compat/*)           echo "linux_compat" ;;
 	*ev3_drivers/*.c*)        f=${1##*ev3_drivers/}; echo "driver ${f%%.c*}" ;;
 	*hacks/*_hack.c*)         f=${1##*hacks/}; echo "hack ${f%%_hack.c*}" ;;
+	*hacks/*_svc.c*)          f=${1##*hacks/}; echo "hack ${f%%_svc.c*}" ;;
 	*hacks/*)                  echo "hacks (shared)" ;;
 	*api/*)                    echo "api" ;;
 	*newlib*|*libgcc*)         echo "libc + libgcc" ;;

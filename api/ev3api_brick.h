@@ -45,19 +45,13 @@ ER ev3lx_button_set_on_clicked(button_t button, ISR handler, intptr_t exinf);
 
 /*
  * The button task that runs click handlers, and the semaphore guarding the
- * handler table: IDs reserved from the top of the application ranges
- * (linux_compat holds task TNUM_TSKID).  The task runs in user domain
- * EV3_BUTTON_TASK_DOMAIN (the application's by convention; TDOM_KERNEL for
- * applications without user domains), so handlers have that domain's rights.
+ * handler table (EV3_BUTTON_TSKID, EV3_BUTTON_SEMID: their IDs are the
+ * configurator's, declared in cfg/ev3lx.cfg, see ev3api_cfg.h).  The task
+ * runs in user domain EV3_BUTTON_TASK_DOMAIN (the application's by
+ * convention), so handlers have that domain's rights.
  * rel_wai(EV3_BUTTON_TSKID) stops it cleanly; act_tsk starts it again.
- * Each may be overridden at build time (-D).
+ * The settings may be overridden at build time (-D).
  */
-#ifndef EV3_BUTTON_TSKID
-#define EV3_BUTTON_TSKID          (TNUM_TSKID - 1)
-#endif
-#ifndef EV3_BUTTON_SEMID
-#define EV3_BUTTON_SEMID          TNUM_SEMID
-#endif
 #ifndef EV3_BUTTON_TASK_PRIORITY
 #define EV3_BUTTON_TASK_PRIORITY  5
 #endif
@@ -69,25 +63,20 @@ ER ev3lx_button_set_on_clicked(button_t button, ISR handler, intptr_t exinf);
 #endif
 
 /*
- * The LCD task, which starts the panel at boot (as EV3RT's platform does
- * before the app runs) and ends: at the button task's priority and domain.
+ * The LCD task (EV3_LCD_TSKID), which starts the panel at boot (as EV3RT's
+ * platform does before the app runs) and ends: at the button task's priority
+ * and domain.
  */
-#ifndef EV3_LCD_TSKID
-#define EV3_LCD_TSKID             (TNUM_TSKID - 3)
-#endif
 #ifndef EV3_LCD_TASK_STACK
 #define EV3_LCD_TASK_STACK        (8 * 1024)
 #endif
 
 /*
- * The app-init task, which runs the app's C++ global constructors at boot
+ * The app-init task (EV3_APP_INIT_TSKID), which runs the app's C++ global constructors at boot
  * once the platform is up, as EV3RT's app-init task does, holding the app's
  * tasks (priorities TMIN_APP_TPRI and lower) until they return: at the
  * button task's priority and domain.
  */
-#ifndef EV3_APP_INIT_TSKID
-#define EV3_APP_INIT_TSKID        (TNUM_TSKID - 4)
-#endif
 #ifndef EV3_APP_INIT_TASK_STACK
 #define EV3_APP_INIT_TASK_STACK   (16 * 1024)
 #endif

@@ -22,6 +22,13 @@ extern "C" {
 #include <stdio.h>
 #include "kernel.h"
 
+/* The HRP3 profile's binding of a call to its EV3RT 1.x form is ev3lx's
+ * host kernel's (rtos_stub/include/kernel.h); a real HRP2 kernel's kernel.h
+ * has no such profile, and the calls keep their HRP2 form. */
+#ifndef EV3LX_HRP3_SVC
+#define EV3LX_HRP3_SVC(name)
+#endif
+
 #define TMAX_FILENAME_LEN 255
 
 /* A file read into memory. */

@@ -34,7 +34,7 @@ struct tok {
 enum api {
 	API_CRE_TSK, API_CRE_SEM, API_CRE_FLG, API_CRE_DTQ, API_CRE_PDQ, API_CRE_MTX,
 	API_CRE_CYC, API_CRE_ALM, API_EV3_CRE_CYC, API_ATT_MOD, API_ATT_INI, API_ATT_TER,
-	API_DEF_SVC, API_CFG_INT, API_ATT_ISR, API_INCLUDE, API_INCLUDE_TABLE, API_COUNT
+	API_DEF_SVC, API_CFG_INT, API_ATT_ISR, API_ATA_SEC, API_INCLUDE, API_INCLUDE_TABLE, API_COUNT
 };
 
 /* One static API: its name, whether its first parameter names an object ID,
@@ -63,6 +63,7 @@ static const struct api_desc apis[API_COUNT] = {
 	[API_DEF_SVC] = { "DEF_SVC", false, true, 3, 3, "svcatr, svcrtn, stksz" },
 	[API_CFG_INT] = { "CFG_INT", false, true, 2, 2, "intatr, intpri" },
 	[API_ATT_ISR] = { "ATT_ISR", false, false, 5, 5, "isratr, exinf, intno, isr, isrpri" },
+	[API_ATA_SEC] = { "ATA_SEC", false, false, 2, 2, "mematr, memreg" },
 	[API_INCLUDE] = { "INCLUDE", false, false, 0, 0, NULL },
 	[API_INCLUDE_TABLE] = { "EV3LX_INCLUDE_TABLE", false, false, 0, 0, NULL },
 };
@@ -90,7 +91,6 @@ static const struct { const char *name, *what; } unsupported_apis[] = {
 	{ "ATT_REG", "memory regions (a domain's memory is its ATT_MOD objects')" },
 	{ "DEF_SRG", "memory regions (a domain's memory is its ATT_MOD objects')" },
 	{ "ATT_SEC", "sections (a domain's memory is its ATT_MOD objects')" },
-	{ "ATA_SEC", "sections (a domain's memory is its ATT_MOD objects')" },
 	{ "LNK_SEC", "sections (a domain's memory is its ATT_MOD objects')" },
 	{ "ATA_MOD", "access permissions of modules (ATT_MOD gives the domain's own)" },
 	{ "ATT_MEM", "memory objects (a domain's memory is its ATT_MOD objects')" },
@@ -207,6 +207,8 @@ struct cfg_ctx {
 	/* the kernel profile: CFG_PROFILE_AUTO until given (cfg_set_profile) */
 	int profile;
 	struct profile_mark hrp2_mark, hrp3_mark;
+	/* a library's fragment: its IDs at the top of each kind's range (cfg_set_library) */
+	bool library;
 };
 
 /* ---- small helpers ---- */
@@ -337,6 +339,11 @@ void cfg_free(struct cfg_ctx *ctx)
 	free(ctx);
 }
 
+void cfg_set_library(struct cfg_ctx *ctx, bool library)
+{
+	ctx->library = library;
+}
+
 void cfg_set_profile(struct cfg_ctx *ctx, int profile)
 {
 	ctx->profile = profile;
@@ -403,6 +410,17 @@ static bool is_ident_char(char c)
 
 /* A byte that may appear in C text outside literals and comments: printable
  * ASCII except the three characters no C token uses, or whitespace. */
+/* True if s is a C identifier (the linker defines __start_s and __stop_s only for those). */
+static bool is_c_section_name(const char *s)
+{
+	if (!(isalpha((unsigned char)*s) || *s == '_'))
+		return false;
+	for (; *s; s++)
+		if (!(isalnum((unsigned char)*s) || *s == '_'))
+			return false;
+	return true;
+}
+
 static bool is_c_text_byte(char c)
 {
 	unsigned char u = (unsigned char)c;
@@ -1022,6 +1040,76 @@ static void check_obj(struct cfg_ctx *ctx, struct obj *o, const char *what)
 		report(ctx, o->file, o->line, what, "pdqmb must be NULL: the kernel allocates the buffer (E_NOSPT)");
 }
 
+/* Reads "{ e, ... }" into o's elements from index first on; the count read, or -1 if malformed. */
+static int read_packet(struct cfg_ctx *ctx, struct obj *o, const char *what, int first)
+{
+	int n = 0;
+
+	if (!is_punct(next(ctx), "{"))
+		return -1;
+	for (;;) {
+		char *e = read_expr(ctx, what, "}");
+
+		if (e == NULL)
+			return -1;
+		if (first + n < MAX_ELEMS)
+			o->elem[first + n] = e;
+		else
+			free(e);
+		n++;
+		if (!is_punct(peek(ctx, 0), ","))
+			break;
+		next(ctx);
+	}
+	return is_punct(next(ctx), "}") ? n : -1;
+}
+
+/*
+ * ATA_SEC("section", { mematr, memreg }, { acptn1, acptn2, acptn3, acptn4 }):
+ * a section of the kernel domain's memory with access permissions (HRP2's
+ * memory-object API).  On the host the section's bounds are the linker's
+ * __start_/__stop_ symbols, and every user domain gets the access that
+ * acptn1 (write) and acptn2 (read) grant to all domains (TACP_SHARED).
+ */
+static void parse_ata_sec(struct cfg_ctx *ctx, const struct tok *name)
+{
+	const char *what = "ATA_SEC";
+	struct tok *arg = next(ctx);
+	char *sec = arg->kind == TK_STR ? unquote(arg) : NULL;
+	struct obj *o;
+	int n1 = -1, n2 = -1;
+
+	o = new_obj(ctx);
+	o->api = API_ATA_SEC;
+	o->id = sec;
+	o->file = name->file;
+	o->line = name->line;
+	o->domain = ctx->dom_depth > 0 ? ctx->dom_stack[ctx->dom_depth - 1] : 0;
+	if (sec != NULL && is_punct(next(ctx), ","))
+		n1 = read_packet(ctx, o, what, 0);
+	if (n1 == 2 && is_punct(next(ctx), ","))
+		n2 = read_packet(ctx, o, what, 2);
+	o->nelem = 2 + (n2 > 0 ? n2 : 0);
+	if (o->nelem > MAX_ELEMS)
+		o->nelem = MAX_ELEMS;
+	if (sec == NULL || n1 != 2 || n2 != 4 || !is_punct(next(ctx), ")") || !is_punct(peek(ctx, 0), ";")) {
+		report(ctx, name->file, name->line, what,
+		       "expected (\"section\", { mematr, memreg }, { acptn1, acptn2, acptn3, acptn4 }) (E_PAR)");
+		discard_last_obj(ctx);
+		while (!is_punct(peek(ctx, 0), ";") && peek(ctx, 0)->kind != TK_EOF)
+			next(ctx);
+		next(ctx);
+		return;
+	}
+	next(ctx);
+	if (!is_c_section_name(sec))
+		report(ctx, name->file, name->line, what,
+		       "section \"%s\": a C identifier is needed, the linker bounds it by __start_/__stop_ (E_PAR)", sec);
+	if (o->domain != 0)
+		report(ctx, name->file, name->line, what,
+		       "belongs to the kernel domain, not inside DOMAIN(%s) (E_RSATR)", ctx->domains[o->domain - 1]);
+}
+
 /* Parses "API ( ... ) ;" after the name; records the object. */
 static void parse_api(struct cfg_ctx *ctx, enum api a)
 {
@@ -1032,6 +1120,10 @@ static void parse_api(struct cfg_ctx *ctx, enum api a)
 
 	snprintf(what, sizeof(what), "%s", d->name);
 	next(ctx);	/* "(" */
+	if (a == API_ATA_SEC) {
+		parse_ata_sec(ctx, name);
+		return;
+	}
 	if (a == API_ATT_MOD || a == API_INCLUDE || a == API_INCLUDE_TABLE) {
 		struct tok *arg = next(ctx);
 		char *s = a == API_INCLUDE_TABLE ? (arg->kind == TK_ID ? xstrdup(arg->text) : NULL) : unquote(arg);
@@ -1458,6 +1550,14 @@ int cfg_finish(struct cfg_ctx *ctx)
 			continue;
 		o->number = ++counters[id_kind(o->api)];
 	}
+	if (ctx->library)
+		for (int i = 0; i < ctx->nobjs; i++) {
+			struct obj *o = &ctx->objs[i];
+
+			/* counted from the top: the kind's last object is TNUM_xxx */
+			if (apis[o->api].has_id)
+				o->number -= counters[id_kind(o->api)] + 1;
+		}
 	/* The handler tasks of EV3 cyclic handlers come after the application's tasks. */
 	for (int i = 0; i < ctx->nobjs; i++)
 		if (ctx->objs[i].api == API_EV3_CRE_CYC)
@@ -1554,16 +1654,52 @@ static const char *domain_expr(const struct cfg_ctx *ctx, int domain)
 	return domain > 0 ? ctx->domains[domain - 1] : "TDOM_KERNEL";
 }
 
+/* The name of the count of an object kind's IDs (TNUM_TSKID ...). */
+static const char *tnum_of(enum api a)
+{
+	switch (id_kind(a)) {
+	case API_CRE_SEM: return "TNUM_SEMID";
+	case API_CRE_FLG: return "TNUM_FLGID";
+	case API_CRE_DTQ: return "TNUM_DTQID";
+	case API_CRE_PDQ: return "TNUM_PDQID";
+	case API_CRE_MTX: return "TNUM_MTXID";
+	case API_CRE_CYC: return "TNUM_CYCID";
+	case API_CRE_ALM: return "TNUM_ALMID";
+	default:          return "TNUM_TSKID";
+	}
+}
+
 void cfg_write_header(const struct cfg_ctx *ctx, FILE *out, const char *symbol)
 {
+	/* a library's header has a guard of its own: a unit may see an app's too */
+	const char *guard = ctx->library ? "EV3CFG_LIBRARY_KERNEL_CFG_H" : "TOPPERS_KERNEL_CFG_H";
+
 	fprintf(out, "/* kernel_cfg.h — object IDs of the configuration; generated by ev3cfg, do not edit. */\n");
-	fprintf(out, "#ifndef TOPPERS_KERNEL_CFG_H\n#define TOPPERS_KERNEL_CFG_H\n\n");
+	fprintf(out, "#ifndef %s\n#define %s\n\n", guard, guard);
 	for (int i = 0; i < ctx->ndomains; i++)
-		fprintf(out, "#define %s %d\n", ctx->domains[i], i + 1);
+		if (ctx->library)	/* the application's name for its domain: it may define it too */
+			fprintf(out, "#ifndef %s\n#define %s %d\n#endif\n", ctx->domains[i], ctx->domains[i], i + 1);
+		else
+			fprintf(out, "#define %s %d\n", ctx->domains[i], i + 1);
+	if (ctx->library) {
+		static const enum api kinds[] = { API_CRE_TSK, API_CRE_SEM, API_CRE_FLG, API_CRE_DTQ, API_CRE_PDQ,
+						  API_CRE_MTX, API_CRE_CYC, API_CRE_ALM };
+
+		/* how many IDs the library takes at the top of each range: what lies below is free */
+		for (size_t k = 0; k < sizeof(kinds) / sizeof(kinds[0]); k++) {
+			int n = 0;
+
+			for (int i = 0; i < ctx->nobjs; i++)
+				n += apis[ctx->objs[i].api].has_id && id_kind(ctx->objs[i].api) == kinds[k];
+			fprintf(out, "#define EV3LX_LIB_NUM_%s %d\n", tnum_of(kinds[k]) + 5, n);
+		}
+	}
 	for (int i = 0; i < ctx->nobjs; i++) {
 		const struct obj *o = &ctx->objs[i];
 
-		if (apis[o->api].has_id)
+		if (apis[o->api].has_id && o->number < 0)
+			fprintf(out, "#define %s (%s - %d)\n", o->id, tnum_of(o->api), -o->number - 1);
+		else if (apis[o->api].has_id)
 			fprintf(out, "#define %s %d\n", o->id, o->number);
 		if (o->api == API_EV3_CRE_CYC)
 			fprintf(out, "#define EV3_CYC_TASK_%s %d\n", o->id, o->task_number);
@@ -1630,7 +1766,7 @@ static void emit_checks(const struct cfg_ctx *ctx, struct out *o, const struct o
 		check(o, ob, c, "CRE_TSK(%s): illegal tskatr, only TA_ACT is known (E_RSATR)", id);
 		snprintf(c, sizeof(c), "(%s) >= TMIN_TPRI && (%s) <= TMAX_TPRI", ob->elem[3], ob->elem[3]);
 		check(o, ob, c, "CRE_TSK(%s): itskpri out of range TMIN_TPRI..TMAX_TPRI (E_PAR)", id);
-		if (ob->domain > 0) {
+		if (ob->domain > 0 && !ctx->library) {	/* a library's platform tasks may run above apps */
 			snprintf(c, sizeof(c), "(%s) >= TMIN_APP_TPRI", ob->elem[3]);
 			check(o, ob, c, "CRE_TSK(%s): itskpri above TMIN_APP_TPRI for a task of DOMAIN(%s) (E_PAR)",
 			      id, ctx->domains[ob->domain - 1]);
@@ -1919,7 +2055,7 @@ void cfg_write_source(const struct cfg_ctx *ctx, FILE *f, const char *symbol, co
 		{ "rtos_svc_cfg", "ev3cfg_svcs", "svcs", API_DEF_SVC, API_COUNT },
 	};
 	int rows[sizeof(tables) / sizeof(tables[0])];
-	int nmods = 0, nev3cyc = count_api(ctx, API_EV3_CRE_CYC, API_COUNT), ntables = 0;
+	int nmods = 0, nsecs = 0, nev3cyc = count_api(ctx, API_EV3_CRE_CYC, API_COUNT), ntables = 0;
 
 	emit(&o, "/* %s — the configuration's tables; generated by ev3cfg, do not edit. */\n", source_name);
 	if (cfg_profile(ctx) == CFG_PROFILE_HRP3)
@@ -1987,10 +2123,17 @@ void cfg_write_source(const struct cfg_ctx *ctx, FILE *f, const char *symbol, co
 		rows[t] = emit_table(ctx, &o, tables[t].type, tables[t].name, tables[t].a, tables[t].b);
 	}
 	nmods = 0;
-	for (int i = 0; i < ctx->nobjs; i++)
+	for (int i = 0; i < ctx->nobjs; i++) {
 		nmods += ctx->objs[i].api == API_ATT_MOD && ctx->objs[i].domain > 0;
-	if (nmods > 0) {
-		emit(&o, "\n/* ATT_MOD: each module's code and data, bounded by the linker. */\n");
+		nsecs += ctx->objs[i].api == API_ATA_SEC;
+	}
+	if (nmods > 0 || nsecs > 0) {
+		emit(&o, "\n/* ATT_MOD: each module's code and data; ATA_SEC: a section's user-domain access;\n"
+			 " * bounded by the linker. */\n");
+		for (int i = 0; i < ctx->nobjs; i++)
+			if (ctx->objs[i].api == API_ATA_SEC)	/* weak: a target may leave the section out */
+				emit(&o, "extern char __start_%s[] __attribute__((weak)), __stop_%s[] __attribute__((weak));\n",
+				     ctx->objs[i].id, ctx->objs[i].id);
 		for (int i = 0; i < ctx->nobjs; i++) {
 			const struct obj *ob = &ctx->objs[i];
 
@@ -1999,7 +2142,7 @@ void cfg_write_source(const struct cfg_ctx *ctx, FILE *f, const char *symbol, co
 					 "extern char __start_ev3mod_%d_data[], __stop_ev3mod_%d_data[];\n",
 				     ob->number, ob->number, ob->number, ob->number);
 		}
-		emit(&o, "static struct rtos_mem_cfg ev3cfg_mems[%d];\n\n", 2 * nmods);
+		emit(&o, "static struct rtos_mem_cfg ev3cfg_mems[%d + %d * TNUM_DOMID];\n\n", 2 * nmods, nsecs);
 		emit(&o, "/* The bounds are link-time addresses: filled in before main(), before any boot. */\n");
 		emit(&o, "__attribute__((constructor)) static void ev3cfg_modules(void)\n{\n");
 		for (int i = 0, row = 0; i < ctx->nobjs; i++) {
@@ -2015,6 +2158,21 @@ void cfg_write_source(const struct cfg_ctx *ctx, FILE *f, const char *symbol, co
 				 "\t\t(SIZE)(__stop_ev3mod_%d_data - __start_ev3mod_%d_data), TPM_READ | TPM_WRITE, "
 				 "\"%s data\" };\n", row++, domain_expr(ctx, ob->domain), ob->number, ob->number,
 			     ob->number, ob->id);
+		}
+		if (nsecs > 0)
+			emit(&o, "\tint row = %d;\n\n", 2 * nmods);
+		for (int i = 0; i < ctx->nobjs; i++) {
+			const struct obj *ob = &ctx->objs[i];
+
+			if (ob->api != API_ATA_SEC)
+				continue;
+			at_api(&o, ob);
+			emit(&o, "\tfor (ID dom = 1; dom <= TNUM_DOMID && __start_%s != __stop_%s; dom++)\n"
+				 "\t\tev3cfg_mems[row++] = (struct rtos_mem_cfg){ dom, __start_%s,\n"
+				 "\t\t\t(SIZE)(__stop_%s - __start_%s),\n"
+				 "\t\t\t((%s) == TACP_SHARED ? TPM_READ : 0U) | ((%s) == TACP_SHARED ? TPM_WRITE : 0U),"
+				 " \"%s\" };\n", ob->id, ob->id, ob->id, ob->id, ob->id, ob->elem[3], ob->elem[2], ob->id);
+			at_self(&o);
 		}
 		emit(&o, "}\n");
 	}
@@ -2041,7 +2199,7 @@ void cfg_write_source(const struct cfg_ctx *ctx, FILE *f, const char *symbol, co
 	for (size_t t = 0; t < sizeof(tables) / sizeof(tables[0]); t++)
 		if (rows[t] > 0)
 			emit(&o, "\t.%s = RTOS_TABLE(%s),\n", tables[t].field, tables[t].name);
-	if (nmods > 0)
+	if (nmods > 0 || nsecs > 0)
 		emit(&o, "\t.mems = RTOS_TABLE(ev3cfg_mems),\n");
 	if (ntables > 0)
 		emit(&o, "\t.includes = ev3cfg_includes,\n");

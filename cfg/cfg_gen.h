@@ -41,6 +41,11 @@ int cfg_errors(const struct cfg_ctx *ctx);
 
 /* Builds the configuration for profile (CFG_PROFILE_*), before cfg_parse: a
  * static API of the other kernel's form is then an error. */
+/* A library's fragment (ev3cfg --library): every kind's IDs are counted from
+ * the top of its range, the kind's last object being TNUM_xxx, so that an
+ * application's IDs, counted from 1, never meet them; kernel_cfg.h gives
+ * them as (TNUM_xxx - n). */
+void cfg_set_library(struct cfg_ctx *ctx, bool library);
 void cfg_set_profile(struct cfg_ctx *ctx, int profile);
 
 /* The profile given, or told by the static APIs parsed (HRP3 if any is in

@@ -3,7 +3,7 @@
  * TOPPERS-style configuration file into kernel tables.
  *
  *   ev3cfg -o OUTDIR [-I dir]... [-D name[=value]]... [--cpp CMD] [--symbol NAME]
- *          [--kernel auto|hrp2|hrp3] [--object path.o]... app.cfg
+ *          [--kernel auto|hrp2|hrp3] [--time-hint FILE:LINE:CALL] [--library] [--object path.o]... app.cfg
  *
  * app.cfg is run through the C preprocessor (CMD, default "cpp", with
  * -DTOPPERS_MACRO_ONLY -DTOPPERS_CFG1 -DTOPPERS_CFG1_OUT and the -I/-D options:
@@ -11,7 +11,7 @@
  * writes, as in TOPPERS's configurator), then its static
  * APIs are read: INCLUDE, DOMAIN, CRE_TSK, CRE_SEM, CRE_FLG, CRE_DTQ, CRE_PDQ,
  * CRE_MTX, CRE_CYC, CRE_ALM, EV3_CRE_CYC, ATT_MOD, ATT_INI, ATT_TER, DEF_SVC,
- * CFG_INT, ATT_ISR, and ev3lx's EV3LX_INCLUDE_TABLE(symbol) (an existing
+ * CFG_INT, ATT_ISR, ATA_SEC, and ev3lx's EV3LX_INCLUDE_TABLE(symbol) (an existing
  * struct rtos_cfg, such as the platform's, joined to this one).  Anything
  * else in a .cfg file's text is an error, HRP2's other static APIs by name;
  * so is a NUL byte.  It writes:
@@ -28,6 +28,12 @@
  *                          (ATT_MOD("x.o") names the --object whose file name is x.o)
  *   OUTDIR/ev3mod_N.ld     the relocatable-link script that gathers that object's
  *                          code and data where kernel_cfg.c finds their bounds
+ *
+ * --library reads a library's fragment (cfg/ev3lx.cfg, which a firmware's
+ * .cfg INCLUDEs for HRP2's configurator): its IDs are counted from the top of
+ * each kind's range, (TNUM_TSKID - n) in kernel_cfg.h, so that the library
+ * built with them boots beside any application's configuration, whose IDs
+ * start at 1.
  *
  * Errors name the file, line and static API ("app.cfg:7: error: CRE_TSK
  * (MAIN_TASK): ..."); value errors are found by the compiler on kernel_cfg.c
@@ -345,8 +351,8 @@ static int apply_time_hint(struct cfg_ctx *ctx, const char *input, const char *h
 static int usage(void)
 {
 	fputs("usage: ev3cfg -o OUTDIR [-I dir]... [-D name[=value]]... [--cpp CMD] [--symbol NAME]\n"
-	      "              [--kernel auto|hrp2|hrp3] [--time-hint FILE:LINE:CALL] [--object path.o]... app.cfg\n",
-	      stderr);
+	      "              [--kernel auto|hrp2|hrp3] [--time-hint FILE:LINE:CALL] [--library] [--object path.o]...\n"
+	      "              app.cfg\n", stderr);
 	return 2;
 }
 
@@ -357,11 +363,16 @@ int main(int argc, char **argv)
 	struct cfg_ctx *ctx;
 	int errors, status, profile = CFG_PROFILE_AUTO;
 	const char *time_hint = NULL;
+	bool library = false;
 
 	for (int i = 1; i < argc; i++) {
 		const char *a = argv[i];
 		const char *val = NULL;
 
+		if (strcmp(a, "--library") == 0) {
+			library = true;
+			continue;
+		}
 		if ((strncmp(a, "-I", 2) == 0 || strncmp(a, "-D", 2) == 0) && a[2] != '\0') {
 			val = a + 2;
 		} else if (strcmp(a, "-I") == 0 || strcmp(a, "-D") == 0 || strcmp(a, "-o") == 0 ||
@@ -408,6 +419,7 @@ int main(int argc, char **argv)
 		return usage();
 	ctx = cfg_new(stderr, include_file, &tool);
 	cfg_set_profile(ctx, profile);
+	cfg_set_library(ctx, library);
 	tool.included[tool.nincluded++] = strdup(input);
 	errors = process_file(ctx, &tool, input);
 	cfg_finish(ctx);

@@ -103,7 +103,10 @@ for m in "${modules[@]}"; do
 		hack=${m% *}; drv=${m#* }
 		name=$(basename "$drv" .c); m=${name#d_}
 		r_files=("$drv"); [ -f "$(dirname "$drv")/lms_$m.h" ] && r_files+=("$(dirname "$drv")/lms_$m.h")
-		g_files=("$hack"); [ -f "${hack%.c}.h" ] && g_files+=("${hack%.c}.h")
+		# the module's glue: the hack file and its header, and its RTOS side
+		# (<m>_svc.c) with the header the two share (<m>_module.h)
+		g_files=("$hack"); for g in "${hack%.c}.h" "${hack%_hack.c}_svc.c" "${hack%_hack.c}_module.h"; do
+			[ -f "$g" ] && g_files+=("$g"); done
 		drivers=("$drv")
 		module_glue+=("${g_files[@]}")
 	fi

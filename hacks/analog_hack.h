@@ -17,7 +17,6 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 #include "hack_interface.h"
-#include "lms_analog.h"
 
 /* The function codes this module owns: ANALOG_FN_FIRST .. + ANALOG_FN_COUNT - 1
  * (EV3LX_FNCD_BASE moves every module's range, -DANALOG_FN_FIRST=n this one; boot rejects ranges
@@ -34,6 +33,10 @@
 #define ANALOG_FN_DCM_WRITE  (ANALOG_FN_FIRST + 3)  /* (const char *cmd, uint_t len): write() of /dev/lms_dcm */
 #define ANALOG_FN_DCM_READ   (ANALOG_FN_FIRST + 4)  /* (char *buf, uint_t len): read() of /dev/lms_dcm, returns bytes */
 #define ANALOG_FN_TEXT       (ANALOG_FN_FIRST + 5)  /* (char *buf, uint_t len): the text dump from its start, returns bytes */
+
+/* The rest needs the driver's ABI header: not for a configuration's names (cfg/ev3lx.cfg). */
+#ifndef EV3LX_CFG_NAMES_ONLY
+#include "lms_analog.h"
 
 /* An input port now: what detection found and the pin voltages. */
 struct analog_input_state {
@@ -100,4 +103,5 @@ static inline ER_UINT analog_text(char *buf, uint_t len)
 	return cal_svc(ANALOG_FN_TEXT, (intptr_t)buf, (intptr_t)len, 0, 0, 0);
 }
 
+#endif /* EV3LX_CFG_NAMES_ONLY */
 #endif /* EV3LX_ANALOG_HACK_H */

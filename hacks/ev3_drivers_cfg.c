@@ -22,9 +22,18 @@
 	{ (dom), lx_heap_area, sizeof(lx_heap_area), TPM_READ, "ev3 driver shared memory" }
 
 static const struct rtos_mem_cfg shared_area_rows[] = {
-	SHARED_AREA_ROW(1), SHARED_AREA_ROW(2), SHARED_AREA_ROW(3), SHARED_AREA_ROW(4),
+	SHARED_AREA_ROW(1),
+#if TNUM_DOMID >= 2
+	SHARED_AREA_ROW(2),
+#endif
+#if TNUM_DOMID >= 3
+	SHARED_AREA_ROW(3),
+#endif
+#if TNUM_DOMID >= 4
+	SHARED_AREA_ROW(4),
+#endif
 };
-_Static_assert(TNUM_DOMID == 4, "one shared-area row per user domain");
+_Static_assert(TNUM_DOMID >= 1 && TNUM_DOMID <= 4, "one shared-area row per user domain (1..4)");
 
 static const struct rtos_cfg *const driver_cfgs[] = {
 	&linux_compat_cfg, &pwm_hack_cfg, &analog_hack_cfg, &uart_hack_cfg, &ui_hack_cfg,

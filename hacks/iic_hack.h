@@ -23,7 +23,6 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 #include "hack_interface.h"
-#include "lms_iic.h"
 
 /* The function codes this module owns: IIC_FN_FIRST .. + IIC_FN_COUNT - 1
  * (EV3LX_FNCD_BASE moves every module's range, -DIIC_FN_FIRST=n this one; boot rejects ranges
@@ -41,6 +40,10 @@
 #define IIC_FN_SETUP     (IIC_FN_FIRST + 4)  /* (struct lms_iic_dat *io): one IIC_SETUP round */
 #define IIC_FN_MAP       (IIC_FN_FIRST + 5)  /* (const struct lms_iic **out): the shared memory */
 #define IIC_FN_STATE     (IIC_FN_FIRST + 6)  /* (uint_t port): the port's LMS_IIC_STATE_* */
+
+/* The rest needs the driver's ABI header: not for a configuration's names (cfg/ev3lx.cfg). */
+#ifndef EV3LX_CFG_NAMES_ONLY
+#include "lms_iic.h"
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
 extern HACK_INTERFACE const struct rtos_cfg iic_hack_cfg;
@@ -96,4 +99,5 @@ static inline const int8_t *lms_iic_sample(const struct lms_iic *shm, unsigned i
 	return shm->raw[port][*(const volatile uint16_t *)&shm->actual[port]];
 }
 
+#endif /* EV3LX_CFG_NAMES_ONLY */
 #endif /* EV3LX_IIC_HACK_H */

@@ -23,7 +23,6 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 #include "hack_interface.h"
-#include "st7586fb.h"
 
 /* The function codes this module owns: LCD_FN_FIRST .. + LCD_FN_COUNT - 1. */
 #ifndef LCD_FN_FIRST
@@ -35,6 +34,10 @@
 #define LCD_FN_INIT   (LCD_FN_FIRST + 0)  /* (): INIT then START ioctls */
 #define LCD_FN_UPDATE (LCD_FN_FIRST + 1)  /* (const uint8_t *frame, uint_t len): write() of a whole frame */
 #define LCD_FN_FLUSH  (LCD_FN_FIRST + 2)  /* (): the pending frame on the panel now */
+
+/* The rest needs the driver's ABI header: not for a configuration's names (cfg/ev3lx.cfg). */
+#ifndef EV3LX_CFG_NAMES_ONLY
+#include "st7586fb.h"
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
 extern HACK_INTERFACE const struct rtos_cfg lcd_hack_cfg;
@@ -54,4 +57,5 @@ static inline ER lcd_svc_flush(void)
 	return (ER)cal_svc(LCD_FN_FLUSH, 0, 0, 0, 0, 0);
 }
 
+#endif /* EV3LX_CFG_NAMES_ONLY */
 #endif /* EV3LX_LCD_HACK_H */

@@ -17,7 +17,6 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 #include "hack_interface.h"
-#include "lms_power.h"
 
 /* The function codes this module owns: POWER_FN_FIRST .. + POWER_FN_COUNT - 1
  * (EV3LX_FNCD_BASE moves every module's range, -DPOWER_FN_FIRST=n this one; boot rejects ranges
@@ -30,6 +29,10 @@
 
 #define POWER_FN_RECHARGEABLE  (POWER_FN_FIRST + 0)  /* (): read() of /dev/lms_power -> 1 rechargeable pack, 0 AA cells */
 #define POWER_FN_TEST_PIN      (POWER_FN_FIRST + 1)  /* (uint_t level): write() of one byte, 0 or 1 */
+
+/* The rest needs the driver's ABI header: not for a configuration's names (cfg/ev3lx.cfg). */
+#ifndef EV3LX_CFG_NAMES_ONLY
+#include "lms_power.h"
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
 extern HACK_INTERFACE const struct rtos_cfg power_hack_cfg;
@@ -46,4 +49,5 @@ static inline ER power_svc_test_pin(uint_t level)
 	return (ER)cal_svc(POWER_FN_TEST_PIN, (intptr_t)level, 0, 0, 0, 0);
 }
 
+#endif /* EV3LX_CFG_NAMES_ONLY */
 #endif /* EV3LX_POWER_HACK_H */

@@ -15,7 +15,6 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 #include "hack_interface.h"
-#include "lms_pwm.h"
 
 /* The function codes this module owns: PWM_FN_FIRST .. + PWM_FN_COUNT - 1
  * (EV3LX_FNCD_BASE moves every module's range, -DPWM_FN_FIRST=n this one; boot rejects ranges
@@ -34,6 +33,10 @@
 #define PWM_FN_MOTOR_DATA  (PWM_FN_FIRST + 5)   /* (uint_t port, struct lms_motor_data *out): one port's MOTORDATA */
 #define PWM_FN_MOTOR_MAP   (PWM_FN_FIRST + 6)   /* (const struct lms_motor_data **out): address of MOTORDATA[4] */
 #define PWM_FN_RUN         (PWM_FN_FIRST + 7)   /* (opcode, port, value): OUTPUT_SPEED or OUTPUT_POWER, then OUTPUT_START */
+
+/* The rest needs the driver's ABI header: not for a configuration's names (cfg/ev3lx.cfg). */
+#ifndef EV3LX_CFG_NAMES_ONLY
+#include "lms_pwm.h"
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
 extern HACK_INTERFACE const struct rtos_cfg pwm_hack_cfg;
@@ -91,4 +94,5 @@ static inline ER pwm_motor_map(const struct lms_motor_data **out)
 	return (ER)cal_svc(PWM_FN_MOTOR_MAP, (intptr_t)out, 0, 0, 0, 0);
 }
 
+#endif /* EV3LX_CFG_NAMES_ONLY */
 #endif /* EV3LX_PWM_HACK_H */

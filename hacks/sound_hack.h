@@ -20,7 +20,6 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 #include "hack_interface.h"
-#include "lms_sound.h"
 
 /* The function codes this module owns: SOUND_FN_FIRST .. + SOUND_FN_COUNT - 1
  * (EV3LX_FNCD_BASE moves every module's range, -DSOUND_FN_FIRST=n this one; boot rejects ranges
@@ -34,6 +33,10 @@
 #define SOUND_FN_WRITE    (SOUND_FN_FIRST + 0)  /* (const uint8_t *cmd, uint_t len): write(), returns its count */
 #define SOUND_FN_STATUS   (SOUND_FN_FIRST + 1)  /* (): the status byte, LMS_SOUND_OK or LMS_SOUND_BUSY */
 #define SOUND_FN_PLAY_PCM (SOUND_FN_FIRST + 2)  /* (const uint8_t *samples, uint_t len, uint_t level): PCM playback */
+
+/* The rest needs the driver's ABI header: not for a configuration's names (cfg/ev3lx.cfg). */
+#ifndef EV3LX_CFG_NAMES_ONLY
+#include "lms_sound.h"
 #define SOUND_MAX_COMMAND (1 + LMS_SOUND_SLOT_SAMPLES)
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
@@ -63,4 +66,5 @@ static inline ER_UINT sound_svc_status(void)
 	return cal_svc(SOUND_FN_STATUS, 0, 0, 0, 0, 0);
 }
 
+#endif /* EV3LX_CFG_NAMES_ONLY */
 #endif /* EV3LX_SOUND_HACK_H */

@@ -22,7 +22,6 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 #include "hack_interface.h"
-#include "lms_uart.h"
 
 /* The function codes this module owns: UART_FN_FIRST .. + UART_FN_COUNT - 1
  * (EV3LX_FNCD_BASE moves every module's range, -DUART_FN_FIRST=n this one; boot rejects ranges
@@ -39,6 +38,10 @@
 #define UART_FN_CLEAR_CHANGED (UART_FN_FIRST + 3)  /* (uint_t port): accept the sensor's description (data flows) */
 #define UART_FN_WRITE         (UART_FN_FIRST + 4)  /* (uint_t port, const void *data, uint_t len): WRITE, 1..32 bytes */
 #define UART_FN_MAP           (UART_FN_FIRST + 5)  /* (const struct lms_uart_shm **out): the shared memory */
+
+/* The rest needs the driver's ABI header: not for a configuration's names (cfg/ev3lx.cfg). */
+#ifndef EV3LX_CFG_NAMES_ONLY
+#include "lms_uart.h"
 
 /* The DEF_SVC rows and the board settings (INCLUDE it in the application's configuration). */
 extern HACK_INTERFACE const struct rtos_cfg uart_hack_cfg;
@@ -82,4 +85,5 @@ static inline ER uart_svc_map(const struct lms_uart_shm **out)
 	return (ER)cal_svc(UART_FN_MAP, (intptr_t)out, 0, 0, 0, 0);
 }
 
+#endif /* EV3LX_CFG_NAMES_ONLY */
 #endif /* EV3LX_UART_HACK_H */

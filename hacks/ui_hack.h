@@ -21,7 +21,6 @@
 #include "kernel.h"
 #include "rtos_cfg.h"
 #include "hack_interface.h"
-#include "lms_ui.h"
 
 /* The function codes this module owns: UI_FN_FIRST .. + UI_FN_COUNT - 1
  * (EV3LX_FNCD_BASE moves every module's range, -DUI_FN_FIRST=n this one; boot rejects ranges
@@ -35,6 +34,10 @@
 #define UI_FN_LED         (UI_FN_FIRST + 0)  /* (uint_t pattern): write() of LMS_UI_LED_* ('0'..'9') */
 #define UI_FN_MAP         (UI_FN_FIRST + 1)  /* (const struct lms_ui **out): address of the shared page */
 #define UI_FN_WAIT_CLICK  (UI_FN_FIRST + 2)  /* (struct lms_ui_click *out, TMO tmout): the oldest click */
+
+/* The rest needs the driver's ABI header: not for a configuration's names (cfg/ev3lx.cfg). */
+#ifndef EV3LX_CFG_NAMES_ONLY
+#include "lms_ui.h"
 
 /* The DEF_SVC rows (INCLUDE it in the application's configuration). */
 extern HACK_INTERFACE const struct rtos_cfg ui_hack_cfg;
@@ -61,4 +64,5 @@ static inline ER ui_svc_wait_click(struct lms_ui_click *out, TMO tmout)
 	return (ER)cal_svc(UI_FN_WAIT_CLICK, (intptr_t)out, (intptr_t)tmout, 0, 0, 0);
 }
 
+#endif /* EV3LX_CFG_NAMES_ONLY */
 #endif /* EV3LX_UI_HACK_H */

@@ -9,8 +9,8 @@ AR_am1808     := arm-none-eabi-ar
 # kernel without CONFIG_DEBUG_ATOMIC_SLEEP / CONFIG_DEBUG_SPINLOCK
 # (linux_compat/include/linux_compat/debug.h; the host configurations keep them).
 LX_DEBUG_OFF  := -DLX_DEBUG_ATOMIC_SLEEP=0 -DLX_DEBUG_SPINLOCK=0
-CFLAGS_am1808 := -mcpu=arm926ej-s -marm -Os -g $(DEBUG_PREFIX_MAP) -ffreestanding -ffunction-sections \
-	-fdata-sections -DEV3LX_AM1808=1 $(LX_DEBUG_OFF)
+CFLAGS_am1808 := -mcpu=arm926ej-s -marm -Os -g $(DEBUG_PREFIX_MAP) -ffreestanding \
+	-fno-merge-constants -fno-reorder-functions -DEV3LX_AM1808=1 -DEV3LX_MEM_SECTIONS=1 $(LX_DEBUG_OFF)
 AM1808        := $(BUILD)/am1808
 
 # Against a real kernel: make am1808 HRP2_DIR=<an HRP2 tree> compiles every
@@ -21,7 +21,10 @@ AM1808        := $(BUILD)/am1808
 # for what the kernel lacks (rtos_cfg.h), the compiler's include-fixed gives
 # limits.h under -nostdinc (HRP2's tool_stddef.h needs it), and no tick or
 # kernel limit of ev3lx's own is defined.  Kernel-domain code keeps
-# TOPPERS_SVC_CALL, the API its user-domain traps.  The library goes to
+# TOPPERS_SVC_CALL, the API its user-domain traps.  The IDs and object counts
+# are the firmware configurator's: EV3LX_CFG_DIR=<the directory of its
+# kernel_cfg.h> (without it, ev3cfg --library's from cfg/ev3lx.cfg, with
+# rtos_cfg.h's counts: a compile check only).  The library goes to
 # build/am1808-hrp2/; the link-check image is rtos_stub's (make am1808).
 ifneq ($(HRP2_DIR),)
 ifeq ($(wildcard $(HRP2_DIR)/include/kernel.h),)
@@ -35,7 +38,8 @@ HRP2_TARGET   ?= ev3_gcc
 HRP2_INC      := $(addprefix -isystem $(HRP2_DIR)/,include arch . target/$(HRP2_TARGET) \
 	arch/arm_gcc/am1808 arch/arm_gcc/common arch/gcc) \
 	-isystem $(shell arm-none-eabi-gcc -print-file-name=include-fixed)
-KERNEL_DEFS   := -DEV3LX_FNCD_BASE=$(EV3LX_FNCD_BASE) '-DINTPRI_TICK=($(INTPRI_TICK))' -D__TARGET_ARCH_ARM=5
+KERNEL_DEFS   := -DEV3LX_FNCD_BASE=$(EV3LX_FNCD_BASE) '-DINTPRI_TICK=($(INTPRI_TICK))' -D__TARGET_ARCH_ARM=5 \
+	-DEV3LX_HRP2_KERNEL=1
 compile_adjust_am1808 = $(subst -Irtos_stub/include,$(HRP2_INC) -idirafter rtos_stub/include,$(1))
 endif
 AM1808_OBJS   := $(patsubst %.c,$(AM1808)/obj/%.o,$(AM1808_SRCS))
@@ -92,7 +96,7 @@ $(AM1808)/uImage: $(AM1808)/ev3lx.bin
 	SOURCE_DATE_EPOCH=$(SOURCE_DATE_EPOCH) mkimage -A arm -O linux -T kernel -C none \
 		-a 0xC0008000 -e 0xC0008000 -n "ev3lx" -d $< $@ > /dev/null
 
-.PHONY: am1808 am1808-link-check am1808-uimage-check size
+.PHONY: am1808 am1808-link-check am1808-section-check am1808-uimage-check size
 ifeq ($(HRP2_DIR),)
 am1808: deps-check $(AM1808_LIB) $(AM1808)/uImage
 	@echo "am1808: $(AM1808_LIB) ($(words $(AM1808_OBJS)) objects), $(AM1808)/uImage"
@@ -103,6 +107,11 @@ endif
 
 am1808-link-check: $(FW_OBJS) $(AM1808_LIB)
 	@bash am1808/check_link.sh $(AM1808)
+
+# Every allocated section of the library is one an HRP2 firmware's memory
+# configuration places (am1808/check_sections.sh): no orphans.
+am1808-section-check: $(AM1808_LIB)
+	@bash am1808/check_sections.sh $(AM1808_LIB)
 
 am1808-uimage-check: $(AM1808)/uImage
 	@mkimage -l $< > $(AM1808)/uImage.txt; \
@@ -115,7 +124,7 @@ am1808-uimage-check: $(AM1808)/uImage
 size: $(AM1808_LIB) $(AM1808)/ev3lx.elf
 	@bash am1808/size_report.sh $(AM1808) | tee $(AM1808)/size.md
 
-TEST_SUITE_EXTRA += am1808-link-check am1808-uimage-check
+TEST_SUITE_EXTRA += am1808-link-check am1808-section-check am1808-uimage-check
 TEST_SUITE_EXTRA_DEPS += $(AM1808_LIB) $(FW_OBJS)
 
 -include $(AM1808_OBJS:.o=.d)

@@ -144,10 +144,23 @@ nostdinc_flags = $(if $(call is_nostdinc_src,$(2)),-nostdinc -isystem $(call cc_
 # module's EXPORT_SYMBOL*s and the hack's interface (declared with visibility
 # "default" in its header) stay global.  Two modules defining the same global
 # names then link into one library, as two .ko files load into one kernel.
-is_module_src = $(filter hacks/%_hack.c,$(1))
+# A module is two translation units: the hack file (hacks/<m>_hack.c), which
+# includes the driver and sees only Linux headers, and its RTOS side
+# (hacks/<m>_svc.c: the service calls and the configuration fragment), which
+# sees the kernel's; they share the module's private header (<m>_module.h).
+is_module_src = $(filter hacks/%_hack.c hacks/%_svc.c,$(1))
 module_flags = $(if $(call is_module_src,$(2)),-fvisibility=hidden)
-# a library's object list with each module's object replaced by its linked one
-module_objs = $(foreach o,$(1),$(if $(and $(filter %_hack.o,$(o)),$(findstring /obj/hacks/,$(o))),$(o:.o=.mod.o),$(o)))
+# a library's object list with each module's objects replaced by its linked one
+is_hack_obj = $(and $(findstring /obj/hacks/,$(1)),$(filter %_hack.o %_svc.o,$(1)))
+module_objs = $(foreach o,$(1),$(if $(call is_hack_obj,$(o)),$(if $(filter %_hack.o,$(o)),$(o:.o=.mod.o)),$(o)))
+
+# The driver's translation unit (a hack file, which includes the driver) is
+# compiled without the kernel's header directory: a kernel header (kernel.h,
+# t_stddef.h, rtos_cfg.h, sil.h; against a real kernel tree also its chip
+# headers, which come in its place) reaching a driver's unit is a build error
+# in every configuration.  make nostdinc-check proves it.
+is_driver_tu = $(filter hacks/%_hack.c,$(1))
+driver_tu_filter = $(if $(call is_driver_tu,$(1)),$(filter-out -I$(HDR_rtos_stub),$(2)),$(2))
 LD_host := ld
 LD_host-san := ld
 LD_host32 := ld -m elf_i386
@@ -159,7 +172,7 @@ OBJCOPY_host32 := objcopy
 OBJCOPY_arm926-test := arm-linux-gnueabi-objcopy
 OBJCOPY_am1808 := arm-none-eabi-objcopy
 
-# Links object $(3) of configuration $(1) into module $(2) (X.mod.o, beside it
+# Links objects $(3) of configuration $(1) into module $(2) (X.mod.o, beside it
 # X.r.o): one relocatable object, its hidden symbols made local.
 module_link = $(LD_$(1)) -r -o $(2:.mod.o=.r.o) $(3) && $(OBJCOPY_$(1)) --localize-hidden $(2:.mod.o=.r.o) $(2)
 
@@ -167,9 +180,9 @@ module_link = $(LD_$(1)) -r -o $(2:.mod.o=.r.o) $(3) && $(OBJCOPY_$(1)) --locali
 # (a static pattern rule: the linked modules are targets in their own right,
 # remade when missing).
 define module_link_rule
-$(filter %.mod.o,$(call module_objs,$(2))): %.mod.o: %.o
+$(filter %.mod.o,$(call module_objs,$(2))): %_hack.mod.o: %_hack.o %_svc.o
 	$$(quiet) MOD $(1) $$@
-	$(Q)$$(call module_link,$(1),$$@,$$<)
+	$(Q)$$(call module_link,$(1),$$@,$$^)
 endef
 
 # The kernel domain — the host kernel, linux_compat and the hacks with their
@@ -181,13 +194,19 @@ endef
 KERNEL_DOMAIN_DIRS := rtos_stub/src linux_compat hacks
 kernel_domain_flags = $(if $(filter $(addsuffix /%,$(KERNEL_DOMAIN_DIRS)),$(1)),-DTOPPERS_SVC_CALL)
 
+# The object IDs every source takes from the configurator's kernel_cfg.h
+# (cfg/ev3lx.cfg, cfg/module.mk): searched last, after an app's own
+# kernel_cfg.h, and never by a driver's unit (the kernel's directories are
+# not on its path).
+cfg_inc = $(if $(call is_driver_tu,$(1)),,-idirafter $(EV3LX_CFG_DIR))
+
 # The one compile command of configuration $(1) for source (or header) $(2):
 # every object, firmware file and header check is compiled through it.
 # A configuration may rewrite its command (compile_adjust_<config>: the AM1808
 # against a real HRP2 tree takes the kernel's headers for rtos_stub's).
-compile_cmd = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(call src_flags,$(2)) \
-	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2)) $(call kernel_domain_flags,$(2))) $(CFLAGS_$(1)) \
-	$(if $(call is_linux_src,$(2)),$(LINUX_SAN_$(1))) $(KERNEL_DEFS)
+compile_cmd = $(CC_$(1)) $(call cc_flags,$(1),$(call nostdinc_flags,$(1),$(2)) $(call driver_tu_filter,$(2),$(call src_flags,$(2))) \
+	$(call warn_flags,$(2)) $(call module_flags,$(1),$(2)) $(call kernel_domain_flags,$(2)) $(call cfg_inc,$(2))) \
+	$(CFLAGS_$(1)) $(if $(call is_linux_src,$(2)),$(LINUX_SAN_$(1))) $(KERNEL_DEFS)
 compile = $(if $(compile_adjust_$(1)),$(call compile_adjust_$(1),$(call compile_cmd,$(1),$(2))),$(call compile_cmd,$(1),$(2)))
 
 # Flags of configuration $(1)'s compiler: clang (the fuzzing build) has no
@@ -228,7 +247,7 @@ same_text = $(and $(findstring x$(strip $(1))x,x$(strip $(2))x),$(findstring x$(
 # compiler cache makes that cheap where nothing changed).
 define obj_rule
 $(call key_file_rule,$(2)/compile.key,$(CC_$(1)) $(CFLAGS_$(1)) $(KERNEL_DEFS) $(LINUX_CODEGEN) $(LINUX_SAN_$(1)))
-$(2)/obj/%.o: %.c $(2)/compile.key
+$(2)/obj/%.o: %.c $(2)/compile.key $(EV3LX_CFG_DIR)/kernel_cfg.h
 	@mkdir -p $$(@D)
 	$$(quiet) CC $(1) $$<
 	$(Q)$$(call compile,$(1),$$<) -MMD -MP -c $$< -o $$@

@@ -2,9 +2,11 @@
 # module_check.sh NM LD LIB OUTDIR [LEGACY_MODULE ...]
 # (LD: the linker with its options, one argument: "ld -m elf_i386")
 # Checks the modules' private namespaces in one configuration: every module
-# object in the library LIB (hacks/<name>_hack.c with its driver, linked as
-# <name>_hack.mod.o) defines no global symbol but its interface
-# (<name>_hack_cfg) and what its driver exports (EXPORT_SYMBOL*); and the
+# object in the library LIB (hacks/<name>_hack.c with its driver and
+# hacks/<name>_svc.c, linked as <name>_hack.mod.o) defines no global symbol but
+# its interface (<name>_hack_cfg, and the routines the library's static-API
+# fragment names: hacks/hack_routines.h) and what its driver exports
+# (EXPORT_SYMBOL*); and the
 # users' modules given (tests/legacy, which define the same global names as
 # one another) link together into one relocatable object.
 set -euo pipefail
@@ -15,6 +17,7 @@ mkdir -p "$out"
 members=$(ar t "$lib" | grep '_hack\.mod\.o$' || true)
 [ -n "$members" ] || { echo "module-check: $lib_name has no module objects"; exit 1; }
 (cd "$out" && ar x "$lib" $members)
+routines=$(sed -n 's/^HACK_SVC(\([a-z0-9_]*\));$/\1/p; s/^HACK_INTERFACE void \([a-z0-9_]*\)(.*$/\1/p' hacks/hack_routines.h)
 count=0
 for m in $members; do
 	name=${m%_hack.mod.o}
@@ -22,6 +25,7 @@ for m in $members; do
 	while read -r sym; do
 		sym=${sym#__odr_asan.}      # AddressSanitizer's ODR indicator of a global
 		[ "$sym" = "${name}_hack_cfg" ] && continue
+		grep -qx "$sym" <<<"$routines" && continue
 		if grep -qx "$sym" <<<"$exported"; then continue; fi
 		echo "module-check: $lib_name: module $name makes '$sym' global (neither its interface nor exported)"
 		fail=1

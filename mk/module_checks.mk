@@ -1,12 +1,15 @@
 # Checks of how Linux code is built (mk/config.mk: nostdinc_flags, module_objs).
 #
-# `make nostdinc-check`: in every configuration a module sees only Linux's
-# namespace — a C library header, and a Linux header linux_compat lacks (the
-# host's /usr/include/linux has it), fail to compile, as under kbuild.
+# `make nostdinc-check`: in every configuration a module's driver unit (the
+# hack file) sees only Linux's namespace — a C library header, a Linux header
+# linux_compat lacks (the host's /usr/include/linux has it), and the kernel's
+# own headers (kernel.h, t_stddef.h, sil.h, t_syslog.h, rtos_cfg.h; with
+# HRP2_DIR also its chip header am1808.h) fail to compile, as under kbuild.
 # `make module-check`: the modules' private namespaces (mk/module_check.sh) in
 # every configuration's library, and the users' modules linked together.
 
-NOSTDINC_PROBES := linux/videodev2.h stdio.h stdlib.h string.h sys/types.h stdint.h limits.h
+NOSTDINC_PROBES := linux/videodev2.h stdio.h stdlib.h string.h sys/types.h stdint.h limits.h \
+	kernel.h t_stddef.h sil.h t_syslog.h rtos_cfg.h am1808.h
 NOSTDINC_PROBE_SRC := hacks/nostdinc_probe_hack.c
 NOSTDINC_CONFIGS := host host32 arm926-test am1808
 # The AM1808 build is freestanding (-ffreestanding), where the compiler's own
@@ -23,7 +26,7 @@ nostdinc-check:
 		elif ! grep -q "No such file\|no include path" $(BUILD)/nostdinc-probe.err; then \
 			cat $(BUILD)/nostdinc-probe.err; echo "nostdinc-check: <$$h> in $(c) failed otherwise"; fail=1; \
 		fi; done;) \
-	[ $$fail = 0 ] && echo "nostdinc-check: in $(words $(NOSTDINC_CONFIGS)) configurations a module cannot reach a C library or host kernel header ($(NOSTDINC_PROBES))"; \
+	[ $$fail = 0 ] && echo "nostdinc-check: in $(words $(NOSTDINC_CONFIGS)) configurations a driver unit cannot reach a C library, host kernel or RTOS kernel header ($(NOSTDINC_PROBES))"; \
 	exit $$fail
 
 MODULE_CHECK_LIBS := $(foreach c,$(HOST_CONFIGS),$(LIB_$(c))) $(AM1808_LIB)

@@ -10,6 +10,7 @@
  * Task context: dispatching is disabled while the list changes.
  */
 #include <stddef.h>
+#include "rtos_cfg.h"
 #include "api_internal.h"
 
 #define ALIGN       16U
@@ -26,7 +27,7 @@ struct block {
 #define HEADER     ((sizeof(struct block) + ALIGN - 1U) & ~(SIZE)(ALIGN - 1U))
 #define MIN_BLOCK  (HEADER + ALIGN)
 
-uint8_t api_app_heap[EV3LX_APP_HEAP_SIZE] __attribute__((aligned(ALIGN)));
+uint8_t api_app_heap[EV3LX_APP_HEAP_SIZE] __attribute__((aligned(ALIGN))) EV3LX_SHARED_RW;
 static struct block *free_list;
 
 /* An empty heap: one free block of everything (at every boot). */

@@ -10,6 +10,7 @@
  */
 #include <stdbool.h>
 #include <stddef.h>
+#include "ev3api_routines.h"
 #include "rtos_cfg.h"
 #include "ev3api_brick.h"
 #include "api_internal.h"

@@ -10,6 +10,7 @@
  * the rights of its protection domain, not privileged.
  */
 #include <string.h>
+#include "ev3api_routines.h"
 #include "ev3api_brick.h"
 #include "api_internal.h"
 #include "ui_hack.h"

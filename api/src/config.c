@@ -2,11 +2,12 @@
  * config.c — ev3api_cfg: what an application using the API INCLUDEs.
  */
 #include "ev3api_brick.h"
+#include "ev3api_routines.h"
 #include "ev3_drivers_cfg.h"
 #include "api_internal.h"
 
 /* ATT_INI: the API's state starts empty at every boot. */
-static void api_boot(intptr_t exinf)
+void api_boot(intptr_t exinf)
 {
 	(void)exinf;
 	api_motor_boot();
@@ -47,10 +48,18 @@ static const struct rtos_sem_cfg api_sems[] = {
 	{ (dom), api_app_heap, sizeof(api_app_heap), TPM_READ | TPM_WRITE, "ev3api app heap" }
 
 static const struct rtos_mem_cfg api_mems[] = {
-	LCD_FRAME_ROW(1), LCD_FRAME_ROW(2), LCD_FRAME_ROW(3), LCD_FRAME_ROW(4),
-	APP_HEAP_ROW(1), APP_HEAP_ROW(2), APP_HEAP_ROW(3), APP_HEAP_ROW(4),
+	LCD_FRAME_ROW(1), APP_HEAP_ROW(1),
+#if TNUM_DOMID >= 2
+	LCD_FRAME_ROW(2), APP_HEAP_ROW(2),
+#endif
+#if TNUM_DOMID >= 3
+	LCD_FRAME_ROW(3), APP_HEAP_ROW(3),
+#endif
+#if TNUM_DOMID >= 4
+	LCD_FRAME_ROW(4), APP_HEAP_ROW(4),
+#endif
 };
-_Static_assert(TNUM_DOMID == 4, "one LCD frame row and one heap row per user domain");
+_Static_assert(TNUM_DOMID >= 1 && TNUM_DOMID <= 4, "one LCD frame row and one heap row per user domain (1..4)");
 
 static const struct rtos_cfg *const api_includes[] = { &ev3_drivers_cfg, NULL };
 

@@ -11,6 +11,7 @@
 #include "ev3api_fs.h"
 #include "ev3api_lcd.h"
 #include "ev3api_speaker.h"
+#include "rtos_cfg.h"
 #include "api_internal.h"
 #include "lcd_draw.h"
 #include "lcd_hack.h"
@@ -21,7 +22,7 @@ _Static_assert(EV3_LCD_WIDTH == FB_ST7586_WIDTH && EV3_LCD_HEIGHT == FB_ST7586_H
 
 /* The frame every task draws into; the user domains may read and write it
  * (ev3api_cfg's memory rows), as the write() handing it to the driver checks. */
-uint8_t api_lcd_frame[LCD_FRAME_BYTES] __attribute__((aligned(32)));
+uint8_t api_lcd_frame[LCD_FRAME_BYTES] __attribute__((aligned(32))) EV3LX_SHARED_RW;
 #define lcd_frame api_lcd_frame
 static lcdfont_t lcd_font;
 static bool lcd_ready;

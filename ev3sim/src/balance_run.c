@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "rtos_host.h"
+#include <kernel_cfg.h>
 #include "host_sim/scenario.h"
 #include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/ev3_ui.h"
@@ -35,7 +36,7 @@ extern struct gyroboy_stats ev3sim_gyroboy_stats;
  * driver's shared memory, so the summary can give the gyro port's link
  * counters (what the app cannot see through EV3RT's API).
  */
-#define LINK_WATCH_TSKID  (TNUM_TSKID - 2)
+#define LINK_WATCH_TSKID  (TNUM_TSKID - EV3LX_LIB_NUM_TSKID)
 #define LINK_WATCH_TRIES  200
 
 static const struct lms_uart_shm *uart_link;

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rtos_host.h"
+#include <kernel_cfg.h>
 #include "host_sim/scenario.h"
 #include "host_sim/devices/ev3_brick.h"
 #include "host_sim/devices/ev3_lcd.h"
@@ -53,10 +54,9 @@ static struct {
  * cyclic handlers stop and its tasks are terminated (ter_tsk), by a task of
  * the highest priority in the kernel domain.  Only then do the drivers unload
  * (ATT_TER), so no app task still polls their shared memory.  Its ID is the
- * first below the API's button task (EV3_BUTTON_TSKID) and linux_compat's
- * worker (TNUM_TSKID).
+ * first below those the library takes at the top of the range (cfg/ev3lx.cfg).
  */
-#define POWER_OFF_TSKID  (TNUM_TSKID - 2)
+#define POWER_OFF_TSKID  (TNUM_TSKID - EV3LX_LIB_NUM_TSKID)
 #define POWER_OFF_STACK  (16 * 1024)
 
 static void power_off_task(intptr_t exinf);

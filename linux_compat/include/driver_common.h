@@ -1,19 +1,20 @@
 /*
  * driver_common.h — the one header a hack file includes (hacks/<drv>_hack.c):
  * the Linux kernel API the reference drivers and drivers like them use, plus
- * linux_compat's own interfaces a hack needs around the driver:
- *   - Linux results as TOPPERS codes (linux_compat/er.h): lx_errno_to_er;
+ * linux_compat's own Linux-side interfaces a hack needs around the driver:
  *   - the device registry (linux_compat/devfs.h): lx_dev_open, lx_dev_read,
  *     lx_dev_write, lx_dev_ioctl, lx_dev_mmap, lx_dev_poll, lx_dev_close;
- *   - the RTOS configuration fragments (linux_compat/config.h):
- *     linux_compat_cfg (worker task, tick, and linux_irq_cfg);
- *   - the Linux interrupt lines and their priority (linux_compat/irq.h);
- *   - the kmalloc pool's size and statistics (linux_compat/heap.h), whose
- *     area a configuration may grant to a user domain for mmap'd buffers.
+ *   - the Linux interrupt lines (linux_compat/irq.h);
+ *   - the kmalloc pool's size and statistics (linux_compat/heap.h).
+ * Nothing of the RTOS: the hack file is the driver's translation unit, built
+ * without the kernel's headers on its include path (mk/config.mk), so a kernel
+ * header reaching it is a build error in every configuration.  The hack's
+ * RTOS side — its service calls and configuration — is a file of its own
+ * (hacks/<drv>_svc.c, through hacks/hack_svc.h).
  * A hack defines KBUILD_MODNAME (and LX_HACK_DRIVER_INIT/_EXIT, see
- * linux/module.h), includes the driver verbatim, then this: nothing of the
- * RTOS and no pr_fmt stands before the driver, as under kbuild.  From here
- * on module_init/module_exit register the hack's own init and exit.
+ * linux/module.h), includes the driver verbatim, then this: no pr_fmt stands
+ * before the driver, as under kbuild.  From here on module_init/module_exit
+ * register the hack's own init and exit.
  */
 #ifndef EV3LX_DRIVER_COMMON_H
 #define EV3LX_DRIVER_COMMON_H
@@ -57,11 +58,8 @@
 #include <mach/da8xx.h>
 
 #include <linux_compat/devfs.h>
-#include <linux_compat/er.h>
-#include <linux_compat/config.h>
 #include <linux_compat/irq.h>
 #include <linux_compat/heap.h>
-#include <linux_compat/modparam.h>
 #include <linux_compat/hack.h>
 
 #endif /* EV3LX_DRIVER_COMMON_H */

@@ -1,7 +1,9 @@
 /*
  * config.c — linux_compat_cfg, linux_compat's RTOS configuration fragment
  * (linux_compat/config.h lists what it brings and which IDs it reserves).
- * On the AM1808 the same rows go into the HRP2 .cfg.
+ * The same objects, with the same IDs, are cfg/ev3lx.cfg's static APIs
+ * (tests/cfg/test_ev3lx_fragment.c compares them); an HRP2 firmware's
+ * configuration INCLUDEs that fragment.
  */
 #include <rtos_cfg.h>
 #include <linux_compat/config.h>
@@ -11,35 +13,35 @@ static const struct rtos_task_cfg lx_tasks[] = {
 	{ LX_WORKER_TSKID, TA_ACT, 0, lx_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
 	  TDOM_KERNEL, "lx_worker" },
 #if LX_NR_POOL_WORKERS >= 1
-	{ LX_POOL_WORKER_TSKID_BASE, TA_ACT, 1, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
+	{ LX_POOL_WORKER1_TSKID, TA_ACT, 1, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
 	  TDOM_KERNEL, "lx_pool_worker1" },
 #endif
 #if LX_NR_POOL_WORKERS >= 2
-	{ LX_POOL_WORKER_TSKID_BASE + 1, TA_ACT, 2, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
+	{ LX_POOL_WORKER2_TSKID, TA_ACT, 2, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
 	  TDOM_KERNEL, "lx_pool_worker2" },
 #endif
 #if LX_NR_POOL_WORKERS >= 3
-	{ LX_POOL_WORKER_TSKID_BASE + 2, TA_ACT, 3, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
+	{ LX_POOL_WORKER3_TSKID, TA_ACT, 3, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
 	  TDOM_KERNEL, "lx_pool_worker3" },
 #endif
 #if LX_NR_POOL_WORKERS >= 4
-	{ LX_POOL_WORKER_TSKID_BASE + 3, TA_ACT, 4, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
+	{ LX_POOL_WORKER4_TSKID, TA_ACT, 4, lx_pool_worker_task, LX_WORKER_PRIORITY, LX_WORKER_STACK,
 	  TDOM_KERNEL, "lx_pool_worker4" },
 #endif
 #if LX_NR_IRQ_THREADS >= 1
-	{ LX_IRQ_THREAD_TSKID_BASE, TA_ACT, 0, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
+	{ LX_IRQ_THREAD1_TSKID, TA_ACT, 0, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
 	  TDOM_KERNEL, "lx_irq_thread1" },
 #endif
 #if LX_NR_IRQ_THREADS >= 2
-	{ LX_IRQ_THREAD_TSKID_BASE + 1, TA_ACT, 1, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
+	{ LX_IRQ_THREAD2_TSKID, TA_ACT, 1, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
 	  TDOM_KERNEL, "lx_irq_thread2" },
 #endif
 #if LX_NR_IRQ_THREADS >= 3
-	{ LX_IRQ_THREAD_TSKID_BASE + 2, TA_ACT, 2, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
+	{ LX_IRQ_THREAD3_TSKID, TA_ACT, 2, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
 	  TDOM_KERNEL, "lx_irq_thread3" },
 #endif
 #if LX_NR_IRQ_THREADS >= 4
-	{ LX_IRQ_THREAD_TSKID_BASE + 3, TA_ACT, 3, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
+	{ LX_IRQ_THREAD4_TSKID, TA_ACT, 3, lx_irq_thread_task, LX_IRQ_THREAD_PRIORITY, LX_IRQ_THREAD_STACK,
 	  TDOM_KERNEL, "lx_irq_thread4" },
 #endif
 };
@@ -48,7 +50,7 @@ static const struct rtos_task_cfg lx_tasks[] = {
 #endif
 
 static const struct rtos_isr_cfg lx_isrs[] = {
-	{ TA_NULL, 0, INTNO_TICK, lx_tick_isr, 1 },
+	{ TA_NULL, 0, LX_TICK_INTNO, lx_tick_isr, LX_TICK_ISRPRI },
 };
 
 static const struct rtos_ini_cfg lx_inis[] = {

@@ -405,6 +405,23 @@ static void wait_thread_idle(struct irqaction *action)
 	wait_event(t->idle, !t->running && !(action->thread_flags & 1UL));
 }
 
+/* The IRQ threads' IDs as the configurator gave them (cfg/ev3lx.cfg). */
+static const ID irq_thread_tskids[] = {
+#if LX_NR_IRQ_THREADS >= 1
+	LX_IRQ_THREAD1_TSKID,
+#endif
+#if LX_NR_IRQ_THREADS >= 2
+	LX_IRQ_THREAD2_TSKID,
+#endif
+#if LX_NR_IRQ_THREADS >= 3
+	LX_IRQ_THREAD3_TSKID,
+#endif
+#if LX_NR_IRQ_THREADS >= 4
+	LX_IRQ_THREAD4_TSKID,
+#endif
+	0	/* no thread */
+};
+
 /* The IRQ thread the calling task is, or NULL. */
 static struct lx_irq_thread *current_irq_thread(void)
 {
@@ -412,7 +429,7 @@ static struct lx_irq_thread *current_irq_thread(void)
 	int tid = in_task() ? (int)current->pid : 0;
 
 	for (i = 0; i < LX_NR_IRQ_THREADS; i++)
-		if (tid == LX_IRQ_THREAD_TSKID_BASE + i)
+		if (tid == irq_thread_tskids[i])
 			return &irq_threads[i];
 	return NULL;
 }

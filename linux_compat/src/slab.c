@@ -29,6 +29,7 @@
 #include <linux_compat/fault_inject.h>
 #include <linux_compat/report.h>
 #include <sil.h>
+#include <rtos_cfg.h>
 
 #if defined(__SANITIZE_ADDRESS__)
 /* AddressSanitizer's run-time interface (what <sanitizer/asan_interface.h>
@@ -54,7 +55,7 @@ void __asan_unpoison_memory_region(void const volatile *addr, size_t size);
 _Static_assert(LX_HEAP_SIZE % PAGE_SIZE == 0, "LX_HEAP_SIZE must be a multiple of PAGE_SIZE");
 _Static_assert((1UL << LX_MIN_ORDER) == LX_HEAP_MIN_BLOCK, "granule size");
 
-unsigned char lx_heap_area[LX_HEAP_SIZE] __attribute__((aligned(PAGE_SIZE)));
+unsigned char lx_heap_area[LX_HEAP_SIZE] __attribute__((aligned(PAGE_SIZE))) EV3LX_SHARED_RO;
 
 /* The free-list link stored in the first bytes of a free block (granule indices). */
 struct free_link {

@@ -30,10 +30,27 @@ void lx_worker_reset(void)
 	lx_init_waitqueue_head(&unload_waiters, "unload_waiters");
 }
 
+/* The workers' IDs as the configurator gave them (cfg/ev3lx.cfg): the worker, then the pool workers. */
+static const ID worker_tskids[LX_NR_WORKERS] = {
+	LX_WORKER_TSKID,
+#if LX_NR_POOL_WORKERS >= 1
+	LX_POOL_WORKER1_TSKID,
+#endif
+#if LX_NR_POOL_WORKERS >= 2
+	LX_POOL_WORKER2_TSKID,
+#endif
+#if LX_NR_POOL_WORKERS >= 3
+	LX_POOL_WORKER3_TSKID,
+#endif
+#if LX_NR_POOL_WORKERS >= 4
+	LX_POOL_WORKER4_TSKID,
+#endif
+};
+
 /* The task ID of worker index (0 = the main worker). */
 ID lx_worker_tskid(unsigned int index)
 {
-	return index == 0 ? LX_WORKER_TSKID : (ID)(LX_POOL_WORKER_TSKID_BASE + (int)index - 1);
+	return worker_tskids[index];
 }
 
 /* The calling worker's index, or -1. */
@@ -41,10 +58,9 @@ int lx_worker_index(void)
 {
 	ID tid = lx_current_tskid();
 
-	if (tid == LX_WORKER_TSKID)
-		return 0;
-	if (tid >= LX_POOL_WORKER_TSKID_BASE && tid < LX_POOL_WORKER_TSKID_BASE + LX_NR_POOL_WORKERS)
-		return tid - LX_POOL_WORKER_TSKID_BASE + 1;
+	for (int i = 0; i < LX_NR_WORKERS; i++)
+		if (tid == worker_tskids[i])
+			return i;
 	return -1;
 }
 

@@ -25,6 +25,14 @@ extern "C" {
  * the one, and nothing here redefines a name the kernel supplies. */
 #include <kernel.h>
 
+/* Against a real kernel (EV3LX_HRP2_KERNEL: make am1808 HRP2_DIR=...) the
+ * object counts are its configurator's: the firmware's kernel_cfg.h
+ * (EV3LX_CFG_DIR) defines TNUM_TSKID and the others.  Not while a
+ * configurator reads a configuration (TOPPERS_CFG1_OUT): it writes that file. */
+#if defined(EV3LX_HRP2_KERNEL) && !defined(TOPPERS_CFG1_OUT)
+#include <kernel_cfg.h>
+#endif
+
 /* The object counts: the configurator's (kernel_cfg.h) when a firmware's
  * configuration came first, the host kernel's table sizes otherwise. */
 #ifndef TNUM_TSKID
@@ -75,6 +83,19 @@ extern "C" {
 #define INTNO_TICK   21U
 #ifndef INTPRI_TICK
 #define INTPRI_TICK  (-28)
+#endif
+
+/* The sections of the library's memory that user domains may access
+ * (ATA_SEC in cfg/ev3lx.cfg): the drivers' shared areas (lx_heap_area, read),
+ * and the API's LCD frame and app heap (read and write).  Only where the
+ * memory configuration places them (EV3LX_MEM_SECTIONS: the AM1808's); on the
+ * host the tables of rtos_cfg.h grant the same access. */
+#if defined(EV3LX_MEM_SECTIONS) && EV3LX_MEM_SECTIONS
+#define EV3LX_SHARED_RO	__attribute__((section("ev3lx_shared_ro")))
+#define EV3LX_SHARED_RW	__attribute__((section("ev3lx_shared_rw")))
+#else
+#define EV3LX_SHARED_RO
+#define EV3LX_SHARED_RW
 #endif
 
 struct rtos_task_cfg {      /* CRE_TSK */

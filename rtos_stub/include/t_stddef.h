@@ -141,6 +141,13 @@ typedef struct acvct {
 #define TMO_NBLK (-2)
 #endif
 
+/* Access permission patterns of memory objects (ATA_SEC, ATA_MEM): one bit per
+ * user domain; TACP_KERNEL the kernel domain only, TACP_SHARED every domain
+ * (ev3rt-git/ev3rt-hrp2, include/t_stddef.h). */
+#define TACP_KERNEL (0U)
+#define TACP_SHARED (~0U)
+#define TACP(domid) (1U << ((domid) - 1))
+
 /* Integer constants of a TOPPERS type, as apps write them (ULONG_C(1000)). */
 #ifndef INT_C
 #define INT_C(val)   (val)

@@ -7,6 +7,7 @@
  * the button task stops on rel_wai and restarts without losing a click;
  * every error code.
  */
+#include "ev3api_routines.h"
 #include "api_test.h"
 #include "host_sim/devices/ev3_ui.h"
 
