@@ -44,3 +44,6 @@ $(EV3LX_CFG_GEN)/stamp: $(EV3CFG) $(EV3LX_CFG_DEPS)
 	$(Q)for f in kernel_cfg.h kernel_cfg.c; do cmp -s $(@D)/new/$$f $(@D)/$$f || cp $(@D)/new/$$f $(@D)/$$f; done
 	$(Q)touch $@
 $(EV3LX_CFG_GEN)/kernel_cfg.h $(EV3LX_CFG_GEN)/kernel_cfg.c: $(EV3LX_CFG_GEN)/stamp ;
+# The fragment's test includes kernel_cfg.c, which its dependency list leaves
+# out like the header: a fragment edit that changes only the tables recompiles it.
+$(foreach c,$(HOST_CONFIGS),$(eval $(BUILD)/$(c)/obj/tests/hacks/test_ev3lx_fragment.o: $(EV3LX_CFG_GEN)/kernel_cfg.c))
