@@ -78,8 +78,8 @@ static const struct {
 	unsigned int irq;
 	unsigned long clock_hz;
 } instances[2] = {
-	{ DA8XX_I2C0_BASE, IRQ_DA8XX_IIC0, 24000000UL },
-	{ DA8XX_I2C1_BASE, IRQ_DA8XX_IIC1, 132000000UL },
+	{ DA8XX_I2C0_BASE, IRQ_DA8XX_I2CINT0, 24000000UL },
+	{ DA8XX_I2C1_BASE, IRQ_DA8XX_I2CINT1, 132000000UL },
 };
 
 static struct davinci_i2c i2c_devs[2];

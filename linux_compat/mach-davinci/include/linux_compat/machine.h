@@ -31,7 +31,7 @@
 	X(IRQ_DA8XX_EVTOUT5,  lx_irq_dispatch,   IRQ_DA8XX_EVTOUT5)	\
 	X(IRQ_DA8XX_EVTOUT6,  lx_irq_dispatch,   IRQ_DA8XX_EVTOUT6)	\
 	X(IRQ_DA8XX_EVTOUT7,  lx_irq_dispatch,   IRQ_DA8XX_EVTOUT7)	\
-	X(IRQ_DA8XX_IIC0,     lx_irq_dispatch,   IRQ_DA8XX_IIC0)	\
+	X(IRQ_DA8XX_I2CINT0,     lx_irq_dispatch,   IRQ_DA8XX_I2CINT0)	\
 	X(IRQ_DA8XX_TINT34_1, lx_irq_dispatch,   IRQ_DA8XX_TINT34_1)	\
 	X(IRQ_DA8XX_UARTINT0, lx_irq_dispatch,   IRQ_DA8XX_UARTINT0)	\
 	X(IRQ_DA8XX_GPIO0,    lx_gpio_bank_isr,  0)			\
@@ -43,7 +43,7 @@
 	X(IRQ_DA8XX_GPIO6,    lx_gpio_bank_isr,  6)			\
 	X(IRQ_DA8XX_GPIO7,    lx_gpio_bank_isr,  7)			\
 	X(IRQ_DA8XX_GPIO8,    lx_gpio_bank_isr,  8)			\
-	X(IRQ_DA8XX_IIC1,     lx_irq_dispatch,   IRQ_DA8XX_IIC1)	\
+	X(IRQ_DA8XX_I2CINT1,     lx_irq_dispatch,   IRQ_DA8XX_I2CINT1)	\
 	X(IRQ_DA8XX_UARTINT1, lx_irq_dispatch,   IRQ_DA8XX_UARTINT1)	\
 	X(IRQ_DA8XX_UARTINT2, lx_irq_dispatch,   IRQ_DA8XX_UARTINT2)
 

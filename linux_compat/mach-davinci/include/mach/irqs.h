@@ -26,7 +26,7 @@
 #define IRQ_DA8XX_EDMA3_CC0_ERRINT 12
 #define IRQ_DA8XX_EDMA3_TC0_ERRINT 13
 #define IRQ_DA8XX_EMIFA		14
-#define IRQ_DA8XX_IIC0		15
+#define IRQ_DA8XX_I2CINT0	15
 #define IRQ_DA8XX_MMCSDINT0	16
 #define IRQ_DA8XX_MMCSDINT1	17
 #define IRQ_DA8XX_PSCINT0	18
@@ -46,9 +46,11 @@
 #define IRQ_DA8XX_GPIO6		48
 #define IRQ_DA8XX_GPIO7		49
 #define IRQ_DA8XX_GPIO8		50
-#define IRQ_DA8XX_IIC1		51
-#define IRQ_DA8XX_I2CINT0	IRQ_DA8XX_IIC0   /* Linux's names of the two */
-#define IRQ_DA8XX_I2CINT1	IRQ_DA8XX_IIC1
+#define IRQ_DA8XX_I2CINT1	51
+/* The I2C controllers' lines under their other name (the AM1808 TRM's I2C0_INT/I2C1_INT); the
+ * configuration uses the I2CINT names, which EV3RT's own Linux headers define as well. */
+#define IRQ_DA8XX_IIC0		IRQ_DA8XX_I2CINT0
+#define IRQ_DA8XX_IIC1		IRQ_DA8XX_I2CINT1
 #define IRQ_DA8XX_LCDINT	52
 #define IRQ_DA8XX_UARTINT1	53
 #define IRQ_DA8XX_UARTINT2	61
