@@ -18,6 +18,7 @@
 #include "driver_common.h"
 
 #include "tap.h"
+#include "brick_test.h"
 #include "rtos_host.h"
 #include <linux/bits.h>
 #include <linux/delay.h>
@@ -183,30 +184,9 @@ static void body(void)
 	rtos_host_expect_bugs(false);
 }
 
-static bool body_done;
-
-static void test_task(intptr_t exinf)
-{
-	body();
-	body_done = true;
-}
-
 int main(void)
 {
-	static const struct rtos_task_cfg task = {
-		1, TA_ACT, 0, test_task, 8, 64 * 1024, TDOM_KERNEL, "pwm_test",
-	};
-	static const struct rtos_cfg *const includes[] = { &linux_compat_cfg, NULL };
-	static const struct rtos_cfg cfg = { .name = "pwm_test", .tasks = &task, .ntasks = 1,
-					     .includes = includes };
-	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
-	const struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 1 };
-
 	tap_plan(26);
-	is_int(hs_sim_boot(&scn), E_OK, "the simulated brick with eHRPWM1");
-	while (!body_done && hs_now() < 10ULL * 1000 * 1000 * 1000)
-		hs_sim_run_for(1000 * 1000);
-	ok(body_done, "test task ran to completion");
-	hs_sim_shutdown();
+	lx_test_on_brick(body, "the simulated brick with eHRPWM1");
 	return tap_done();
 }

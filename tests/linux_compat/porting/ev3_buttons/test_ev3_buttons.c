@@ -17,6 +17,7 @@
 #include "driver_common.h"
 
 #include "tap.h"
+#include "brick_test.h"
 #include "rtos_host.h"
 #include <linux_compat/config.h>
 #include <linux/gpio.h>
@@ -143,30 +144,9 @@ static void body(void)
 	lx_dev_close(nb);
 }
 
-static bool body_done;
-
-static void test_task(intptr_t exinf)
-{
-	body();
-	body_done = true;
-}
-
 int main(void)
 {
-	static const struct rtos_task_cfg task = {
-		1, TA_ACT, 0, test_task, 8, 64 * 1024, TDOM_KERNEL, "buttons_test",
-	};
-	static const struct rtos_cfg *const includes[] = { &linux_compat_cfg, NULL };
-	static const struct rtos_cfg cfg = { .name = "buttons_test", .tasks = &task, .ntasks = 1,
-					     .includes = includes };
-	static const struct hs_board_cfg board = { .devices = ev3_board_devices };
-	const struct hs_scenario scn = { .rtos = &cfg, .board = &board, .seed = 1 };
-
 	tap_plan(9);
-	is_int(hs_sim_boot(&scn), E_OK, "the simulated brick, its buttons included");
-	while (!body_done && hs_now() < 10ULL * 1000 * 1000 * 1000)
-		hs_sim_run_for(1000 * 1000);
-	ok(body_done, "test task ran to completion");
-	hs_sim_shutdown();
+	lx_test_on_brick(body, "the simulated brick, its buttons included");
 	return tap_done();
 }
