@@ -542,6 +542,32 @@ static void test_http(unsigned port)
 	ok(http(port, "POST", "/api/cmd?do=resume", body, sizeof(body)), "resume");
 }
 
+/* A run in a world: the page is given the world's mat, walls and goal, and the pose in it. */
+static void test_world_view(void)
+{
+	static char body[1 << 16];
+	const char *args[] = { "--world", "maze", "--seconds", "600", "--live=0", NULL };
+	char out[128], err[128];
+	unsigned port;
+	pid_t pid;
+
+	snprintf(out, sizeof(out), "%s/world.out", work);
+	snprintf(err, sizeof(err), "%s/world.err", work);
+	pid = start_run(args, out, err);
+	port = pid > 0 ? wait_for_number(err, "ev3sim run: live view at http://127.0.0.1:") : 0;
+	ok(port != 0 && http(port, "GET", "/api/world", body, sizeof(body)) &&
+	   strstr(body, "\"robot\":\"maze\"") != NULL &&
+	   strstr(body, "\"mat\":{\"kind\":\"world\",\"mat_kind\":\"plain\"") != NULL &&
+	   strstr(body, "{\"kind\":\"segment\"") != NULL && strstr(body, "{\"kind\":\"circle\"") != NULL &&
+	   strstr(body, "\"goal\":[") != NULL,
+	   "in a world, GET /api/world gives its mat, walls, obstacles and goal (%.100s)", body);
+	ok(port != 0 && http(port, "GET", "/api/status", body, sizeof(body)) &&
+	   strstr(body, "\"pose\":{\"x_mm\":") != NULL, "and /api/status the robot's pose in it");
+	if (port != 0)
+		(void)http(port, "POST", "/api/cmd?do=stop", body, sizeof(body));
+	is_int(wait_child(pid), 0, "the world's run stops from the page, status 0");
+}
+
 /* In headless Chromium: click ENTER on the page, read the display and the pose
  * back, click Stop; the browser's process group (it is still running), -1 if none. */
 static pid_t test_browser(unsigned port, const char *run_log)
@@ -660,6 +686,7 @@ int main(void)
 	}
 	test_same_run();
 	test_refusals();
+	test_world_view();
 	snprintf(out, sizeof(out), "%s/run.out", work);
 	snprintf(err, sizeof(err), "%s/run.err", work);
 	pid = start_run(args, out, err);
