@@ -549,6 +549,7 @@ static void test_world_view(void)
 	const char *args[] = { "--world", "maze", "--seconds", "600", "--live=0", NULL };
 	char out[128], err[128];
 	unsigned port;
+	double end;
 	pid_t pid;
 
 	snprintf(out, sizeof(out), "%s/world.out", work);
@@ -561,8 +562,13 @@ static void test_world_view(void)
 	   strstr(body, "{\"kind\":\"segment\"") != NULL && strstr(body, "{\"kind\":\"circle\"") != NULL &&
 	   strstr(body, "\"goal\":[") != NULL,
 	   "in a world, GET /api/world gives its mat, walls, obstacles and goal (%.100s)", body);
-	ok(port != 0 && http(port, "GET", "/api/status", body, sizeof(body)) &&
-	   strstr(body, "\"pose\":{\"x_mm\":") != NULL, "and /api/status the robot's pose in it");
+	/* the pose is there from the run's first step on: wait for it, as a page would */
+	end = now_s() + WAIT_S;
+	while (port != 0 && !(http(port, "GET", "/api/status", body, sizeof(body)) &&
+			      strstr(body, "\"pose\":{\"x_mm\":") != NULL) && now_s() < end)
+		sleep_ms(50);
+	ok(port != 0 && strstr(body, "\"pose\":{\"x_mm\":") != NULL, "and /api/status the robot's pose in it (%.80s)",
+	   body);
 	if (port != 0)
 		(void)http(port, "POST", "/api/cmd?do=stop", body, sizeof(body));
 	is_int(wait_child(pid), 0, "the world's run stops from the page, status 0");
