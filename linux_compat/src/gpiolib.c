@@ -489,26 +489,21 @@ void gpiod_put_array(struct gpio_descs *array)
 	kfree(array);
 }
 
-static void devm_gpiod_release_array(struct device *dev, void *res)
+/* devm's action: gives an array's lines back. */
+static void devm_gpiod_put_array_action(void *array)
 {
-	gpiod_put_array(*(struct gpio_descs **)res);
+	gpiod_put_array(array);
 }
 
 struct gpio_descs *devm_gpiod_get_array(struct device *dev, const char *con_id, enum gpiod_flags flags)
 {
-	struct gpio_descs **dr, *array;
+	struct gpio_descs *array = gpiod_get_array(dev, con_id, flags);
+	int ret;
 
-	dr = devres_alloc(devm_gpiod_release_array, sizeof(*dr), GFP_KERNEL);
-	if (!dr)
-		return ERR_PTR(-ENOMEM);
-	array = gpiod_get_array(dev, con_id, flags);
-	if (IS_ERR(array)) {
-		devres_free(dr);
+	if (IS_ERR(array))
 		return array;
-	}
-	*dr = array;
-	devres_add(dev, dr);
-	return array;
+	ret = devm_add_action_or_reset(dev, devm_gpiod_put_array_action, array);
+	return ret ? ERR_PTR(ret) : array;
 }
 
 struct gpio_descs *devm_gpiod_get_array_optional(struct device *dev, const char *con_id, enum gpiod_flags flags)
